@@ -1,0 +1,158 @@
+// skein: a knitting compiler. This file only parses the command line and calls the driver.
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+
+#include "builtin_targets.hpp"
+#include "common/atomic_file.hpp"
+#include "common/error.hpp"
+#include "driver/pipeline.hpp"
+
+namespace {
+
+using namespace skein;
+
+// Exit codes of `skein check` (and of every command on bad input).
+constexpr int kKnittable = 0;
+constexpr int kNotKnittable = 1;
+constexpr int kBadInput = 2;
+
+std::string registry_listing(const Registry& registry) {
+  std::string out = "\nTargets (--target):\n";
+  for (const Target* t : registry.targets())
+    out += fmt::format("  {:<12} {}\n", t->name(), t->description());
+  out += "\nSimulators (skein verify, compile --verify):\n";
+  for (const Simulator* s : registry.simulators())
+    out += fmt::format("  {:<16} replays --target {}: {}\n", s->name(), s->target(), s->description());
+  out += R"(
+Examples:
+  skein check samples/hat/hat.obj
+  skein compile samples/hat/hat.obj --target schedule -o hat.schedule
+  skein compile samples/swatch/rib-swatch.obj --target schedule -o swatch.schedule --verify
+  skein verify hat.schedule --against samples/hat/hat.obj
+  skein check samples/autoknit/test-B.st
+
+Exit codes: 0 success (knittable / proven), 1 not knittable or not proven, 2 bad input.
+)";
+  return out;
+}
+
+StageObserver progress_printer(bool verbose) {
+  if (!verbose) return {};
+  return [](const char* stage, std::chrono::duration<double> took) {
+    std::cerr << fmt::format("skein: {:<18} {:8.1f} ms\n", stage, took.count() * 1000);
+  };
+}
+
+const Target& find_target(const Registry& registry, const std::string& name) {
+  if (const Target* t = registry.target(name)) return *t;
+  std::string known;
+  for (const Target* t : registry.targets()) known += (known.empty() ? "" : ", ") + t->name();
+  throw UsageError(fmt::format("unknown target '{}'; known targets: {}", name, known));
+}
+
+const Compilation& require_knittable(const Compilation& c) {
+  if (!c.knittability.knittable)
+    throw Error(fmt::format("{} is not knittable; run 'skein check {}' to see why", c.input, c.input));
+  return c;
+}
+
+int run_check(const std::string& input, bool verbose) {
+  Compilation c = compile_model(input, progress_printer(verbose));
+  std::cout << check_report(c);
+  return c.knittability.knittable ? kKnittable : kNotKnittable;
+}
+
+int report_verification(const VerifyReport& report) {
+  std::cout << report.summary << '\n';
+  return report.proven ? kKnittable : kNotKnittable;
+}
+
+int run_compile(const Registry& registry, const std::string& input, const std::string& target_name,
+                const TargetOptions& options, const std::string& output, bool verify, bool verbose) {
+  const Target& target = find_target(registry, target_name);
+  Compilation c = compile_model(input, progress_printer(verbose));
+  require_knittable(c);
+  write_file_atomically(output, [&](std::ostream& out) { target.emit(c, options, out); });
+  std::cout << fmt::format("wrote {} ({} target, {} stitches, {} yarn pieces)\n", output,
+                           target.name(), c.knit.size(), c.yarns.size());
+  if (!verify) return kKnittable;
+  const Simulator* simulator = registry.simulator_for(target.name());
+  if (!simulator) throw UsageError(fmt::format("target '{}' has no simulator", target.name()));
+  return report_verification(simulator->verify(read_file(output), output, &c, options));
+}
+
+// The target whose output `file` is: --target if given, else the one whose extension it has.
+const Target& target_of(const Registry& registry, const std::string& file, const std::string& given) {
+  if (!given.empty()) return find_target(registry, given);
+  std::string extension = std::filesystem::path(file).extension().string();
+  for (const Target* t : registry.targets())
+    if (t->default_extension() == extension) return *t;
+  throw UsageError(fmt::format("cannot tell which target wrote {}; pass --target", file));
+}
+
+int run_verify(const Registry& registry, const std::string& file, const std::string& against,
+               const std::string& target_name, const TargetOptions& options, bool verbose) {
+  const Target& target = target_of(registry, file, target_name);
+  const Simulator* simulator = registry.simulator_for(target.name());
+  if (!simulator) throw UsageError(fmt::format("target '{}' has no simulator", target.name()));
+  std::string text = read_file(file);
+  if (against.empty()) return report_verification(simulator->verify(text, file, nullptr, options));
+  Compilation c = compile_model(against, progress_printer(verbose));
+  return report_verification(simulator->verify(text, file, &c, options));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Registry registry;
+  register_builtin_targets(registry);
+
+  CLI::App app{"skein: compiles knittable stitch meshes into knitting instructions and proves them"};
+  app.footer(registry_listing(registry));
+  app.require_subcommand(1);
+  bool verbose = false;
+  app.add_flag("-v,--verbose", verbose, "print each stage and its time to stderr");
+
+  std::string input, output, target_name, against, file;
+  TargetOptions options;
+  bool verify = false;
+
+  auto* check = app.add_subcommand("check", "validate INPUT and report knittability, rows, yarn pieces");
+  check->add_option("INPUT", input, "stitch mesh (.obj) or AutoKnit stitch graph (.st)")->required();
+
+  auto* compile = app.add_subcommand("compile", "compile INPUT for a target and write OUT");
+  compile->add_option("INPUT", input, "stitch mesh (.obj) or AutoKnit stitch graph (.st)")->required();
+  compile->add_option("-t,--target", target_name, "back end (see the list below)")->required();
+  compile->add_option("-o,--output", output, "file to write (never left half-written)")->required();
+  compile->add_option("-m,--machine", options.machine, "machine profile name or path");
+  compile->add_flag("--verify", verify, "replay the output in the target's simulator");
+
+  auto* verify_cmd = app.add_subcommand("verify", "replay OUT in its target's simulator");
+  verify_cmd->add_option("OUT", file, "a file a target wrote")->required();
+  verify_cmd->add_option("--against", against, "the input it must reproduce, stitch for stitch");
+  verify_cmd->add_option("-t,--target", target_name, "the target that wrote OUT (default: by extension)");
+  verify_cmd->add_option("-m,--machine", options.machine, "machine profile name or path");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    int code = app.exit(e);
+    return code == 0 ? 0 : kBadInput;
+  }
+
+  try {
+    if (*check) return run_check(input, verbose);
+    if (*compile) return run_compile(registry, input, target_name, options, output, verify, verbose);
+    return run_verify(registry, file, against, target_name, options, verbose);
+  } catch (const Error& e) {
+    std::cerr << "skein: error: " << e.what() << '\n';
+    return kBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "skein: " << e.what() << '\n';
+    return 3;
+  }
+}

@@ -1,0 +1,64 @@
+// Errors a user can cause are typed exceptions that say where (file, line, face, edge),
+// what was expected and what was found. Broken internal invariants use SKEIN_ASSERT.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+namespace skein {
+
+// Base of every error a user can cause; the CLI prints what() and exits non-zero.
+class Error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// A malformed input file: names the file, the 1-based line, quotes the line, says what was
+// expected.
+class ParseError : public Error {
+ public:
+  ParseError(std::string file, std::size_t line, std::string quoted, std::string expected);
+  const std::string& file() const { return file_; }
+  std::size_t line() const { return line_; }
+  const std::string& expected() const { return expected_; }
+
+ private:
+  std::string file_;
+  std::size_t line_;
+  std::string expected_;
+};
+
+// A structurally invalid stitch mesh (found by validate()): names the face or edge.
+class MeshError : public Error {
+ public:
+  using Error::Error;
+};
+
+// A file that could not be opened, read or written.
+class IoError : public Error {
+ public:
+  using Error::Error;
+};
+
+// A command-line request that does not make sense (unknown target, missing option, ...).
+class UsageError : public Error {
+ public:
+  using Error::Error;
+};
+
+// An internal invariant broke: a bug in skein, not in the input.
+class InternalError : public std::logic_error {
+ public:
+  using std::logic_error::logic_error;
+};
+
+[[noreturn]] void assertion_failed(const char* condition, const char* file, int line,
+                                   const std::string& message);
+
+}  // namespace skein
+
+#define SKEIN_ASSERT(condition, message)                                   \
+  do {                                                                     \
+    if (!(condition)) ::skein::assertion_failed(#condition, __FILE__, __LINE__, (message)); \
+  } while (false)

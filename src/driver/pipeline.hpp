@@ -1,0 +1,58 @@
+// The whole of skein on one page. Each stage is a free function of the stage folder named
+// beside it; compile_model() runs them in order with a check between them.
+//
+//   read_stitch_mesh        mesh/obj_format      .obj text        -> StitchMesh
+//   validate                mesh/stitch_mesh     StitchMesh       -> (throws MeshError)
+//   build_knit_graph        knitgraph/from_mesh  StitchMesh       -> KnitGraph
+//   read_autoknit_st        mesh/autoknit_st     .st text         -> KnitGraph
+//   check_consistency       knitgraph            KnitGraph        -> (asserts)
+//   find_yarn_pieces        knitgraph            KnitGraph        -> YarnPieces      (§4.2)
+//   build_dependency_graph  depgraph             KnitGraph        -> DependencyGraph (§4.1)
+//   check_knittability      depgraph             DependencyGraph  -> Knittability (cycle)
+//   schedule_stitches       schedule             all of the above -> Schedule (Algorithm 1)
+//   Target::emit            targets/<name>       Compilation      -> output file
+//   Simulator::verify       targets/<name>       output file      -> VerifyReport
+#pragma once
+
+#include <chrono>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "depgraph/dependency_graph.hpp"
+#include "knitgraph/knit_graph.hpp"
+#include "knitgraph/yarn_pieces.hpp"
+#include "mesh/stitch_mesh.hpp"
+#include "schedule/schedule.hpp"
+
+namespace skein {
+
+struct Compilation {
+  std::string input;
+  std::optional<StitchMesh> mesh;  // absent for stitch graphs (.st)
+  KnitGraph knit;
+  YarnPieces yarns;
+  DependencyGraph deps;
+  Knittability knittability;
+  Schedule schedule;  // empty unless knittable
+};
+
+// Called after each stage with its name and how long it took (for progress output).
+using StageObserver = std::function<void(const char* stage, std::chrono::duration<double>)>;
+
+// Reads INPUT (.obj stitch mesh or .st stitch graph) and runs every stage up to the schedule.
+// Throws Error subclasses on bad input; an unknittable model is not an error (see
+// knittability).
+Compilation compile_model(const std::string& input, const StageObserver& observe = {});
+
+// The same stages from a mesh or stitch graph already in memory (`name` is used in messages).
+Compilation compile_stitch_mesh(StitchMesh mesh, const std::string& name,
+                                const StageObserver& observe = {});
+Compilation compile_knit_graph(KnitGraph graph, const std::string& name,
+                               const StageObserver& observe = {});
+
+// The text `skein check` prints: counts, rows, yarn pieces, mismatches, and the cycle if any.
+std::string check_report(const Compilation& compilation);
+
+}  // namespace skein

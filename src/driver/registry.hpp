@@ -1,0 +1,62 @@
+// The one registry of back ends and their simulators. Each target folder exposes an explicit
+// register function (no static-constructor tricks); `skein --help` lists what is registered.
+#pragma once
+
+#include <iosfwd>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace skein {
+
+struct Compilation;
+
+// Options a user can pass to a target or simulator (e.g. --machine).
+struct TargetOptions {
+  std::string machine;  // profile name or path, for machine targets
+};
+
+class Target {
+ public:
+  virtual ~Target() = default;
+  virtual std::string name() const = 0;
+  virtual std::string description() const = 0;
+  virtual std::string default_extension() const = 0;  // ".txt", ".k", ".md"
+  // Writes the compiled model; throws Error when this target cannot express it.
+  virtual void emit(const Compilation& compilation, const TargetOptions& options,
+                    std::ostream& out) const = 0;
+};
+
+// What a simulator found: proven, or the first impossible step and why.
+struct VerifyReport {
+  bool proven = false;
+  std::string summary;  // what was replayed and checked, or the first failure
+};
+
+class Simulator {
+ public:
+  virtual ~Simulator() = default;
+  virtual std::string name() const = 0;
+  virtual std::string target() const = 0;  // the target whose output it replays
+  virtual std::string description() const = 0;
+  // Replays `text` (read from `file`); with `against`, also compares the result with it.
+  virtual VerifyReport verify(const std::string& text, const std::string& file,
+                              const Compilation* against, const TargetOptions& options) const = 0;
+};
+
+class Registry {
+ public:
+  void add(std::unique_ptr<Target> target);
+  void add(std::unique_ptr<Simulator> simulator);
+  const Target* target(const std::string& name) const;  // nullptr if unknown
+  const Simulator* simulator_for(const std::string& target_name) const;
+  std::vector<const Target*> targets() const;
+  std::vector<const Simulator*> simulators() const;
+
+ private:
+  std::map<std::string, std::unique_ptr<Target>> targets_;
+  std::map<std::string, std::unique_ptr<Simulator>> simulators_;  // by target name
+};
+
+}  // namespace skein

@@ -1,0 +1,218 @@
+#include "knitgraph/from_mesh.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+#include "common/error.hpp"
+
+namespace skein {
+namespace {
+
+bool is_short_row_face(StitchType t) { return info(t).wales_adjacent; }
+
+// The end of a wale halfedge that touches the face's top (or bottom) course edges.
+Vertex top_vertex(const StitchMesh& m, Halfedge h) {
+  if (m.role[m.next(h)] == EdgeRole::top) return m.head(h);
+  if (m.role[m.prev(h)] == EdgeRole::top) return m.tail(h);
+  return {};
+}
+Vertex bottom_vertex(const StitchMesh& m, Halfedge h) {
+  if (m.role[m.prev(h)] == EdgeRole::bottom) return m.tail(h);
+  if (m.role[m.next(h)] == EdgeRole::bottom) return m.head(h);
+  return {};
+}
+
+// True when the yarn leaving through `out` goes straight on into the next stitch of its row.
+bool continues_row(const StitchMesh& m, Halfedge out) {
+  Halfedge t = m.twin(out);
+  return t.valid() && m.role[t] == EdgeRole::wale_in && !m.shift_path[m.edge(out)];
+}
+
+// True when the yarn comes into `in` from somewhere other than the previous stitch of a row.
+bool row_starts_at(const StitchMesh& m, Halfedge in) {
+  Halfedge t = m.twin(in);
+  return m.role[in] == EdgeRole::wale_in && !(t.valid() && m.role[t] == EdgeRole::wale_out &&
+                                              !m.shift_path[m.edge(in)]);
+}
+
+// Where a row that ends at `out` continues: the first stitch of the next row whose yarn
+// enters at the top end of `out` (a shift-path in a tube, a turn at a border or at a
+// perpendicular mismatch). Lowest row wins; a stitch already reached by another yarn is skipped.
+Face next_row_start(const StitchMesh& m, Halfedge out, const std::vector<std::uint8_t>& reached) {
+  Vertex v = top_vertex(m, out);
+  Face best;
+  if (!v.valid()) return best;
+  std::uint32_t row = m.row[m.face(out)];
+  auto consider = [&](Halfedge c) {
+    if (!row_starts_at(m, c)) return;
+    Face g = m.face(c);
+    if (m.row[g] == row || reached[g.index()] || bottom_vertex(m, c) != v) return;
+    if (!best.valid() || m.row[g] < m.row[best]) best = g;
+  };
+  for (Halfedge h : m.outgoing(v)) {
+    consider(h);
+    consider(m.prev(h));
+  }
+  return best;
+}
+
+void link_yarn(const StitchMesh& m, KnitGraph& g) {
+  std::vector<std::uint8_t> reached(m.num_faces(), 0);
+  for (Face f : m.faces()) {
+    Halfedge out = m.wale_out(f);
+    if (continues_row(m, out)) {
+      Face next = m.face(m.twin(out));
+      g.yarn_next[f.index()] = next.index();
+      g.yarn_link[f.index()] = is_short_row_face(m.stitch[f]) ? YarnLink::turn : YarnLink::course;
+      reached[next.index()] = 1;
+    }
+  }
+  for (Face f : m.faces()) {
+    Halfedge out = m.wale_out(f);
+    if (continues_row(m, out)) continue;
+    Face next = next_row_start(m, out, reached);
+    if (!next.valid()) continue;
+    g.yarn_next[f.index()] = next.index();
+    g.yarn_link[f.index()] = m.shift_path[m.edge(out)] ? YarnLink::shift : YarnLink::turn;
+    reached[next.index()] = 1;
+  }
+}
+
+// Loops are listed from the consuming stitch's side, in its counter-clockwise edge order, so
+// each stitch's loops come left to right; loops nobody consumes are listed from the maker.
+void add_loops(const StitchMesh& m, KnitGraph& g) {
+  for (Face f : m.faces()) {
+    for (Halfedge h : m.halfedges(f)) {
+      Halfedge t = m.twin(h);
+      if (!t.valid()) continue;
+      EdgeRole mine = m.role[h], theirs = m.role[t];
+      StitchId self = f.index(), other = m.face(t).index();
+      if (mine == EdgeRole::bottom && theirs == EdgeRole::top)
+        g.loops.push_back({other, self, LoopKind::wale});
+      else if (mine == EdgeRole::bottom && is_wale(theirs))
+        g.loops.push_back({other, self, LoopKind::perpendicular});
+      else if (is_wale(mine) && theirs == EdgeRole::top)
+        g.loops.push_back({other, self, LoopKind::perpendicular});
+      else if (mine == EdgeRole::bottom && theirs == EdgeRole::bottom)
+        g.loops.push_back({kNoStitch, self, LoopKind::split});
+      else if (mine == EdgeRole::top && theirs == EdgeRole::top)
+        g.loops.push_back({self, kNoStitch, LoopKind::joined});
+    }
+  }
+  g.index_loops();
+}
+
+// Union-find over edges: mismatched edges of one kind that share a vertex form a group.
+std::vector<std::uint32_t> group_mismatches(const StitchMesh& m, std::uint32_t& groups) {
+  constexpr std::uint32_t kNone = Handle<EdgeTag>::kInvalid;
+  std::vector<std::uint32_t> parent(m.num_edges());
+  std::iota(parent.begin(), parent.end(), 0u);
+  auto find = [&](std::uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (Vertex v : m.vertices()) {
+    std::uint32_t first[8];
+    std::fill(std::begin(first), std::end(first), kNone);
+    for (Halfedge h : m.outgoing(v))
+      for (Halfedge c : {h, m.prev(h)}) {
+        Edge e = m.edge(c);
+        EdgeKind k = m.kind(e);
+        if (!is_mismatch(k)) continue;
+        auto& root = first[static_cast<int>(k)];
+        if (root == kNone) root = e.index();
+        else parent[find(e.index())] = find(root);
+      }
+  }
+  std::vector<std::uint32_t> group(m.num_edges(), kNone);
+  std::vector<std::uint32_t> numbering(m.num_edges(), kNone);
+  groups = 0;
+  for (Edge e : m.edges()) {
+    if (!is_mismatch(m.kind(e))) continue;
+    std::uint32_t r = find(e.index());
+    if (numbering[r] == kNone) numbering[r] = groups++;
+    group[e.index()] = numbering[r];
+  }
+  return group;
+}
+
+// Joins and splits knit with one side's yarn make the other side wait (paper §4.1); groups
+// left to an extra yarn piece add none here: that piece is extruded by the transforms.
+void add_mismatch_dependencies(const StitchMesh& m, KnitGraph& g) {
+  std::vector<std::uint32_t> group = group_mismatches(m, g.mismatch_groups);
+  std::vector<std::uint8_t> group_uses_extra(g.mismatch_groups, 0);
+  for (Edge e : m.edges()) {
+    EdgeKind k = m.kind(e);
+    if (k != EdgeKind::join && k != EdgeKind::split) continue;
+    const MismatchYarn& y = m.mismatch_yarn[e];
+    if (y.kind != MismatchYarn::Kind::own) {
+      group_uses_extra[group[e.index()]] = 1;
+      continue;
+    }
+    Halfedge h = m.halfedge(e);
+    StitchId own = y.side.index();
+    StitchId other = m.face(h) == y.side ? m.face(m.twin(h)).index() : m.face(h).index();
+    if (k == EdgeKind::join)
+      g.extra.push_back({other, own, DependencyReason::join_own_yarn, group[e.index()]});
+    else
+      g.extra.push_back({own, other, DependencyReason::split_own_yarn, group[e.index()]});
+  }
+  g.extra_yarn_groups =
+      static_cast<std::uint32_t>(std::count(group_uses_extra.begin(), group_uses_extra.end(), 1));
+}
+
+void flag_stitches(const StitchMesh& m, KnitGraph& g) {
+  for (Face f : m.faces()) {
+    std::uint8_t flags = is_short_row_face(m.stitch[f]) ? kShortRowEnd : 0;
+    for (Halfedge h : m.halfedges(f)) {
+      Edge e = m.edge(h);
+      if (is_mismatch(m.kind(e))) flags |= kBesideMismatch;
+      if (m.role[h] == EdgeRole::wale_in && m.shift_path[e]) flags |= kShiftPathStart;
+    }
+    g.flags[f.index()] = flags;
+  }
+}
+
+// A row is closed when its yarn comes back round to its first stitch, short when it starts
+// after a turn at a short-row face, open otherwise.
+void shape_rows(const StitchMesh& m, KnitGraph& g) {
+  std::uint32_t rows = 0;
+  for (Face f : m.faces()) rows = std::max(rows, m.row[f] + 1);
+  g.row_shape.assign(rows, RowShape::closed);
+  for (Face f : m.faces()) {
+    Halfedge out = m.wale_out(f);
+    Halfedge t = m.twin(out);
+    bool ring_link = t.valid() && m.role[t] == EdgeRole::wale_in && m.row[m.face(t)] == m.row[f];
+    if (!ring_link && g.row_shape[m.row[f]] == RowShape::closed)
+      g.row_shape[m.row[f]] = RowShape::open;
+  }
+  for (Face f : m.faces()) {
+    StitchId next = g.yarn_next[f.index()];
+    if (is_short_row_face(m.stitch[f]) && next != kNoStitch)
+      g.row_shape[g.row[next]] = RowShape::short_row;
+  }
+}
+
+}  // namespace
+
+KnitGraph build_knit_graph(const StitchMesh& mesh, const std::string& source_name) {
+  const std::uint32_t n = mesh.num_faces();
+  KnitGraph g;
+  g.source_name = source_name;
+  g.element = "face";
+  g.type = mesh.stitch.raw();
+  g.row = mesh.row.raw();
+  g.source.resize(n);
+  std::iota(g.source.begin(), g.source.end(), 0u);
+  g.yarn_next.assign(n, kNoStitch);
+  g.yarn_link.assign(n, YarnLink::none);
+  g.flags.assign(n, 0);
+  link_yarn(mesh, g);
+  add_loops(mesh, g);
+  add_mismatch_dependencies(mesh, g);
+  flag_stitches(mesh, g);
+  shape_rows(mesh, g);
+  return g;
+}
+
+}  // namespace skein

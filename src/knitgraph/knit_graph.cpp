@@ -1,0 +1,87 @@
+#include "knitgraph/knit_graph.hpp"
+
+#include <fmt/format.h>
+
+#include "common/error.hpp"
+
+namespace skein {
+
+const char* explain(DependencyReason reason) {
+  switch (reason) {
+    case DependencyReason::yarn: return "it comes next along the yarn";
+    case DependencyReason::loop: return "it consumes its loop";
+    case DependencyReason::perpendicular_loop:
+      return "it consumes its loop across a perpendicular mismatched edge";
+    case DependencyReason::join_own_yarn:
+      return "its yarn works the three-needle bind-off that needs that stitch's loop";
+    case DependencyReason::split_own_yarn:
+      return "it is pulled through the cast-on that stitch's yarn makes along the split";
+  }
+  return "?";
+}
+
+const char* row_shape_name(RowShape shape) {
+  switch (shape) {
+    case RowShape::open: return "open";
+    case RowShape::closed: return "closed";
+    case RowShape::short_row: return "short";
+    case RowShape::unknown: return "unknown";
+  }
+  return "?";
+}
+
+void KnitGraph::index_loops() {
+  taken_first.assign(size() + 1, 0);
+  for (const Loop& l : loops)
+    if (l.taker != kNoStitch) ++taken_first[l.taker + 1];
+  for (std::uint32_t s = 0; s < size(); ++s) taken_first[s + 1] += taken_first[s];
+  taken.assign(taken_first.back(), 0);
+  std::vector<std::uint32_t> fill(taken_first.begin(), taken_first.end() - 1);
+  for (std::uint32_t i = 0; i < loops.size(); ++i)
+    if (loops[i].taker != kNoStitch) taken[fill[loops[i].taker]++] = i;
+}
+
+std::string KnitGraph::describe(StitchId s) const {
+  if (element == "face")
+    return fmt::format("face {} ({}, row {})", source[s] + 1, abbreviation(type[s]), row[s] + 1);
+  return fmt::format("{} {} ({})", element, source[s] + 1, abbreviation(type[s]));
+}
+
+void check_consistency(const KnitGraph& g) {
+  const std::uint32_t n = g.size();
+  SKEIN_ASSERT(g.row.size() == n && g.source.size() == n && g.yarn_next.size() == n &&
+                   g.yarn_link.size() == n && g.flags.size() == n && g.taken_first.size() == n + 1,
+               "per-stitch arrays have one entry per stitch");
+  std::vector<std::uint8_t> has_prev(n, 0);
+  for (StitchId s = 0; s < n; ++s) {
+    StitchId next = g.yarn_next[s];
+    SKEIN_ASSERT((next == kNoStitch) == (g.yarn_link[s] == YarnLink::none),
+                 "a yarn link exactly where there is a next stitch");
+    if (next == kNoStitch) continue;
+    SKEIN_ASSERT(next < n, "yarn_next in range");
+    SKEIN_ASSERT(!has_prev[next], fmt::format("{} follows two stitches along the yarn",
+                                              g.describe(next)));
+    has_prev[next] = 1;
+  }
+  // Each stitch makes and takes as many loops as its type says, plus those that cross a
+  // perpendicular mismatched edge.
+  std::vector<std::int32_t> made(n, 0), took(n, 0);
+  for (const Loop& l : g.loops) {
+    SKEIN_ASSERT(l.maker == kNoStitch || l.maker < n, "loop maker in range");
+    SKEIN_ASSERT(l.taker == kNoStitch || l.taker < n, "loop taker in range");
+    SKEIN_ASSERT(l.maker != l.taker, "no stitch consumes its own loop");
+    int across = l.kind == LoopKind::perpendicular ? 1 : 0;
+    if (l.maker != kNoStitch) made[l.maker] += 1 - across;
+    if (l.taker != kNoStitch) took[l.taker] += 1 - across;
+  }
+  for (StitchId s = 0; s < n; ++s) {
+    SKEIN_ASSERT(made[s] <= info(g.type[s]).loops_out,
+                 fmt::format("{} makes at most {} loops", g.describe(s), info(g.type[s]).loops_out));
+    SKEIN_ASSERT(took[s] == info(g.type[s]).loops_in,
+                 fmt::format("{} consumes {} loops", g.describe(s), info(g.type[s]).loops_in));
+    SKEIN_ASSERT(g.loops_taken_by(s).size() >= static_cast<std::size_t>(took[s]),
+                 "index_loops() ran after the last loop was added");
+  }
+}
+
+}  // namespace skein

@@ -1,0 +1,108 @@
+// The compile IR: a knit graph. Stitches, the loops each consumes and makes, and the order
+// of the yarn through them. A stitch mesh and an AutoKnit stitch graph both become one; every
+// later stage (dependencies, scheduling, targets) reads only this.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "mesh/stitch_type.hpp"
+
+namespace skein {
+
+using StitchId = std::uint32_t;
+inline constexpr StitchId kNoStitch = std::numeric_limits<StitchId>::max();
+
+// How the yarn travels from a stitch to the next one along it.
+enum class YarnLink : std::uint8_t {
+  none,    // the yarn piece ends here
+  course,  // next stitch of the same row
+  shift,   // across a shift-path: last stitch of a round to the first of the next (helix)
+  turn,    // end of an open row (or short row): turn the work, next row goes back
+};
+
+// Why a loop exists between two stitches.
+enum class LoopKind : std::uint8_t {
+  wale,           // made at the top of one stitch, consumed at the bottom of the next
+  perpendicular,  // crosses a perpendicular mismatched edge (paper §3.2)
+  joined,         // made on a joining mismatch: closed by a three-needle bind-off
+  split,          // to be consumed from a cast-on along a splitting mismatch
+};
+
+struct Loop {
+  StitchId maker = kNoStitch;  // kNoStitch: supplied by a split cast-on not yet extruded
+  StitchId taker = kNoStitch;  // kNoStitch: joined, or the open end of a stitch graph
+  LoopKind kind = LoopKind::wale;
+};
+
+// A dependency beyond yarn order and loops: one stitch must wait for another because of how
+// a mismatched edge is knit (paper §4.1).
+enum class DependencyReason : std::uint8_t {
+  yarn,                 // the previous stitch along the yarn
+  loop,                 // the stitch that made a loop this one consumes
+  perpendicular_loop,   // ... across a perpendicular mismatched edge
+  join_own_yarn,        // a join knit with this side's yarn needs the other side's loop
+  split_own_yarn,       // a split cast on with the other side's yarn must come first
+};
+const char* explain(DependencyReason reason);  // "it consumes its loop"
+
+struct ExtraDependency {
+  StitchId before, after;
+  DependencyReason reason;
+  std::uint32_t group;  // which mismatch group asked for it
+};
+
+enum class RowShape : std::uint8_t { open, closed, short_row, unknown };
+const char* row_shape_name(RowShape shape);
+
+// Flags for stitches that sit in a special region, so schedules can place markers.
+enum StitchFlag : std::uint8_t {
+  kBesideMismatch = 1,  // touches a mismatched edge
+  kShortRowEnd = 2,     // a short-row face
+  kShiftPathStart = 4,  // first stitch after a shift-path edge (beginning of round)
+};
+
+struct KnitGraph {
+  std::string source_name;  // the input file, for messages
+  std::string element;      // what a stitch's source number counts: "face" or "line"
+
+  // Per stitch.
+  std::vector<StitchType> type;
+  std::vector<std::uint32_t> row;     // 0-based row number in knitting order
+  std::vector<std::uint32_t> source;  // 0-based face index or .st line index
+  std::vector<StitchId> yarn_next;    // kNoStitch at the end of a yarn piece
+  std::vector<YarnLink> yarn_link;    // how the yarn reaches yarn_next
+  std::vector<std::uint8_t> flags;    // StitchFlag bits
+
+  // Per row.
+  std::vector<RowShape> row_shape;
+
+  // Loops, and per stitch the loops it consumes, in order (CSR: taken_first has size N+1).
+  std::vector<Loop> loops;
+  std::vector<std::uint32_t> taken_first;
+  std::vector<std::uint32_t> taken;  // loop indices
+
+  std::vector<ExtraDependency> extra;
+  std::uint32_t mismatch_groups = 0;       // separate groups of mismatched edges
+  std::uint32_t extra_yarn_groups = 0;     // join/split groups knit with an extra yarn piece
+
+  std::uint32_t size() const { return static_cast<std::uint32_t>(type.size()); }
+  std::span<const std::uint32_t> loops_taken_by(StitchId s) const {
+    return {taken.data() + taken_first[s], taken.data() + taken_first[s + 1]};
+  }
+  // Fills taken_first/taken from loops (call after all loops are added).
+  void index_loops();
+  // "face 12 (k, row 7)" or "line 40 (k)".
+  std::string describe(StitchId s) const;
+};
+
+// Checks that yarn links are consistent (each stitch has at most one predecessor), that every
+// stitch consumes exactly the loops its type says (and makes no more than it says: a bind-off
+// border or a stitch graph's open end makes fewer), and that the loop index is current; throws
+// InternalError (a bug) since inputs are validated before.
+void check_consistency(const KnitGraph& graph);
+
+}  // namespace skein

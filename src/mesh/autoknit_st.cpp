@@ -1,0 +1,316 @@
+#include "mesh/autoknit_st.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <charconv>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "common/error.hpp"
+
+namespace skein {
+namespace {
+
+constexpr std::size_t kFieldCount = 10;
+constexpr std::string_view kFieldNames = "yarn type dir in0 in1 out0 out1 x y z";
+constexpr std::int32_t kNone = -1;  // an unused in/out slot
+
+// AutoKnit's letters. Its loop counts (0 in 1 out for a start, 2 in 1 out for a decrease, ...)
+// are the catalogue's loops_in/loops_out of the type each letter becomes.
+struct Letter {
+  char letter;
+  StitchType type;
+};
+constexpr std::array kLetters{
+    Letter{'s', StitchType::co},    Letter{'e', StitchType::bo}, Letter{'k', StitchType::k},
+    Letter{'t', StitchType::tuck},  Letter{'m', StitchType::sl}, Letter{'i', StitchType::kfb},
+    Letter{'d', StitchType::k2tog},
+};
+
+using Slots = std::array<std::int32_t, 2>;  // stitch indices or kNone, in file order
+
+struct Links {
+  Slots in;   // in0 in1: makers of the loops this stitch consumes
+  Slots out;  // out0 out1: takers of the loops this stitch makes
+};
+
+std::vector<std::string_view> split_lines(std::string_view text) {
+  std::vector<std::string_view> lines;
+  while (!text.empty()) {
+    std::size_t end = std::min(text.find('\n'), text.size());
+    std::string_view line = text.substr(0, end);
+    if (line.ends_with('\r')) line.remove_suffix(1);  // CRLF files
+    lines.push_back(line);
+    text.remove_prefix(std::min(end + 1, text.size()));
+  }
+  return lines;
+}
+
+// Splits a line at runs of blanks into `fields`; returns the number of fields found, which
+// may exceed what `fields` holds (the rest are only counted, for the message). A plain loop:
+// find_first_of would call memchr once per character.
+std::size_t split_fields(std::string_view line, std::array<std::string_view, kFieldCount>& fields) {
+  auto is_blank = [](char c) { return c == ' ' || c == '\t'; };
+  std::size_t count = 0;
+  std::size_t at = 0;
+  while (true) {
+    while (at < line.size() && is_blank(line[at])) ++at;
+    if (at == line.size()) return count;
+    std::size_t end = at;
+    while (end < line.size() && !is_blank(line[end])) ++end;
+    if (count < kFieldCount) fields[count] = line.substr(at, end - at);
+    ++count;
+    at = end;
+  }
+}
+
+// from_chars over the whole field: trailing characters are an error too.
+template <typename Number>
+std::errc parse_whole(std::string_view field, Number& value) {
+  const char* last = field.data() + field.size();
+  auto [end, error] = std::from_chars(field.data(), last, value);
+  return error == std::errc() && end != last ? std::errc::invalid_argument : error;
+}
+
+int occurrences(const Slots& slots, std::int32_t index) {
+  return static_cast<int>(std::count(slots.begin(), slots.end(), index));
+}
+
+char letter_of(StitchType type) {
+  for (const Letter& letter : kLetters)
+    if (letter.type == type) return letter.letter;
+  return '?';
+}
+
+// "in0 out0": the slots a stitch with these loop counts must fill (and no others).
+std::string required_slots(const StitchTypeInfo& type) {
+  std::string names;
+  for (int i = 0; i < type.loops_in; ++i) names += fmt::format("in{} ", i);
+  for (int i = 0; i < type.loops_out; ++i) names += fmt::format("out{} ", i);
+  names.pop_back();  // every type has a slot
+  return names;
+}
+
+class StParser {
+ public:
+  StParser(std::string_view text, const std::string& file_name)
+      : file_name_(file_name), lines_(split_lines(text)) {}
+
+  KnitGraph parse() {
+    if (lines_.empty())
+      throw ParseError(file_name_, 1, "", "expected stitch lines, found an empty file");
+    allocate();
+    for (StitchId s = 0; s < size(); ++s) parse_line(s);
+    for (StitchId s = 0; s < size(); ++s) check_mirrored(s);
+    link_yarn();
+    add_loops_and_rows();
+    graph_.index_loops();
+    return std::move(graph_);
+  }
+
+ private:
+  std::uint32_t size() const { return static_cast<std::uint32_t>(lines_.size()); }
+
+  [[noreturn]] void fail(StitchId s, std::string expected) const {
+    throw ParseError(file_name_, std::size_t{s} + 1, std::string(lines_[s]), std::move(expected));
+  }
+
+  void allocate() {
+    const std::uint32_t n = size();
+    graph_.source_name = file_name_;
+    graph_.element = "line";
+    graph_.type.resize(n);
+    graph_.row.resize(n);
+    graph_.source.resize(n);
+    graph_.yarn_next.resize(n);
+    graph_.yarn_link.resize(n);
+    graph_.flags.assign(n, 0);
+    yarn_.resize(n);
+    links_.resize(n);
+  }
+
+  void parse_line(StitchId s) {
+    std::array<std::string_view, kFieldCount> field;
+    std::size_t count = split_fields(lines_[s], field);
+    if (count != kFieldCount) {
+      fail(s, fmt::format("expected {} fields: {}, found {}", kFieldCount, kFieldNames,
+                          count == 0 ? "a blank line" : std::to_string(count)));
+    }
+    graph_.source[s] = s;
+    yarn_[s] = parse_yarn(s, field[0]);
+    graph_.type[s] = parse_type(s, field[1]);
+    check_direction(s, field[2]);
+    Links& links = links_[s];
+    links.in = {parse_index(s, "in0", field[3]), parse_index(s, "in1", field[4])};
+    links.out = {parse_index(s, "out0", field[5]), parse_index(s, "out1", field[6])};
+    check_link_order(s);
+    check_coordinate(s, "x", field[7]);
+    check_coordinate(s, "y", field[8]);
+    check_coordinate(s, "z", field[9]);
+    check_slots_match_type(s);
+  }
+
+  std::uint32_t parse_yarn(StitchId s, std::string_view field) const {
+    std::uint32_t yarn = 0;
+    if (parse_whole(field, yarn) != std::errc())
+      fail(s, fmt::format("expected a yarn id (a non-negative integer), found '{}'", field));
+    return yarn;
+  }
+
+  StitchType parse_type(StitchId s, std::string_view field) const {
+    if (field.size() == 1) {
+      for (const Letter& letter : kLetters)
+        if (letter.letter == field[0]) return letter.type;
+    }
+    fail(s, fmt::format("expected a stitch type s, e, k, t, m, i or d, found '{}'", field));
+  }
+
+  // The direction only matters to AutoKnit's own scheduler; skein checks it and drops it.
+  void check_direction(StitchId s, std::string_view field) const {
+    if (field != "c" && field != "a")
+      fail(s, fmt::format("expected dir c (clockwise) or a (anticlockwise), found '{}'", field));
+  }
+
+  std::int32_t parse_index(StitchId s, std::string_view name, std::string_view field) const {
+    std::int64_t index = 0;
+    std::errc error = parse_whole(field, index);
+    if (error == std::errc::invalid_argument)
+      fail(s, fmt::format("expected {} to be an integer (a stitch index or -1), found '{}'", name,
+                          field));
+    if (error != std::errc() || index < kNone || index >= size())
+      fail(s, fmt::format("expected {} to be -1 or a stitch index 0..{}, found {}", name,
+                          size() - 1, field));
+    return static_cast<std::int32_t>(index);
+  }
+
+  // Stitches are listed in construction order: a loop is made before it is consumed.
+  void check_link_order(StitchId s) const {
+    const Links& links = links_[s];
+    const auto here = static_cast<std::int32_t>(s);
+    for (std::size_t i = 0; i < 2; ++i) {
+      if (links.in[i] >= here)
+        fail(s, fmt::format("expected in{} to name an earlier stitch (< {}), found {}", i, s,
+                            links.in[i]));
+      if (links.out[i] != kNone && links.out[i] <= here)
+        fail(s, fmt::format("expected out{} to name a later stitch (> {}), found {}", i, s,
+                            links.out[i]));
+    }
+  }
+
+  // Positions are for display only; they must still be numbers.
+  void check_coordinate(StitchId s, std::string_view axis, std::string_view field) const {
+    double value = 0;
+    if (parse_whole(field, value) != std::errc())
+      fail(s, fmt::format("expected {} to be a number, found '{}'", axis, field));
+  }
+
+  // Exactly AutoKnit's check_type(): the first loops_in in-slots and the first loops_out
+  // out-slots are set, the others are -1. No tolerance: AutoKnit's samples all comply (tubes
+  // end in 'e' stitches, never in a knit with out0 = -1), so every loop gets a taker.
+  void check_slots_match_type(StitchId s) const {
+    const StitchTypeInfo& type = info(graph_.type[s]);
+    const Links& links = links_[s];
+    bool ok = true;
+    for (std::size_t i = 0; i < 2; ++i) {
+      ok = ok && (links.in[i] != kNone) == (i < type.loops_in);
+      ok = ok && (links.out[i] != kNone) == (i < type.loops_out);
+    }
+    if (!ok) {
+      fail(s,
+           fmt::format("expected a '{}' stitch (loops in/out: {}/{}) to set only {}, found "
+                       "in0 in1 out0 out1 = {} {} {} {}",
+                       letter_of(graph_.type[s]), type.loops_in, type.loops_out,
+                       required_slots(type), links.in[0], links.in[1], links.out[0], links.out[1]));
+    }
+  }
+
+  // Each link is listed on both ends, as often on one as on the other (a decrease may take
+  // both loops of one increase).
+  void check_mirrored(StitchId s) const {
+    const Links& links = links_[s];
+    const auto here = static_cast<std::int32_t>(s);
+    for (std::size_t i = 0; i < 2; ++i) {
+      std::int32_t maker = links.in[i];
+      if (maker != kNone && occurrences(links.in, maker) != occurrences(links_[maker].out, here))
+        fail_unmirrored(s, fmt::format("in{}", i), maker, "out0 out1", links.in, links_[maker].out);
+      std::int32_t taker = links.out[i];
+      if (taker != kNone && occurrences(links.out, taker) != occurrences(links_[taker].in, here))
+        fail_unmirrored(s, fmt::format("out{}", i), taker, "in0 in1", links.out, links_[taker].in);
+    }
+  }
+
+  [[noreturn]] void fail_unmirrored(StitchId s, std::string_view slot, std::int32_t other,
+                                    std::string_view other_slots, const Slots& here,
+                                    const Slots& there) const {
+    fail(s, fmt::format("{} = {} is not mirrored: expected stitch {} (line {}) to name {} {} in "
+                        "its {}, found {} {}",
+                        slot, other, other, other + 1, s,
+                        occurrences(here, other) == 1 ? "once" : "twice", other_slots, there[0],
+                        there[1]));
+  }
+
+  // AutoKnit yarns are helices with no explicit rows: the yarn runs on while the yarn id does.
+  void link_yarn() {
+    for (StitchId s = 0; s < size(); ++s) {
+      bool continues = s + 1 < size() && yarn_[s + 1] == yarn_[s];
+      graph_.yarn_next[s] = continues ? s + 1 : kNoStitch;
+      graph_.yarn_link[s] = continues ? YarnLink::course : YarnLink::none;
+    }
+  }
+
+  // Every in-link is a wale loop; makers come earlier, so one pass gives the rows.
+  void add_loops_and_rows() {
+    std::uint32_t max_row = 0;
+    for (StitchId s = 0; s < size(); ++s) {
+      std::uint32_t row = 0;
+      for (std::int32_t maker : links_[s].in) {
+        if (maker == kNone) continue;
+        auto m = static_cast<StitchId>(maker);
+        graph_.loops.push_back(Loop{m, s, LoopKind::wale});
+        row = std::max(row, graph_.row[m] + 1);
+      }
+      graph_.row[s] = row;
+      max_row = std::max(max_row, row);
+    }
+    graph_.row_shape.assign(std::size_t{max_row} + 1, RowShape::unknown);
+  }
+
+  std::string file_name_;
+  std::vector<std::string_view> lines_;
+  std::vector<std::uint32_t> yarn_;
+  std::vector<Links> links_;
+  KnitGraph graph_;
+};
+
+std::string read_whole_file(const std::string& path) {
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
+                                                       &std::fclose);
+  if (!file) throw IoError(fmt::format("cannot open '{}': {}", path, std::strerror(errno)));
+  std::string text;
+  std::array<char, 1 << 16> buffer;
+  std::size_t got = 0;
+  while ((got = std::fread(buffer.data(), 1, buffer.size(), file.get())) > 0)
+    text.append(buffer.data(), got);
+  if (std::ferror(file.get()))
+    throw IoError(fmt::format("cannot read '{}': {}", path, std::strerror(errno)));
+  return text;
+}
+
+}  // namespace
+
+KnitGraph parse_autoknit_st(std::string_view text, const std::string& file_name) {
+  return StParser(text, file_name).parse();
+}
+
+KnitGraph read_autoknit_st(const std::string& path) {
+  return parse_autoknit_st(read_whole_file(path), path);
+}
+
+}  // namespace skein

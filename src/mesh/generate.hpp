@@ -1,0 +1,42 @@
+// Parametric stitch meshes: flat sheets and tubes built row by row from a row plan. Used by
+// the samples, the randomized tests and the benchmarks.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "mesh/stitch_mesh.hpp"
+
+namespace skein {
+
+// Per row, its stitches from left to right as seen on the right side (chart order). The
+// first row must be cast-on stitches and the last bind-offs; each row consumes exactly the
+// loops the row below makes.
+using RowPlan = std::vector<std::vector<StitchType>>;
+
+enum class Layout : std::uint8_t {
+  sheet,  // open rows knit back and forth, odd rows right to left
+  tube,   // closed rounds, one shift-path up the seam at the first stitch
+};
+
+// Throws Error when a row does not consume what the row below makes.
+StitchMesh build_from_rows(const RowPlan& plan, Layout layout);
+
+// co row, `rows` rows of the repeat (e.g. {k, k, p, p} for k2p2 rib), bo row.
+RowPlan ribbed_rows(std::uint32_t width, std::uint32_t rows, const std::vector<StitchType>& repeat);
+
+// A hat: co, `body_rounds` of knit, then crown decrease rounds in `sections` wedges (a k2tog at
+// the end of each wedge every other round) down to `sections` stitches, then bo.
+RowPlan hat_rows(std::uint32_t circumference, std::uint32_t body_rounds, std::uint32_t sections);
+
+struct RandomShaping {
+  double purl = 0.2;      // share of plain stitches that are purls
+  double increase = 0.05; // chance per stitch of an increase
+  double decrease = 0.05; // chance per stitch of a decrease (s2kp one time in four)
+  std::uint32_t min_width = 4;
+  std::uint32_t max_width = 64;
+};
+RowPlan random_rows(std::uint32_t width, std::uint32_t rows, const RandomShaping& shaping,
+                    std::uint64_t seed);
+
+}  // namespace skein

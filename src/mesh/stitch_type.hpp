@@ -1,0 +1,53 @@
+// The catalogue of stitch types, spelled as knitters spell them. Each entry says how many
+// course edges a face of that type has at the bottom (loops it consumes) and at the top
+// (loops it makes), and how its two wale edges sit (opposite, or side by side on a short-row
+// face).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+
+namespace skein {
+
+enum class StitchType : std::uint8_t {
+  k,      // knit
+  p,      // purl
+  co,     // cast-on: bottom course edge is the border, makes one loop
+  bo,     // bind-off: consumes one loop, top course edge is the border
+  kfb,    // knit front and back: 1 loop in, 2 out
+  m1l,    // make 1 left: 1 in, 2 out (the new loop lifted from the bar)
+  m1r,    // make 1 right
+  yo,     // knit then yarn over: 1 in, 2 out
+  k2tog,  // knit 2 together: 2 in, 1 out (right-leaning)
+  ssk,    // slip, slip, knit: 2 in, 1 out (left-leaning)
+  p2tog,  // purl 2 together
+  s2kp,   // centred double decrease: 3 in, 1 out
+  sr4,    // short-row face with four edges (Fig. 10a): wale edges side by side
+  sr5,    // short-row face with five edges (Fig. 10b): an extra loop at the turn
+  srn,    // short-row face with more than five edges (Fig. 10c): extra segments collapse
+  tnbo,   // extruded three-needle bind-off face of a join: 2 in, bound off
+  sco,    // extruded cast-on face of a split: makes 2 loops, one to each side
+  sl,     // slip: the loop passes through unworked (AutoKnit's miss)
+  tuck,   // tuck: a new loop held with the old one (AutoKnit's tuck)
+};
+
+struct StitchTypeInfo {
+  StitchType type;
+  std::string_view abbreviation;  // standard abbreviation, also the name in files
+  std::string_view name;          // spelled out for reports
+  std::uint8_t bottom_edges;      // course edges at the bottom
+  std::uint8_t top_edges;         // course edges at the top
+  std::uint8_t loops_in;          // loops consumed (a cast-on's bottom edge carries none)
+  std::uint8_t loops_out;         // loops made (a bind-off's top edge carries none)
+  bool wales_adjacent;            // short-row faces: the two wale edges are side by side
+  bool variable_course_edges;     // srn: top course edge count may be larger
+};
+
+const StitchTypeInfo& info(StitchType type);
+std::span<const StitchTypeInfo> stitch_catalogue();
+std::optional<StitchType> stitch_type_from_abbreviation(std::string_view abbreviation);
+inline std::string_view abbreviation(StitchType type) { return info(type).abbreviation; }
+
+}  // namespace skein

@@ -1,0 +1,9 @@
+#include "builtin_targets.hpp"
+
+#include "schedule/schedule_target.hpp"
+
+namespace skein {
+
+void register_builtin_targets(Registry& registry) { register_schedule_target(registry); }
+
+}  // namespace skein
