@@ -54,12 +54,6 @@ const Target& find_target(const Registry& registry, const std::string& name) {
   throw UsageError(fmt::format("unknown target '{}'; known targets: {}", name, known));
 }
 
-const Compilation& require_knittable(const Compilation& c) {
-  if (!c.knittability.knittable)
-    throw Error(fmt::format("{} is not knittable; run 'skein check {}' to see why", c.input, c.input));
-  return c;
-}
-
 int run_check(const std::string& input, bool verbose) {
   Compilation c = compile_model(input, progress_printer(verbose));
   std::cout << check_report(c);
@@ -75,7 +69,10 @@ int run_compile(const Registry& registry, const std::string& input, const std::s
                 const TargetOptions& options, const std::string& output, bool verify, bool verbose) {
   const Target& target = find_target(registry, target_name);
   Compilation c = compile_model(input, progress_printer(verbose));
-  require_knittable(c);
+  if (!c.knittability.knittable) {
+    std::cerr << check_report(c) << fmt::format("skein: nothing written to {}\n", output);
+    return kNotKnittable;
+  }
   write_file_atomically(output, [&](std::ostream& out) { target.emit(c, options, out); });
   std::cout << fmt::format("wrote {} ({} target, {} stitches, {} yarn pieces)\n", output,
                            target.name(), c.knit.size(), c.yarns.size());

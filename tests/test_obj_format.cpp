@@ -335,7 +335,9 @@ TEST(ObjFormat, RejectsFaceWithoutStitchLine) {
   EXPECT_TRUE(fails_at(quad_then("v 0 2 0\n"), 7,
                        "face on line 6 has no '#~s' line after it; expected '#~s TYPE ROLES' "
                        "directly below the 'f' line, found 'v'"));
-  EXPECT_TRUE(fails_at(quad_then("\n#~s k boti\n"), 7, "face on line 6 has no '#~s' line"));
+  EXPECT_TRUE(fails_at(quad_then("\n#~s k boti\n"), 7,
+                       "face on line 6 has no '#~s' line after it; expected '#~s TYPE ROLES' "
+                       "directly below the 'f' line, found an empty line"));
   EXPECT_TRUE(fails_at(quad_then(""), 6,
                        "face on line 6 has no '#~s' line after it; expected '#~s TYPE ROLES', "
                        "found the end of the file"));

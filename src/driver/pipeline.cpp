@@ -92,7 +92,7 @@ void append_yarn_pieces(const Compilation& c, std::string& out) {
   out += fmt::format("  yarn pieces: {}\n", y.size() + c.knit.extra_yarn_groups);
   constexpr std::uint32_t kListed = 20;
   for (std::uint32_t p = 0; p < y.size() && p < kListed; ++p)
-    out += fmt::format("    yarn {}: {} stitches, {} {}\n", p + 1, y.length[p],
+    out += fmt::format("    yarn {}: {} stitch{}, {} {}\n", p + 1, y.length[p], y.length[p] == 1 ? "" : "es",
                        y.ring[p] ? "closes on itself at" : "starts at", c.knit.describe(y.first[p]));
   if (y.size() > kListed) out += fmt::format("    ... and {} more\n", y.size() - kListed);
   if (c.knit.extra_yarn_groups > 0)

@@ -24,7 +24,8 @@ constexpr std::string_view kHeaderLine = "#~skein-stitch-mesh 1";
 constexpr std::string_view kIgnoredKeywords[] = {"vn", "vt", "o", "g", "s", "usemtl", "mtllib",
                                                  "l"};
 
-bool is_blank(char c) { return c == ' ' || c == '\t'; }
+// Word separators; a '\r' can only be the first half of a CRLF line break.
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
 // A word for an error message: quoted, or "the end of the line" when there is none.
 std::string quote(std::string_view word) {
@@ -57,26 +58,40 @@ std::string stitch_type_list() {
   return list;
 }
 
-// One line of the file (without its line break), read word by word.
+// One line of the file, read word by word. It views the rest of the file from the line's start,
+// so that the line's end is found while reading words, not by a separate search.
 class Line {
  public:
-  Line(std::string_view text, std::size_t number) : text_(text), rest_(text), number_(number) {}
-  std::string_view text() const { return text_; }
+  Line(std::string_view from_start, std::size_t number)
+      : from_start_(from_start), rest_(from_start), number_(number) {}
   std::size_t number() const { return number_; }
+
+  // The line without its line break, for error messages.
+  std::string_view text() const {
+    std::string_view line = from_start_.substr(0, from_start_.find('\n'));
+    if (line.ends_with('\r')) line.remove_suffix(1);
+    return line;
+  }
 
   // The next word separated by spaces or tabs, or an empty view at the end of the line.
   std::string_view next_word() {
     std::size_t begin = 0;
     while (begin < rest_.size() && is_blank(rest_[begin])) ++begin;
     std::size_t end = begin;
-    while (end < rest_.size() && !is_blank(rest_[end])) ++end;
+    while (end < rest_.size() && !is_blank(rest_[end]) && rest_[end] != '\n') ++end;
     std::string_view word = rest_.substr(begin, end - begin);
     rest_.remove_prefix(end);
     return word;
   }
 
+  // The text after this line's line break.
+  std::string_view following_text() const {
+    std::size_t end = rest_.starts_with('\n') ? 0 : rest_.find('\n');
+    return end == std::string_view::npos ? std::string_view() : rest_.substr(end + 1);
+  }
+
  private:
-  std::string_view text_;
+  std::string_view from_start_;
   std::string_view rest_;
   std::size_t number_;
 };
@@ -100,6 +115,7 @@ class Parser {
     throw ParseError(file_name_, line.number(), std::string(line.text()), std::move(expected));
   }
   void reserve_capacity();
+  void parse_line(Line& line);
   void parse_header(Line& line, std::string_view keyword);
   void parse_statement(Line& line, std::string_view keyword);
   void parse_vertex(Line& line);
@@ -127,22 +143,10 @@ class Parser {
 StitchMesh Parser::parse() && {
   reserve_capacity();
   std::size_t number = 0;
-  for (std::size_t begin = 0; begin < text_.size();) {
-    std::size_t end = std::min(text_.find('\n', begin), text_.size());
-    std::string_view text = text_.substr(begin, end - begin);
-    if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
-    begin = end + 1;
-    Line line(text, ++number);
-    std::string_view keyword = line.next_word();
-    if (!seen_header_) {
-      if (!keyword.empty()) parse_header(line, keyword);
-      continue;
-    }
-    if (pending_face_ && keyword != "#~s")
-      fail(line, fmt::format("face on line {} has no '#~s' line after it; expected '#~s TYPE "
-                             "ROLES' directly below the 'f' line, found {}",
-                             pending_face_->number(), quote(keyword)));
-    parse_statement(line, keyword);
+  for (std::string_view rest = text_; !rest.empty();) {
+    Line line(rest, ++number);
+    parse_line(line);
+    rest = line.following_text();
   }
   if (!seen_header_)
     fail(Line("", 1), fmt::format("the file is empty; expected the header '{}'", kHeaderLine));
@@ -169,6 +173,20 @@ void Parser::reserve_capacity() {
   }
   constexpr std::size_t kCornersPerFace = 4;  // most stitches are quads; only a hint
   builder_.reserve(vertices, faces, faces * kCornersPerFace);
+}
+
+void Parser::parse_line(Line& line) {
+  std::string_view keyword = line.next_word();
+  if (!seen_header_) {
+    if (!keyword.empty()) parse_header(line, keyword);
+    return;
+  }
+  if (pending_face_ && keyword != "#~s")
+    fail(line, fmt::format("face on line {} has no '#~s' line after it; expected '#~s TYPE "
+                           "ROLES' directly below the 'f' line, found {}",
+                           pending_face_->number(),
+                           keyword.empty() ? "an empty line" : quote(keyword)));
+  parse_statement(line, keyword);
 }
 
 void Parser::parse_header(Line& line, std::string_view keyword) {
