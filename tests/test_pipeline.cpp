@@ -1,6 +1,7 @@
 // Knit graph, dependency graph, knittability and Algorithm 1 on generated and hand-built meshes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <boost/range/iterator_range.hpp>
 #include <random>
 #include <sstream>
@@ -106,6 +107,25 @@ TEST(Knittability, Fig13WithExtraYarnForBothGroupsIsKnittable) {
   EXPECT_EQ(c.knit.extra_yarn_groups, 2u);
   EXPECT_EQ(c.yarns.size(), 4u);  // lower piece, two single cast-ons, row B
   checked_order(c);
+}
+
+// Algorithm 1 with four yarn pieces: row B must wait for the single cast-on T3 (face 14),
+// so its piece is held, T3's piece moves to the top of the stack, and row B resumes after it.
+TEST(Schedule, HeldPieceResumesAfterThePieceItWaitsForIsMovedToTheTop) {
+  StitchMesh mesh = testing::fig13_deadlock_mesh();
+  for (Edge e : mesh.edges())
+    if (mesh.kind(e) == EdgeKind::join) mesh.mismatch_yarn[e] = {MismatchYarn::Kind::extra, Face()};
+  Compilation c = compile_stitch_mesh(std::move(mesh), "fig13-extra");
+  EXPECT_EQ(checked_order(c), (std::vector<StitchId>{0, 1, 2, 3, 7, 6, 5, 4, 12, 8, 9, 10, 13, 11}));
+  EXPECT_EQ(c.schedule.holds, 1u);
+  auto hold = std::find_if(c.schedule.events.begin(), c.schedule.events.end(),
+                           [](const Event& e) { return e.kind == EventKind::hold; });
+  ASSERT_NE(hold, c.schedule.events.end());
+  EXPECT_EQ(hold->stitch, 11u);
+  EXPECT_EQ(hold->waits_for, 13u);
+  EXPECT_EQ(count(c.schedule, EventKind::resume), 1u);
+  EXPECT_EQ(count(c.schedule, EventKind::yarn_start), 4u);
+  EXPECT_EQ(count(c.schedule, EventKind::yarn_end), 4u);
 }
 
 TEST(Knittability, Fig13WithTheSameSidesYarnForBothGroupsIsKnittable) {
