@@ -55,6 +55,25 @@ TEST(KnitGraph, SheetIsOneYarnKnitRowByRowWithTurns) {
   EXPECT_EQ(count(c.schedule, EventKind::row_start), 5u);
 }
 
+// Loop slots count left to right in each stitch's own frame, on both ends of the loop.
+TEST(KnitGraph, LoopSlotsRunLeftToRightOnBothEnds) {
+  RowPlan plan = {{T::co, T::co, T::co}, {T::k, T::kfb, T::k}, {T::k2tog, T::k, T::k}, {T::bo, T::bo, T::bo}};
+  for (Layout layout : {Layout::sheet, Layout::tube}) {
+    Compilation c = compile_stitch_mesh(build_from_rows(plan, layout), "slots");
+    const KnitGraph& g = c.knit;
+    auto made = g.loops_made_by(4);  // the kfb
+    ASSERT_EQ(made.size(), 2u);
+    EXPECT_EQ(g.loops[made[0]].taker, 6u);  // left half of the k2tog above
+    EXPECT_EQ(g.loops[made[1]].taker, 7u);
+    auto taken = g.loops_taken_by(6);  // the k2tog: the k's loop, then the kfb's left loop
+    ASSERT_EQ(taken.size(), 2u);
+    EXPECT_EQ(g.loops[taken[0]].maker, 3u);
+    EXPECT_EQ(g.loops[taken[1]].maker, 4u);
+    EXPECT_EQ(g.loops[taken[1]].maker_slot, 0);
+    EXPECT_EQ(g.loops[taken[1]].taker_slot, 1);
+  }
+}
+
 TEST(KnitGraph, TubeWithShiftPathIsOneHelix) {
   Compilation c = compile_stitch_mesh(build_from_rows(hat_rows(24, 6, 6), Layout::tube), "hat");
   ASSERT_TRUE(c.knittability.knittable) << check_report(c);

@@ -78,25 +78,63 @@ void link_yarn(const StitchMesh& m, KnitGraph& g) {
   }
 }
 
-// Loops are listed from the consuming stitch's side, in its counter-clockwise edge order, so
-// each stitch's loops come left to right; loops nobody consumes are listed from the maker.
-void add_loops(const StitchMesh& m, KnitGraph& g) {
+// The first halfedge of a face after the run of edges with role `after` (the face's corner
+// where a left-to-right walk of the other course run begins).
+Halfedge first_after(const StitchMesh& m, Face f, EdgeRole after) {
+  for (Halfedge h : m.halfedges(f))
+    if (m.role[m.prev(h)] == after && m.role[h] != after) return h;
+  return *m.halfedges(f).begin();
+}
+
+// Does the stitch on this side of h make a loop that crosses h?
+bool makes_loop_across(const StitchMesh& m, Halfedge h) {
+  Halfedge t = m.twin(h);
+  if (!t.valid()) return false;  // a bind-off's top, or an open wale edge
+  return m.role[h] == EdgeRole::top || (is_wale(m.role[h]) && m.role[t] == EdgeRole::bottom);
+}
+
+// Per halfedge where a stitch makes a loop: its slot, left to right in the stitch's frame.
+// Counter-clockwise the top run goes right to left, so the ranks are reversed.
+std::vector<std::uint8_t> maker_slots(const StitchMesh& m) {
+  std::vector<std::uint8_t> slot(m.num_halfedges(), 0);
+  std::vector<Halfedge> making;
   for (Face f : m.faces()) {
-    for (Halfedge h : m.halfedges(f)) {
+    making.clear();
+    Halfedge h = first_after(m, f, EdgeRole::bottom);
+    for (std::uint32_t i = 0; i < m.degree(f); ++i, h = m.next(h))
+      if (makes_loop_across(m, h)) making.push_back(h);
+    for (std::size_t k = 0; k < making.size(); ++k)
+      slot[making[k].index()] = static_cast<std::uint8_t>(making.size() - 1 - k);
+  }
+  return slot;
+}
+
+// Loops are listed from the consuming stitch's side, walking its edges left to right (from
+// the corner after its top run), so taker slots count up; loops nobody consumes are listed
+// from the maker.
+void add_loops(const StitchMesh& m, KnitGraph& g) {
+  std::vector<std::uint8_t> made_slot = maker_slots(m);
+  for (Face f : m.faces()) {
+    std::uint8_t taker_slot = 0;
+    Halfedge h = first_after(m, f, EdgeRole::top);
+    for (std::uint32_t i = 0; i < m.degree(f); ++i, h = m.next(h)) {
       Halfedge t = m.twin(h);
       if (!t.valid()) continue;
       EdgeRole mine = m.role[h], theirs = m.role[t];
       StitchId self = f.index(), other = m.face(t).index();
+      auto take = [&](StitchId maker, LoopKind kind, std::uint8_t slot) {
+        g.loops.push_back({maker, self, kind, slot, taker_slot++});
+      };
       if (mine == EdgeRole::bottom && theirs == EdgeRole::top)
-        g.loops.push_back({other, self, LoopKind::wale});
+        take(other, LoopKind::wale, made_slot[t.index()]);
       else if (mine == EdgeRole::bottom && is_wale(theirs))
-        g.loops.push_back({other, self, LoopKind::perpendicular});
+        take(other, LoopKind::perpendicular, made_slot[t.index()]);
       else if (is_wale(mine) && theirs == EdgeRole::top)
-        g.loops.push_back({other, self, LoopKind::perpendicular});
+        take(other, LoopKind::perpendicular, made_slot[t.index()]);
       else if (mine == EdgeRole::bottom && theirs == EdgeRole::bottom)
-        g.loops.push_back({kNoStitch, self, LoopKind::split});
+        take(kNoStitch, LoopKind::split, 0);
       else if (mine == EdgeRole::top && theirs == EdgeRole::top)
-        g.loops.push_back({self, kNoStitch, LoopKind::joined});
+        g.loops.push_back({self, kNoStitch, LoopKind::joined, made_slot[h.index()], 0});
     }
   }
   g.index_loops();

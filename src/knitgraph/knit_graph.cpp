@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "common/error.hpp"
 
 namespace skein {
@@ -30,15 +32,30 @@ const char* row_shape_name(RowShape shape) {
   return "?";
 }
 
-void KnitGraph::index_loops() {
-  taken_first.assign(size() + 1, 0);
+namespace {
+
+// Counting sort of loop indices by stitch, then by slot within each stitch: linear.
+void index_by(const std::vector<Loop>& loops, std::uint32_t stitches, StitchId Loop::*stitch,
+              std::uint8_t Loop::*slot, std::vector<std::uint32_t>& first,
+              std::vector<std::uint32_t>& index) {
+  first.assign(stitches + 1, 0);
   for (const Loop& l : loops)
-    if (l.taker != kNoStitch) ++taken_first[l.taker + 1];
-  for (std::uint32_t s = 0; s < size(); ++s) taken_first[s + 1] += taken_first[s];
-  taken.assign(taken_first.back(), 0);
-  std::vector<std::uint32_t> fill(taken_first.begin(), taken_first.end() - 1);
+    if (l.*stitch != kNoStitch) ++first[l.*stitch + 1];
+  for (std::uint32_t s = 0; s < stitches; ++s) first[s + 1] += first[s];
+  index.assign(first.back(), 0);
+  std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
   for (std::uint32_t i = 0; i < loops.size(); ++i)
-    if (loops[i].taker != kNoStitch) taken[fill[loops[i].taker]++] = i;
+    if (loops[i].*stitch != kNoStitch) index[fill[loops[i].*stitch]++] = i;
+  for (std::uint32_t s = 0; s < stitches; ++s)
+    std::sort(index.begin() + first[s], index.begin() + first[s + 1],
+              [&](std::uint32_t a, std::uint32_t b) { return loops[a].*slot < loops[b].*slot; });
+}
+
+}  // namespace
+
+void KnitGraph::index_loops() {
+  index_by(loops, size(), &Loop::taker, &Loop::taker_slot, taken_first, taken);
+  index_by(loops, size(), &Loop::maker, &Loop::maker_slot, made_first, made);
 }
 
 std::string KnitGraph::describe(StitchId s) const {
@@ -50,7 +67,8 @@ std::string KnitGraph::describe(StitchId s) const {
 void check_consistency(const KnitGraph& g) {
   const std::uint32_t n = g.size();
   SKEIN_ASSERT(g.row.size() == n && g.source.size() == n && g.yarn_next.size() == n &&
-                   g.yarn_link.size() == n && g.flags.size() == n && g.taken_first.size() == n + 1,
+                   g.yarn_link.size() == n && g.flags.size() == n && g.taken_first.size() == n + 1 &&
+                   g.made_first.size() == n + 1,
                "per-stitch arrays have one entry per stitch");
   std::vector<std::uint8_t> has_prev(n, 0);
   for (StitchId s = 0; s < n; ++s) {

@@ -36,6 +36,10 @@ struct Loop {
   StitchId maker = kNoStitch;  // kNoStitch: supplied by a split cast-on not yet extruded
   StitchId taker = kNoStitch;  // kNoStitch: joined, or the open end of a stitch graph
   LoopKind kind = LoopKind::wale;
+  // Which of the maker's loops this is, and which of the taker's, each counted left to right
+  // in that stitch's own frame (wale up, right side facing).
+  std::uint8_t maker_slot = 0;
+  std::uint8_t taker_slot = 0;
 };
 
 // A dependency beyond yarn order and loops: one stitch must wait for another because of how
@@ -80,10 +84,10 @@ struct KnitGraph {
   // Per row.
   std::vector<RowShape> row_shape;
 
-  // Loops, and per stitch the loops it consumes, in order (CSR: taken_first has size N+1).
+  // Loops, and per stitch the loops it consumes and makes, each by slot (CSR, size N+1).
   std::vector<Loop> loops;
-  std::vector<std::uint32_t> taken_first;
-  std::vector<std::uint32_t> taken;  // loop indices
+  std::vector<std::uint32_t> taken_first, taken;  // loop indices by taker_slot
+  std::vector<std::uint32_t> made_first, made;    // loop indices by maker_slot
 
   std::vector<ExtraDependency> extra;
   std::uint32_t mismatch_groups = 0;       // separate groups of mismatched edges
@@ -93,7 +97,10 @@ struct KnitGraph {
   std::span<const std::uint32_t> loops_taken_by(StitchId s) const {
     return {taken.data() + taken_first[s], taken.data() + taken_first[s + 1]};
   }
-  // Fills taken_first/taken from loops (call after all loops are added).
+  std::span<const std::uint32_t> loops_made_by(StitchId s) const {
+    return {made.data() + made_first[s], made.data() + made_first[s + 1]};
+  }
+  // Fills the taken and made indices from loops (call after all loops are added).
   void index_loops();
   // "face 12 (k, row 7)" or "line 40 (k)".
   std::string describe(StitchId s) const;

@@ -270,16 +270,30 @@ class StParser {
     std::uint32_t max_row = 0;
     for (StitchId s = 0; s < size(); ++s) {
       std::uint32_t row = 0;
-      for (std::int32_t maker : links_[s].in) {
+      for (std::uint8_t in_slot = 0; in_slot < links_[s].in.size(); ++in_slot) {
+        std::int32_t maker = links_[s].in[in_slot];
         if (maker == kNone) continue;
         auto m = static_cast<StitchId>(maker);
-        graph_.loops.push_back(Loop{m, s, LoopKind::wale});
+        graph_.loops.push_back(Loop{m, s, LoopKind::wale, out_slot(m, s, in_slot), in_slot});
         row = std::max(row, graph_.row[m] + 1);
       }
       graph_.row[s] = row;
       max_row = std::max(max_row, row);
     }
     graph_.row_shape.assign(std::size_t{max_row} + 1, RowShape::unknown);
+  }
+
+  // Which out slot of `maker` feeds in slot `in_slot` of `taker`: the n-th mention of the
+  // taker among the maker's outs, for the n-th mention of the maker among the taker's ins.
+  std::uint8_t out_slot(StitchId maker, StitchId taker, std::uint8_t in_slot) const {
+    int nth = 0;
+    for (std::uint8_t i = 0; i < in_slot; ++i)
+      nth += links_[taker].in[i] == static_cast<std::int32_t>(maker);
+    const Slots& outs = links_[maker].out;
+    for (std::uint8_t o = 0; o < outs.size(); ++o)
+      if (outs[o] == static_cast<std::int32_t>(taker) && nth-- == 0) return o;
+    SKEIN_ASSERT(false, "links are mirrored (checked while parsing)");
+    return 0;
   }
 
   std::string file_name_;
