@@ -140,9 +140,8 @@ TEST(AutoknitSt, TinyGraphMapsEveryField) {
     EXPECT_EQ(graph.loops_taken_by(taker)[0], taker - 3);
   }
   for (StitchId s = 0; s < 3; ++s) EXPECT_TRUE(graph.loops_taken_by(s).empty());
-  EXPECT_TRUE(graph.extra.empty());
-  EXPECT_EQ(graph.mismatch_groups, 0u);
-  EXPECT_EQ(graph.extra_yarn_groups, 0u);
+  EXPECT_TRUE(graph.groups.empty());
+  EXPECT_TRUE(graph.mismatch_edges.empty());
   EXPECT_EQ(graph.describe(4), "line 5 (k)");
   EXPECT_NO_THROW(check_consistency(graph));
 }

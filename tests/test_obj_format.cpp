@@ -50,9 +50,8 @@ testing::AssertionResult same_mesh(const StitchMesh& a, const StitchMesh& b) {
   if (a.num_vertices() != b.num_vertices() || a.num_faces() != b.num_faces() ||
       a.num_edges() != b.num_edges())
     return testing::AssertionFailure()
-           << "sizes differ: " << a.num_vertices() << "/" << a.num_faces() << "/"
-           << a.num_edges() << " vs " << b.num_vertices() << "/" << b.num_faces() << "/"
-           << b.num_edges();
+           << "sizes differ: " << a.num_vertices() << "/" << a.num_faces() << "/" << a.num_edges()
+           << " vs " << b.num_vertices() << "/" << b.num_faces() << "/" << b.num_edges();
   for (Vertex v : a.vertices())
     if (!same_bits(a.position[v], b.position[v]))
       return testing::AssertionFailure() << "position of vertex " << v.index() + 1;
@@ -154,7 +153,9 @@ v 0 1 0
 f 1 2 3 4
 )";
 
-std::string quad_then(std::string_view lines) { return std::string(kQuad) + std::string(lines); }
+std::string quad_then(std::string_view lines) {
+  return std::string(kQuad) + std::string(lines);
+}
 
 TEST(ObjFormat, ParsesHandWrittenTube) {
   StitchMesh mesh = parse_stitch_mesh(kTube, "tube.obj");
@@ -178,7 +179,8 @@ TEST(ObjFormat, ParsesHandWrittenTube) {
 TEST(ObjFormat, WritesTubeAsDocumented) {
   StitchMesh mesh = parse_stitch_mesh(kTube, "tube.obj");
   std::string expected(kTube);
-  expected.erase(expected.find("# a tube"), std::string_view("# a tube of three stitches\n").size());
+  expected.erase(expected.find("# a tube"),
+                 std::string_view("# a tube of three stitches\n").size());
   EXPECT_EQ(written(mesh), expected);
 }
 
@@ -198,8 +200,8 @@ TEST(ObjFormat, ParsesYarnChoiceOnJoin) {
 }
 
 TEST(ObjFormat, RoundTripsGeneratedSheets) {
-  expect_round_trip(build_from_rows(ribbed_rows(7, 5, {StitchType::k, StitchType::p}),
-                                    Layout::sheet));
+  expect_round_trip(
+      build_from_rows(ribbed_rows(7, 5, {StitchType::k, StitchType::p}), Layout::sheet));
   for (std::uint64_t seed = 1; seed <= 5; ++seed)
     expect_round_trip(build_from_rows(random_rows(12, 20, {}, seed), Layout::sheet));
 }
@@ -241,8 +243,8 @@ f 1 2 3 4
 
 TEST(ObjFormat, AcceptsObjCornerFormsAndRelativeIndices) {
   // The back of the quad: every edge again, the other way round.
-  StitchMesh mesh = parse_stitch_mesh(quad_then("#~s k boti\nf -1 3//3 2/2/2 1/1\n#~s k boti\n"),
-                                      "forms.obj");
+  StitchMesh mesh =
+      parse_stitch_mesh(quad_then("#~s k boti\nf -1 3//3 2/2/2 1/1\n#~s k boti\n"), "forms.obj");
   ASSERT_EQ(mesh.num_faces(), 2u);
   EXPECT_EQ(corners(mesh, Face(1)), "4 3 2 1 ");
   StitchMesh relative =
@@ -250,11 +252,11 @@ TEST(ObjFormat, AcceptsObjCornerFormsAndRelativeIndices) {
   EXPECT_EQ(corners(relative, Face(1)), "2 5 3 ");
 }
 
-TEST(ObjFormat, IgnoresOtherObjStatementsCommentsTabsAndCrlf) {
+TEST(ObjFormat, IgnoresOtherObjStatementsAndAcceptsTabsAndCrlf) {
   std::string text =
       "\r\n#~skein-stitch-mesh\t1\r\n# from a modeller\r\nmtllib a.mtl\r\no swatch\r\n"
       "g front\r\ns off\r\nusemtl wool\r\nvn 0 0 1\r\nvt 0 0\r\n  v\t0 0 0\r\nv 1 0 0  \r\n"
-      "v 1 1 0\r\nv 0 1 0\r\nl 1 2\r\nf 1 2 3 4\r\n#~s\tk  boti\r\n#comment\r\n";
+      "v 1 1 0\r\nv 0 1 0\r\nl 1 2\r\n#comment\r\nf 1 2 3 4\r\n#~s\tk  boti";  // no final break
   StitchMesh mesh = parse_stitch_mesh(text, "crlf.obj");
   ASSERT_EQ(mesh.num_faces(), 1u);
   EXPECT_EQ(mesh.position[Vertex(1)], (Vec3{1, 0, 0}));
@@ -265,8 +267,7 @@ TEST(ObjFormat, WritesShiftMarksAfterFacesAndYarnLast) {
   StitchMesh mesh = parse_stitch_mesh(kJoin, "join.obj");
   mesh.shift_path[mesh.find_edge(Vertex(1), Vertex(2))] = 1;
   std::string text = written(mesh);
-  EXPECT_EQ(text.substr(text.rfind("#~s co")),
-            "#~s co tobi\n#~shift 2 3\n#~yarn 3 4 own 1\n");
+  EXPECT_EQ(text.substr(text.rfind("#~s co")), "#~s co tobi\n#~shift 2 3\n#~yarn 3 4 own 1\n");
 }
 
 TEST(ObjFormat, ErrorQuotesFileLineAndText) {
@@ -298,8 +299,8 @@ TEST(ObjFormat, RejectsMissingOrWrongHeader) {
 }
 
 TEST(ObjFormat, RejectsMalformedVertices) {
-  EXPECT_TRUE(fails_at("#~skein-stitch-mesh 1\nv 0 x 0\n", 2,
-                       "expected 3 numbers after 'v', found 'x'"));
+  EXPECT_TRUE(
+      fails_at("#~skein-stitch-mesh 1\nv 0 x 0\n", 2, "expected 3 numbers after 'v', found 'x'"));
   EXPECT_TRUE(fails_at("#~skein-stitch-mesh 1\nv 0 0\n", 2,
                        "expected 3 numbers after 'v', found the end of the line"));
   EXPECT_TRUE(fails_at("#~skein-stitch-mesh 1\nv 0 0 0 1\n", 2,
@@ -324,9 +325,10 @@ TEST(ObjFormat, RejectsFacesNamingMissingVertices) {
                        "vertex -11 does not exist (the file has 10 vertices so far)"));
   EXPECT_TRUE(fails_at(ten_vertices + "f 0 1 2\n", 12, "vertex numbers start at 1"));
   // Vertices defined below a face do not count.
-  EXPECT_TRUE(fails_at("#~skein-stitch-mesh 1\nv 0 0 0\nv 1 0 0\nf 1 2 3\n#~s sr4 bti\n"
-                       "v 1 1 0\n",
-                       4, "vertex 3 does not exist (the file has 2 vertices so far)"));
+  EXPECT_TRUE(
+      fails_at("#~skein-stitch-mesh 1\nv 0 0 0\nv 1 0 0\nf 1 2 3\n#~s sr4 bti\n"
+               "v 1 1 0\n",
+               4, "vertex 3 does not exist (the file has 2 vertices so far)"));
   EXPECT_TRUE(fails_at(quad_then("").replace(kQuad.find("f 1 2 3 4"), 9, "f 1 2 x 4"), 6,
                        "expected vertex numbers after 'f' (such as 3, -1 or 3/1/2), found 'x'"));
 }
@@ -366,8 +368,8 @@ TEST(ObjFormat, RejectsWrongNumberOfRoles) {
 TEST(ObjFormat, RejectsUnknownRoleLetter) {
   EXPECT_TRUE(fails_at(quad_then("#~s k boxi\n"), 7,
                        "unknown edge role 'x' in 'boxi'; expected b (bottom), t (top)"));
-  EXPECT_TRUE(fails_at(quad_then("#~s k boti p\n"), 7,
-                       "expected nothing after the edge roles, found 'p'"));
+  EXPECT_TRUE(
+      fails_at(quad_then("#~s k boti p\n"), 7, "expected nothing after the edge roles, found 'p'"));
 }
 
 TEST(ObjFormat, RejectsShiftMarkOffTheMesh) {
@@ -383,8 +385,9 @@ TEST(ObjFormat, RejectsShiftMarkOffTheMesh) {
 }
 
 TEST(ObjFormat, RejectsMalformedYarnChoices) {
-  EXPECT_TRUE(fails_at(quad_then("#~s k boti\n#~yarn 1 2 mine\n"), 8,
-                       "expected 'extra' or 'own FACE' after the two vertex numbers, found 'mine'"));
+  EXPECT_TRUE(
+      fails_at(quad_then("#~s k boti\n#~yarn 1 2 mine\n"), 8,
+               "expected 'extra' or 'own FACE' after the two vertex numbers, found 'mine'"));
   EXPECT_TRUE(fails_at(quad_then("#~s k boti\n#~yarn 1 2\n"), 8, "found the end of the line"));
   EXPECT_TRUE(fails_at(quad_then("#~s k boti\n#~yarn 1 2 own 2\n"), 8,
                        "face 2 does not exist (the file has 1 faces so far)"));
@@ -410,9 +413,9 @@ TEST(ObjFormat, RejectsUnknownKeywordsAndSkeinLines) {
 
 TEST(ObjFormat, LetsMeshErrorsFromBuildThrough) {
   // Both faces run 2 -> 3: one of them is listed clockwise.
-  EXPECT_THROW(parse_stitch_mesh(quad_then("#~s k boti\nv 2 0 0\nf 2 3 5\n#~s sr4 bti\n"),
-                                 "flipped.obj"),
-               MeshError);
+  EXPECT_THROW(
+      parse_stitch_mesh(quad_then("#~s k boti\nv 2 0 0\nf 2 3 5\n#~s sr4 bti\n"), "flipped.obj"),
+      MeshError);
 }
 
 TEST(ObjFormat, ReadsFixtureFile) {

@@ -105,12 +105,12 @@ TEST(Knittability, TubeWithoutShiftPathIsACycleAlongTheRound) {
 
 TEST(Knittability, Fig13DeadlockIsFoundAndExplained) {
   Compilation c = compile_stitch_mesh(testing::fig13_deadlock_mesh(), "fig13");
-  EXPECT_EQ(c.knit.mismatch_groups, 2u);
-  EXPECT_EQ(c.knit.extra_yarn_groups, 0u);
+  ASSERT_EQ(c.knit.groups.size(), 2u);
+  for (const MismatchGroup& g : c.knit.groups) EXPECT_EQ(g.yarn, MismatchYarnUse::own);
   ASSERT_FALSE(c.knittability.knittable);
   int own_yarn_arrows = 0;
   for (const CycleStep& step : c.knittability.cycle)
-    own_yarn_arrows += step.reason == DependencyReason::join_own_yarn;
+    own_yarn_arrows += step.reason == DependencyReason::joined_loop;
   EXPECT_GE(own_yarn_arrows, 1);
   EXPECT_NE(c.knittability.hint.find("special deadlock of paper §4.1: separate groups"),
             std::string::npos)
@@ -123,19 +123,21 @@ TEST(Knittability, Fig13WithExtraYarnForBothGroupsIsKnittable) {
     if (mesh.kind(e) == EdgeKind::join) mesh.mismatch_yarn[e] = {MismatchYarn::Kind::extra, Face()};
   Compilation c = compile_stitch_mesh(std::move(mesh), "fig13-extra");
   ASSERT_TRUE(c.knittability.knittable) << check_report(c);
-  EXPECT_EQ(c.knit.extra_yarn_groups, 2u);
-  EXPECT_EQ(c.yarns.size(), 4u);  // lower piece, two single cast-ons, row B
+  EXPECT_EQ(c.yarns.size(), 6u);  // lower piece, two single cast-ons, row B, two extra yarns
+  EXPECT_EQ(c.knit.size(), 16u);  // two extruded three-needle bind-off stitches
   checked_order(c);
 }
 
-// Algorithm 1 with four yarn pieces: row B must wait for the single cast-on T3 (face 14),
-// so its piece is held, T3's piece moves to the top of the stack, and row B resumes after it.
+// Algorithm 1 with six yarn pieces: row B must wait for the single cast-on T3 (face 14),
+// so its piece is held, T3's piece moves to the top of the stack, and row B resumes after it;
+// the two extruded three-needle bind-offs (extra yarn) come last, when both sides are done.
 TEST(Schedule, HeldPieceResumesAfterThePieceItWaitsForIsMovedToTheTop) {
   StitchMesh mesh = testing::fig13_deadlock_mesh();
   for (Edge e : mesh.edges())
     if (mesh.kind(e) == EdgeKind::join) mesh.mismatch_yarn[e] = {MismatchYarn::Kind::extra, Face()};
   Compilation c = compile_stitch_mesh(std::move(mesh), "fig13-extra");
-  EXPECT_EQ(checked_order(c), (std::vector<StitchId>{0, 1, 2, 3, 7, 6, 5, 4, 12, 8, 9, 10, 13, 11}));
+  EXPECT_EQ(checked_order(c),
+            (std::vector<StitchId>{0, 1, 2, 3, 7, 6, 5, 4, 12, 8, 9, 10, 13, 11, 14, 15}));
   EXPECT_EQ(c.schedule.holds, 1u);
   auto hold = std::find_if(c.schedule.events.begin(), c.schedule.events.end(),
                            [](const Event& e) { return e.kind == EventKind::hold; });
@@ -143,8 +145,8 @@ TEST(Schedule, HeldPieceResumesAfterThePieceItWaitsForIsMovedToTheTop) {
   EXPECT_EQ(hold->stitch, 11u);
   EXPECT_EQ(hold->waits_for, 13u);
   EXPECT_EQ(count(c.schedule, EventKind::resume), 1u);
-  EXPECT_EQ(count(c.schedule, EventKind::yarn_start), 4u);
-  EXPECT_EQ(count(c.schedule, EventKind::yarn_end), 4u);
+  EXPECT_EQ(count(c.schedule, EventKind::yarn_start), 6u);
+  EXPECT_EQ(count(c.schedule, EventKind::yarn_end), 6u);
 }
 
 TEST(Knittability, Fig13WithTheSameSidesYarnForBothGroupsIsKnittable) {

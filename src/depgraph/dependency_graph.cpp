@@ -5,7 +5,6 @@
 #include <boost/range/iterator_range.hpp>
 
 #include <algorithm>
-#include <map>
 #include <set>
 
 #include "common/error.hpp"
@@ -16,6 +15,16 @@ namespace {
 using Vertex = std::uint32_t;
 using ArcList = std::vector<std::pair<Vertex, Vertex>>;
 
+DependencyReason reason_for(LoopKind kind) {
+  switch (kind) {
+    case LoopKind::wale: return DependencyReason::loop;
+    case LoopKind::perpendicular: return DependencyReason::perpendicular_loop;
+    case LoopKind::joined: return DependencyReason::joined_loop;
+    case LoopKind::split: return DependencyReason::split_loop;
+  }
+  return DependencyReason::loop;
+}
+
 void collect_arcs(const KnitGraph& g, ArcList& arcs, std::vector<DependencyArc>& props) {
   auto add = [&](StitchId before, StitchId after, DependencyReason reason) {
     arcs.emplace_back(before, after);
@@ -24,11 +33,7 @@ void collect_arcs(const KnitGraph& g, ArcList& arcs, std::vector<DependencyArc>&
   for (StitchId s = 0; s < g.size(); ++s)
     if (g.yarn_next[s] != kNoStitch) add(s, g.yarn_next[s], DependencyReason::yarn);
   for (const Loop& l : g.loops)
-    if (l.maker != kNoStitch && l.taker != kNoStitch)
-      add(l.maker, l.taker,
-          l.kind == LoopKind::perpendicular ? DependencyReason::perpendicular_loop
-                                            : DependencyReason::loop);
-  for (const ExtraDependency& d : g.extra) add(d.before, d.after, d.reason);
+    if (l.maker != kNoStitch && l.taker != kNoStitch) add(l.maker, l.taker, reason_for(l.kind));
 }
 
 // Kahn's algorithm: removes every stitch that can be ordered; what stays lies on or behind a
@@ -111,42 +116,33 @@ std::vector<CycleStep> shortest_cycle_through(const DependencyGraph& deps, Verte
   return steps;
 }
 
-bool is_own_yarn(DependencyReason r) {
-  return r == DependencyReason::join_own_yarn || r == DependencyReason::split_own_yarn;
+bool crosses_join_or_split(DependencyReason r) {
+  return r == DependencyReason::joined_loop || r == DependencyReason::split_loop;
 }
 
-// The row whose yarn works a join or split, and the pair of rows the mismatched edges lie on.
-struct OwnYarnUse {
-  std::pair<std::uint32_t, std::uint32_t> rows;
-  std::uint32_t side_row;
-  std::uint32_t group;
-};
-
-OwnYarnUse own_yarn_use(const KnitGraph& g, const ExtraDependency& d) {
-  std::uint32_t a = g.row[d.before], b = g.row[d.after];
-  StitchId own = d.reason == DependencyReason::join_own_yarn ? d.after : d.before;
-  return {{std::min(a, b), std::max(a, b)}, g.row[own], d.group};
+// The mismatch group whose loop an arrow of a cycle follows.
+std::uint32_t group_of(const KnitGraph& g, const CycleStep& step) {
+  for (const MismatchEdge& e : g.mismatch_edges)
+    for (std::uint32_t l : e.loop)
+      if (l != kNoGroup && g.loops[l].maker == step.waited_for && g.loops[l].taker == step.waiter)
+        return e.group;
+  return kNoGroup;
 }
 
 // Paper §4.1's special case: two or more separate join/split groups between the same rows,
 // knit with the yarn of different sides.
 bool is_special_deadlock(const KnitGraph& g, const std::vector<CycleStep>& cycle) {
-  std::set<std::pair<std::uint32_t, std::uint32_t>> cycle_rows;
-  for (const ExtraDependency& d : g.extra)
-    for (const CycleStep& step : cycle)
-      if (is_own_yarn(step.reason) && d.after == step.waiter && d.before == step.waited_for)
-        cycle_rows.insert(own_yarn_use(g, d).rows);
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::set<std::pair<std::uint32_t, std::uint32_t>>>
-      groups_and_sides;
-  for (const ExtraDependency& d : g.extra) {
-    OwnYarnUse use = own_yarn_use(g, d);
-    if (cycle_rows.contains(use.rows)) groups_and_sides[use.rows].insert({use.group, use.side_row});
-  }
-  for (const auto& [rows, uses] : groups_and_sides) {
+  for (const CycleStep& step : cycle) {
+    std::uint32_t in_cycle = crosses_join_or_split(step.reason) ? group_of(g, step) : kNoGroup;
+    if (in_cycle == kNoGroup) continue;
+    const MismatchGroup& a = g.groups[in_cycle];
     std::set<std::uint32_t> groups, sides;
-    for (auto [group, side] : uses) {
-      groups.insert(group);
-      sides.insert(side);
+    for (std::uint32_t i = 0; i < g.groups.size(); ++i) {
+      const MismatchGroup& b = g.groups[i];
+      if (b.yarn != MismatchYarnUse::own || b.rows[0] != a.rows[0] || b.rows[1] != a.rows[1])
+        continue;
+      groups.insert(i);
+      sides.insert(g.row[b.own_side]);
     }
     if (groups.size() >= 2 && sides.size() >= 2) return true;
   }
@@ -157,7 +153,7 @@ std::string hint_for(const KnitGraph& g, const std::vector<CycleStep>& cycle) {
   bool only_yarn = std::all_of(cycle.begin(), cycle.end(),
                                [](const CycleStep& s) { return s.reason == DependencyReason::yarn; });
   bool own_yarn = std::any_of(cycle.begin(), cycle.end(),
-                              [](const CycleStep& s) { return is_own_yarn(s.reason); });
+                              [](const CycleStep& s) { return crosses_join_or_split(s.reason); });
   if (only_yarn)
     return fmt::format(
         "row {} is a closed round whose yarn never ends: mark one of its wale edges as a "
@@ -180,7 +176,7 @@ std::string hint_for(const KnitGraph& g, const std::vector<CycleStep>& cycle) {
 DependencyGraph build_dependency_graph(const KnitGraph& g) {
   ArcList arcs;
   std::vector<DependencyArc> props;
-  arcs.reserve(g.size() + g.loops.size() + g.extra.size());
+  arcs.reserve(g.size() + g.loops.size());
   props.reserve(arcs.capacity());
   collect_arcs(g, arcs, props);
   return DependencyGraph(boost::edges_are_unsorted_multi_pass, arcs.begin(), arcs.end(),

@@ -9,6 +9,7 @@
 #include "knitgraph/from_mesh.hpp"
 #include "mesh/autoknit_st.hpp"
 #include "mesh/obj_format.hpp"
+#include "transforms/mismatches.hpp"
 
 namespace skein {
 namespace {
@@ -45,6 +46,7 @@ Compilation compile_stitch_mesh(StitchMesh mesh, const std::string& name,
                                 const StageObserver& observe) {
   timed(observe, "validate", [&] { validate(mesh); });
   KnitGraph graph = timed(observe, "knit graph", [&] { return build_knit_graph(mesh, name); });
+  timed(observe, "mismatches", [&] { make_mismatches_knittable(graph); });
   Compilation c = compile_knit_graph(std::move(graph), name, observe);
   c.mesh = std::move(mesh);
   return c;
@@ -89,15 +91,27 @@ std::string row_counts(const KnitGraph& g) {
 
 void append_yarn_pieces(const Compilation& c, std::string& out) {
   const YarnPieces& y = c.yarns;
-  out += fmt::format("  yarn pieces: {}\n", y.size() + c.knit.extra_yarn_groups);
+  out += fmt::format("  yarn pieces: {}\n", y.size());
   constexpr std::uint32_t kListed = 20;
   for (std::uint32_t p = 0; p < y.size() && p < kListed; ++p)
     out += fmt::format("    yarn {}: {} stitch{}, {} {}\n", p + 1, y.length[p], y.length[p] == 1 ? "" : "es",
                        y.ring[p] ? "closes on itself at" : "starts at", c.knit.describe(y.first[p]));
   if (y.size() > kListed) out += fmt::format("    ... and {} more\n", y.size() - kListed);
-  if (c.knit.extra_yarn_groups > 0)
-    out += fmt::format("    + {} extra yarn piece(s) for joining/splitting groups\n",
-                       c.knit.extra_yarn_groups);
+}
+
+void append_mismatch_groups(const KnitGraph& g, std::string& out) {
+  out += fmt::format("  mismatch groups: {}\n", g.groups.size());
+  for (std::uint32_t i = 0; i < g.groups.size(); ++i) {
+    const MismatchGroup& grp = g.groups[i];
+    std::string yarn;
+    if (grp.kind == MismatchKind::join || grp.kind == MismatchKind::split)
+      yarn = grp.yarn == MismatchYarnUse::extra ? ", extra yarn"
+                                                : fmt::format(", yarn of row {}", g.row[grp.own_side] + 1);
+    if (grp.kind == MismatchKind::expanding && grp.edges % 2 == 1) yarn = ", odd: one tied end";
+    out += fmt::format("    group {}: {}, {} edge{} between rows {} and {}{}\n", i + 1,
+                       mismatch_kind_name(grp.kind), grp.edges, grp.edges == 1 ? "" : "s",
+                       grp.rows[0] + 1, grp.rows[1] + 1, yarn);
+  }
 }
 
 }  // namespace
@@ -109,7 +123,7 @@ std::string check_report(const Compilation& c) {
   out += fmt::format("  stitches: {} ({})\n", g.size(), stitch_counts(g));
   out += fmt::format("  rows: {}\n", row_counts(g));
   append_yarn_pieces(c, out);
-  out += fmt::format("  mismatch groups: {}\n", g.mismatch_groups);
+  append_mismatch_groups(g, out);
   if (c.knittability.knittable) {
     out += fmt::format("  schedule: {} stitches, {} holds\n", c.schedule.stitches,
                        c.schedule.holds);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include <fmt/format.h>
+
 #include "common/error.hpp"
 
 namespace skein {
@@ -112,8 +114,9 @@ std::vector<std::uint8_t> maker_slots(const StitchMesh& m) {
 // Loops are listed from the consuming stitch's side, walking its edges left to right (from
 // the corner after its top run), so taker slots count up; loops nobody consumes are listed
 // from the maker.
-void add_loops(const StitchMesh& m, KnitGraph& g) {
+std::vector<std::uint32_t> add_loops(const StitchMesh& m, KnitGraph& g) {
   std::vector<std::uint8_t> made_slot = maker_slots(m);
+  std::vector<std::uint32_t> loop_at(m.num_halfedges(), kNoGroup);  // loop listed from h's side
   for (Face f : m.faces()) {
     std::uint8_t taker_slot = 0;
     Halfedge h = first_after(m, f, EdgeRole::top);
@@ -123,6 +126,7 @@ void add_loops(const StitchMesh& m, KnitGraph& g) {
       EdgeRole mine = m.role[h], theirs = m.role[t];
       StitchId self = f.index(), other = m.face(t).index();
       auto take = [&](StitchId maker, LoopKind kind, std::uint8_t slot) {
+        loop_at[h.index()] = static_cast<std::uint32_t>(g.loops.size());
         g.loops.push_back({maker, self, kind, slot, taker_slot++});
       };
       if (mine == EdgeRole::bottom && theirs == EdgeRole::top)
@@ -133,11 +137,14 @@ void add_loops(const StitchMesh& m, KnitGraph& g) {
         take(other, LoopKind::perpendicular, made_slot[t.index()]);
       else if (mine == EdgeRole::bottom && theirs == EdgeRole::bottom)
         take(kNoStitch, LoopKind::split, 0);
-      else if (mine == EdgeRole::top && theirs == EdgeRole::top)
+      else if (mine == EdgeRole::top && theirs == EdgeRole::top) {
+        loop_at[h.index()] = static_cast<std::uint32_t>(g.loops.size());
         g.loops.push_back({self, kNoStitch, LoopKind::joined, made_slot[h.index()], 0});
+      }
     }
   }
   g.index_loops();
+  return loop_at;
 }
 
 // Union-find over edges: mismatched edges of one kind that share a vertex form a group.
@@ -174,29 +181,54 @@ std::vector<std::uint32_t> group_mismatches(const StitchMesh& m, std::uint32_t& 
   return group;
 }
 
-// Joins and splits knit with one side's yarn make the other side wait (paper §4.1); groups
-// left to an extra yarn piece add none here: that piece is extruded by the transforms.
-void add_mismatch_dependencies(const StitchMesh& m, KnitGraph& g) {
-  std::vector<std::uint32_t> group = group_mismatches(m, g.mismatch_groups);
-  std::vector<std::uint8_t> group_uses_extra(g.mismatch_groups, 0);
+MismatchKind mismatch_kind(EdgeKind k) {
+  switch (k) {
+    case EdgeKind::join: return MismatchKind::join;
+    case EdgeKind::split: return MismatchKind::split;
+    case EdgeKind::contracting_perpendicular: return MismatchKind::contracting;
+    default: return MismatchKind::expanding;
+  }
+}
+
+// The yarn a join or split edge asks for; every edge of a group must agree.
+void apply_yarn_choice(const StitchMesh& m, Edge e, MismatchGroup& group, Edge& chosen_by) {
+  const MismatchYarn& y = m.mismatch_yarn[e];
+  if (y.kind == MismatchYarn::Kind::by_default) return;
+  MismatchYarnUse use = y.kind == MismatchYarn::Kind::own ? MismatchYarnUse::own : MismatchYarnUse::extra;
+  StitchId side = use == MismatchYarnUse::own ? y.side.index() : kNoStitch;
+  if (chosen_by.valid() && (group.yarn != use || (use == MismatchYarnUse::own &&
+                                                  m.row[Face(group.own_side)] != m.row[y.side])))
+    throw MeshError(fmt::format("{} and {} belong to one {} group but ask for different yarns; "
+                                "expected one choice per group",
+                                describe(m, chosen_by), describe(m, e), edge_kind_name(m.kind(e))));
+  group.yarn = use;
+  group.own_side = side;
+  chosen_by = e;
+}
+
+// Records every mismatched edge with the loops that meet on it, grouped (paper §3.2). Groups
+// without a yarn choice default to an extra yarn piece, so separate groups on one row never
+// deadlock (§4.1) unless a user asks for it.
+void record_mismatches(const StitchMesh& m, KnitGraph& g, const std::vector<std::uint32_t>& loop_at) {
+  std::uint32_t count = 0;
+  std::vector<std::uint32_t> group = group_mismatches(m, count);
+  g.groups.assign(count, MismatchGroup{});
+  std::vector<Edge> chosen_by(count);
   for (Edge e : m.edges()) {
     EdgeKind k = m.kind(e);
-    if (k != EdgeKind::join && k != EdgeKind::split) continue;
-    const MismatchYarn& y = m.mismatch_yarn[e];
-    if (y.kind != MismatchYarn::Kind::own) {
-      group_uses_extra[group[e.index()]] = 1;
-      continue;
-    }
-    Halfedge h = m.halfedge(e);
-    StitchId own = y.side.index();
-    StitchId other = m.face(h) == y.side ? m.face(m.twin(h)).index() : m.face(h).index();
-    if (k == EdgeKind::join)
-      g.extra.push_back({other, own, DependencyReason::join_own_yarn, group[e.index()]});
-    else
-      g.extra.push_back({own, other, DependencyReason::split_own_yarn, group[e.index()]});
+    if (!is_mismatch(k)) continue;
+    MismatchGroup& grp = g.groups[group[e.index()]];
+    grp.kind = mismatch_kind(k);
+    Halfedge h = m.halfedge(e), t = m.twin(h);
+    if (grp.edges++ == 0)
+      grp.rows[0] = std::min(m.row[m.face(h)], m.row[m.face(t)]),
+      grp.rows[1] = std::max(m.row[m.face(h)], m.row[m.face(t)]);
+    apply_yarn_choice(m, e, grp, chosen_by[group[e.index()]]);
+    MismatchEdge me{group[e.index()], {loop_at[h.index()], loop_at[t.index()]},
+                    {m.tail(h).index(), m.head(h).index()}};
+    if (me.loop[0] == kNoGroup) std::swap(me.loop[0], me.loop[1]);
+    g.mismatch_edges.push_back(me);
   }
-  g.extra_yarn_groups =
-      static_cast<std::uint32_t>(std::count(group_uses_extra.begin(), group_uses_extra.end(), 1));
 }
 
 void flag_stitches(const StitchMesh& m, KnitGraph& g) {
@@ -246,8 +278,7 @@ KnitGraph build_knit_graph(const StitchMesh& mesh, const std::string& source_nam
   g.yarn_link.assign(n, YarnLink::none);
   g.flags.assign(n, 0);
   link_yarn(mesh, g);
-  add_loops(mesh, g);
-  add_mismatch_dependencies(mesh, g);
+  record_mismatches(mesh, g, add_loops(mesh, g));
   flag_stitches(mesh, g);
   shape_rows(mesh, g);
   return g;

@@ -14,10 +14,20 @@ const char* explain(DependencyReason reason) {
     case DependencyReason::loop: return "it consumes its loop";
     case DependencyReason::perpendicular_loop:
       return "it consumes its loop across a perpendicular mismatched edge";
-    case DependencyReason::join_own_yarn:
-      return "its yarn works the three-needle bind-off that needs that stitch's loop";
-    case DependencyReason::split_own_yarn:
-      return "it is pulled through the cast-on that stitch's yarn makes along the split";
+    case DependencyReason::joined_loop:
+      return "it joins that stitch's loop in a three-needle bind-off";
+    case DependencyReason::split_loop:
+      return "it is pulled through the loop that stitch casts on along the split";
+  }
+  return "?";
+}
+
+const char* mismatch_kind_name(MismatchKind kind) {
+  switch (kind) {
+    case MismatchKind::join: return "joining";
+    case MismatchKind::split: return "splitting";
+    case MismatchKind::contracting: return "contracting perpendicular";
+    case MismatchKind::expanding: return "expanding perpendicular";
   }
   return "?";
 }
@@ -58,7 +68,23 @@ void KnitGraph::index_loops() {
   index_by(loops, size(), &Loop::maker, &Loop::maker_slot, made_first, made);
 }
 
+StitchId KnitGraph::add_stitch(StitchType t, std::uint32_t r, std::uint32_t src,
+                               std::uint8_t stitch_flags) {
+  type.push_back(t);
+  row.push_back(r);
+  source.push_back(src);
+  yarn_next.push_back(kNoStitch);
+  yarn_link.push_back(YarnLink::none);
+  flags.push_back(stitch_flags);
+  return size() - 1;
+}
+
 std::string KnitGraph::describe(StitchId s) const {
+  if (flags[s] & kExtruded) {
+    const MismatchEdge& e = mismatch_edges[extruded_at[s - first_extruded]];
+    return fmt::format("extruded {} on edge {}-{} (row {})", abbreviation(type[s]), e.vertex[0] + 1,
+                       e.vertex[1] + 1, row[s] + 1);
+  }
   if (element == "face")
     return fmt::format("face {} ({}, row {})", source[s] + 1, abbreviation(type[s]), row[s] + 1);
   return fmt::format("{} {} ({})", element, source[s] + 1, abbreviation(type[s]));
@@ -81,16 +107,17 @@ void check_consistency(const KnitGraph& g) {
                                               g.describe(next)));
     has_prev[next] = 1;
   }
-  // Each stitch makes and takes as many loops as its type says, plus those that cross a
-  // perpendicular mismatched edge.
+  // Every loop is made by one stitch and consumed by one (the transforms gave joins and
+  // splits their stitches); each stitch takes as many loops as its type says.
   std::vector<std::int32_t> made(n, 0), took(n, 0);
   for (const Loop& l : g.loops) {
-    SKEIN_ASSERT(l.maker == kNoStitch || l.maker < n, "loop maker in range");
+    SKEIN_ASSERT(l.maker < n, "every loop has a maker in range");
     SKEIN_ASSERT(l.taker == kNoStitch || l.taker < n, "loop taker in range");
     SKEIN_ASSERT(l.maker != l.taker, "no stitch consumes its own loop");
-    int across = l.kind == LoopKind::perpendicular ? 1 : 0;
-    if (l.maker != kNoStitch) made[l.maker] += 1 - across;
-    if (l.taker != kNoStitch) took[l.taker] += 1 - across;
+    SKEIN_ASSERT(l.taker != kNoStitch || g.element == "line",
+                 fmt::format("the loop {} makes is consumed or bound off", g.describe(l.maker)));
+    ++made[l.maker];
+    if (l.taker != kNoStitch) ++took[l.taker];
   }
   for (StitchId s = 0; s < n; ++s) {
     SKEIN_ASSERT(made[s] <= info(g.type[s]).loops_out,

@@ -42,21 +42,40 @@ struct Loop {
   std::uint8_t taker_slot = 0;
 };
 
-// A dependency beyond yarn order and loops: one stitch must wait for another because of how
-// a mismatched edge is knit (paper §4.1).
+
+// Why one stitch waits for another (paper §4.1); says which arrow of a cycle is which.
 enum class DependencyReason : std::uint8_t {
-  yarn,                 // the previous stitch along the yarn
-  loop,                 // the stitch that made a loop this one consumes
-  perpendicular_loop,   // ... across a perpendicular mismatched edge
-  join_own_yarn,        // a join knit with this side's yarn needs the other side's loop
-  split_own_yarn,       // a split cast on with the other side's yarn must come first
+  yarn,                // the previous stitch along the yarn
+  loop,                // the stitch that made a loop this one consumes
+  perpendicular_loop,  // ... across a perpendicular mismatched edge
+  joined_loop,         // ... joined to it by a three-needle bind-off
+  split_loop,          // ... cast on along a split
 };
 const char* explain(DependencyReason reason);  // "it consumes its loop"
 
-struct ExtraDependency {
-  StitchId before, after;
-  DependencyReason reason;
-  std::uint32_t group;  // which mismatch group asked for it
+enum class MismatchKind : std::uint8_t { join, split, contracting, expanding };
+const char* mismatch_kind_name(MismatchKind kind);
+
+// Which yarn works a join or split (paper §3.2): an extra piece, or one side's own yarn.
+enum class MismatchYarnUse : std::uint8_t { extra, own };
+
+inline constexpr std::uint32_t kNoGroup = std::numeric_limits<std::uint32_t>::max();
+
+// A group of mismatched edges of one kind that touch each other.
+struct MismatchGroup {
+  MismatchKind kind;
+  MismatchYarnUse yarn = MismatchYarnUse::extra;
+  StitchId own_side = kNoStitch;  // with `own`: a stitch on the side whose yarn is used
+  std::uint32_t edges = 0;
+  std::uint32_t rows[2] = {0, 0};  // the rows on either side of its first edge, lower first
+};
+
+// One mismatched edge: the loops that meet on it (a join's two joined loops, a split's two
+// cast-on loops, or the one loop crossing a perpendicular edge) and its vertices, for messages.
+struct MismatchEdge {
+  std::uint32_t group;
+  std::uint32_t loop[2] = {kNoGroup, kNoGroup};
+  std::uint32_t vertex[2];  // 0-based mesh vertices
 };
 
 enum class RowShape : std::uint8_t { open, closed, short_row, unknown };
@@ -67,6 +86,7 @@ enum StitchFlag : std::uint8_t {
   kBesideMismatch = 1,  // touches a mismatched edge
   kShortRowEnd = 2,     // a short-row face
   kShiftPathStart = 4,  // first stitch after a shift-path edge (beginning of round)
+  kExtruded = 8,        // added by the transforms along a join or split (no face of its own)
 };
 
 struct KnitGraph {
@@ -89,9 +109,12 @@ struct KnitGraph {
   std::vector<std::uint32_t> taken_first, taken;  // loop indices by taker_slot
   std::vector<std::uint32_t> made_first, made;    // loop indices by maker_slot
 
-  std::vector<ExtraDependency> extra;
-  std::uint32_t mismatch_groups = 0;       // separate groups of mismatched edges
-  std::uint32_t extra_yarn_groups = 0;     // join/split groups knit with an extra yarn piece
+  std::vector<MismatchGroup> groups;
+  std::vector<MismatchEdge> mismatch_edges;
+  // Stitches from `first_extruded` on were added by the transforms; extruded_at[s -
+  // first_extruded] is the mismatched edge each sits on.
+  StitchId first_extruded = kNoStitch;
+  std::vector<std::uint32_t> extruded_at;  // index into mismatch_edges
 
   std::uint32_t size() const { return static_cast<std::uint32_t>(type.size()); }
   std::span<const std::uint32_t> loops_taken_by(StitchId s) const {
@@ -102,14 +125,16 @@ struct KnitGraph {
   }
   // Fills the taken and made indices from loops (call after all loops are added).
   void index_loops();
+  // Appends a stitch with no yarn link yet; returns its id.
+  StitchId add_stitch(StitchType type, std::uint32_t row, std::uint32_t source, std::uint8_t flags);
   // "face 12 (k, row 7)" or "line 40 (k)".
   std::string describe(StitchId s) const;
 };
 
-// Checks that yarn links are consistent (each stitch has at most one predecessor), that every
-// stitch consumes exactly the loops its type says (and makes no more than it says: a bind-off
-// border or a stitch graph's open end makes fewer), and that the loop index is current; throws
-// InternalError (a bug) since inputs are validated before.
+// Checks the knit graph the targets consume: yarn links consistent (each stitch has at most
+// one predecessor); every loop made once and consumed once (only a stitch graph may leave an
+// open end); every stitch consumes exactly the loops its type says and makes no more; the loop
+// index current. Throws InternalError (a bug): inputs are validated before.
 void check_consistency(const KnitGraph& graph);
 
 }  // namespace skein

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cstdint>
@@ -21,11 +22,12 @@ constexpr std::string_view kHeaderKeyword = "#~skein-stitch-mesh";
 constexpr std::string_view kVersion = "1";
 constexpr std::string_view kHeaderLine = "#~skein-stitch-mesh 1";
 // OBJ statements that say nothing about a stitch mesh.
-constexpr std::string_view kIgnoredKeywords[] = {"vn", "vt", "o", "g", "s", "usemtl", "mtllib",
-                                                 "l"};
+constexpr std::string_view kIgnoredKeywords[] = {"vn", "vt",     "o",      "g",
+                                                 "s",  "usemtl", "mtllib", "l"};
 
-// Word separators; a '\r' can only be the first half of a CRLF line break.
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+bool is_blank(char c) {
+  return c == ' ' || c == '\t';
+}
 
 // A word for an error message: quoted, or "the end of the line" when there is none.
 std::string quote(std::string_view word) {
@@ -43,11 +45,16 @@ std::errc parse_number(std::string_view word, T& value) {
 
 std::optional<EdgeRole> role_from_letter(char letter) {
   switch (letter) {
-    case 'b': return EdgeRole::bottom;
-    case 't': return EdgeRole::top;
-    case 'i': return EdgeRole::wale_in;
-    case 'o': return EdgeRole::wale_out;
-    default: return std::nullopt;
+    case 'b':
+      return EdgeRole::bottom;
+    case 't':
+      return EdgeRole::top;
+    case 'i':
+      return EdgeRole::wale_in;
+    case 'o':
+      return EdgeRole::wale_out;
+    default:
+      return std::nullopt;
   }
 }
 
@@ -58,40 +65,26 @@ std::string stitch_type_list() {
   return list;
 }
 
-// One line of the file, read word by word. It views the rest of the file from the line's start,
-// so that the line's end is found while reading words, not by a separate search.
+// One line of the file (without its line break), read word by word.
 class Line {
  public:
-  Line(std::string_view from_start, std::size_t number)
-      : from_start_(from_start), rest_(from_start), number_(number) {}
+  Line(std::string_view text, std::size_t number) : text_(text), rest_(text), number_(number) {}
+  std::string_view text() const { return text_; }
   std::size_t number() const { return number_; }
-
-  // The line without its line break, for error messages.
-  std::string_view text() const {
-    std::string_view line = from_start_.substr(0, from_start_.find('\n'));
-    if (line.ends_with('\r')) line.remove_suffix(1);
-    return line;
-  }
 
   // The next word separated by spaces or tabs, or an empty view at the end of the line.
   std::string_view next_word() {
     std::size_t begin = 0;
     while (begin < rest_.size() && is_blank(rest_[begin])) ++begin;
     std::size_t end = begin;
-    while (end < rest_.size() && !is_blank(rest_[end]) && rest_[end] != '\n') ++end;
+    while (end < rest_.size() && !is_blank(rest_[end])) ++end;
     std::string_view word = rest_.substr(begin, end - begin);
     rest_.remove_prefix(end);
     return word;
   }
 
-  // The text after this line's line break.
-  std::string_view following_text() const {
-    std::size_t end = rest_.starts_with('\n') ? 0 : rest_.find('\n');
-    return end == std::string_view::npos ? std::string_view() : rest_.substr(end + 1);
-  }
-
  private:
-  std::string_view from_start_;
+  std::string_view text_;
   std::string_view rest_;
   std::size_t number_;
 };
@@ -143,10 +136,13 @@ class Parser {
 StitchMesh Parser::parse() && {
   reserve_capacity();
   std::size_t number = 0;
-  for (std::string_view rest = text_; !rest.empty();) {
-    Line line(rest, ++number);
+  for (std::size_t begin = 0; begin < text_.size();) {
+    std::size_t end = std::min(text_.find('\n', begin), text_.size());
+    std::string_view text = text_.substr(begin, end - begin);
+    if (text.ends_with('\r')) text.remove_suffix(1);
+    begin = end + 1;
+    Line line(text, ++number);
     parse_line(line);
-    rest = line.following_text();
   }
   if (!seen_header_)
     fail(Line("", 1), fmt::format("the file is empty; expected the header '{}'", kHeaderLine));
@@ -182,10 +178,10 @@ void Parser::parse_line(Line& line) {
     return;
   }
   if (pending_face_ && keyword != "#~s")
-    fail(line, fmt::format("face on line {} has no '#~s' line after it; expected '#~s TYPE "
-                           "ROLES' directly below the 'f' line, found {}",
-                           pending_face_->number(),
-                           keyword.empty() ? "an empty line" : quote(keyword)));
+    fail(line,
+         fmt::format("face on line {} has no '#~s' line after it; expected '#~s TYPE "
+                     "ROLES' directly below the 'f' line, found {}",
+                     pending_face_->number(), keyword.empty() ? "an empty line" : quote(keyword)));
   parse_statement(line, keyword);
 }
 
@@ -244,8 +240,8 @@ void Parser::parse_face(Line& line) {
   for (std::string_view word = line.next_word(); !word.empty(); word = line.next_word())
     face_vertices_.push_back(resolve_face_vertex(line, word));
   if (face_vertices_.size() < 3)
-    fail(line, fmt::format("expected at least 3 vertices after 'f', found {}",
-                           face_vertices_.size()));
+    fail(line,
+         fmt::format("expected at least 3 vertices after 'f', found {}", face_vertices_.size()));
   pending_face_ = line;
 }
 
@@ -270,8 +266,9 @@ void Parser::parse_stitch(Line& line) {
     fail(line, "expected '#~s' only directly below an 'f' line; the line above is not a face");
   std::string_view type_word = line.next_word();
   if (type_word.empty())
-    fail(line, "expected a stitch type and edge roles after '#~s' (such as '#~s k boti'), found "
-               "the end of the line");
+    fail(line,
+         "expected a stitch type and edge roles after '#~s' (such as '#~s k boti'), found "
+         "the end of the line");
   std::optional<StitchType> type = stitch_type_from_abbreviation(type_word);
   if (!type)
     fail(line, fmt::format("unknown stitch type '{}'; expected one of {}", type_word,
@@ -298,8 +295,8 @@ void Parser::parse_stitch(Line& line) {
 void Parser::parse_directive(Line& line, std::string_view keyword) {
   if (keyword == "#~s") return parse_stitch(line);
   if (keyword == "#~shift" || keyword == "#~yarn") return parse_edge_mark(line, keyword);
-  fail(line, fmt::format("unknown skein line '{}'; expected '#~s', '#~shift' or '#~yarn'",
-                         keyword));
+  fail(line,
+       fmt::format("unknown skein line '{}'; expected '#~s', '#~shift' or '#~yarn'", keyword));
 }
 
 void Parser::parse_edge_mark(Line& line, std::string_view directive) {
@@ -316,8 +313,8 @@ Vertex Parser::parse_vertex_number(Line& line, std::string_view directive) const
   std::string_view word = line.next_word();
   std::uint32_t number = 0;
   if (parse_number(word, number) != std::errc{})
-    fail(line, fmt::format("expected two vertex numbers after '{}', found {}", directive,
-                           quote(word)));
+    fail(line,
+         fmt::format("expected two vertex numbers after '{}', found {}", directive, quote(word)));
   if (number == 0 || number > builder_.num_vertices())
     fail(line, fmt::format("vertex {} does not exist (the file has {} vertices so far)", number,
                            builder_.num_vertices()));
@@ -349,8 +346,8 @@ void Parser::expect_end(Line& line, std::string_view after) const {
 // Edges exist only once the builder has linked the faces, so marks are resolved last.
 void Parser::apply_edge_marks(StitchMesh& mesh) const {
   for (const EdgeMark& mark : edge_marks_) {
-    std::string what = fmt::format("{} {} {}", mark.directive(), mark.a.index() + 1,
-                                   mark.b.index() + 1);
+    std::string what =
+        fmt::format("{} {} {}", mark.directive(), mark.a.index() + 1, mark.b.index() + 1);
     Edge e = mesh.find_edge(mark.a, mark.b);
     if (!e.valid())
       fail(mark.line, fmt::format("{}: vertices {} and {} share no edge; expected the two ends "

@@ -115,6 +115,7 @@ Vertex StitchMeshBuilder::add_vertex(Vec3 p) {
 Face StitchMeshBuilder::add_face(std::span<const Vertex> vertices, std::span<const EdgeRole> roles,
                                  StitchType type) {
   SKEIN_ASSERT(vertices.size() == roles.size(), "one role per face edge");
+  SKEIN_ASSERT(vertices.size() >= 3, "a face has at least three corners (callers check input)");
   Face f(mesh_.num_faces());
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     mesh_.he_tail_.push_back(vertices[i]);

@@ -54,8 +54,10 @@ inline bool is_mismatch(EdgeKind k) {
 struct MismatchYarn {
   enum class Kind : std::uint8_t { by_default, extra, own };
   Kind kind = Kind::by_default;
-  Face side;  // with `own`: the face whose yarn is used
-  bool operator==(const MismatchYarn&) const = default;
+  Face side;  // with `own`: the face whose yarn is used (ignored otherwise)
+  bool operator==(const MismatchYarn& o) const {
+    return kind == o.kind && (kind != Kind::own || side == o.side);
+  }
 };
 
 class StitchMesh {

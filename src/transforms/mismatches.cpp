@@ -1,0 +1,176 @@
+#include "transforms/mismatches.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <numeric>
+
+#include "common/error.hpp"
+
+namespace skein {
+namespace {
+
+// Position of every stitch along the yarn (pieces one after another): orders the edges of a
+// group the way its neighbours are knit.
+std::vector<std::uint32_t> yarn_order(const KnitGraph& g) {
+  std::vector<std::uint8_t> has_prev(g.size(), 0);
+  for (StitchId s = 0; s < g.size(); ++s)
+    if (g.yarn_next[s] != kNoStitch) has_prev[g.yarn_next[s]] = 1;
+  std::vector<std::uint32_t> order(g.size(), kNoStitch);
+  std::uint32_t next = 0;
+  for (StitchId head = 0; head < g.size(); ++head)
+    if (!has_prev[head])
+      for (StitchId s = head; s != kNoStitch && order[s] == kNoStitch; s = g.yarn_next[s])
+        order[s] = next++;
+  for (StitchId s = 0; s < g.size(); ++s)  // yarn that closes on itself: left as it is
+    if (order[s] == kNoStitch) order[s] = next++;
+  return order;
+}
+
+class MismatchTransform {
+ public:
+  explicit MismatchTransform(KnitGraph& g) : g_(g), order_(yarn_order(g)), removed_(g.loops.size(), 0) {}
+
+  void run() && {
+    g_.first_extruded = g_.size();
+    std::vector<std::vector<std::uint32_t>> edges_of(g_.groups.size());
+    for (std::uint32_t e = 0; e < g_.mismatch_edges.size(); ++e)
+      edges_of[g_.mismatch_edges[e].group].push_back(e);
+    for (std::uint32_t grp = 0; grp < g_.groups.size(); ++grp) transform(grp, edges_of[grp]);
+    drop_removed_loops();
+    g_.index_loops();
+  }
+
+ private:
+  void transform(std::uint32_t grp, std::vector<std::uint32_t>& edges) {
+    const MismatchGroup& group = g_.groups[grp];
+    sort_along_yarn(edges);
+    bool extra = group.yarn == MismatchYarnUse::extra;
+    switch (group.kind) {
+      case MismatchKind::join:
+        return extra ? extrude(edges, StitchType::tnbo) : for_each_own(group, edges, &MismatchTransform::join_with_own_yarn);
+      case MismatchKind::split:
+        return extra ? extrude(edges, StitchType::sco) : for_each_own(group, edges, &MismatchTransform::split_with_own_yarn);
+      case MismatchKind::contracting:
+        for (std::uint32_t e : edges) become_decrease(g_.loops[loop_of(e)].taker);
+        return;
+      case MismatchKind::expanding:
+        for (std::uint32_t e : edges) become_increase(g_.loops[loop_of(e)].maker);
+        return;
+    }
+  }
+
+  std::uint32_t loop_of(std::uint32_t edge) const { return g_.mismatch_edges[edge].loop[0]; }
+
+  // A stitch beside the edge: the maker of a joined loop or the taker of a split loop.
+  StitchId side_stitch(std::uint32_t loop) const {
+    const Loop& l = g_.loops[loop];
+    return l.kind == LoopKind::joined ? l.maker : l.taker;
+  }
+
+  void sort_along_yarn(std::vector<std::uint32_t>& edges) const {
+    std::sort(edges.begin(), edges.end(), [&](std::uint32_t a, std::uint32_t b) {
+      return order_[side_stitch(loop_of(a))] < order_[side_stitch(loop_of(b))];
+    });
+  }
+
+  // One extruded stitch per edge, on a new row and a new yarn piece along the group.
+  void extrude(const std::vector<std::uint32_t>& edges, StitchType type) {
+    std::uint32_t row = static_cast<std::uint32_t>(g_.row_shape.size());
+    g_.row_shape.push_back(RowShape::open);
+    StitchId previous = kNoStitch;
+    for (std::uint32_t e : edges) {
+      StitchId t = g_.add_stitch(type, row, e, kExtruded | kBesideMismatch);
+      g_.extruded_at.push_back(e);
+      for (std::uint8_t side = 0; side < 2; ++side) {
+        Loop& l = g_.loops[g_.mismatch_edges[e].loop[side]];
+        if (type == StitchType::tnbo) l.taker = t, l.taker_slot = side;
+        else l.maker = t, l.maker_slot = side;
+      }
+      if (previous != kNoStitch) g_.yarn_next[previous] = t, g_.yarn_link[previous] = YarnLink::course;
+      previous = t;
+    }
+  }
+
+  using OwnEdge = void (MismatchTransform::*)(std::uint32_t own_loop, std::uint32_t other_loop);
+  void for_each_own(const MismatchGroup& group, const std::vector<std::uint32_t>& edges, OwnEdge work) {
+    std::uint32_t own_row = g_.row[group.own_side];
+    for (std::uint32_t e : edges) {
+      const MismatchEdge& me = g_.mismatch_edges[e];
+      bool first_is_own = g_.row[side_stitch(me.loop[0])] == own_row;
+      (this->*work)(me.loop[first_is_own ? 0 : 1], me.loop[first_is_own ? 1 : 0]);
+    }
+  }
+
+  // The own side's stitch takes the other side's loop too and binds off (Fig. 6d).
+  void join_with_own_yarn(std::uint32_t own_loop, std::uint32_t other_loop) {
+    StitchId f = g_.loops[own_loop].maker;
+    require_plain(f, "work a three-needle bind-off with its own yarn");
+    g_.type[f] = StitchType::tnbo;
+    removed_[own_loop] = 1;
+    g_.loops[other_loop].taker = f;
+    g_.loops[other_loop].taker_slot = 1;
+  }
+
+  // The own side's stitch is replaced by the cast-on that makes both loops (Fig. 7d).
+  void split_with_own_yarn(std::uint32_t own_loop, std::uint32_t other_loop) {
+    StitchId f = g_.loops[own_loop].taker;
+    require_plain(f, "cast on along a split with its own yarn");
+    g_.type[f] = StitchType::sco;
+    removed_[own_loop] = 1;
+    g_.loops[other_loop].maker = f;
+    g_.loops[other_loop].maker_slot = 1;
+  }
+
+  void require_plain(StitchId s, const char* what) const {
+    if (g_.type[s] != StitchType::k && g_.type[s] != StitchType::p)
+      throw Error(fmt::format("{} cannot {}: only plain knit or purl stitches can; knit this "
+                              "group with an extra yarn piece instead",
+                              g_.describe(s), what));
+  }
+
+  void become_decrease(StitchId s) {
+    StitchType& t = g_.type[s];
+    switch (t) {
+      case StitchType::k: t = StitchType::k2tog; return;
+      case StitchType::p: t = StitchType::p2tog; return;
+      case StitchType::k2tog:
+      case StitchType::ssk: t = StitchType::s2kp; return;
+      default:
+        throw Error(fmt::format("{} treats a contracting perpendicular edge as a course edge, so "
+                                "it must become a decrease; a {} has no decrease form",
+                                g_.describe(s), info(t).name));
+    }
+  }
+
+  void become_increase(StitchId s) {
+    if (g_.type[s] == StitchType::k) {
+      g_.type[s] = StitchType::kfb;
+      return;
+    }
+    throw Error(fmt::format("{} makes the loop an expanding perpendicular edge needs, so it must "
+                            "become an increase; only a knit stitch can (found {})",
+                            g_.describe(s), info(g_.type[s]).name));
+  }
+
+  void drop_removed_loops() {
+    std::vector<std::uint32_t> new_index(g_.loops.size(), kNoGroup);
+    std::uint32_t kept = 0;
+    for (std::uint32_t l = 0; l < g_.loops.size(); ++l)
+      if (!removed_[l]) g_.loops[new_index[l] = kept++] = g_.loops[l];
+    g_.loops.resize(kept);
+    for (MismatchEdge& e : g_.mismatch_edges)
+      for (std::uint32_t& l : e.loop)
+        if (l != kNoGroup) l = new_index[l];
+  }
+
+  KnitGraph& g_;
+  std::vector<std::uint32_t> order_;
+  std::vector<std::uint8_t> removed_;
+};
+
+}  // namespace
+
+void make_mismatches_knittable(KnitGraph& graph) { MismatchTransform(graph).run(); }
+
+}  // namespace skein
