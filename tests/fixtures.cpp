@@ -55,4 +55,58 @@ StitchMesh fig13_deadlock_mesh() {
                     {3, 2, 4, 2, MismatchYarn::Kind::own, kA3}});
 }
 
+namespace {
+
+// Marks every joining or splitting edge between rows y and y+1... by the grid row `line`.
+std::vector<YarnMark> marks_along(int line, int width, MismatchYarn::Kind yarn, int own_first,
+                                  int own_stride) {
+  std::vector<YarnMark> marks;
+  if (yarn == MismatchYarn::Kind::by_default) return marks;
+  for (int x = 0; x < width; ++x)
+    marks.push_back({x, line, x + 1, line, yarn, yarn == MismatchYarn::Kind::own ? own_first + x * own_stride : -1});
+  return marks;
+}
+
+}  // namespace
+
+// Lower piece: cast on (y0) and a row right to left (y1). Upper piece, wales pointing down:
+// cast on at the top (y3) and a row right to left (y2). The two meet top to top on y = 2.
+StitchMesh join_mesh(MismatchYarn::Kind yarn, bool own_upper) {
+  using T = StitchType;
+  std::vector<Square> squares;
+  for (int x = 0; x < 3; ++x) squares.push_back({x, 0, T::co, "boti"});
+  for (int x = 0; x < 3; ++x) squares.push_back({x, 1, T::k, "bito"});
+  for (int x = 0; x < 3; ++x) squares.push_back({x, 2, T::k, "tibo"});
+  for (int x = 0; x < 3; ++x) squares.push_back({x, 3, T::co, "tobi"});
+  return grid_mesh(3, 4, squares, marks_along(2, 3, yarn, own_upper ? 6 : 3, 1));
+}
+
+// Lower piece, wales pointing down from y = 2: a row (y1) and a bind-off (y0). Upper piece,
+// wales up from y = 2: a row (y2) and a bind-off (y3). They grow apart from y = 2.
+StitchMesh split_mesh(MismatchYarn::Kind yarn, bool own_upper) {
+  using T = StitchType;
+  std::vector<Square> squares;
+  for (int x = 0; x < 3; ++x) squares.push_back({x, 0, T::bo, "tibo"});
+  for (int x = 0; x < 3; ++x) squares.push_back({x, 1, T::k, "tobi"});
+  for (int x = 0; x < 3; ++x) squares.push_back({x, 2, T::k, "boti"});
+  for (int x = 0; x < 3; ++x) squares.push_back({x, 3, T::bo, "bito"});
+  return grid_mesh(3, 4, squares, marks_along(2, 3, yarn, own_upper ? 6 : 3, 1));
+}
+
+// A column knit upwards (x0), and beside it two cast-on stitches whose wales point left, at
+// the column: their loops are consumed through the column's wale edges.
+StitchMesh contracting_mesh() {
+  using T = StitchType;
+  return grid_mesh(2, 4, {{0, 0, T::co, "boti"}, {0, 1, T::k, "bito"}, {0, 2, T::k, "boti"},
+                          {0, 3, T::bo, "bito"}, {1, 1, T::co, "ibot"}, {1, 2, T::co, "ibot"}});
+}
+
+// A column knit upwards (x0), and beside it three bind-off stitches whose wales point right,
+// away from the column: each is picked up through the column's edge.
+StitchMesh expanding_mesh() {
+  using T = StitchType;
+  return grid_mesh(2, 3, {{0, 0, T::co, "boti"}, {0, 1, T::k, "bito"}, {0, 2, T::bo, "boti"},
+                          {1, 0, T::bo, "itob"}, {1, 1, T::bo, "itob"}, {1, 2, T::bo, "itob"}});
+}
+
 }  // namespace skein::testing

@@ -29,4 +29,11 @@ StitchMesh grid_mesh(int width, int height, const std::vector<Square>& squares,
 // side's yarn and one with the lower side's: a dependency cycle.
 StitchMesh fig13_deadlock_mesh();
 
+// One small mesh per mismatched direction (paper Fig. 5), three stitches wide where it can be.
+// `yarn` applies to every mismatched edge (joins and splits); `own_upper` picks the side.
+StitchMesh join_mesh(MismatchYarn::Kind yarn = MismatchYarn::Kind::by_default, bool own_upper = false);
+StitchMesh split_mesh(MismatchYarn::Kind yarn = MismatchYarn::Kind::by_default, bool own_upper = false);
+StitchMesh contracting_mesh();
+StitchMesh expanding_mesh();
+
 }  // namespace skein::testing

@@ -108,7 +108,8 @@ void check_consistency(const KnitGraph& g) {
     has_prev[next] = 1;
   }
   // Every loop is made by one stitch and consumed by one (the transforms gave joins and
-  // splits their stitches); each stitch takes as many loops as its type says.
+  // splits their stitches); each stitch takes as many loops as its type says. A loop across a
+  // perpendicular edge is pulled through the side of its maker, not made at its top.
   std::vector<std::int32_t> made(n, 0), took(n, 0);
   for (const Loop& l : g.loops) {
     SKEIN_ASSERT(l.maker < n, "every loop has a maker in range");
@@ -116,7 +117,7 @@ void check_consistency(const KnitGraph& g) {
     SKEIN_ASSERT(l.maker != l.taker, "no stitch consumes its own loop");
     SKEIN_ASSERT(l.taker != kNoStitch || g.element == "line",
                  fmt::format("the loop {} makes is consumed or bound off", g.describe(l.maker)));
-    ++made[l.maker];
+    if (l.kind != LoopKind::perpendicular) ++made[l.maker];
     if (l.taker != kNoStitch) ++took[l.taker];
   }
   for (StitchId s = 0; s < n; ++s) {

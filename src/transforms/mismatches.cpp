@@ -54,8 +54,7 @@ class MismatchTransform {
       case MismatchKind::contracting:
         for (std::uint32_t e : edges) become_decrease(g_.loops[loop_of(e)].taker);
         return;
-      case MismatchKind::expanding:
-        for (std::uint32_t e : edges) become_increase(g_.loops[loop_of(e)].maker);
+      case MismatchKind::expanding:  // picked up and knit through the other side's edge
         return;
     }
   }
@@ -141,16 +140,6 @@ class MismatchTransform {
                                 "it must become a decrease; a {} has no decrease form",
                                 g_.describe(s), info(t).name));
     }
-  }
-
-  void become_increase(StitchId s) {
-    if (g_.type[s] == StitchType::k) {
-      g_.type[s] = StitchType::kfb;
-      return;
-    }
-    throw Error(fmt::format("{} makes the loop an expanding perpendicular edge needs, so it must "
-                            "become an increase; only a knit stitch can (found {})",
-                            g_.describe(s), info(g_.type[s]).name));
   }
 
   void drop_removed_loops() {

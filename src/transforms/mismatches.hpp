@@ -8,8 +8,8 @@
 //                      making the loop both sides' stitches are pulled through;
 //   split, own yarn:   the own side's stitch becomes the cast-on (sco) that makes both loops;
 //   contracting perpendicular: the stitch treating the edge as a wale edge becomes a decrease;
-//   expanding perpendicular:   the stitch treating it as a wale edge also makes the loop the
-//                      other side is pulled through (an increase).
+//   expanding perpendicular:   nothing to change: the stitches treating the edge as a course
+//                      edge are pulled through the other side's edge ("pick up and knit").
 #pragma once
 
 #include "knitgraph/knit_graph.hpp"

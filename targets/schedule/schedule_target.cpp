@@ -25,11 +25,11 @@ std::string event_line(const KnitGraph& g, const Event& e) {
     case EventKind::turn: return "  turn";
     case EventKind::marker: return fmt::format("  marker {}", marker_name(e.marker));
     case EventKind::hold:
-      return fmt::format("yarn {} hold at {}: waits for {}", e.yarn + 1, g.source[e.stitch] + 1,
-                         g.source[e.waits_for] + 1);
-    case EventKind::resume: return fmt::format("yarn {} resume at {}", e.yarn + 1, g.source[e.stitch] + 1);
+      return fmt::format("yarn {} hold at {}: waits for {}", e.yarn + 1, e.stitch + 1,
+                         e.waits_for + 1);
+    case EventKind::resume: return fmt::format("yarn {} resume at {}", e.yarn + 1, e.stitch + 1);
     case EventKind::stitch:
-      return fmt::format("    {} {}", g.source[e.stitch] + 1, abbreviation(g.type[e.stitch]));
+      return fmt::format("    {} {}", e.stitch + 1, abbreviation(g.type[e.stitch]));
   }
   return {};
 }
@@ -45,7 +45,8 @@ class ScheduleTarget : public Target {
   void emit(const Compilation& c, const TargetOptions&, std::ostream& out) const override {
     const KnitGraph& g = c.knit;
     out << kMagic << '\n'
-        << fmt::format("; source: {} (stitches numbered by {})\n", c.input, g.element)
+        << fmt::format("; source: {} (stitch numbers are {} numbers{})\n", c.input, g.element,
+                       g.first_extruded < g.size() ? "; extruded stitches follow the last" : "")
         << fmt::format("; {} stitches, {} yarn pieces, {} holds\n", g.size(), c.yarns.size(),
                        c.schedule.holds);
     std::string buffer;
