@@ -94,8 +94,8 @@ TEST_F(Cli, CompileWritesTheOutputAndVerifiesIt) {
 }
 
 TEST_F(Cli, CompileOfAnUnknittableModelWritesNothing) {
-  CliRun r = skein("compile samples/unknittable/tube-without-shift-path.obj -t schedule -o " +
-                in_dir("tube.schedule"));
+  CliRun r = skein("compile samples/unknittable/fig13-deadlock.obj -t schedule -o " +
+                in_dir("fig13.schedule"));
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("nothing written to"), std::string::npos) << r.err;
   EXPECT_TRUE(outputs().empty());
@@ -104,7 +104,8 @@ TEST_F(Cli, CompileOfAnUnknittableModelWritesNothing) {
 TEST_F(Cli, UnknownTargetIsAUsageErrorAndWritesNothing) {
   CliRun r = skein("compile samples/hat/hat.obj -t loom -o " + in_dir("hat.out"));
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("unknown target 'loom'; known targets: schedule"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("unknown target 'loom'; known targets: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("schedule"), std::string::npos) << r.err;
   EXPECT_TRUE(outputs().empty());
 }
 

@@ -9,6 +9,7 @@
 #include "builtin_targets.hpp"
 #include "common/error.hpp"
 #include "fixtures.hpp"
+#include "knitgraph/from_mesh.hpp"
 #include "mesh/generate.hpp"
 
 namespace skein {
@@ -86,10 +87,11 @@ TEST(KnitGraph, TubeWithShiftPathIsOneHelix) {
   EXPECT_EQ(c.schedule.holds, 0u);
 }
 
-TEST(Knittability, TubeWithoutShiftPathIsACycleAlongTheRound) {
+// Without the shift-path transform, a round is a ring of stitches each waiting for the last.
+TEST(Knittability, RoundWithoutShiftPathIsACycleInTheRawKnitGraph) {
   StitchMesh mesh = build_from_rows(ribbed_rows(12, 2, {T::k}), Layout::tube);
   for (Edge e : mesh.edges()) mesh.shift_path[e] = 0;
-  Compilation c = compile_stitch_mesh(std::move(mesh), "tube");
+  Compilation c = compile_knit_graph(build_knit_graph(mesh, "tube"), "tube");
   ASSERT_FALSE(c.knittability.knittable);
   EXPECT_EQ(c.knittability.cycle.size(), 12u);
   for (const CycleStep& step : c.knittability.cycle) EXPECT_EQ(step.reason, DependencyReason::yarn);

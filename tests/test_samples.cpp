@@ -53,11 +53,11 @@ std::string sample_name(const ::testing::TestParamInfo<const char*>& param_info)
 INSTANTIATE_TEST_SUITE_P(Samples, KnittableSample,
                          ::testing::Values("samples/rib-swatch/rib-swatch.obj", "samples/hat/hat.obj",
                                            "samples/autoknit/test-A.st", "samples/autoknit/test-B.st",
-                                           "samples/autoknit/test-C.st"),
+                                           "samples/autoknit/test-C.st",
+                                           "samples/auto-shift-path/tube.obj"),
                          sample_name);
 INSTANTIATE_TEST_SUITE_P(Samples, UnknittableSample,
-                         ::testing::Values("samples/unknittable/fig13-deadlock.obj",
-                                           "samples/unknittable/tube-without-shift-path.obj"),
+                         ::testing::Values("samples/unknittable/fig13-deadlock.obj"),
                          sample_name);
 
 }  // namespace

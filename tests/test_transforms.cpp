@@ -7,6 +7,7 @@
 #include "builtin_targets.hpp"
 #include "common/error.hpp"
 #include "fixtures.hpp"
+#include "mesh/generate.hpp"
 
 namespace skein {
 namespace {
@@ -124,6 +125,109 @@ TEST(YarnChoice, OneGroupAskingForTwoYarnsIsRejected) {
   } catch (const MeshError& e) {
     EXPECT_NE(std::string(e.what()).find("belong to one joining mismatch group but ask for different yarns"),
               std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace skein
+
+namespace skein {
+namespace {
+
+// A tube whose shift-path marks are all removed, then `marked` rounds marked again.
+StitchMesh tube_marked_at(const RowPlan& plan, const std::vector<std::uint32_t>& marked,
+                          ShiftOption option = kShiftUpRight) {
+  StitchMesh mesh = build_from_rows(plan, Layout::tube);
+  std::vector<Edge> seam;
+  for (Edge e : mesh.edges())
+    if (mesh.shift_path[e]) seam.push_back(e), mesh.shift_path[e] = kNotShifted;
+  for (std::uint32_t row : marked) mesh.shift_path[seam[row]] = option;
+  return mesh;
+}
+
+std::uint32_t marks(const StitchMesh& mesh) {
+  std::uint32_t n = 0;
+  for (Edge e : mesh.edges()) n += mesh.shift_path[e] != kNotShifted;
+  return n;
+}
+
+TEST(ShiftPath, PlacedAutomaticallyOnATubeWithNone) {
+  Compilation c = proven(tube_marked_at(ribbed_rows(10, 4, {T::k}), {}), "auto");
+  EXPECT_EQ(c.shift_paths.paths, 1u);
+  EXPECT_EQ(c.shift_paths.placed, 1u);
+  EXPECT_EQ(marks(*c.mesh), 6u);
+  EXPECT_EQ(c.yarns.size(), 1u);
+}
+
+TEST(ShiftPath, OneMarkedEdgeIdentifiesTheWholePath) {
+  StitchMesh mesh = tube_marked_at(ribbed_rows(10, 4, {T::k}), {3});
+  Edge given;
+  for (Edge e : mesh.edges())
+    if (mesh.shift_path[e]) given = e;
+  Compilation c = proven(std::move(mesh), "one-mark");
+  EXPECT_EQ(c.shift_paths.paths, 1u);
+  EXPECT_EQ(c.shift_paths.placed, 0u);
+  EXPECT_EQ(marks(*c.mesh), 6u);
+  EXPECT_TRUE(c.mesh->shift_path[given]);
+  EXPECT_EQ(c.yarns.size(), 1u);
+}
+
+// Fig. 3f: a path that runs into the middle of a decrease ends there; the rounds above need a
+// path of their own, and so a yarn piece of their own.
+TEST(ShiftPath, PathEndingInsideADecreaseNeedsAnotherPath) {
+  RowPlan plan = {std::vector<StitchType>(8, T::co), std::vector<StitchType>(8, T::k),
+                  std::vector<StitchType>(4, T::k2tog), std::vector<StitchType>(4, T::k),
+                  std::vector<StitchType>(4, T::bo)};
+  StitchMesh mesh = build_from_rows(plan, Layout::tube);
+  for (Edge e : mesh.edges()) mesh.shift_path[e] = kNotShifted;
+  // Mark the wale edge between the first two knit stitches of round 2: its top corner lies in
+  // the middle of the first k2tog above.
+  Face k1(8);
+  Halfedge right = mesh.wale_out(k1);
+  mesh.shift_path[mesh.edge(right)] = kShiftUpRight;
+  Compilation c = proven(std::move(mesh), "fig3f");
+  EXPECT_EQ(c.shift_paths.paths, 2u);
+  EXPECT_EQ(c.shift_paths.placed, 1u);
+  EXPECT_EQ(c.yarns.size(), 2u);
+}
+
+TEST(ShiftPath, OptionsThatRunTheOtherWayTurnTheRounds) {
+  for (ShiftOption option : {kShiftUpRight, kShiftUpLeft, kShiftDownRight, kShiftDownLeft}) {
+    Compilation c = proven(tube_marked_at(ribbed_rows(6, 3, {T::k}), {0}, option), "options");
+    bool turned = !runs_left_to_right(option);
+    EXPECT_EQ(c.shift_paths.reversed_rows, turned ? 5u : 0u) << shift_option_name(option);
+    EXPECT_EQ(c.mesh->runs_left_to_right(Face(7)), !turned) << shift_option_name(option);
+    EXPECT_EQ(c.yarns.size(), 1u);
+    // The second round starts right of the path either way; it is worked the way the option says.
+    std::vector<StitchId> order;
+    for (const Event& e : c.schedule.events)
+      if (e.kind == EventKind::stitch && c.knit.row[e.stitch] == 1) order.push_back(e.stitch);
+    EXPECT_EQ(order.front(), turned ? 11u : 6u) << shift_option_name(option);
+  }
+}
+
+TEST(ShiftPath, MarkOnAnOpenRowIsRejected) {
+  StitchMesh mesh = build_from_rows(ribbed_rows(4, 2, {T::k}), Layout::sheet);
+  mesh.shift_path[mesh.edge(mesh.wale_out(Face(5)))] = kShiftUpRight;  // inside row 2
+  try {
+    compile_stitch_mesh(std::move(mesh), "open");
+    FAIL() << "expected a MeshError";
+  } catch (const MeshError& e) {
+    EXPECT_NE(std::string(e.what()).find("is marked as a shift-path, but row 2 is not a closed round"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(ShiftPath, TwoMarksOnOneRoundAreRejected) {
+  StitchMesh mesh = tube_marked_at(ribbed_rows(6, 2, {T::k}), {1});
+  mesh.shift_path[mesh.edge(mesh.wale_out(Face(8)))] = kShiftUpRight;
+  try {
+    compile_stitch_mesh(std::move(mesh), "two");
+    FAIL() << "expected a MeshError";
+  } catch (const MeshError& e) {
+    EXPECT_NE(std::string(e.what()).find("row 2 is cut by two shift-path edges"), std::string::npos)
         << e.what();
   }
 }

@@ -7,9 +7,11 @@
 #include <type_traits>
 
 #include "knitgraph/from_mesh.hpp"
+#include "labeling/stitch_generation.hpp"
 #include "mesh/autoknit_st.hpp"
 #include "mesh/obj_format.hpp"
 #include "transforms/mismatches.hpp"
+#include "transforms/shift_paths.hpp"
 
 namespace skein {
 namespace {
@@ -38,6 +40,10 @@ Compilation compile_model(const std::string& input, const StageObserver& observe
   if (ends_with(input, ".st"))
     return compile_knit_graph(
         timed(observe, "read stitch graph", [&] { return read_autoknit_st(input); }), input, observe);
+  if (is_project_file(input))
+    return compile_stitch_mesh(
+        timed(observe, "label and generate", [&] { return build_project(read_project(input)).mesh; }),
+        input, observe);
   return compile_stitch_mesh(
       timed(observe, "read stitch mesh", [&] { return read_stitch_mesh(input); }), input, observe);
 }
@@ -45,10 +51,13 @@ Compilation compile_model(const std::string& input, const StageObserver& observe
 Compilation compile_stitch_mesh(StitchMesh mesh, const std::string& name,
                                 const StageObserver& observe) {
   timed(observe, "validate", [&] { validate(mesh); });
+  ShiftPathSummary paths =
+      timed(observe, "shift-paths", [&] { return place_shift_paths(mesh); });
   KnitGraph graph = timed(observe, "knit graph", [&] { return build_knit_graph(mesh, name); });
   timed(observe, "mismatches", [&] { make_mismatches_knittable(graph); });
   Compilation c = compile_knit_graph(std::move(graph), name, observe);
   c.mesh = std::move(mesh);
+  c.shift_paths = paths;
   return c;
 }
 
@@ -122,6 +131,13 @@ std::string check_report(const Compilation& c) {
                                 c.knittability.knittable ? "knittable" : "NOT knittable");
   out += fmt::format("  stitches: {} ({})\n", g.size(), stitch_counts(g));
   out += fmt::format("  rows: {}\n", row_counts(g));
+  if (c.mesh)
+    out += fmt::format("  shift-paths: {} ({} placed by skein{})\n", c.shift_paths.paths,
+                       c.shift_paths.placed,
+                       c.shift_paths.reversed_rows
+                           ? fmt::format(", {} rounds turned by their shift option",
+                                         c.shift_paths.reversed_rows)
+                           : "");
   append_yarn_pieces(c, out);
   append_mismatch_groups(g, out);
   if (c.knittability.knittable) {

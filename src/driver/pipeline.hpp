@@ -2,8 +2,11 @@
 // beside it; compile_model() runs them in order with a check between them.
 //
 //   read_stitch_mesh        mesh/obj_format      .obj text        -> StitchMesh
+//   build_project           labeling             .yaml + coarse .obj -> StitchMesh (labeling, §3.4)
 //   validate                mesh/stitch_mesh     StitchMesh       -> (throws MeshError)
+//   place_shift_paths       transforms           StitchMesh       -> marks on every round (§3.1)
 //   build_knit_graph        knitgraph/from_mesh  StitchMesh       -> KnitGraph
+//   make_mismatches_knittable transforms         KnitGraph        -> joins/splits extruded (§3.2)
 //   read_autoknit_st        mesh/autoknit_st     .st text         -> KnitGraph
 //   check_consistency       knitgraph            KnitGraph        -> (asserts)
 //   find_yarn_pieces        knitgraph            KnitGraph        -> YarnPieces      (§4.2)
@@ -25,12 +28,14 @@
 #include "knitgraph/yarn_pieces.hpp"
 #include "mesh/stitch_mesh.hpp"
 #include "schedule/schedule.hpp"
+#include "transforms/shift_paths.hpp"
 
 namespace skein {
 
 struct Compilation {
   std::string input;
-  std::optional<StitchMesh> mesh;  // absent for stitch graphs (.st)
+  std::optional<StitchMesh> mesh;  // absent for stitch graphs (.st); with its shift-paths
+  ShiftPathSummary shift_paths;
   KnitGraph knit;
   YarnPieces yarns;
   DependencyGraph deps;

@@ -12,18 +12,6 @@ namespace {
 
 bool is_short_row_face(StitchType t) { return info(t).wales_adjacent; }
 
-// The end of a wale halfedge that touches the face's top (or bottom) course edges.
-Vertex top_vertex(const StitchMesh& m, Halfedge h) {
-  if (m.role[m.next(h)] == EdgeRole::top) return m.head(h);
-  if (m.role[m.prev(h)] == EdgeRole::top) return m.tail(h);
-  return {};
-}
-Vertex bottom_vertex(const StitchMesh& m, Halfedge h) {
-  if (m.role[m.prev(h)] == EdgeRole::bottom) return m.tail(h);
-  if (m.role[m.next(h)] == EdgeRole::bottom) return m.head(h);
-  return {};
-}
-
 // True when the yarn leaving through `out` goes straight on into the next stitch of its row.
 bool continues_row(const StitchMesh& m, Halfedge out) {
   Halfedge t = m.twin(out);
@@ -41,14 +29,14 @@ bool row_starts_at(const StitchMesh& m, Halfedge in) {
 // enters at the top end of `out` (a shift-path in a tube, a turn at a border or at a
 // perpendicular mismatch). Lowest row wins; a stitch already reached by another yarn is skipped.
 Face next_row_start(const StitchMesh& m, Halfedge out, const std::vector<std::uint8_t>& reached) {
-  Vertex v = top_vertex(m, out);
+  Vertex v = m.wale_top(out);
   Face best;
   if (!v.valid()) return best;
   std::uint32_t row = m.row[m.face(out)];
   auto consider = [&](Halfedge c) {
     if (!row_starts_at(m, c)) return;
     Face g = m.face(c);
-    if (m.row[g] == row || reached[g.index()] || bottom_vertex(m, c) != v) return;
+    if (m.row[g] == row || reached[g.index()] || m.wale_bottom(c) != v) return;
     if (!best.valid() || m.row[g] < m.row[best]) best = g;
   };
   for (Halfedge h : m.outgoing(v)) {
@@ -243,19 +231,13 @@ void flag_stitches(const StitchMesh& m, KnitGraph& g) {
   }
 }
 
-// A row is closed when its yarn comes back round to its first stitch, short when it starts
-// after a turn at a short-row face, open otherwise.
+// A row is closed when its stitches form a ring, short when it starts after a turn at a
+// short-row face, open otherwise.
 void shape_rows(const StitchMesh& m, KnitGraph& g) {
-  std::uint32_t rows = 0;
-  for (Face f : m.faces()) rows = std::max(rows, m.row[f] + 1);
-  g.row_shape.assign(rows, RowShape::closed);
-  for (Face f : m.faces()) {
-    Halfedge out = m.wale_out(f);
-    Halfedge t = m.twin(out);
-    bool ring_link = t.valid() && m.role[t] == EdgeRole::wale_in && m.row[m.face(t)] == m.row[f];
-    if (!ring_link && g.row_shape[m.row[f]] == RowShape::closed)
-      g.row_shape[m.row[f]] = RowShape::open;
-  }
+  std::vector<std::uint8_t> closed = closed_rows(m);
+  g.row_shape.resize(closed.size());
+  for (std::size_t r = 0; r < closed.size(); ++r)
+    g.row_shape[r] = closed[r] ? RowShape::closed : RowShape::open;
   for (Face f : m.faces()) {
     StitchId next = g.yarn_next[f.index()];
     if (is_short_row_face(m.stitch[f]) && next != kNoStitch)

@@ -34,6 +34,17 @@ const char* edge_kind_name(EdgeKind kind) {
   return "?";
 }
 
+const char* shift_option_name(ShiftOption option) {
+  switch (option) {
+    case kNotShifted: return "none";
+    case kShiftUpRight: return "up-right";
+    case kShiftUpLeft: return "up-left";
+    case kShiftDownRight: return "down-right";
+    case kShiftDownLeft: return "down-left";
+  }
+  return "?";
+}
+
 // ---------------------------------------------------------------- navigation
 
 Halfedge StitchMesh::next(Halfedge h) const {
@@ -64,6 +75,24 @@ Edge StitchMesh::find_edge(Vertex a, Vertex b) const {
 Face StitchMesh::neighbour(Halfedge h) const {
   Halfedge t = twin(h);
   return t.valid() ? face(t) : Face();
+}
+
+Vertex StitchMesh::wale_top(Halfedge h) const {
+  if (role[next(h)] == EdgeRole::top) return head(h);
+  if (role[prev(h)] == EdgeRole::top) return tail(h);
+  return {};
+}
+
+Vertex StitchMesh::wale_bottom(Halfedge h) const {
+  if (role[prev(h)] == EdgeRole::bottom) return tail(h);
+  if (role[next(h)] == EdgeRole::bottom) return head(h);
+  return {};
+}
+
+// Counter-clockwise, the right-hand wale edge comes straight after the bottom course edges.
+bool StitchMesh::runs_left_to_right(Face f) const {
+  Halfedge out = wale_out(f);
+  return role[prev(out)] == EdgeRole::bottom;
 }
 
 Halfedge StitchMesh::wale_in(Face f) const {
@@ -219,7 +248,9 @@ void assign_rows(StitchMesh& mesh) {
     Halfedge out = mesh.wale_out(f);
     if (!out.valid()) continue;
     Halfedge t = mesh.twin(out);
-    if (t.valid() && mesh.role[t] == EdgeRole::wale_in) rows.unite(f.index(), mesh.face(t).index());
+    // A short-row face is where the work turns: the next row starts after it.
+    if (t.valid() && mesh.role[t] == EdgeRole::wale_in && !info(mesh.stitch[f]).wales_adjacent)
+      rows.unite(f.index(), mesh.face(t).index());
   }
   // Row graph: row A -> row B when B consumes a loop made in A (course edge, top to bottom).
   std::vector<std::uint32_t> root(nf);
@@ -268,6 +299,19 @@ void assign_rows(StitchMesh& mesh) {
   }
   mesh.row = FaceData<std::uint32_t>(nf);
   for (Face f : mesh.faces()) mesh.row[f] = number[root[f.index()]];
+}
+
+std::vector<std::uint8_t> closed_rows(const StitchMesh& mesh) {
+  std::uint32_t rows = 0;
+  for (Face f : mesh.faces()) rows = std::max(rows, mesh.row[f] + 1);
+  std::vector<std::uint8_t> closed(rows, 1);
+  for (Face f : mesh.faces()) {
+    Halfedge t = mesh.twin(mesh.wale_out(f));
+    bool ring_link = t.valid() && mesh.role[t] == EdgeRole::wale_in &&
+                     mesh.row[mesh.face(t)] == mesh.row[f];
+    if (!ring_link) closed[mesh.row[f]] = 0;
+  }
+  return closed;
 }
 
 // ---------------------------------------------------------------- validation

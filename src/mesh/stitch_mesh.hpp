@@ -50,6 +50,21 @@ inline bool is_mismatch(EdgeKind k) {
          k == EdgeKind::contracting_perpendicular || k == EdgeKind::expanding_perpendicular;
 }
 
+// Fig. 3's four shift operations on a shift-path edge: which side of the path slides, and
+// which way. 0 means the edge is not on a shift-path. Up-right and down-left make rounds run
+// left to right across the path (seen on the right side, wales up); the other two right to left.
+enum ShiftOption : std::uint8_t {
+  kNotShifted = 0,
+  kShiftUpRight = 1,  // the default
+  kShiftUpLeft = 2,
+  kShiftDownRight = 3,
+  kShiftDownLeft = 4,
+};
+const char* shift_option_name(ShiftOption option);  // "up-right", ...
+inline bool runs_left_to_right(ShiftOption option) {
+  return option == kShiftUpRight || option == kShiftDownLeft;
+}
+
 // Which yarn knits the stitches along a join or split edge (paper §3.2).
 struct MismatchYarn {
   enum class Kind : std::uint8_t { by_default, extra, own };
@@ -93,13 +108,19 @@ class StitchMesh {
   Halfedge wale_out(Face f) const;
   // The face on the other side of h, or invalid on the border.
   Face neighbour(Halfedge h) const;
+  // The ends of a wale halfedge beside its face's top and bottom course edges (invalid where
+  // none: the side-by-side wale edges of a short-row face meet at one end).
+  Vertex wale_top(Halfedge h) const;
+  Vertex wale_bottom(Halfedge h) const;
+  // True when the face's yarn leaves through its right-hand wale edge (wale up, right side).
+  bool runs_left_to_right(Face f) const;
 
   // --- typed per-element data ---
   VertexData<Vec3> position;
   FaceData<StitchType> stitch;
   FaceData<std::uint32_t> row;  // filled by assign_rows(); rows numbered in knitting order
   HalfedgeData<EdgeRole> role;
-  EdgeData<std::uint8_t> shift_path;  // 1 on wale edges marked as part of a shift-path
+  EdgeData<std::uint8_t> shift_path;  // a ShiftOption; non-zero on shift-path wale edges
   EdgeData<MismatchYarn> mismatch_yarn;
 
  private:
@@ -140,6 +161,9 @@ void assign_rows(StitchMesh& mesh);
 
 // Checks every invariant of a stitch mesh; throws MeshError naming the face or edge.
 void validate(const StitchMesh& mesh);
+
+// Per row: 1 when its stitches close into a ring (a round), 0 for open and short rows.
+std::vector<std::uint8_t> closed_rows(const StitchMesh& mesh);
 
 // "face 12 (k, row 7)": how reports name a face (1-based like the file format).
 std::string describe(const StitchMesh& mesh, Face f);

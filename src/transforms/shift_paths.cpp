@@ -1,0 +1,150 @@
+#include "transforms/shift_paths.hpp"
+
+#include <fmt/format.h>
+
+#include <vector>
+
+#include "common/error.hpp"
+
+namespace skein {
+namespace {
+
+// A wale edge where a row's yarn passes from one stitch to the next: the only place a shift-path
+// may cut a round.
+bool is_course_link(const StitchMesh& m, Halfedge h) {
+  Halfedge t = m.twin(h);
+  return t.valid() && is_wale(m.role[h]) && is_wale(m.role[t]) && m.role[h] != m.role[t];
+}
+
+class ShiftPaths {
+ public:
+  explicit ShiftPaths(StitchMesh& m)
+      : m_(m), closed_(closed_rows(m)), path_edge_(closed_.size(), Edge()),
+        reversed_(closed_.size(), 0) {}
+
+  ShiftPathSummary run() && {
+    check_marks();
+    extend_given_paths();
+    place_missing_paths();
+    count_paths();
+    apply_options();
+    return summary_;
+  }
+
+ private:
+  void check_marks() {
+    for (Edge e : m_.edges()) {
+      if (!m_.shift_path[e]) continue;
+      std::uint32_t row = m_.row[m_.face(m_.halfedge(e))];
+      if (!closed_[row])
+        throw MeshError(fmt::format("{} is marked as a shift-path, but row {} is not a closed "
+                                    "round: open rows need no shift-path (the work turns at the "
+                                    "border); expected the mark on a round",
+                                    describe(m_, e), row + 1));
+      if (path_edge_[row].valid())
+        throw MeshError(fmt::format("row {} is cut by two shift-path edges, {} and {}; expected "
+                                    "one per round",
+                                    row + 1, describe(m_, path_edge_[row]), describe(m_, e)));
+      path_edge_[row] = e;
+    }
+  }
+
+  // One marked edge identifies a whole path: follow it up and down through unmarked rounds.
+  void extend_given_paths() {
+    std::vector<Edge> given;
+    for (Edge e : path_edge_)
+      if (e.valid()) given.push_back(e);
+    for (Edge e : given) trace(e, static_cast<ShiftOption>(m_.shift_path[e]));
+  }
+
+  void place_missing_paths() {
+    for (Face f : m_.faces()) {  // faces in order: lowest unmarked round first
+      if (!closed_[m_.row[f]] || path_edge_[m_.row[f]].valid()) continue;
+      Edge start = m_.edge(m_.wale_in(f));
+      mark(start, kShiftUpRight);
+      trace(start, kShiftUpRight);
+      ++summary_.placed;
+    }
+  }
+
+  void trace(Edge start, ShiftOption option) {
+    for (bool up : {true, false})
+      for (Edge e = next_on_path(start, up); e.valid() && !path_edge_[row_of(e)].valid();
+           e = next_on_path(e, up))
+        mark(e, option);
+  }
+
+  // A path starts at every marked edge whose round below does not continue into it.
+  void count_paths() {
+    for (Edge e : path_edge_) {
+      if (!e.valid()) continue;
+      Edge below = next_on_path(e, /*up=*/false);
+      if (!below.valid() || path_edge_[row_of(below)] != below) ++summary_.paths;
+    }
+  }
+
+  void mark(Edge e, ShiftOption option) {
+    m_.shift_path[e] = option;
+    path_edge_[row_of(e)] = e;
+  }
+
+  std::uint32_t row_of(Edge e) const { return m_.row[m_.face(m_.halfedge(e))]; }
+
+  // The wale edge of another round that continues the path from e's top end (up) or bottom
+  // end (down); invalid where the path cannot go on (a decrease or increase spans that corner).
+  Edge next_on_path(Edge e, bool up) const {
+    Halfedge h = m_.halfedge(e);
+    Vertex v = up ? m_.wale_top(h) : m_.wale_bottom(h);
+    if (!v.valid()) return {};
+    for (Halfedge out : m_.outgoing(v))
+      for (Halfedge c : {out, m_.prev(out)}) {
+        if (!is_course_link(m_, c) || m_.edge(c) == e || !closed_[m_.row[m_.face(c)]]) continue;
+        if ((up ? m_.wale_bottom(c) : m_.wale_top(c)) == v) return m_.edge(c);
+      }
+    return {};
+  }
+
+  // Each path's option says which way its rounds run; the rows of a path whose labelled
+  // direction disagrees are turned, all of a path's rows alike.
+  void apply_options() {
+    for (std::uint32_t row = 0; row < closed_.size(); ++row) {
+      Edge e = path_edge_[row];
+      if (!e.valid()) continue;
+      auto option = static_cast<ShiftOption>(m_.shift_path[e]);
+      if (runs_left_to_right(option) != labelled_left_to_right(e)) reverse(row);
+    }
+    for (Face f : m_.faces())
+      if (reversed_[m_.row[f]]) swap_wale_roles(f);
+  }
+
+  // Across the path edge: does the yarn pass from the stitch on its left to the one on its right?
+  bool labelled_left_to_right(Edge e) const {
+    Halfedge h = m_.halfedge(e);
+    bool on_right_of_face = m_.role[m_.prev(h)] == EdgeRole::bottom;  // h is its face's right edge
+    return on_right_of_face == (m_.role[h] == EdgeRole::wale_out);
+  }
+
+  void reverse(std::uint32_t row) {
+    reversed_[row] = 1;
+    ++summary_.reversed_rows;
+  }
+
+  void swap_wale_roles(Face f) {
+    for (Halfedge h : m_.halfedges(f)) {
+      if (m_.role[h] == EdgeRole::wale_in) m_.role[h] = EdgeRole::wale_out;
+      else if (m_.role[h] == EdgeRole::wale_out) m_.role[h] = EdgeRole::wale_in;
+    }
+  }
+
+  StitchMesh& m_;
+  std::vector<std::uint8_t> closed_;
+  std::vector<Edge> path_edge_;  // per row: the shift-path edge that cuts it
+  std::vector<std::uint8_t> reversed_;
+  ShiftPathSummary summary_;
+};
+
+}  // namespace
+
+ShiftPathSummary place_shift_paths(StitchMesh& mesh) { return ShiftPaths(mesh).run(); }
+
+}  // namespace skein
