@@ -372,6 +372,19 @@ TEST(ObjFormat, RejectsUnknownRoleLetter) {
       fails_at(quad_then("#~s k boti p\n"), 7, "expected nothing after the edge roles, found 'p'"));
 }
 
+TEST(ObjFormat, ShiftOptionsRoundTrip) {
+  StitchMesh mesh = build_from_rows(ribbed_rows(6, 3, {StitchType::k}), Layout::tube);
+  ShiftOption options[] = {kShiftUpRight, kShiftUpLeft, kShiftDownRight, kShiftDownLeft};
+  int i = 0;
+  for (Edge e : mesh.edges())
+    if (mesh.shift_path[e]) mesh.shift_path[e] = options[i++ % 4];
+  std::ostringstream out;
+  write_stitch_mesh(mesh, out);
+  EXPECT_NE(out.str().find(" down-left\n"), std::string::npos);
+  StitchMesh back = parse_stitch_mesh(out.str(), "options.obj");
+  for (Edge e : mesh.edges()) EXPECT_EQ(back.shift_path[e], mesh.shift_path[e]);
+}
+
 TEST(ObjFormat, RejectsShiftMarkOffTheMesh) {
   EXPECT_TRUE(fails_at(quad_then("#~s k boti\n#~shift 1 3\n"), 8,
                        "#~shift 1 3: vertices 1 and 3 share no edge"));
@@ -381,7 +394,8 @@ TEST(ObjFormat, RejectsShiftMarkOffTheMesh) {
                        "expected two vertex numbers after '#~shift', found the end of the line"));
   EXPECT_TRUE(fails_at(quad_then("#~s k boti\n#~shift 1 -2\n"), 8, "found '-2'"));
   EXPECT_TRUE(fails_at(quad_then("#~s k boti\n#~shift 1 2 3\n"), 8,
-                       "expected nothing after the two vertex numbers, found '3'"));
+                       "expected a shift option (up-right, up-left, down-right or down-left) after the two "
+                       "vertex numbers, found '3'"));
 }
 
 TEST(ObjFormat, RejectsMalformedYarnChoices) {

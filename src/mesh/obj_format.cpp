@@ -94,6 +94,7 @@ struct EdgeMark {
   Line line;
   Vertex a, b;
   std::optional<MismatchYarn> yarn;  // empty on a '#~shift' line
+  ShiftOption shift = kShiftUpRight;  // on a '#~shift' line
   std::string_view directive() const { return yarn ? "#~yarn" : "#~shift"; }
 };
 
@@ -120,6 +121,7 @@ class Parser {
   void parse_edge_mark(Line& line, std::string_view directive);
   Vertex parse_vertex_number(Line& line, std::string_view directive) const;
   MismatchYarn parse_yarn_choice(Line& line) const;
+  ShiftOption parse_shift_option(Line& line) const;
   void expect_end(Line& line, std::string_view after) const;
   void apply_edge_marks(StitchMesh& mesh) const;
 
@@ -304,8 +306,20 @@ void Parser::parse_edge_mark(Line& line, std::string_view directive) {
   Vertex b = parse_vertex_number(line, directive);
   EdgeMark mark{line, a, b, std::nullopt};
   if (directive == "#~yarn") mark.yarn = parse_yarn_choice(line);
-  expect_end(line, mark.yarn ? "the yarn choice" : "the two vertex numbers");
+  else mark.shift = parse_shift_option(line);
+  expect_end(line, mark.yarn ? "the yarn choice" : "the shift option");
   edge_marks_.push_back(mark);
+}
+
+// An optional word after a '#~shift' edge: one of Fig. 3's four shift operations.
+ShiftOption Parser::parse_shift_option(Line& line) const {
+  std::string_view word = line.next_word();
+  if (word.empty()) return kShiftUpRight;
+  for (ShiftOption option : {kShiftUpRight, kShiftUpLeft, kShiftDownRight, kShiftDownLeft})
+    if (word == shift_option_name(option)) return option;
+  fail(line, fmt::format("expected a shift option (up-right, up-left, down-right or down-left) "
+                         "after the two vertex numbers, found '{}'",
+                         word));
 }
 
 // Vertex numbers on '#~' lines are 1-based and name vertices defined above the line.
@@ -354,7 +368,7 @@ void Parser::apply_edge_marks(StitchMesh& mesh) const {
                                   "of an edge of some face",
                                   what, mark.a.index() + 1, mark.b.index() + 1));
     if (!mark.yarn) {
-      mesh.shift_path[e] = 1;
+      mesh.shift_path[e] = mark.shift;
       continue;
     }
     MismatchYarn& yarn = mesh.mismatch_yarn[e];
@@ -436,6 +450,10 @@ void write_shift_marks(const StitchMesh& mesh, BufferedWriter& w) {
     if (!mesh.shift_path[e]) continue;
     w.text("#~shift");
     write_edge_ends(mesh, e, w);
+    if (mesh.shift_path[e] != kShiftUpRight) {
+      w.text(" ");
+      w.text(shift_option_name(static_cast<ShiftOption>(mesh.shift_path[e])));
+    }
     w.end_line();
   }
 }
