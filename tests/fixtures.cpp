@@ -1,5 +1,7 @@
 #include "fixtures.hpp"
 
+#include <map>
+
 #include "common/error.hpp"
 
 namespace skein::testing {
@@ -107,6 +109,35 @@ StitchMesh expanding_mesh() {
   using T = StitchType;
   return grid_mesh(2, 3, {{0, 0, T::co, "boti"}, {0, 1, T::k, "bito"}, {0, 2, T::bo, "boti"},
                           {1, 0, T::bo, "itob"}, {1, 1, T::bo, "itob"}, {1, 2, T::bo, "itob"}});
+}
+
+StitchMesh short_row_mesh(StitchType turn) {
+  using T = StitchType;
+  StitchMeshBuilder builder("<short rows>");
+  std::map<std::pair<float, float>, Vertex> at;
+  auto v = [&](float x, float y) {
+    auto [it, added] = at.try_emplace({x, y});
+    if (added) it->second = builder.add_vertex({x, y, 0});
+    return it->second;
+  };
+  auto face = [&](std::vector<std::pair<float, float>> corners, const std::string& roles, T type) {
+    std::vector<Vertex> vs;
+    std::vector<EdgeRole> rs;
+    for (auto [x, y] : corners) vs.push_back(v(x, y));
+    for (char c : roles) rs.push_back(role_of(c));
+    builder.add_face(vs, rs, type);
+  };
+  for (float x = 0; x < 4; ++x) face({{x, 0}, {x + 1, 0}, {x + 1, 1}, {x, 1}}, "boti", T::co);
+  for (float x = 2; x < 4; ++x) face({{x, 1}, {x + 1, 1}, {x + 1, 2}, {x, 2}}, "bito", T::k);
+  if (turn == T::sr4) face({{1, 1}, {2, 1}, {2, 2}, {2, 3}}, "biot", T::sr4);
+  else face({{1, 1}, {2, 1}, {2, 2}, {2, 3}, {1.5f, 2}}, "biott", turn);
+  for (float x = 2; x < 4; ++x) face({{x, 2}, {x + 1, 2}, {x + 1, 3}, {x, 3}}, "boti", T::k);
+  face({{0, 1}, {1, 1}, {1, 4}, {0, 4}}, "bito", T::k);
+  if (turn == T::sr4) face({{1, 1}, {2, 3}, {2, 4}, {1, 4}}, "bito", T::k);
+  else face({{1, 1}, {1.5f, 2}, {2, 3}, {2, 4}, {1, 4}}, "bbito", T::k2tog);
+  for (float x = 2; x < 4; ++x) face({{x, 3}, {x + 1, 3}, {x + 1, 4}, {x, 4}}, "bito", T::k);
+  for (float x = 0; x < 4; ++x) face({{x, 4}, {x + 1, 4}, {x + 1, 5}, {x, 5}}, "boti", T::bo);
+  return std::move(builder).build();
 }
 
 }  // namespace skein::testing

@@ -36,4 +36,10 @@ StitchMesh split_mesh(MismatchYarn::Kind yarn = MismatchYarn::Kind::by_default, 
 StitchMesh contracting_mesh();
 StitchMesh expanding_mesh();
 
+// Fig. 9: four stitches cast on, a pair of short rows over the two right-hand stitches that turns
+// at a short-row face (sr4, or sr5 with a k2tog above its two top edges), a full row and a
+// bind-off. Faces: 0-3 cast-on, 4-5 first short row, 6 the short-row face, 7-8 second short row,
+// 9-12 the full row (right to left), 13-16 bind-off.
+StitchMesh short_row_mesh(StitchType turn = StitchType::sr4);
+
 }  // namespace skein::testing

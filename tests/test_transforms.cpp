@@ -234,3 +234,45 @@ TEST(ShiftPath, TwoMarksOnOneRoundAreRejected) {
 
 }  // namespace
 }  // namespace skein
+
+namespace skein {
+namespace {
+
+TEST(ShortRows, PairTurnsAtAShortRowFaceOnOneYarn) {
+  for (StitchType turn : {StitchType::sr4, StitchType::sr5}) {
+    Compilation c = proven(testing::short_row_mesh(turn), "short rows");
+    const KnitGraph& g = c.knit;
+    EXPECT_EQ(c.yarns.size(), 1u);
+    // Rows: cast-on, first short row (ending at the turn face), second short row, full row, bo.
+    EXPECT_EQ(g.row_shape, (std::vector<RowShape>{RowShape::open, RowShape::open,
+                                                  RowShape::short_row, RowShape::open,
+                                                  RowShape::open}))
+        << abbreviation(turn);
+    EXPECT_EQ(g.yarn_link[6], YarnLink::turn);
+    std::vector<StitchId> order;
+    for (const Event& e : c.schedule.events)
+      if (e.kind == EventKind::stitch) order.push_back(e.stitch);
+    EXPECT_EQ(order, (std::vector<StitchId>{0, 1, 2, 3, 5, 4, 6, 7, 8, 12, 11, 10, 9, 13, 14, 15, 16}))
+        << abbreviation(turn);
+    // The short-row face consumes the loop of the stitch below it and feeds the full row.
+    ASSERT_EQ(g.loops_taken_by(6).size(), 1u);
+    EXPECT_EQ(g.loops[g.loops_taken_by(6)[0]].maker, 1u);
+    EXPECT_EQ(g.loops_made_by(6).size(), turn == StitchType::sr4 ? 1u : 2u);
+    EXPECT_NE(check_report(c).find("rows: 5 (closed 0, open 4, short 1)"), std::string::npos)
+        << check_report(c);
+  }
+}
+
+TEST(ShortRows, MarkersWrapTheTurn) {
+  Compilation c = proven(testing::short_row_mesh(), "short rows");
+  std::size_t begin = 0, end = 0;
+  for (const Event& e : c.schedule.events) {
+    begin += e.kind == EventKind::marker && e.marker == MarkerKind::short_row_begin;
+    end += e.kind == EventKind::marker && e.marker == MarkerKind::short_row_end;
+  }
+  EXPECT_EQ(begin, 1u);
+  EXPECT_EQ(end, 1u);
+}
+
+}  // namespace
+}  // namespace skein
