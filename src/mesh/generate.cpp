@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <map>
+#include <string_view>
 #include <numbers>
 #include <random>
 
@@ -148,6 +150,148 @@ RowPlan random_rows(std::uint32_t width, std::uint32_t rows, const RandomShaping
   }
   plan.emplace_back(loops, StitchType::bo);
   return plan;
+}
+
+namespace {
+
+EdgeRole role_from_letter(char c) {
+  switch (c) {
+    case 'b': return EdgeRole::bottom;
+    case 't': return EdgeRole::top;
+    case 'i': return EdgeRole::wale_in;
+    default: return EdgeRole::wale_out;
+  }
+}
+
+// Builds faces from corner coordinates, sharing a vertex wherever coordinates repeat.
+class CornerBuilder {
+ public:
+  explicit CornerBuilder(const char* name) : builder_(name) {}
+  void face(std::initializer_list<std::pair<float, float>> corners, std::string_view roles,
+            StitchType type) {
+    vertices_.clear();
+    roles_.clear();
+    for (auto [x, y] : corners) vertices_.push_back(vertex(x, y));
+    for (char c : roles) roles_.push_back(role_from_letter(c));
+    builder_.add_face(vertices_, roles_, type);
+  }
+  // A unit square with its lower-left corner at (x, y); roles lower, right, upper, left.
+  void square(float x, float y, std::string_view roles, StitchType type) {
+    face({{x, y}, {x + 1, y}, {x + 1, y + 1}, {x, y + 1}}, roles, type);
+  }
+  StitchMesh build() && { return std::move(builder_).build(); }
+
+ private:
+  Vertex vertex(float x, float y) {
+    auto [it, added] = index_.try_emplace(std::pair{x, y});
+    if (added) it->second = builder_.add_vertex({x, y, 0});
+    return it->second;
+  }
+  StitchMeshBuilder builder_;
+  std::map<std::pair<float, float>, Vertex> index_;
+  std::vector<Vertex> vertices_;
+  std::vector<EdgeRole> roles_;
+};
+
+// Roles of a unit square by wale direction (up or down) and course direction.
+std::string_view square_roles(bool wale_up, bool left_to_right) {
+  if (wale_up) return left_to_right ? "boti" : "bito";
+  return left_to_right ? "tobi" : "tibo";
+}
+
+float centre_height(const StitchMesh& mesh, Face f) {
+  float sum = 0;
+  for (Halfedge h : mesh.halfedges(f)) sum += mesh.position[mesh.tail(h)].y;
+  return sum / static_cast<float>(mesh.degree(f));
+}
+
+StitchType knit_or_purl(std::mt19937_64& rng) { return rng() % 3 ? StitchType::k : StitchType::p; }
+
+void full_row(CornerBuilder& b, std::uint32_t width, float y, bool wale_up, bool left_to_right,
+              StitchType type, std::mt19937_64& rng) {
+  for (std::uint32_t x = 0; x < width; ++x)
+    b.square(static_cast<float>(x), y, square_roles(wale_up, left_to_right),
+             type == StitchType::k ? knit_or_purl(rng) : type);
+}
+
+// Rows y0..y0+3: a short row right to left over the stitches right of column c, the turn at c,
+// a short row back, and the full row right to left above (stretched left of the turn).
+void short_row_pair(CornerBuilder& b, std::uint32_t width, std::uint32_t c, float y0, bool sr5,
+                    std::mt19937_64& rng) {
+  float fc = static_cast<float>(c);
+  for (std::uint32_t x = c + 1; x < width; ++x) b.square(static_cast<float>(x), y0, "bito", knit_or_purl(rng));
+  if (sr5)
+    b.face({{fc, y0}, {fc + 1, y0}, {fc + 1, y0 + 1}, {fc + 1, y0 + 2}, {fc + 0.5f, y0 + 1}}, "biott",
+           StitchType::sr5);
+  else
+    b.face({{fc, y0}, {fc + 1, y0}, {fc + 1, y0 + 1}, {fc + 1, y0 + 2}}, "biot", StitchType::sr4);
+  for (std::uint32_t x = c + 1; x < width; ++x) b.square(static_cast<float>(x), y0 + 1, "boti", knit_or_purl(rng));
+  for (std::uint32_t x = 0; x < c; ++x) {
+    float fx = static_cast<float>(x);
+    b.face({{fx, y0}, {fx + 1, y0}, {fx + 1, y0 + 3}, {fx, y0 + 3}}, "bito", knit_or_purl(rng));
+  }
+  if (sr5)
+    b.face({{fc, y0}, {fc + 0.5f, y0 + 1}, {fc + 1, y0 + 2}, {fc + 1, y0 + 3}, {fc, y0 + 3}}, "bbito",
+           StitchType::k2tog);
+  else
+    b.face({{fc, y0}, {fc + 1, y0 + 2}, {fc + 1, y0 + 3}, {fc, y0 + 3}}, "bito", knit_or_purl(rng));
+  for (std::uint32_t x = c + 1; x < width; ++x) b.square(static_cast<float>(x), y0 + 2, "bito", knit_or_purl(rng));
+}
+
+}  // namespace
+
+StitchMesh short_row_sheet(std::uint32_t width, std::uint32_t rows, std::uint64_t seed) {
+  if (width < 3) throw Error("a short-row sheet needs at least 3 stitches");
+  std::mt19937_64 rng(seed);
+  CornerBuilder b("<short-row sheet>");
+  full_row(b, width, 0, true, true, StitchType::co, rng);
+  float y = 1;
+  bool next_left_to_right = false;  // rows alternate, starting back from the cast-on's end
+  for (std::uint32_t r = 0; r < rows; ++r) {
+    if (!next_left_to_right && rng() % 3 == 0) {  // starts at the right edge: a pair fits
+      short_row_pair(b, width, 1 + static_cast<std::uint32_t>(rng() % (width - 2)), y, rng() % 2, rng);
+      y += 3;
+      next_left_to_right = true;  // the pair's full row ran right to left
+      continue;
+    }
+    full_row(b, width, y, true, next_left_to_right, StitchType::k, rng);
+    next_left_to_right = !next_left_to_right;
+    y += 1;
+  }
+  full_row(b, width, y, true, next_left_to_right, StitchType::bo, rng);
+  return std::move(b).build();
+}
+
+StitchMesh meeting_sheets(Meeting meeting, std::uint32_t width, std::uint32_t lower_rows,
+                          std::uint32_t upper_rows, MismatchYarn::Kind yarn, bool own_lower,
+                          std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  CornerBuilder b(meeting == Meeting::join ? "<joined sheets>" : "<split sheets>");
+  bool join = meeting == Meeting::join;
+  // Each piece is knit from its far edge towards the line (join) or from the line outwards
+  // (split); its first row is cast on (join) or its last bound off (split).
+  auto piece = [&](std::uint32_t rows, bool lower) {
+    float line = static_cast<float>(lower_rows);
+    for (std::uint32_t r = 0; r < rows; ++r) {
+      std::uint32_t from_line = join ? rows - 1 - r : r;
+      float y = lower ? line - 1 - static_cast<float>(from_line) : line + static_cast<float>(from_line);
+      bool wale_up = lower == join;
+      StitchType type = join ? (r == 0 ? StitchType::co : StitchType::k)
+                             : (r + 1 == rows ? StitchType::bo : StitchType::k);
+      full_row(b, width, y, wale_up, r % 2 == 0, type, rng);
+    }
+  };
+  piece(lower_rows, true);
+  piece(upper_rows, false);
+  StitchMesh mesh = std::move(b).build();
+  for (Edge e : mesh.edges()) {
+    EdgeKind kind = mesh.kind(e);
+    if (kind != EdgeKind::join && kind != EdgeKind::split) continue;
+    Face a = mesh.face(mesh.halfedge(e)), b2 = mesh.neighbour(mesh.halfedge(e));
+    bool a_is_lower = centre_height(mesh, a) < centre_height(mesh, b2);
+    mesh.mismatch_yarn[e] = {yarn, a_is_lower == own_lower ? a : b2};
+  }
+  return mesh;
 }
 
 }  // namespace skein

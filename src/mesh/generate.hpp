@@ -39,4 +39,17 @@ struct RandomShaping {
 RowPlan random_rows(std::uint32_t width, std::uint32_t rows, const RandomShaping& shaping,
                     std::uint64_t seed);
 
+// A flat sheet of knit and purl rows with pairs of short rows over its right-hand stitches,
+// each pair turning at a short-row face (sr4 or sr5, Fig. 10) and followed by a full row.
+// Stitches are random (seeded); about one row in three starts a pair.
+StitchMesh short_row_sheet(std::uint32_t width, std::uint32_t rows, std::uint64_t seed);
+
+// Two flat pieces meeting on a mismatched edge line: a join (both wales point at the line:
+// three-needle bind-off) or a split (both point away: cast on along it), with `yarn` on every
+// edge of the line (own yarn: the lower piece's when `own_lower`).
+enum class Meeting : std::uint8_t { join, split };
+StitchMesh meeting_sheets(Meeting meeting, std::uint32_t width, std::uint32_t lower_rows,
+                          std::uint32_t upper_rows, MismatchYarn::Kind yarn, bool own_lower,
+                          std::uint64_t seed);
+
 }  // namespace skein
