@@ -264,14 +264,26 @@ void assign_rows(StitchMesh& mesh) {
     std::uint32_t from = root[mesh.face(h).index()], to = root[mesh.face(t).index()];
     if (from != to) arcs.emplace_back(from, to);
   }
-  std::sort(arcs.begin(), arcs.end());
-  arcs.erase(std::unique(arcs.begin(), arcs.end()), arcs.end());
+  // Counting sort by the row they leave, each target kept once: linear, unlike a sort.
   std::vector<std::uint32_t> first(nf + 1, 0);
-  for (auto [from, to] : arcs) {
-    ++first[from + 1];
-    ++indegree[to];
-  }
+  for (auto [from, to] : arcs) ++first[from + 1];
   std::partial_sum(first.begin(), first.end(), first.begin());
+  std::vector<std::uint32_t> targets(arcs.size()), fill(first.begin(), first.end() - 1);
+  for (auto [from, to] : arcs) targets[fill[from]++] = to;
+  std::vector<std::uint32_t> seen_from(nf, Handle<FaceTag>::kInvalid);
+  std::uint32_t kept = 0;
+  for (std::uint32_t from = 0; from < nf; ++from) {
+    std::uint32_t begin = first[from];
+    first[from] = kept;
+    for (std::uint32_t i = begin; i < fill[from]; ++i) {
+      std::uint32_t to = targets[i];
+      if (seen_from[to] == from) continue;
+      seen_from[to] = from;
+      targets[kept++] = to;
+      ++indegree[to];
+    }
+  }
+  first[nf] = kept;
 
   // Kahn's order, lowest root face first; rows in a cycle (unknittable) follow in face order.
   constexpr std::uint32_t kUnset = Handle<FaceTag>::kInvalid;
@@ -283,8 +295,7 @@ void assign_rows(StitchMesh& mesh) {
   auto take = [&](std::uint32_t r) {
     number[r] = next_number++;
     for (std::uint32_t i = first[r]; i < first[r + 1]; ++i)
-      if (number[arcs[i].second] == kUnset && --indegree[arcs[i].second] == 0)
-        ready.push(arcs[i].second);
+      if (number[targets[i]] == kUnset && --indegree[targets[i]] == 0) ready.push(targets[i]);
   };
   for (std::uint32_t scan = 0;;) {
     while (!ready.empty()) {
