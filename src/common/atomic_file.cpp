@@ -3,7 +3,10 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <array>
 #include <cerrno>
+#include <cstdio>
+#include <memory>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -32,13 +35,17 @@ void write_file_atomically(const std::string& path,
 }
 
 std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError(fmt::format("cannot read {}: {}", path, std::strerror(errno)));
-  in.seekg(0, std::ios::end);
-  std::string text(static_cast<std::size_t>(in.tellg()), '\0');
-  in.seekg(0);
-  in.read(text.data(), static_cast<std::streamsize>(text.size()));
-  if (!in) throw IoError(fmt::format("cannot read {}: read error", path));
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!file) throw IoError(fmt::format("cannot open '{}': {}", path, std::strerror(errno)));
+  std::string text;
+  std::error_code size_unknown;
+  std::uintmax_t size = std::filesystem::file_size(path, size_unknown);
+  if (!size_unknown) text.reserve(size);
+  std::array<char, 1 << 16> block;
+  while (std::size_t got = std::fread(block.data(), 1, block.size(), file.get()))
+    text.append(block.data(), got);
+  if (std::ferror(file.get()))
+    throw IoError(fmt::format("cannot read '{}': {}", path, std::strerror(errno)));
   return text;
 }
 

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "common/atomic_file.hpp"
 #include "common/error.hpp"
 
 namespace skein {
@@ -303,20 +304,6 @@ class StParser {
   KnitGraph graph_;
 };
 
-std::string read_whole_file(const std::string& path) {
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
-                                                       &std::fclose);
-  if (!file) throw IoError(fmt::format("cannot open '{}': {}", path, std::strerror(errno)));
-  std::string text;
-  std::array<char, 1 << 16> buffer;
-  std::size_t got = 0;
-  while ((got = std::fread(buffer.data(), 1, buffer.size(), file.get())) > 0)
-    text.append(buffer.data(), got);
-  if (std::ferror(file.get()))
-    throw IoError(fmt::format("cannot read '{}': {}", path, std::strerror(errno)));
-  return text;
-}
-
 }  // namespace
 
 KnitGraph parse_autoknit_st(std::string_view text, const std::string& file_name) {
@@ -324,7 +311,7 @@ KnitGraph parse_autoknit_st(std::string_view text, const std::string& file_name)
 }
 
 KnitGraph read_autoknit_st(const std::string& path) {
-  return parse_autoknit_st(read_whole_file(path), path);
+  return parse_autoknit_st(read_file(path), path);
 }
 
 }  // namespace skein

@@ -13,6 +13,7 @@
 #include <ostream>
 #include <vector>
 
+#include "common/atomic_file.hpp"
 #include "common/error.hpp"
 
 namespace skein {
@@ -474,22 +475,6 @@ void write_yarn_choices(const StitchMesh& mesh, BufferedWriter& w) {
     }
     w.end_line();
   }
-}
-
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw IoError(fmt::format("cannot open stitch mesh file '{}': {}", path, std::strerror(errno)));
-  std::string text;
-  std::error_code size_unknown;
-  std::uintmax_t size = std::filesystem::file_size(path, size_unknown);
-  if (!size_unknown) text.reserve(size);
-  char block[1 << 16];
-  while (in.read(block, sizeof block) || in.gcount() > 0)
-    text.append(block, static_cast<std::size_t>(in.gcount()));
-  if (in.bad())
-    throw IoError(fmt::format("cannot read stitch mesh file '{}': {}", path, std::strerror(errno)));
-  return text;
 }
 
 }  // namespace

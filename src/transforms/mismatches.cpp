@@ -48,9 +48,9 @@ class MismatchTransform {
     bool extra = group.yarn == MismatchYarnUse::extra;
     switch (group.kind) {
       case MismatchKind::join:
-        return extra ? extrude(edges, StitchType::tnbo) : for_each_own(group, edges, &MismatchTransform::join_with_own_yarn);
+        return extra ? extrude(edges, StitchType::tnbo) : with_own_yarn(group, edges);
       case MismatchKind::split:
-        return extra ? extrude(edges, StitchType::sco) : for_each_own(group, edges, &MismatchTransform::split_with_own_yarn);
+        return extra ? extrude(edges, StitchType::sco) : with_own_yarn(group, edges);
       case MismatchKind::contracting:
         for (std::uint32_t e : edges) become_decrease(g_.loops[loop_of(e)].taker);
         return;
@@ -91,34 +91,28 @@ class MismatchTransform {
     }
   }
 
-  using OwnEdge = void (MismatchTransform::*)(std::uint32_t own_loop, std::uint32_t other_loop);
-  void for_each_own(const MismatchGroup& group, const std::vector<std::uint32_t>& edges, OwnEdge work) {
+  void with_own_yarn(const MismatchGroup& group, const std::vector<std::uint32_t>& edges) {
     std::uint32_t own_row = g_.row[group.own_side];
     for (std::uint32_t e : edges) {
       const MismatchEdge& me = g_.mismatch_edges[e];
       bool first_is_own = g_.row[side_stitch(me.loop[0])] == own_row;
-      (this->*work)(me.loop[first_is_own ? 0 : 1], me.loop[first_is_own ? 1 : 0]);
+      work_with_own_yarn(group.kind, me.loop[first_is_own ? 0 : 1], me.loop[first_is_own ? 1 : 0]);
     }
   }
 
-  // The own side's stitch takes the other side's loop too and binds off (Fig. 6d).
-  void join_with_own_yarn(std::uint32_t own_loop, std::uint32_t other_loop) {
-    StitchId f = g_.loops[own_loop].maker;
-    require_plain(f, "work a three-needle bind-off with its own yarn");
-    g_.type[f] = StitchType::tnbo;
+  // The own side's stitch does the work of the extruded row: on a join it takes the other
+  // side's loop too and binds off (Fig. 6d); on a split it casts on the loop the other side is
+  // pulled through (Fig. 7d).
+  void work_with_own_yarn(MismatchKind kind, std::uint32_t own_loop, std::uint32_t other_loop) {
+    bool join = kind == MismatchKind::join;
+    StitchId f = side_stitch(own_loop);
+    require_plain(f, join ? "work a three-needle bind-off with its own yarn"
+                          : "cast on along a split with its own yarn");
+    g_.type[f] = join ? StitchType::tnbo : StitchType::sco;
     removed_[own_loop] = 1;
-    g_.loops[other_loop].taker = f;
-    g_.loops[other_loop].taker_slot = 1;
-  }
-
-  // The own side's stitch is replaced by the cast-on that makes both loops (Fig. 7d).
-  void split_with_own_yarn(std::uint32_t own_loop, std::uint32_t other_loop) {
-    StitchId f = g_.loops[own_loop].taker;
-    require_plain(f, "cast on along a split with its own yarn");
-    g_.type[f] = StitchType::sco;
-    removed_[own_loop] = 1;
-    g_.loops[other_loop].maker = f;
-    g_.loops[other_loop].maker_slot = 1;
+    Loop& other = g_.loops[other_loop];
+    (join ? other.taker : other.maker) = f;
+    (join ? other.taker_slot : other.maker_slot) = 1;
   }
 
   void require_plain(StitchId s, const char* what) const {
