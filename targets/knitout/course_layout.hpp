@@ -1,0 +1,38 @@
+// Courses (rows of a sheet, rounds of a tube) in knitting order, and which way the yarn runs
+// through each stitch in the stitch's own frame (right side facing, wale up). The knit graph
+// orders loops left to right in each stitch's frame but does not record which way its yarn
+// goes; this derives it by laying each course's loops out left to right and checking that the
+// next course consumes them in order. Shared by the emitter and the fabric proof.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "driver/pipeline.hpp"
+
+namespace skein::knitout {
+
+struct Course {
+  std::uint32_t row = 0;               // the knit graph's row number
+  std::uint32_t begin = 0, end = 0;    // its stitches: CourseLayout::order[begin, end)
+  bool left_to_right = true;           // the yarn runs left to right in its stitches' frames
+};
+
+struct CourseLayout {
+  bool tube = false;               // closed rounds (a helix) rather than open rows
+  std::vector<StitchId> order;     // every stitch, in yarn order
+  std::vector<Course> courses;
+  std::vector<std::uint8_t> left_to_right;  // per stitch
+};
+
+// Throws Error "not yet supported by the knitout target: <what>, at <stitch>" for inputs the
+// target does not handle yet (short rows, mismatches, several yarn pieces, stitch graphs
+// without rows, stitch types without a machine recipe).
+CourseLayout lay_out_courses(const Compilation& compilation);
+
+// Made loops of a stitch in the order its yarn makes them, as slots (left to right in its frame).
+inline std::uint8_t slot_along_yarn(bool left_to_right, std::uint8_t i, std::uint8_t count) {
+  return left_to_right ? i : static_cast<std::uint8_t>(count - 1 - i);
+}
+
+}  // namespace skein::knitout

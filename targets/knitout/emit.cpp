@@ -1,0 +1,521 @@
+#include "knitout/emit.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <ostream>
+
+#include "common/error.hpp"
+#include "knitout/course_layout.hpp"
+#include "knitout/knitout_writer.hpp"
+#include "knitout/stitch_recipes.hpp"
+
+namespace skein::knitout {
+namespace {
+
+struct Place {
+  Bed bed = Bed::f;
+  std::int32_t needle = 0;
+  friend bool operator==(const Place&, const Place&) = default;
+};
+Needle at(Place p) { return {p.bed, p.needle}; }
+Bed other(Bed b) { return b == Bed::f ? Bed::b : Bed::f; }
+Place facing(Place p) { return {other(p.bed), p.needle}; }
+
+// Where a stitch is knit in its course.
+struct StitchPlan {
+  Bed home = Bed::f;        // the bed its made loops live on
+  Bed knit = Bed::f;        // home, or the other bed for a purl
+  std::int32_t needle = 0;  // its knit slot's needle: where its taken loops are stacked
+  std::int32_t step = 1;    // needles from one of its made slots to the next, left to right
+  std::uint8_t knit_slot = 0;
+  Direction travel = Direction::plus;
+  Place home_of(std::uint32_t slot) const {
+    return {home, needle + (static_cast<std::int32_t>(slot) - knit_slot) * step};
+  }
+};
+
+struct LoopPlace {
+  Place now, home;  // where the loop is, and where it rests between courses
+};
+
+struct Move {
+  Place from, to;
+};
+std::int32_t rack_of(const Move& m) {
+  return m.from.bed == Bed::f ? m.from.needle - m.to.needle : m.to.needle - m.from.needle;
+}
+
+// Needles a course occupies: per stitch max(made, 1), laid out left to right.
+std::uint32_t footprint(StitchType t) { return std::max<std::uint32_t>(info(t).loops_out, 1); }
+
+class Emitter {
+ public:
+  Emitter(const Compilation& c, const MachineProfile& p, std::ostream& out)
+      : c_(c), g_(c.knit), p_(p), l_(lay_out_courses(c)), w_(out) {
+    pitch_ = l_.tube ? 2 : 1;
+    reach_ = p_.max_transfer_stretch / pitch_ * pitch_;
+    plan_.resize(g_.size());
+    live_.resize(g_.loops.size());
+    carrier_ = p_.yarn_carrier;
+  }
+
+  void run() {
+    check_fit();
+    header();
+    const Course& first = l_.courses.front();
+    plan_course(first, true);
+    cast_on(first);
+    for (std::size_t i = 1; i < l_.courses.size(); ++i) {
+      const Course& course = l_.courses[i];
+      plan_course(course, false);
+      transition(course);
+      if (i + 1 == l_.courses.size()) bind_off(course);
+      else knit_course(course);
+    }
+  }
+
+ private:
+  // ---- fitting the model on the profile ----
+  struct Footprint {
+    std::uint32_t total = 0, front = 0, split = 0;  // split: first stitch (left to right) on the back
+  };
+  template <typename F>
+  void each_left_to_right(const Course& c, F f) const {
+    if (c.left_to_right)
+      for (std::uint32_t i = c.begin; i < c.end; ++i) f(l_.order[i]);
+    else
+      for (std::uint32_t i = c.end; i-- > c.begin;) f(l_.order[i]);
+  }
+  Footprint measure(const Course& c) const {
+    Footprint f;
+    each_left_to_right(c, [&](StitchId s) { f.total += footprint(g_.type[s]); });
+    if (!l_.tube) return f;
+    // The back takes what is left once the front holds at least half.
+    each_left_to_right(c, [&](StitchId s) {
+      if (2 * f.front < f.total) {
+        f.front += footprint(g_.type[s]);
+        ++f.split;
+      }
+    });
+    return f;
+  }
+  std::uint32_t needles_needed(const Footprint& f) const {
+    return l_.tube ? 2 * std::max(f.front, f.total - f.front) : f.total;
+  }
+
+  // Checks that the model fits the profile, and centres a tube's widest course on the bed.
+  void check_fit() {
+    std::uint32_t widest = 0;
+    const Course* at_course = nullptr;
+    for (const Course& c : l_.courses) {
+      std::uint32_t n = needles_needed(measure(c));
+      if (n > widest) widest = n, at_course = &c;
+    }
+    std::int32_t span = static_cast<std::int32_t>(p_.needles / 2), half = static_cast<std::int32_t>(widest / 2);
+    fold_ = (span + half) / 2 - 1;
+    if (widest > p_.needles)
+      throw Error(fmt::format("{} needs {} needles{} (row {}, from {}), {} has {}", c_.input, widest,
+                              l_.tube ? " in half gauge" : "", at_course->row + 1,
+                              g_.describe(l_.order[at_course->begin]), p_.name, p_.needles));
+    for (StitchId s = 0; s < g_.size(); ++s) {
+      std::uint32_t in = info(g_.type[s]).loops_in;
+      if (in > p_.max_loops_per_needle)
+        throw Error(fmt::format("a {}-to-1 decrease exceeds the {} loop{} per needle {} allows, at {}",
+                                in, p_.max_loops_per_needle, p_.max_loops_per_needle == 1 ? "" : "s",
+                                p_.name, g_.describe(s)));
+      if (in == 3 && reach_ < 2 * pitch_)
+        throw Error(fmt::format("a 3-to-1 decrease needs transfers across {} needles, {} allows {}, at {}",
+                                2 * pitch_, p_.name, p_.max_transfer_stretch, g_.describe(s)));
+    }
+    if (reach_ < pitch_)
+      throw Error(fmt::format("{} allows no sideways transfer (racking.max_transfer_stretch {})",
+                              p_.name, p_.max_transfer_stretch));
+  }
+
+  // ---- laying a course out on the needles ----
+  // A tube keeps its folds where they are while the halves stay within two loops of each other,
+  // so that loops cross from one bed to the other only to rebalance the tube.
+  void keep_folds(const Course& c, Footprint& f) const {
+    Footprint kept;
+    bool on_front = true;
+    each_left_to_right(c, [&](StitchId s) {
+      on_front = on_front && live_[taken(s)[stacking_order(g_.type[s])[0]]].home.bed == Bed::f;
+      if (!on_front) return;
+      kept.front += footprint(g_.type[s]);
+      ++kept.split;
+    });
+    kept.total = f.total;
+    std::uint32_t back = f.total - kept.front;
+    bool balanced = kept.front <= back + 2 && back <= kept.front + 2;
+    if (kept.split > 0 && balanced && std::max(kept.front, back) <= static_cast<std::uint32_t>(fold_ + 1)) f = kept;
+  }
+
+  void plan_course(const Course& c, bool first) {
+    Footprint f = measure(c);
+    if (l_.tube && !first) keep_folds(c, f);
+    std::uint32_t back = f.total - f.front;
+    std::vector<std::int32_t> wants;
+    std::uint32_t q = 0, index = 0;
+    auto place = [&](StitchId s, std::int32_t offset, bool record) {
+      StitchPlan& sp = plan_[s];
+      bool ltr = l_.left_to_right[s];
+      sp.knit_slot = knit_slot(g_.type[s], ltr);
+      std::uint32_t qk = q + sp.knit_slot;
+      bool on_back = l_.tube && index >= f.split;
+      sp.home = on_back ? Bed::b : Bed::f;
+      sp.step = on_back ? -pitch_ : pitch_;
+      // A sheet counts from its left end; a tube from its right fold, where the two beds meet.
+      std::int32_t rank = static_cast<std::int32_t>(!l_.tube ? qk : on_back ? qk - f.front : f.front - 1 - qk);
+      std::int32_t sign = l_.tube ? -1 : 1;
+      sp.needle = l_.tube ? 2 * (offset - rank) + (on_back ? 1 : 0) : offset + rank;
+      sp.knit = is_purl(g_.type[s]) ? other(sp.home) : sp.home;
+      bool rightward = (sp.step > 0) == ltr;
+      sp.travel = rightward ? Direction::plus : Direction::minus;
+      if (record && !g_.loops_taken_by(s).empty()) {
+        std::uint32_t bottom = g_.loops_taken_by(s)[stacking_order(g_.type[s])[0]];
+        const Place& h = live_[bottom].home;
+        if (h.bed == sp.home) {
+          std::int32_t have = l_.tube ? (h.needle - (on_back ? 1 : 0)) / 2 : h.needle;
+          wants.push_back(have - sign * rank);
+        }
+      }
+      q += footprint(g_.type[s]);
+      ++index;
+    };
+    each_left_to_right(c, [&](StitchId s) { place(s, 0, !first); });
+    std::int32_t span = static_cast<std::int32_t>(l_.tube ? p_.needles / 2 : p_.needles);
+    std::int32_t used = static_cast<std::int32_t>(l_.tube ? std::max(f.front, back) : f.total);
+    std::int32_t low = l_.tube ? used - 1 : 0, high = l_.tube ? span - 1 : span - used;
+    std::int32_t offset = (span - used) / 2 + low;
+    if (!wants.empty()) {
+      auto mid = wants.begin() + static_cast<std::ptrdiff_t>(wants.size() / 2);
+      std::nth_element(wants.begin(), mid, wants.end());
+      offset = std::clamp(*mid, low, high);
+    }
+    if (l_.tube) offset = fold_;
+    q = index = 0;
+    each_left_to_right(c, [&](StitchId s) { place(s, offset, false); });
+  }
+
+  // ---- output helpers ----
+  void header() {
+    w_.line(";!knitout-2");
+    w_.line(fmt::format(";;Machine: {}", p_.machine));
+    w_.line(fmt::format(";;Gauge: {}", p_.gauge));
+    if (p_.width_header) w_.line(fmt::format(";;Width: {}", p_.needles));
+    w_.line(fmt::format(";;Carriers: {}", p_.carriers_line()));
+    w_.line(fmt::format(";;Position: {}", p_.position));
+    w_.line(fmt::format(";!source: {} ({} stitches, {} {}), knit by skein for {}", c_.input, g_.size(),
+                        l_.courses.size(), l_.tube ? "rounds: a tube in half gauge" : "rows: a sheet",
+                        p_.name));
+    if (p_.stitch_number) w_.line(fmt::format("x-stitch-number {}", p_.stitch_number));
+    if (p_.speed_number) w_.line(fmt::format("x-speed-number {}", p_.speed_number));
+  }
+
+  void source(const Course& c, const char* what) {
+    StitchId a = l_.order[c.begin], b = l_.order[c.end - 1];
+    w_.note(fmt::format(";!source: row {} {}: {}s {}..{} ({})", c.row + 1, what, g_.element,
+                        g_.source[a] + 1, g_.source[b] + 1,
+                        c.left_to_right ? "left to right" : "right to left"));
+  }
+
+  void emit_moves(std::vector<Move>& moves) {
+    std::stable_sort(moves.begin(), moves.end(),
+                     [](const Move& a, const Move& b) { return rack_of(a) < rack_of(b); });
+    for (const Move& m : moves) w_.xfer(at(m.from), at(m.to));
+    moves.clear();
+  }
+
+  std::span<const std::uint32_t> taken(StitchId s) const { return g_.loops_taken_by(s); }
+
+  // ---- the transfers between two courses ----
+  void transition(const Course& c) {
+    source(c, "transfers");
+    std::vector<std::uint8_t> ready(c.end - c.begin, 0);  // already on its knit needle
+    go_home(c, ready, !fits_one_stage(c));
+    merge_decreases(c);
+    shift_stacks(c, ready);
+    send_purls(c, ready);
+  }
+
+  // True when every loop reaches its new needle in one transfer: then a loop already where its
+  // next stitch is knit may stay there, as no stack passes through its needle on the way.
+  bool fits_one_stage(const Course& c) const {
+    for (std::uint32_t i = c.begin; i < c.end; ++i) {
+      const StitchPlan& sp = plan_[l_.order[i]];
+      for (std::uint32_t loop : taken(l_.order[i]))
+        if (std::abs(ring(live_[loop].home) - ring({sp.home, sp.needle})) > reach_ / pitch_) return false;
+    }
+    return true;
+  }
+
+  // Loops knit on the other bed (purls, kfb's second loop) go back to their home needle,
+  // unless (when not `staged`) the next stitch takes that loop alone right where it is.
+  void go_home(const Course& c, std::vector<std::uint8_t>& ready, bool staged) {
+    std::vector<Move> moves;
+    for (std::uint32_t i = c.begin; i < c.end; ++i) {
+      StitchId s = l_.order[i];
+      const StitchPlan& sp = plan_[s];
+      bool alone = taken(s).size() == 1 && !staged;
+      for (std::uint32_t loop : taken(s)) {
+        LoopPlace& lp = live_[loop];
+        if (alone && lp.now == Place{sp.knit, sp.needle} && lp.now.needle == lp.home.needle) {
+          ready[i - c.begin] = 1;
+          continue;
+        }
+        if (lp.now == lp.home) continue;
+        moves.push_back({lp.now, lp.home});
+        lp.now = lp.home;
+      }
+    }
+    emit_moves(moves);
+  }
+
+  // Each decrease's loops land on its bottom loop's needle in stacking order (the lean).
+  void merge_decreases(const Course& c) {
+    for (std::size_t stage = 1; stage < 3; ++stage) {
+      std::vector<Move> to_transit, landing;
+      for (std::uint32_t i = c.begin; i < c.end; ++i) {
+        StitchId s = l_.order[i];
+        auto order = stacking_order(g_.type[s]);
+        if (stage >= order.size()) continue;
+        Place bottom = live_[taken(s)[order[0]]].now;
+        LoopPlace& lp = live_[taken(s)[order[stage]]];
+        if (lp.now.bed == bottom.bed) {
+          to_transit.push_back({lp.now, facing(lp.now)});
+          landing.push_back({facing(lp.now), bottom});
+        } else {
+          landing.push_back({lp.now, bottom});
+        }
+        lp.now = lp.home = bottom;
+      }
+      emit_moves(to_transit);
+      emit_moves(landing);
+    }
+  }
+
+  // A loop's place along the fabric, left to right in the stitches' frames: the needle on a
+  // sheet; on a tube, counted from the right fold (front f2R is 0, back b2R+1 is 1), so that
+  // the front reads ..., -1, 0 and the back 1, 2, ... and a fold is crossed between 0 and 1.
+  std::int32_t ring(Place p) const {
+    if (!l_.tube) return p.needle;
+    return p.bed == Bed::f ? p.needle / 2 - fold_ : fold_ - (p.needle - 1) / 2 + 1;
+  }
+  Place place_at(std::int32_t u) const {
+    if (!l_.tube) return {Bed::f, u};
+    return u <= 0 ? Place{Bed::f, 2 * (fold_ + u)} : Place{Bed::b, 2 * (fold_ - u + 1) + 1};
+  }
+
+  // Re-spaces the stacks onto the course's needles in stages: in each, every stack moves at
+  // most the transfer reach toward its needle along the fabric. Moving every stack the same
+  // clamped way keeps their order, so no two ever meet. Stacks moving along a bed pass
+  // through the facing needle; stacks crossing the tube's fold go straight over once the
+  // others have left for the facing needles.
+  void shift_stacks(const Course& c, const std::vector<std::uint8_t>& ready) {
+    struct Stack {
+      StitchId stitch;
+      std::int32_t now, target;
+    };
+    std::vector<Stack> stacks;
+    for (std::uint32_t i = c.begin; i < c.end; ++i) {
+      StitchId s = l_.order[i];
+      if (ready[i - c.begin]) continue;
+      stacks.push_back({s, ring(live_[taken(s)[0]].now), ring({plan_[s].home, plan_[s].needle})});
+    }
+    std::int32_t step = reach_ / pitch_;
+    for (bool moved = true; moved;) {
+      moved = false;
+      std::vector<Move> to_transit, crossing, landing;
+      for (Stack& st : stacks) {
+        if (st.now == st.target) continue;
+        moved = true;
+        std::int32_t stop = std::clamp(st.target, st.now - step, st.now + step);
+        Place from = place_at(st.now), to = place_at(stop);
+        if (from.bed == to.bed) {
+          to_transit.push_back({from, facing(from)});
+          landing.push_back({facing(from), to});
+        } else {
+          crossing.push_back({from, to});
+        }
+        st.now = stop;
+      }
+      emit_moves(to_transit);
+      emit_moves(crossing);
+      emit_moves(landing);
+    }
+    for (const Stack& st : stacks)
+      for (std::uint32_t loop : taken(st.stitch)) live_[loop].now = live_[loop].home = place_at(st.target);
+  }
+
+  void send_purls(const Course& c, const std::vector<std::uint8_t>& ready) {
+    std::vector<Move> moves;
+    for (std::uint32_t i = c.begin; i < c.end; ++i) {
+      StitchId s = l_.order[i];
+      const StitchPlan& sp = plan_[s];
+      if (ready[i - c.begin] || sp.knit == sp.home || taken(s).empty()) continue;
+      moves.push_back({{sp.home, sp.needle}, {sp.knit, sp.needle}});
+      for (std::uint32_t loop : taken(s)) live_[loop].now = {sp.knit, sp.needle};
+    }
+    emit_moves(moves);
+  }
+
+  // ---- knitting ----
+  void made(StitchId s, std::uint32_t slot, Place now) {
+    auto loops = g_.loops_made_by(s);
+    if (slot < loops.size()) live_[loops[slot]] = {now, plan_[s].home_of(slot)};
+  }
+
+  void knit_stitch(StitchId s) {
+    const StitchPlan& sp = plan_[s];
+    Needle n{sp.knit, sp.needle};
+    StitchType t = g_.type[s];
+    if (info(t).loops_out < 2) {
+      w_.knit(sp.travel, n, carrier_);
+      made(s, 0, {sp.knit, sp.needle});
+      return;
+    }
+    std::uint32_t extra = 1u - sp.knit_slot;
+    Place extra_home = sp.home_of(extra);
+    if (t == StitchType::kfb) {  // split: the old loop waits on the facing needle, then is knit there
+      Needle behind{other(sp.knit), sp.needle};
+      w_.split(sp.travel, n, behind, carrier_);
+      w_.knit(sp.travel, behind, carrier_);
+      made(s, sp.knit_slot, {sp.knit, sp.needle});
+      made(s, extra, {behind.bed, behind.index});
+      return;
+    }
+    // yo, m1l, m1r: a tuck on the empty needle beside the knit, in the order the yarn passes.
+    bool tuck_first = (extra_home.needle < sp.needle) == (sp.travel == Direction::plus);
+    if (tuck_first) w_.tuck(sp.travel, at(extra_home), carrier_);
+    w_.knit(sp.travel, n, carrier_);
+    if (!tuck_first) w_.tuck(sp.travel, at(extra_home), carrier_);
+    made(s, sp.knit_slot, {sp.knit, sp.needle});
+    made(s, extra, extra_home);
+  }
+
+  void knit_course(const Course& c) {
+    source(c, "knit");
+    w_.rack(0);
+    for (std::uint32_t i = c.begin; i < c.end; ++i) knit_stitch(l_.order[i]);
+  }
+
+  // ---- cast-on and bind-off ----
+  // The course's needles on the bed a pass in direction d works, in the order it meets them.
+  std::vector<Needle> pass_needles(const Course& c, Direction d) const {
+    std::vector<Needle> needles;
+    for (std::uint32_t i = c.begin; i < c.end; ++i) {
+      const StitchPlan& sp = plan_[l_.order[i]];
+      if (sp.travel == d || !l_.tube) needles.push_back({sp.knit, sp.needle});
+    }
+    std::sort(needles.begin(), needles.end(), [d](const Needle& a, const Needle& b) {
+      return d == Direction::plus ? a.index < b.index : a.index > b.index;
+    });
+    return needles;
+  }
+
+  // Alternating tucks over the cast-on needles (two passes per bed), starting in the profile's
+  // first direction; returns the direction of the next pass.
+  Direction tuck_border(const Course& c, const std::string& carrier) {
+    Direction d = p_.first_pass;
+    for (int pass = 0; pass < (l_.tube ? 4 : 2); ++pass, d = opposite(d)) {
+      std::int32_t parity = l_.tube ? pass / 2 : pass;
+      for (const Needle& n : pass_needles(c, d))
+        if ((l_.tube ? n.index / 2 : n.index) % 2 == parity) w_.tuck(d, n, carrier);
+    }
+    return d;
+  }
+  void knit_pass(const Course& c, Direction d, const std::string& carrier) {
+    for (const Needle& n : pass_needles(c, d)) w_.knit(d, n, carrier);
+  }
+  void yarn_in(const std::string& carrier) {
+    w_.carriers(p_.hook == YarnHook::inhook ? "inhook" : "in", carrier);
+  }
+  void release(const std::string& carrier) {
+    if (p_.hook == YarnHook::inhook) w_.carriers("releasehook", carrier);
+  }
+  void yarn_out(const std::string& carrier) {
+    w_.carriers(p_.hook == YarnHook::inhook ? "outhook" : "out", carrier);
+  }
+
+  void cast_on(const Course& c) {
+    Direction next = p_.first_pass;
+    if (p_.waste_rows > 0) {
+      w_.line(fmt::format(";!source: waste section: {} {} of waste yarn (carrier {})", p_.waste_rows,
+                          l_.tube ? "rounds" : "rows", p_.waste_carrier));
+      yarn_in(p_.waste_carrier);
+      Direction d = tuck_border(c, p_.waste_carrier);
+      release(p_.waste_carrier);
+      for (std::uint32_t row = 0; row < p_.waste_rows * (l_.tube ? 2 : 1); ++row, d = opposite(d))
+        knit_pass(c, d, p_.waste_carrier);
+      yarn_out(p_.waste_carrier);
+      yarn_in(carrier_);
+    } else {
+      w_.line(";!source: cast-on border: alternating tucks");
+      yarn_in(carrier_);
+      next = tuck_border(c, carrier_);
+      release(carrier_);
+    }
+    Direction first = plan_[l_.order[c.begin]].travel;
+    if (first != next) {
+      w_.line(";!source: cast-on border: a pass to bring the yarn to where the first row starts");
+      knit_pass(c, next, carrier_);
+      if (p_.waste_rows > 0) release(carrier_);
+    } else if (p_.waste_rows > 0) {
+      // The main yarn's first pass is the cast-on row itself; the hook lets go after it.
+      knit_course(c);
+      release(carrier_);
+      return;
+    }
+    knit_course(c);
+  }
+
+  // Chain bind-off: knit a loop, move it onto the next stitch's needle, knit both, and so on;
+  // then a tag knit back and forth on the last needle, the yarn out, and the tag dropped.
+  void bind_off(const Course& c) {
+    source(c, "bind-off");
+    for (std::uint32_t i = c.begin; i < c.end; ++i) {
+      const StitchPlan& sp = plan_[l_.order[i]];
+      Place here{sp.knit, sp.needle};
+      w_.rack(0);
+      w_.knit(sp.travel, at(here), carrier_);
+      if (i + 1 == c.end) break;
+      const StitchPlan& next = plan_[l_.order[i + 1]];
+      Place there{next.knit, next.needle};
+      if (here.bed == there.bed) {
+        w_.xfer(at(here), at(facing(here)));
+        here = facing(here);
+      }
+      w_.xfer(at(here), at(there));
+    }
+    const StitchPlan& last = plan_[l_.order[c.end - 1]];
+    Needle tag{last.knit, last.needle};
+    if (p_.tag_rows) w_.line(fmt::format(";!source: tag: {} rows on the last loop", p_.tag_rows));
+    Direction d = last.travel;
+    for (std::uint32_t row = 0; row < p_.tag_rows; ++row) {
+      d = opposite(d);
+      w_.knit(d, tag, carrier_);
+    }
+    yarn_out(carrier_);
+    w_.drop(tag);
+  }
+
+  const Compilation& c_;
+  const KnitGraph& g_;
+  const MachineProfile& p_;
+  CourseLayout l_;
+  KnitoutWriter w_;
+  std::int32_t pitch_ = 1, reach_ = 1;
+  std::int32_t fold_ = 0;  // a tube's right fold: front f2R faces back b2R+1 beside it
+  std::vector<StitchPlan> plan_;  // per stitch, for the course being knit
+  std::vector<LoopPlace> live_;   // per loop of the knit graph
+  std::string carrier_;
+};
+
+}  // namespace
+
+void emit_knitout(const Compilation& c, const MachineProfile& p, std::ostream& out) {
+  Emitter(c, p, out).run();
+}
+
+}  // namespace skein::knitout

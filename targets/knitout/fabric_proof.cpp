@@ -1,0 +1,231 @@
+#include "knitout/fabric_proof.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "knitout/course_layout.hpp"
+#include "knitout/stitch_recipes.hpp"
+
+namespace skein::knitout {
+namespace {
+
+// Fabric loops a stitch makes along its yarn (a bind-off's chain loop included).
+std::uint32_t fabric_loops(StitchType t) { return std::max<std::uint32_t>(info(t).loops_out, 1); }
+
+class Matcher {
+ public:
+  Matcher(const Replay& r, const std::vector<std::string_view>& lines, const Compilation& c,
+          const CourseLayout& l)
+      : f_(r.fabric), r_(r), lines_(lines), c_(c), g_(c.knit), l_(l) {
+    loop_of_.assign(g_.loops.size(), kNoLoop);
+    stamp_.assign(f_.loops.size(), 0);
+  }
+
+  // Tries the stitches against carrier `carrier`'s loops from index `start` on; on failure
+  // returns false with `why` set and `reached` the number of stitches that matched.
+  bool match(std::size_t carrier, std::size_t start, std::string& why, std::size_t& reached) {
+    ++try_;
+    sign_ = 0;
+    const std::vector<LoopId>& yarn = f_.by_carrier[carrier];
+    CarrierMask mask = CarrierMask{1} << carrier;
+    std::size_t pos = start;
+    LoopId previous_bo = kNoLoop;
+    reached = 0;
+    for (StitchId s : l_.order) {
+      StitchType t = g_.type[s];
+      std::uint32_t n = fabric_loops(t);
+      if (pos + n > yarn.size()) {
+        why = fmt::format("the yarn of carrier {} ends before {}", r_.header.carriers[carrier], g_.describe(s));
+        return false;
+      }
+      for (std::uint32_t i = 0; i < n; ++i) {
+        const FabricLoop& fl = f_.loops[yarn[pos + i]];
+        if (fl.yarn != mask || fl.piece != f_.loops[yarn[start]].piece) {
+          why = fmt::format("{}: {} is made {}", g_.describe(s), where(yarn[pos + i]),
+                            fl.yarn != mask ? "by several carriers together" : "by another yarn piece (the yarn was cut)");
+          return false;
+        }
+      }
+      if (!stitch_matches(s, t, &yarn[pos], previous_bo, why)) return false;
+      for (std::uint32_t i = 0; i < n; ++i) stamp_[yarn[pos + i]] = try_;
+      previous_bo = t == StitchType::bo ? yarn[pos] : kNoLoop;
+      pos += n;
+      ++reached;
+    }
+    return children_match(why);
+  }
+
+ private:
+  std::string where(LoopId x) const {
+    std::uint32_t line = f_.loops[x].line;
+    return fmt::format("line {} ({})", line, line && line <= lines_.size() ? lines_[line - 1] : "");
+  }
+
+  std::string describe_parents(LoopId x) const {
+    auto parents = f_.parents_of(x);
+    if (parents.empty()) return "through nothing";
+    std::string out = "through the loop";
+    out += parents.size() > 1 ? "s of lines " : " of line ";
+    for (std::size_t i = 0; i < parents.size(); ++i)
+      out += fmt::format("{}{}", i ? ", " : "", f_.loops[parents[i]].line);
+    return out;
+  }
+
+  std::string describe_expected(const std::vector<LoopId>& expected) const {
+    if (expected.empty()) return "through nothing (a new loop)";
+    std::string out = "through the loop";
+    out += expected.size() > 1 ? "s of " : " of ";
+    for (std::size_t i = 0; i < expected.size(); ++i)
+      out += fmt::format("{}{} ({})", i ? ", " : "", describe_maker(expected[i]), where(expected[i]));
+    return out;
+  }
+  std::string describe_maker(LoopId x) const {
+    for (std::uint32_t loop = 0; loop < loop_of_.size(); ++loop)
+      if (loop_of_[loop] == x) return g_.describe(g_.loops[loop].maker);
+    return "the bind-off chain";
+  }
+
+  bool parents_are(LoopId x, std::vector<LoopId> expected, StitchId s, std::string& why) const {
+    auto parents = f_.parents_of(x);
+    std::vector<LoopId> have(parents.begin(), parents.end());
+    std::vector<LoopId> want = expected;
+    std::sort(have.begin(), have.end());
+    std::sort(want.begin(), want.end());
+    if (have == want) return true;
+    why = fmt::format("{} is not there: {} makes its loop {}, expected {}", g_.describe(s), where(x),
+                      describe_parents(x), describe_expected(expected));
+    return false;
+  }
+
+  bool stitch_matches(StitchId s, StitchType t, const LoopId* loops, LoopId previous_bo,
+                      std::string& why) {
+    auto taken = g_.loops_taken_by(s);
+    auto made = g_.loops_made_by(s);
+    std::vector<LoopId> through;
+    for (std::uint32_t loop : taken) through.push_back(loop_of_[loop]);
+    if (t == StitchType::co) {
+      for (LoopId parent : f_.parents_of(loops[0]))
+        if (stamp_[parent] == try_) {
+          why = fmt::format("{} is not a cast-on: {} is pulled through the fabric, not the border",
+                            g_.describe(s), where(loops[0]));
+          return false;
+        }
+    } else if (t == StitchType::bo) {
+      if (previous_bo != kNoLoop) through.push_back(previous_bo);
+      return parents_are(loops[0], through, s, why);
+    } else if (made.size() == 2) {
+      bool ltr = l_.left_to_right[s];
+      for (std::uint8_t i = 0; i < 2; ++i) {
+        std::uint8_t slot = slot_along_yarn(ltr, i, 2);
+        if (!parents_are(loops[i], made_slot_pulled_through(t, slot, ltr) ? through : std::vector<LoopId>{}, s, why))
+          return false;
+      }
+    } else {
+      if (!parents_are(loops[0], through, s, why)) return false;
+      if (taken.size() > 1) {
+        auto parents = f_.parents_of(loops[0]);
+        LoopId top = loop_of_[taken[stacking_order(t).back()]];
+        if (parents.back() != top) {
+          why = fmt::format("{} leans the wrong way: {} has the loop of {} on top, expected that of {}",
+                            g_.describe(s), where(loops[0]), describe_maker(parents.back()),
+                            describe_maker(top));
+          return false;
+        }
+      }
+    }
+    if (!l_.tube && !made.empty() && f_.loops[loops[0]].front == is_purl(t)) {
+      why = fmt::format("{} is a {} but {} knits it on the {} bed", g_.describe(s),
+                        info(t).name, where(loops[0]), is_purl(t) ? "front" : "back");
+      return false;
+    }
+    if (!travels_along_course(s, t, loops[0], why)) return false;
+    for (std::size_t i = 0; i < made.size(); ++i)
+      loop_of_[made[slot_along_yarn(l_.left_to_right[s], static_cast<std::uint8_t>(i),
+                                    static_cast<std::uint8_t>(made.size()))]] = loops[i];
+    return true;
+  }
+
+  // The yarn runs the same way through every stitch of a course as through the first stitch
+  // matched: on a sheet, rows alternate; in a tube the back half runs against the front half
+  // (a stitch's half is the bed it is made on, the other for a purl). A loop made against
+  // its course leaves a float where the carrier turns back.
+  bool travels_along_course(StitchId s, StitchType t, LoopId x, std::string& why) {
+    const FabricLoop& fl = f_.loops[x];
+    bool back_half = l_.tube && fl.front == is_purl(t);
+    int sign = (l_.left_to_right[s] ? 1 : -1) * (back_half ? -1 : 1) * static_cast<int>(fl.dir);
+    if (sign_ == 0) sign_ = sign;
+    if (sign == sign_) return true;
+    why = fmt::format("{} is knit against the direction of its row: {} goes {}", g_.describe(s),
+                      where(x), direction_char(fl.dir));
+    return false;
+  }
+
+  // Every loop of the input is pulled through as often as its taker needs (kfb twice).
+  bool children_match(std::string& why) const {
+    for (std::uint32_t loop = 0; loop < g_.loops.size(); ++loop) {
+      const Loop& l = g_.loops[loop];
+      std::uint32_t want = g_.type[l.taker] == StitchType::kfb ? 2 : 1;
+      LoopId x = loop_of_[loop];
+      if (f_.loops[x].children != want) {
+        why = fmt::format("the loop {} makes for {} is pulled through {} time{}, expected {}", where(x),
+                          g_.describe(l.maker), f_.loops[x].children,
+                          f_.loops[x].children == 1 ? "" : "s", want);
+        return false;
+      }
+    }
+    return true;
+  }
+
+  const Fabric& f_;
+  const Replay& r_;
+  const std::vector<std::string_view>& lines_;
+  const Compilation& c_;
+  const KnitGraph& g_;
+  const CourseLayout& l_;
+  std::vector<LoopId> loop_of_;      // per knit graph loop: its fabric loop
+  std::vector<std::uint32_t> stamp_;  // per fabric loop: the try that matched it
+  std::uint32_t try_ = 0;
+  int sign_ = 0;  // the first stitch's direction relative to its frame
+};
+
+}  // namespace
+
+ProofResult prove_fabric(const Replay& r, const std::vector<std::string_view>& lines,
+                         const Compilation& c) {
+  CourseLayout l = lay_out_courses(c);
+  std::size_t needed = 0;
+  for (StitchId s = 0; s < c.knit.size(); ++s) needed += fabric_loops(c.knit.type[s]);
+  Matcher m(r, lines, c, l);
+  ProofResult result;
+  std::size_t best = 0;
+  std::string best_why;
+  for (std::size_t carrier = 0; carrier < r.fabric.by_carrier.size(); ++carrier) {
+    const auto& yarn = r.fabric.by_carrier[carrier];
+    for (std::size_t start = 0; start + needed <= yarn.size(); ++start) {
+      std::string why;
+      std::size_t reached = 0;
+      if (m.match(carrier, start, why, reached)) {
+        result.proven = true;
+        result.summary = fmt::format(
+            "proven against {}: all {} stitches are there, knit with carrier {} in yarn order "
+            "after a border of {} loops, each pulled through the right loops{}",
+            c.input, c.knit.size(), r.header.carriers[carrier], start,
+            l.tube ? "" : " on the right bed");
+        return result;
+      }
+      if (reached >= best) best = reached, best_why = why;
+    }
+  }
+  if (best_why.empty()) {
+    std::size_t most = 0;
+    for (const auto& yarn : r.fabric.by_carrier) most = std::max(most, yarn.size());
+    best_why = fmt::format("no carrier makes enough loops: the input needs {} (one per stitch, two "
+                           "per increase), the busiest carrier makes {}",
+                           needed, most);
+  }
+  result.summary = fmt::format("NOT proven against {}: {}", c.input, best_why);
+  return result;
+}
+
+}  // namespace skein::knitout

@@ -1,0 +1,284 @@
+#include "knitout/machine_profile.hpp"
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <map>
+
+#include "common/atomic_file.hpp"
+#include "common/error.hpp"
+
+namespace skein::knitout {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Reads one profile strictly: every field known, typed and in range, else a ParseError that
+// names the file, the line and the field.
+class ProfileReader {
+ public:
+  ProfileReader(std::string file, const std::string& text) : file_(std::move(file)) {
+    std::size_t start = 0;
+    while (start <= text.size()) {
+      std::size_t end = text.find('\n', start);
+      if (end == std::string::npos) end = text.size();
+      lines_.push_back(text.substr(start, end - start));
+      start = end + 1;
+    }
+  }
+
+  [[noreturn]] void fail(const YAML::Mark& mark, const std::string& why) const {
+    std::size_t line = mark.line >= 0 ? static_cast<std::size_t>(mark.line) : 0;
+    std::string quoted = line < lines_.size() ? lines_[line] : std::string();
+    throw ParseError(file_, line + 1, quoted, why);
+  }
+
+  // A map whose keys must all be in `fields` (each with what reads it); required ones must be
+  // present.
+  struct Field {
+    const char* name;
+    bool required;
+    std::function<void(const YAML::Node&, const std::string& path)> read;
+  };
+  void read_map(const YAML::Node& map, const std::string& where, const std::vector<Field>& fields) {
+    if (!map.IsMap())
+      fail(map.Mark(), fmt::format("expected {} to be a map of fields", where.empty() ? "the profile" : where));
+    for (const auto& entry : map) {
+      std::string key = entry.first.as<std::string>();
+      auto it = std::find_if(fields.begin(), fields.end(), [&](const Field& f) { return key == f.name; });
+      if (it == fields.end()) {
+        std::string known;
+        for (const Field& f : fields) known += (known.empty() ? "" : ", ") + std::string(f.name);
+        fail(entry.first.Mark(), fmt::format("unknown field '{}{}'; known fields here: {}",
+                                             prefix(where), key, known));
+      }
+      it->read(entry.second, prefix(where) + key);
+    }
+    for (const Field& f : fields)
+      if (f.required && !map[f.name])
+        fail(map.Mark(), fmt::format("missing field '{}{}'", prefix(where), f.name));
+  }
+
+  std::string text(const YAML::Node& n, const std::string& field) const {
+    if (!n.IsScalar()) fail(n.Mark(), fmt::format("field '{}' must be a single value", field));
+    return n.Scalar();
+  }
+  double number(const YAML::Node& n, const std::string& field, double low, double high) const {
+    std::string s = text(n, field);
+    char* end = nullptr;
+    double value = std::strtod(s.c_str(), &end);
+    if (s.empty() || *end != '\0' || !(value >= low && value <= high))
+      fail(n.Mark(), fmt::format("field '{}' must be a number from {} to {}, found '{}'", field, low, high, s));
+    return value;
+  }
+  std::uint32_t whole(const YAML::Node& n, const std::string& field, std::uint32_t low,
+                      std::uint32_t high) const {
+    double value = number(n, field, low, high);
+    if (value != std::floor(value))
+      fail(n.Mark(), fmt::format("field '{}' must be a whole number, found '{}'", field, n.Scalar()));
+    return static_cast<std::uint32_t>(value);
+  }
+  bool flag(const YAML::Node& n, const std::string& field) const {
+    std::string s = text(n, field);
+    if (s == "true") return true;
+    if (s == "false") return false;
+    fail(n.Mark(), fmt::format("field '{}' must be true or false, found '{}'", field, s));
+  }
+  std::string choice(const YAML::Node& n, const std::string& field,
+                     std::initializer_list<const char*> allowed) const {
+    std::string s = text(n, field);
+    std::string list;
+    for (const char* a : allowed) {
+      if (s == a) return s;
+      list += (list.empty() ? "" : ", ") + std::string(a);
+    }
+    fail(n.Mark(), fmt::format("field '{}' must be one of {}, found '{}'", field, list, s));
+  }
+
+ private:
+  static std::string prefix(const std::string& where) { return where.empty() ? "" : where + "."; }
+
+  std::string file_;
+  std::vector<std::string> lines_;
+};
+
+using Field = ProfileReader::Field;
+
+std::vector<std::string> split_words(const std::string& line) {
+  std::vector<std::string> words;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i <= line.size(); ++i)
+    if (i == line.size() || line[i] == ' ') {
+      if (i > start) words.push_back(line.substr(start, i - start));
+      start = i + 1;
+    }
+  return words;
+}
+
+MachineProfile parse_profile(const std::string& path, const std::string& text) {
+  ProfileReader r(path, text);
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    r.fail(e.mark, fmt::format("not valid YAML: {}", e.msg));
+  }
+  MachineProfile p;
+  p.file = path;
+  auto str = [&](std::string& out) {
+    return [&r, &out](const YAML::Node& n, const std::string& f) { out = r.text(n, f); };
+  };
+  r.read_map(root, "", {
+    {"name", true, str(p.name)},
+    {"description", true, str(p.description)},
+    {"machine", true, str(p.machine)},
+    {"gauge", true, [&](const YAML::Node& n, const std::string& f) { p.gauge = r.number(n, f, 1, 100); }},
+    {"needles", true, [&](const YAML::Node& n, const std::string& f) { p.needles = r.whole(n, f, 8, 100000); }},
+    {"position", true, [&](const YAML::Node& n, const std::string& f) {
+       p.position = r.choice(n, f, {"Left", "Center", "Right", "Keep"}); }},
+    {"width_header", true, [&](const YAML::Node& n, const std::string& f) { p.width_header = r.flag(n, f); }},
+    {"carriers", true, [&](const YAML::Node& n, const std::string& f) {
+       p.carriers = split_words(r.text(n, f));
+       if (p.carriers.empty() || p.carriers.size() > 32)
+         r.fail(n.Mark(), fmt::format("field '{}' must name 1 to 32 carriers separated by spaces", f));
+     }},
+    {"racking", true, [&](const YAML::Node& n, const std::string& where) {
+       r.read_map(n, where, {
+         {"max", true, [&](const YAML::Node& v, const std::string& f) {
+            p.max_rack = static_cast<std::int32_t>(r.whole(v, f, 0, 64)); }},
+         {"fractions", true, [&](const YAML::Node& v, const std::string& f) {
+            if (!v.IsSequence()) r.fail(v.Mark(), fmt::format("field '{}' must be a list such as [0, 0.25]", f));
+            for (const auto& item : v) p.rack_fractions.push_back(r.number(item, f, 0, 0.75));
+          }},
+         {"max_transfer_stretch", true, [&](const YAML::Node& v, const std::string& f) {
+            p.max_transfer_stretch = static_cast<std::int32_t>(r.whole(v, f, 0, 64)); }},
+       });
+     }},
+    {"max_loops_per_needle", true, [&](const YAML::Node& n, const std::string& f) {
+       p.max_loops_per_needle = r.whole(n, f, 1, 15); }},
+    {"sliders", true, [&](const YAML::Node& n, const std::string& f) { p.sliders = r.flag(n, f); }},
+    {"knit_empty_needle", true, [&](const YAML::Node& n, const std::string& f) {
+       p.knit_empty_needle_is_error = r.choice(n, f, {"error", "allowed"}) == "error"; }},
+    {"yarn", true, [&](const YAML::Node& n, const std::string& where) {
+       r.read_map(n, where, {
+         {"hook", true, [&](const YAML::Node& v, const std::string& f) {
+            p.hook = r.choice(v, f, {"inhook", "in"}) == "inhook" ? YarnHook::inhook : YarnHook::in; }},
+         {"first_pass", true, [&](const YAML::Node& v, const std::string& f) {
+            p.first_pass = r.choice(v, f, {"+", "-"}) == "+" ? Direction::plus : Direction::minus; }},
+         {"carrier", true, str(p.yarn_carrier)},
+         {"waste_carrier", false, str(p.waste_carrier)},
+       });
+     }},
+    {"stitch_number", false, [&](const YAML::Node& n, const std::string& f) { p.stitch_number = r.whole(n, f, 1, 255); }},
+    {"speed_number", false, [&](const YAML::Node& n, const std::string& f) { p.speed_number = r.whole(n, f, 1, 10000); }},
+    {"cast_on", true, [&](const YAML::Node& n, const std::string& where) {
+       r.read_map(n, where, {
+         {"style", true, [&](const YAML::Node& v, const std::string& f) { r.choice(v, f, {"alternating-tuck"}); }},
+         {"waste_rows", true, [&](const YAML::Node& v, const std::string& f) { p.waste_rows = r.whole(v, f, 0, 200); }},
+       });
+     }},
+    {"bind_off", true, [&](const YAML::Node& n, const std::string& where) {
+       r.read_map(n, where, {
+         {"style", true, [&](const YAML::Node& v, const std::string& f) { r.choice(v, f, {"chain"}); }},
+         {"tag_rows", true, [&](const YAML::Node& v, const std::string& f) { p.tag_rows = r.whole(v, f, 0, 50); }},
+       });
+     }},
+    {"timing", true, [&](const YAML::Node& n, const std::string& where) {
+       r.read_map(n, where, {
+         {"seconds_per_pass", true, [&](const YAML::Node& v, const std::string& f) { p.seconds_per_pass = r.number(v, f, 0, 60); }},
+         {"seconds_per_needle", true, [&](const YAML::Node& v, const std::string& f) { p.seconds_per_needle = r.number(v, f, 0, 10); }},
+         {"seconds_per_rack", true, [&](const YAML::Node& v, const std::string& f) { p.seconds_per_rack = r.number(v, f, 0, 60); }},
+       });
+     }},
+  });
+  auto has_carrier = [&](const std::string& c) {
+    return std::find(p.carriers.begin(), p.carriers.end(), c) != p.carriers.end();
+  };
+  if (!has_carrier(p.yarn_carrier))
+    r.fail(root["yarn"]["carrier"].Mark(), fmt::format("field 'yarn.carrier' names carrier '{}', which is not in 'carriers'", p.yarn_carrier));
+  if (p.waste_rows > 0 && (p.waste_carrier.empty() || !has_carrier(p.waste_carrier) || p.waste_carrier == p.yarn_carrier))
+    r.fail(root["cast_on"]["waste_rows"].Mark(),
+           "field 'cast_on.waste_rows' needs 'yarn.waste_carrier': a carrier of 'carriers' other than 'yarn.carrier'");
+  if (p.max_transfer_stretch > p.max_rack)
+    r.fail(root["racking"]["max_transfer_stretch"].Mark(),
+           "field 'racking.max_transfer_stretch' cannot exceed 'racking.max'");
+  if (std::find(p.rack_fractions.begin(), p.rack_fractions.end(), 0.0) == p.rack_fractions.end())
+    p.rack_fractions.push_back(0.0);
+  for (double f : p.rack_fractions)
+    if (f * 4 != std::floor(f * 4))
+      r.fail(root["racking"]["fractions"].Mark(), "field 'racking.fractions' allows quarters only (0, 0.25, 0.5, 0.75)");
+  return p;
+}
+
+std::vector<fs::path> profile_directories() {
+  std::vector<fs::path> dirs{fs::current_path() / "machine_profiles"};
+  std::error_code ec;
+  fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec)
+    for (fs::path dir = exe.parent_path(); !dir.empty(); dir = dir.parent_path()) {
+      dirs.push_back(dir / "machine_profiles");
+      if (dir == dir.root_path()) break;
+    }
+  return dirs;
+}
+
+}  // namespace
+
+bool MachineProfile::rack_allowed(std::int32_t quarters) const {
+  if (std::abs(quarters) > max_rack * 4) return false;
+  int fraction = ((quarters % 4) + 4) % 4;
+  return std::any_of(rack_fractions.begin(), rack_fractions.end(),
+                     [&](double f) { return static_cast<int>(f * 4) == fraction; });
+}
+
+std::string MachineProfile::carriers_line() const {
+  std::string line;
+  for (const std::string& c : carriers) line += (line.empty() ? "" : " ") + c;
+  return line;
+}
+
+MachineProfile read_machine_profile(const std::string& path) {
+  return parse_profile(path, read_file(path));
+}
+
+MachineProfile load_machine_profile(const std::string& name_or_path) {
+  if (name_or_path.empty()) {
+    std::string names;
+    for (const std::string& n : shipped_profile_names()) names += (names.empty() ? "" : ", ") + n;
+    throw UsageError(fmt::format("the knitout target needs --machine: a profile name ({}) or the "
+                                 "path of a profile .yaml file",
+                                 names.empty() ? "none found in machine_profiles/" : names));
+  }
+  bool is_path = name_or_path.find('/') != std::string::npos || name_or_path.ends_with(".yaml");
+  if (is_path) return read_machine_profile(name_or_path);
+  std::vector<fs::path> dirs = profile_directories();
+  for (const fs::path& dir : dirs) {
+    fs::path candidate = dir / (name_or_path + ".yaml");
+    std::error_code ec;
+    if (fs::is_regular_file(candidate, ec)) return read_machine_profile(candidate.string());
+  }
+  std::string names;
+  for (const std::string& n : shipped_profile_names()) names += (names.empty() ? "" : ", ") + n;
+  throw UsageError(fmt::format("no machine profile '{}' in machine_profiles/ (looked beside the "
+                               "current directory and the skein executable); known profiles: {}",
+                               name_or_path, names.empty() ? "none" : names));
+}
+
+std::vector<std::string> shipped_profile_names() {
+  for (const fs::path& dir : profile_directories()) {
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec)) continue;
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir, ec))
+      if (entry.path().extension() == ".yaml") names.push_back(entry.path().stem().string());
+    std::sort(names.begin(), names.end());
+    if (!names.empty()) return names;
+  }
+  return {};
+}
+
+}  // namespace skein::knitout

@@ -1,0 +1,45 @@
+// How each stitch type is made on a v-bed, as facts both the emitter and the fabric proof use.
+// Slots count a stitch's loops left to right in its own frame (as in the knit graph).
+#pragma once
+
+#include <cstdint>
+#include <span>
+
+#include "mesh/stitch_type.hpp"
+
+namespace skein::knitout {
+
+// Knit on the bed behind the fabric's right side (a purl seen from the right side).
+inline bool is_purl(StitchType t) { return t == StitchType::p || t == StitchType::p2tog; }
+
+// A decrease's taken loops in the order they land on one needle, bottom first: the last one
+// lies on top and gives the lean (k2tog and p2tog: the left loop on top, leaning right; ssk:
+// the right loop on top, leaning left; s2kp: the centre loop on top, the right one under it).
+inline std::span<const std::uint8_t> stacking_order(StitchType t) {
+  static constexpr std::uint8_t kLeftOnTop[] = {1, 0}, kRightOnTop[] = {0, 1},
+                                kCentreOnTop[] = {0, 2, 1}, kSingle[] = {0};
+  switch (t) {
+    case StitchType::k2tog:
+    case StitchType::p2tog: return kLeftOnTop;
+    case StitchType::ssk: return kRightOnTop;
+    case StitchType::s2kp: return kCentreOnTop;
+    default: return kSingle;
+  }
+}
+
+// The made slot whose loop is pulled through the stitch's taken loop (for an increase the other
+// one is a new loop: kfb pulls both through, yo/m1l/m1r make the other by a tuck). The yarn
+// makes kfb's and yo's knit loop first; m1l's new loop lies left of it, m1r's right.
+inline std::uint8_t knit_slot(StitchType t, bool left_to_right) {
+  switch (t) {
+    case StitchType::kfb:
+    case StitchType::yo: return left_to_right ? 0 : 1;
+    case StitchType::m1l: return 1;
+    default: return 0;
+  }
+}
+inline bool made_slot_pulled_through(StitchType t, std::uint8_t slot, bool left_to_right) {
+  return t == StitchType::kfb || slot == knit_slot(t, left_to_right);
+}
+
+}  // namespace skein::knitout

@@ -1,0 +1,413 @@
+#include "knitout/vbed_simulator.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <limits>
+
+#include "common/error.hpp"
+
+namespace skein::knitout {
+namespace {
+
+constexpr std::uint32_t kMaxStack = 15;  // the most loops a profile may allow on one needle
+
+struct Stack {
+  std::uint8_t size = 0;
+  std::array<LoopId, kMaxStack> loop;
+};
+
+enum class CarrierState : std::uint8_t { out, pending, in };
+
+struct Carrier {
+  CarrierState state = CarrierState::out;
+  bool hooked = false;       // held by the yarn-inserting hook
+  bool stitched = false;     // has made a stitch since it came in
+  CarrierMask in_set = 0;    // the set it came in with (first use must match it)
+  std::size_t in_line = 0;
+  std::uint32_t piece = 0;
+};
+
+// A carriage pass: consecutive stitch ops in one direction with the same carriers and rack,
+// each further along than the last; or consecutive transfers/drops at one rack.
+struct PassTracker {
+  bool open = false, transfer = false;
+  Direction dir = Direction::none;
+  CarrierMask carriers = 0;
+  std::int32_t rack = 0, first = 0, last = 0;
+};
+
+class VirtualBed {
+ public:
+  VirtualBed(const std::string& file, const MachineProfile& profile, std::string_view text)
+      : file_(file), p_(profile), lines_(split_lines(text)) {
+    n_ = static_cast<std::int32_t>(p_.needles);
+  }
+
+  Replay run() {
+    r_.header = parse_header(lines_, file_);
+    check_header();
+    keep_ = r_.header.position.empty() || r_.header.position == "Keep";
+    lo_ = keep_ ? 0 : -n_;
+    hi_ = keep_ ? n_ : 2 * n_;
+    for (auto& bed : beds_) bed.assign(static_cast<std::size_t>(hi_ - lo_), Stack{});
+    carriers_.assign(r_.header.carriers.size(), Carrier{});
+    r_.fabric.by_carrier.assign(r_.header.carriers.size(), {});
+    r_.stats.min_needle = std::numeric_limits<std::int32_t>::max();
+    r_.stats.max_needle = std::numeric_limits<std::int32_t>::min();
+    std::string error;
+    Op op;
+    for (line_ = r_.header.first_op_line; line_ <= lines_.size(); ++line_) {
+      std::string_view text = lines_[line_ - 1];
+      if (!parse_op(text, r_.header, op, error)) {
+        if (!error.empty()) fail(error);
+        continue;
+      }
+      ++r_.stats.operations;
+      apply(op);
+    }
+    finish();
+    return std::move(r_);
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& why) const {
+    std::size_t line = std::min(line_, lines_.size());
+    throw ParseError(file_, line, line ? std::string(lines_[line - 1]) : std::string(), why);
+  }
+  [[noreturn]] void fail_header(std::size_t line, const std::string& why) const {
+    throw ParseError(file_, line, line && line <= lines_.size() ? std::string(lines_[line - 1]) : "", why);
+  }
+
+  void check_header() {
+    const Header& h = r_.header;
+    if (!h.has_carriers)
+      fail_header(h.first_op_line - 1, fmt::format("missing the ;;Carriers: header ({} needs ';;Carriers: {}')",
+                                                   p_.name, p_.carriers_line()));
+    if (h.carriers != p_.carriers)
+      fail_header(h.carriers_line, fmt::format("{} needs ';;Carriers: {}'", p_.name, p_.carriers_line()));
+    auto header_line = [&](std::string_view key) {
+      for (std::size_t i = 1; i < h.first_op_line - 1; ++i)
+        if (lines_[i].starts_with(fmt::format(";;{}:", key))) return i + 1;
+      return std::size_t{1};
+    };
+    if (!h.machine.empty() && h.machine != p_.machine)
+      fail_header(header_line("Machine"), fmt::format("the file is for machine '{}', profile {} is '{}'",
+                                                      h.machine, p_.name, p_.machine));
+    if (!h.gauge.empty() && std::strtod(h.gauge.c_str(), nullptr) != p_.gauge)
+      fail_header(header_line("Gauge"), fmt::format("the file is for gauge {}, {} is gauge {}", h.gauge,
+                                                    p_.name, p_.gauge));
+    if (!h.width.empty() && std::stoul(h.width) > p_.needles)
+      fail_header(header_line("Width"), fmt::format("the file asks for {} needles, {} has {}", h.width,
+                                                    p_.name, p_.needles));
+  }
+
+  // ---- needles ----
+  Stack& at(Needle n) {
+    if (is_slider(n.bed) && !p_.sliders)
+      fail(fmt::format("{} is a slider, and {} has no sliders", needle_name(n), p_.name));
+    if (n.index < lo_ || n.index >= hi_ || (keep_ && (n.index < 0 || n.index >= n_)))
+      fail(fmt::format("needle {} is outside the bed: {} has needles 0..{}", needle_name(n), p_.name, n_ - 1));
+    ShopStats& s = r_.stats;
+    s.min_needle = std::min(s.min_needle, n.index);
+    s.max_needle = std::max(s.max_needle, n.index);
+    if (s.max_needle - s.min_needle >= n_)
+      fail(fmt::format("the needles used span {}..{} ({} needles), {} has {}", s.min_needle,
+                       s.max_needle, s.max_needle - s.min_needle + 1, p_.name, n_));
+    return beds_[static_cast<int>(n.bed)][static_cast<std::size_t>(n.index - lo_)];
+  }
+
+  void push(Stack& s, Needle n, LoopId loop) {
+    if (s.size >= p_.max_loops_per_needle)
+      fail(fmt::format("{} would hold {} loops, {} allows {} per needle", needle_name(n), s.size + 1,
+                       p_.name, p_.max_loops_per_needle));
+    s.loop[s.size++] = loop;
+  }
+
+  // ---- carriers ----
+  std::string names(CarrierMask mask) const { return carrier_names(r_.header, mask); }
+
+  template <typename F>
+  void each(CarrierMask mask, F f) {
+    for (std::size_t c = 0; mask; ++c, mask >>= 1)
+      if (mask & 1) f(carriers_[c], c);
+  }
+
+  void use_carriers(const Op& op) {
+    CarrierMask pending = 0;
+    each(op.carriers, [&](Carrier& c, std::size_t i) {
+      if (c.state == CarrierState::out)
+        fail(fmt::format("carrier {} is not in (bring it in with {} first)", r_.header.carriers[i],
+                         p_.hook == YarnHook::inhook ? "inhook" : "in"));
+      if (c.state == CarrierState::pending) pending |= c.in_set;
+    });
+    if (pending) {
+      if (pending != op.carriers)
+        fail(fmt::format("the first use of carriers {} must use exactly the set brought in together ({})",
+                         names(op.carriers), names(pending)));
+      if (op.dir != p_.first_pass)
+        fail(fmt::format("the first pass after bringing in carrier {} must go {} on {}, found {}",
+                         names(op.carriers), direction_char(p_.first_pass), p_.name, direction_char(op.dir)));
+    }
+    each(op.carriers, [&](Carrier& c, std::size_t) {
+      c.state = CarrierState::in;
+      c.stitched = true;
+    });
+  }
+
+  void bring_in(const Op& op) {
+    bool hook = op.code == OpCode::inhook;
+    if (hook && p_.hook != YarnHook::inhook)
+      fail(fmt::format("{} has no yarn-inserting hook: use 'in'", p_.name));
+    if (hook && hook_)
+      fail(fmt::format("the yarn-inserting hook still holds carrier {}: releasehook it first", names(hook_)));
+    each(op.carriers, [&](Carrier& c, std::size_t i) {
+      if (c.state != CarrierState::out) fail(fmt::format("carrier {} is already in", r_.header.carriers[i]));
+      c = Carrier{CarrierState::pending, hook, false, op.carriers, line_, ++pieces_};
+      ++r_.stats.yarn_pieces;
+    });
+    if (hook) hook_ = op.carriers;
+  }
+
+  void release_hook(const Op& op) {
+    if (p_.hook != YarnHook::inhook) fail(fmt::format("{} has no yarn-inserting hook to release", p_.name));
+    if (hook_ != op.carriers)
+      fail(hook_ ? fmt::format("the hook holds carrier {}, not {}", names(hook_), names(op.carriers))
+                 : fmt::format("releasehook {}, but the hook holds nothing", names(op.carriers)));
+    each(op.carriers, [&](Carrier& c, std::size_t i) {
+      if (!c.stitched)
+        fail(fmt::format("releasehook before carrier {} has made a stitch", r_.header.carriers[i]));
+      c.hooked = false;
+    });
+    hook_ = 0;
+  }
+
+  void take_out(const Op& op) {
+    bool hook = op.code == OpCode::outhook;
+    if (hook && p_.hook != YarnHook::inhook) fail(fmt::format("{} has no yarn-inserting hook: use 'out'", p_.name));
+    if (hook && hook_)
+      fail(fmt::format("outhook while the hook still holds carrier {}: releasehook it first", names(hook_)));
+    each(op.carriers, [&](Carrier& c, std::size_t i) {
+      const std::string& name = r_.header.carriers[i];
+      if (c.state == CarrierState::out) fail(fmt::format("carrier {} is not in", name));
+      if (!c.stitched) fail(fmt::format("carrier {} is taken out without having made a stitch", name));
+      if (c.hooked) fail(fmt::format("carrier {} is still held by the hook: releasehook {} first", name, name));
+      c.state = CarrierState::out;
+    });
+  }
+
+  // ---- racking and alignment ----
+  void set_rack(std::int32_t quarters) {
+    if (!p_.rack_allowed(quarters))
+      fail(std::abs(quarters) > p_.max_rack * 4
+               ? fmt::format("rack {} is beyond the racking limit of {} (±{})", quarters / 4.0, p_.name, p_.max_rack)
+               : fmt::format("rack {} has a fraction {} does not allow", quarters / 4.0, p_.name));
+    if (quarters != rack_) ++r_.stats.racks;
+    rack_ = quarters;
+  }
+
+  void check_transfer(const Op& op) {
+    const char* what = op.code == OpCode::split ? "split" : "xfer";
+    if (is_slider(op.a.bed) && is_slider(op.b.bed))
+      fail(fmt::format("{} {} {} moves from slider to slider", what, needle_name(op.a), needle_name(op.b)));
+    if (op.code == OpCode::split && is_slider(op.a.bed))
+      fail(fmt::format("split cannot start from a slider ({})", needle_name(op.a)));
+    if (is_front(op.a.bed) == is_front(op.b.bed))
+      fail(fmt::format("{} {} {} stays on one bed: loops move only between front and back", what,
+                       needle_name(op.a), needle_name(op.b)));
+    Needle front = is_front(op.a.bed) ? op.a : op.b, back = is_front(op.a.bed) ? op.b : op.a;
+    if (rack_ % 4 != 0 || front.index * 4 != back.index * 4 + rack_)
+      fail(fmt::format("{} and {} are not aligned at rack {} ({} faces f{})", needle_name(op.a),
+                       needle_name(op.b), rack_ / 4.0, needle_name(back),
+                       rack_ % 4 ? fmt::format("{}", back.index + rack_ / 4.0) : fmt::format("{}", back.index + rack_ / 4)));
+    if (std::abs(rack_) > p_.max_transfer_stretch * 4)
+      fail(fmt::format("{} at rack {} stretches a loop {} needles, {} allows {}", what, rack_ / 4,
+                       std::abs(rack_ / 4), p_.name, p_.max_transfer_stretch));
+  }
+
+  // ---- loops ----
+  LoopId new_loop(OpCode by, Direction dir, Needle n, CarrierMask yarn,
+                  std::span<const LoopId> through) {
+    LoopId id = static_cast<LoopId>(r_.fabric.loops.size());
+    FabricLoop l;
+    l.first_parent = static_cast<std::uint32_t>(r_.fabric.parents.size());
+    l.parent_count = static_cast<std::uint8_t>(through.size());
+    l.made_by = by;
+    l.front = is_front(n.bed);
+    l.dir = dir;
+    l.yarn = yarn;
+    l.line = static_cast<std::uint32_t>(line_);
+    std::size_t lowest = static_cast<std::size_t>(std::countr_zero(yarn));
+    l.piece = carriers_[lowest].piece;
+    for (LoopId parent : through) {
+      r_.fabric.parents.push_back(parent);
+      auto& children = r_.fabric.loops[parent].children;
+      if (children < 255) ++children;
+    }
+    r_.fabric.loops.push_back(l);
+    each(yarn, [&](Carrier&, std::size_t c) { r_.fabric.by_carrier[c].push_back(id); });
+    return id;
+  }
+
+  void stitch_op(const Op& op) {
+    if (is_slider(op.a.bed))
+      fail(fmt::format("{} on a slider ({}): sliders only hold loops moved there", op_name(op.code), needle_name(op.a)));
+    if (op.code == OpCode::miss) {
+      if (!op.carriers) fail("miss needs carriers (a miss without yarn does nothing)");
+      use_carriers(op);
+      count_pass(op, false);
+      ++r_.stats.misses;
+      return;
+    }
+    Stack& s = at(op.a);
+    if (!op.carriers) return op.code == OpCode::knit    ? drop(op.a)
+                             : op.code == OpCode::split ? transfer(op)
+                                                        : void(at(op.a));
+    if (op.code == OpCode::split) check_transfer(op);
+    if (s.size == 0 && op.code != OpCode::tuck && p_.knit_empty_needle_is_error)
+      fail(fmt::format("{} on {}, which holds no loop ({} treats knitting an empty needle as an error)",
+                       op_name(op.code), needle_name(op.a), p_.name));
+    use_carriers(op);
+    count_pass(op, false);
+    if (op.code == OpCode::tuck) {
+      ++r_.stats.tucks;
+      push(s, op.a, new_loop(OpCode::tuck, op.dir, op.a, op.carriers, {}));
+      return;
+    }
+    LoopId made = new_loop(op.code, op.dir, op.a, op.carriers, {s.loop.data(), s.size});
+    if (op.code == OpCode::split) {
+      ++r_.stats.splits;
+      Stack& to = at(op.b);
+      for (std::uint8_t i = 0; i < s.size; ++i) push(to, op.b, s.loop[i]);
+    } else {
+      ++r_.stats.knits;
+    }
+    s.size = 0;
+    s.loop[s.size++] = made;
+  }
+
+  void drop(Needle n) {
+    Stack& s = at(n);
+    Op op;
+    op.code = OpCode::drop;
+    op.a = n;
+    count_pass(op, true);
+    for (std::uint8_t i = 0; i < s.size; ++i)
+      if (r_.fabric.loops[s.loop[i]].children == 0) r_.fabric.loops[s.loop[i]].dropped = true;
+    r_.stats.loops_dropped += s.size;
+    s.size = 0;
+  }
+
+  void transfer(const Op& op) {
+    check_transfer(op);
+    Stack& from = at(op.a);
+    Stack& to = at(op.b);
+    count_pass(op, true);
+    ++r_.stats.transfers;
+    for (std::uint8_t i = 0; i < from.size; ++i) push(to, op.b, from.loop[i]);
+    from.size = 0;
+  }
+
+  void count_pass(const Op& op, bool transfer) {
+    ShopStats& s = r_.stats;
+    std::int32_t slot = op.a.index + (is_front(op.a.bed) ? 0 : rack_ / 4);
+    PassTracker& t = pass_;
+    bool continues = t.open && t.transfer == transfer && t.rack == rack_;
+    if (continues && !transfer)
+      continues = t.dir == op.dir && t.carriers == op.carriers &&
+                  (op.dir == Direction::plus ? slot >= t.last : slot <= t.last);
+    if (!continues) {
+      close_pass();
+      t = PassTracker{true, transfer, op.dir, op.carriers, rack_, slot, slot};
+      ++(transfer ? s.transfer_passes : s.stitch_passes);
+    }
+    t.first = std::min(t.first, slot);
+    t.last = transfer ? std::max(t.last, slot) : slot;
+    span_lo_ = continues ? std::min(span_lo_, slot) : slot;
+    span_hi_ = continues ? std::max(span_hi_, slot) : slot;
+  }
+  void close_pass() {
+    if (pass_.open) r_.stats.needles_crossed += static_cast<std::uint64_t>(span_hi_ - span_lo_ + 1);
+    pass_.open = false;
+  }
+
+  void apply(const Op& op) {
+    switch (op.code) {
+      case OpCode::in:
+      case OpCode::inhook: return bring_in(op);
+      case OpCode::releasehook: return release_hook(op);
+      case OpCode::out:
+      case OpCode::outhook: return take_out(op);
+      case OpCode::knit:
+      case OpCode::tuck:
+      case OpCode::split:
+      case OpCode::miss: return stitch_op(op);
+      case OpCode::drop: return drop(op.a);
+      case OpCode::amiss:
+        if (is_slider(op.a.bed)) fail(fmt::format("amiss on a slider ({})", needle_name(op.a)));
+        at(op.a);
+        return;
+      case OpCode::xfer: return transfer(op);
+      case OpCode::rack: return set_rack(op.rack_quarters);
+      case OpCode::stitch:
+      case OpCode::pause:
+      case OpCode::extension: return;
+    }
+  }
+
+  void finish() {
+    close_pass();
+    line_ = lines_.size();
+    for (std::size_t c = 0; c < carriers_.size(); ++c)
+      if (carriers_[c].state != CarrierState::out)
+        fail(fmt::format("carrier {} is still in at the end of the file (take it out with {})",
+                         r_.header.carriers[c], p_.hook == YarnHook::inhook ? "outhook" : "out"));
+    for (const auto& bed : beds_)
+      for (const Stack& s : bed)
+        for (std::uint8_t i = 0; i < s.size; ++i) r_.fabric.live_at_end.push_back(s.loop[i]);
+    ShopStats& s = r_.stats;
+    if (s.max_needle < s.min_needle) s.min_needle = s.max_needle = 0;
+    s.seconds = static_cast<double>(s.stitch_passes + s.transfer_passes) * p_.seconds_per_pass +
+                static_cast<double>(s.needles_crossed) * p_.seconds_per_needle +
+                static_cast<double>(s.racks) * p_.seconds_per_rack;
+  }
+
+  std::string file_;
+  const MachineProfile& p_;
+  std::vector<std::string_view> lines_;
+  Replay r_;
+  std::array<std::vector<Stack>, 4> beds_;
+  std::vector<Carrier> carriers_;
+  CarrierMask hook_ = 0;
+  std::uint32_t pieces_ = 0;
+  std::int32_t rack_ = 0, n_ = 0, lo_ = 0, hi_ = 0, span_lo_ = 0, span_hi_ = 0;
+  bool keep_ = true;
+  PassTracker pass_;
+  std::size_t line_ = 0;
+};
+
+}  // namespace
+
+Replay replay_knitout(std::string_view text, const std::string& file, const MachineProfile& profile) {
+  return VirtualBed(file, profile, text).run();
+}
+
+std::string shop_summary(const Replay& r, const MachineProfile& p) {
+  const ShopStats& s = r.stats;
+  auto minutes = static_cast<int>(s.seconds / 60);
+  return fmt::format(
+      "  machine: {} ({}), needles {}..{} used\n"
+      "  carriage passes: {} ({} knitting, {} transfer)\n"
+      "  stitches: {} knit, {} tuck, {} split, {} miss\n"
+      "  transfers: {}, rack changes: {}, loops dropped: {}\n"
+      "  yarn pieces: {}\n"
+      "  estimated knitting time: {}:{:02d} (min:s)",
+      p.name, p.description, s.min_needle, s.max_needle, s.stitch_passes + s.transfer_passes,
+      s.stitch_passes, s.transfer_passes, s.knits, s.tucks, s.splits, s.misses, s.transfers,
+      s.racks, s.loops_dropped, s.yarn_pieces, minutes,
+      static_cast<int>(s.seconds - minutes * 60));
+}
+
+}  // namespace skein::knitout

@@ -1,0 +1,71 @@
+// The virtual v-bed: replays any knitout file operation by operation on a machine profile
+// (loops on every needle and slider, carriers in/hooked/parked, racking) and stops at the
+// first operation that breaks a rule of knitout.md or of the profile, naming the line, the
+// operation and the rule. What it knitted is kept as a fabric: every loop, the loops it was
+// pulled through (in stack order, bottom first) and its place along its carrier's yarn.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "knitout/knitout_ops.hpp"
+#include "knitout/machine_profile.hpp"
+
+namespace skein::knitout {
+
+using LoopId = std::uint32_t;
+inline constexpr LoopId kNoLoop = 0xffffffffu;
+
+struct FabricLoop {
+  std::uint32_t first_parent = 0;  // into Fabric::parents
+  std::uint8_t parent_count = 0;   // loops it was pulled through (knit, split); 0 for tuck
+  std::uint8_t children = 0;       // loops later pulled through it (saturates at 255)
+  OpCode made_by = OpCode::knit;   // knit, tuck or split
+  bool dropped = false;            // released by a drop while nothing was pulled through it
+  bool front = true;               // made on the front bed (seen from the front: a knit)
+  Direction dir = Direction::plus; // the direction of the pass that made it
+  CarrierMask yarn = 0;            // the carriers that made it
+  std::uint32_t piece = 0;         // yarn piece (one per in/inhook of its carrier)
+  std::uint32_t line = 0;          // the knitout line that made it
+};
+
+struct Fabric {
+  std::vector<FabricLoop> loops;
+  std::vector<LoopId> parents;
+  std::vector<std::vector<LoopId>> by_carrier;  // per carrier: its loops in yarn order
+  std::vector<LoopId> live_at_end;              // loops still on needles after the last line
+  std::span<const LoopId> parents_of(LoopId l) const {
+    return {parents.data() + loops[l].first_parent, loops[l].parent_count};
+  }
+};
+
+// What a shop wants to know about a file.
+struct ShopStats {
+  std::uint64_t operations = 0;
+  std::uint64_t stitch_passes = 0;    // carriage passes that knit, tuck, split or miss
+  std::uint64_t transfer_passes = 0;  // carriage passes that transfer or drop
+  std::uint64_t knits = 0, tucks = 0, splits = 0, misses = 0, transfers = 0;
+  std::uint64_t racks = 0;            // rack changes
+  std::uint64_t loops_dropped = 0;
+  std::uint64_t yarn_pieces = 0;      // in / inhook of a carrier
+  std::uint64_t needles_crossed = 0;  // summed width of the passes
+  std::int32_t min_needle = 0, max_needle = 0;
+  double seconds = 0;                 // estimated knitting time
+};
+
+struct Replay {
+  Header header;
+  Fabric fabric;
+  ShopStats stats;
+};
+
+// Replays `text` (read from `file`) on `profile`. Throws ParseError at the first invalid line.
+Replay replay_knitout(std::string_view text, const std::string& file, const MachineProfile& profile);
+
+// Several lines for people: passes, transfers, racks, drops, yarn pieces, time.
+std::string shop_summary(const Replay& replay, const MachineProfile& profile);
+
+}  // namespace skein::knitout
