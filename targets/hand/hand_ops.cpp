@@ -1,0 +1,172 @@
+#include "hand/hand_ops.hpp"
+
+#include <array>
+
+#include "common/error.hpp"
+
+namespace skein::hand {
+namespace {
+
+using O = HandOp;
+using T = StitchType;
+
+// clang-format off
+constexpr std::array kOps{
+  HandOpInfo{O::k,     "k",     "knit", 1, 1},
+  HandOpInfo{O::p,     "p",     "purl", 1, 1},
+  HandOpInfo{O::k2tog, "k2tog", "knit 2 sts together (decrease leaning right; on a WS row it "
+                                "shows as a purl decrease on the RS)", 2, 1},
+  HandOpInfo{O::ssk,   "ssk",   "slip 2 sts knitwise one at a time, then knit them together "
+                                "through the back loops (decrease leaning left)", 2, 1},
+  HandOpInfo{O::p2tog, "p2tog", "purl 2 sts together (on a WS row: a decrease leaning right as "
+                                "seen from the RS)", 2, 1},
+  HandOpInfo{O::ssp,   "ssp",   "slip 2 sts knitwise one at a time, return them to the left "
+                                "needle and purl them together through the back loops (on a WS "
+                                "row: a decrease leaning left as seen from the RS)", 2, 1},
+  HandOpInfo{O::s2kp,  "s2kp",  "slip 2 sts together knitwise, k1, pass the 2 slipped sts over "
+                                "(centred double decrease)", 3, 1},
+  HandOpInfo{O::s2pp,  "s2pp",  "slip 2 sts knitwise one at a time, return them to the left "
+                                "needle, slip them together through the back loops, p1, pass the "
+                                "2 slipped sts over (on a WS row: centred double decrease as seen "
+                                "from the RS)", 3, 1},
+  HandOpInfo{O::kfb,   "kfb",   "knit into the front and then the back of the same st (1 st "
+                                "increased)", 1, 2},
+  HandOpInfo{O::pfb,   "pfb",   "purl into the front and then the back of the same st (1 st "
+                                "increased)", 1, 2},
+  HandOpInfo{O::m1l,   "M1L",   "make 1 left: lift the strand between the needles from front "
+                                "to back with the left needle and knit it through the back loop "
+                                "(1 st increased, leaning left)", 0, 1},
+  HandOpInfo{O::m1r,   "M1R",   "make 1 right: lift the strand between the needles from back "
+                                "to front with the left needle and knit it through the front "
+                                "loop (1 st increased, leaning right)", 0, 1},
+  HandOpInfo{O::m1pl,  "M1PL",  "make 1 purlwise left: lift the strand between the needles from "
+                                "front to back and purl it through the back loop (1 st "
+                                "increased, leaning left as seen from the RS)", 0, 1},
+  HandOpInfo{O::m1pr,  "M1PR",  "make 1 purlwise right: lift the strand between the needles from "
+                                "back to front and purl it through the front loop (1 st "
+                                "increased, leaning right as seen from the RS)", 0, 1},
+  HandOpInfo{O::yo,    "yo",    "yarn over: wrap the yarn once over the right needle (1 st "
+                                "increased)", 0, 1},
+  HandOpInfo{O::bo,    "BO",    "bind off", 1, 0},
+  HandOpInfo{O::pm,    "pm",    "place marker", 0, 0},
+  HandOpInfo{O::sm,    "sm",    "slip marker", 0, 0},
+  HandOpInfo{O::rm,    "rm",    "remove marker", 0, 0},
+};
+
+// How each operation shows from the RS when worked with a side facing. A make-one shows as
+// the stitch it forms with the knit it follows.
+struct FaceRule {
+  HandOp op;
+  Side side;
+  StitchType face;
+};
+constexpr std::array kFaces{
+  FaceRule{O::k, Side::rs, T::k},         FaceRule{O::p, Side::ws, T::k},
+  FaceRule{O::p, Side::rs, T::p},         FaceRule{O::k, Side::ws, T::p},
+  FaceRule{O::k2tog, Side::rs, T::k2tog}, FaceRule{O::p2tog, Side::ws, T::k2tog},
+  FaceRule{O::ssk, Side::rs, T::ssk},     FaceRule{O::ssp, Side::ws, T::ssk},
+  FaceRule{O::p2tog, Side::rs, T::p2tog}, FaceRule{O::k2tog, Side::ws, T::p2tog},
+  FaceRule{O::s2kp, Side::rs, T::s2kp},   FaceRule{O::s2pp, Side::ws, T::s2kp},
+  FaceRule{O::kfb, Side::rs, T::kfb},     FaceRule{O::pfb, Side::ws, T::kfb},
+  FaceRule{O::m1l, Side::rs, T::m1l},     FaceRule{O::m1pl, Side::ws, T::m1l},
+  FaceRule{O::m1r, Side::rs, T::m1r},     FaceRule{O::m1pr, Side::ws, T::m1r},
+  FaceRule{O::yo, Side::rs, T::yo},       FaceRule{O::yo, Side::ws, T::yo},
+  FaceRule{O::bo, Side::rs, T::bo},       FaceRule{O::bo, Side::ws, T::bo},
+};
+// clang-format on
+
+constexpr bool table_is_indexed_by_op() {
+  for (std::size_t i = 0; i < kOps.size(); ++i)
+    if (static_cast<std::size_t>(kOps[i].op) != i) return false;
+  return true;
+}
+static_assert(table_is_indexed_by_op());
+
+char ascii_lower(char ch) {
+  return ch >= 'A' && ch <= 'Z' ? static_cast<char>(ch - 'A' + 'a') : ch;
+}
+
+bool equal_ignoring_case(std::string_view a, std::string_view b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (ascii_lower(a[i]) != ascii_lower(b[i])) return false;
+  return true;
+}
+
+// rs_face and working_of answer from tables filled once from kFaces.
+constexpr std::size_t kTypes = static_cast<std::size_t>(T::tuck) + 1;
+constexpr std::size_t kHandOps = static_cast<std::size_t>(O::rm) + 1;
+
+struct FaceTables {
+  std::array<std::array<std::optional<StitchType>, 2>, kHandOps> face{};
+  std::array<std::array<std::optional<HandOp>, 2>, kTypes> op{};
+  FaceTables() {
+    for (const FaceRule& rule : kFaces) {
+      auto side = static_cast<std::size_t>(rule.side);
+      face[static_cast<std::size_t>(rule.op)][side] = rule.face;
+      op[static_cast<std::size_t>(rule.face)][side] = rule.op;
+    }
+  }
+};
+
+const FaceTables& face_tables() {
+  static const FaceTables tables;
+  return tables;
+}
+
+}  // namespace
+
+std::string_view side_name(Side side) {
+  return side == Side::rs ? "RS" : "WS";
+}
+
+const HandOpInfo& info(HandOp op) {
+  auto index = static_cast<std::size_t>(op);
+  SKEIN_ASSERT(index < kOps.size(), "hand op out of range");
+  return kOps[index];
+}
+
+std::optional<HandOp> hand_op_from(std::string_view word) {
+  for (const HandOpInfo& entry : kOps)
+    if (equal_ignoring_case(entry.abbreviation, word)) return entry.op;
+  return std::nullopt;
+}
+
+bool is_make_one(HandOp op) {
+  return op >= HandOp::m1l && op <= HandOp::yo;
+}
+bool is_marker(HandOp op) {
+  return op >= HandOp::pm;
+}
+bool is_plain(HandOp op) {
+  return op == HandOp::k || op == HandOp::p;
+}
+
+std::optional<StitchType> rs_face(HandOp op, Side side) {
+  return face_tables().face[static_cast<std::size_t>(op)][static_cast<std::size_t>(side)];
+}
+
+std::optional<Working> working_of(StitchType type, Side side) {
+  std::optional<HandOp> op =
+      face_tables().op[static_cast<std::size_t>(type)][static_cast<std::size_t>(side)];
+  if (!op) return std::nullopt;
+  if (!is_make_one(*op)) return Working{*op, std::nullopt};
+  return Working{side == Side::rs ? HandOp::k : HandOp::p, *op};
+}
+
+StitchType mirrored(StitchType type) {
+  switch (type) {
+    case T::k2tog:
+      return T::ssk;
+    case T::ssk:
+      return T::k2tog;
+    case T::m1l:
+      return T::m1r;
+    case T::m1r:
+      return T::m1l;
+    default:
+      return type;
+  }
+}
+
+}  // namespace skein::hand

@@ -1,0 +1,78 @@
+// What a hand knitter does, spelled with the standard abbreviations, and how each operation
+// shows on the right side (RS) of the fabric: a knit worked with the wrong side (WS) facing is
+// a purl seen from the RS. The pattern writer and the hand simulator share this one table, so
+// what one writes the other reads the same way.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+#include "mesh/stitch_type.hpp"
+
+namespace skein::hand {
+
+enum class Side : std::uint8_t { rs, ws };
+inline Side other(Side side) {
+  return side == Side::rs ? Side::ws : Side::rs;
+}
+std::string_view side_name(Side side);  // "RS", "WS"
+
+enum class HandOp : std::uint8_t {
+  // Work loops off the left needle.
+  k,
+  p,
+  k2tog,
+  ssk,
+  p2tog,
+  ssp,
+  s2kp,
+  s2pp,
+  kfb,
+  pfb,
+  // Make a loop from the strand or the yarn: take nothing, belong to the stitch worked just
+  // before (or, first in a row, just after): "k1, M1L" is one stitch of the model.
+  m1l,
+  m1r,
+  m1pl,
+  m1pr,
+  yo,
+  bo,  // bind off one stitch
+  pm,
+  sm,
+  rm,  // place, slip, remove a marker
+};
+
+struct HandOpInfo {
+  HandOp op;
+  std::string_view abbreviation;  // as written in a row: "k2tog", "M1L"
+  std::string_view meaning;       // for the list of abbreviations
+  std::uint8_t takes;             // loops taken off the left needle
+  std::uint8_t makes;             // loops put on the right needle
+};
+
+const HandOpInfo& info(HandOp op);
+std::optional<HandOp> hand_op_from(std::string_view word);  // case-insensitive
+
+bool is_make_one(HandOp op);  // M1L, M1R, M1PL, M1PR, yo
+bool is_marker(HandOp op);    // pm, sm, rm
+bool is_plain(HandOp op);     // k, p: written with a count ("k12")
+
+// The model stitch (as seen from the RS) that `op` makes when worked with `side` facing;
+// nullopt when no stitch of the catalogue looks like that (ssk worked on the WS). For a
+// make-one, the stitch it forms with the knit stitch it belongs to.
+std::optional<StitchType> rs_face(HandOp op, Side side);
+
+// How a knitter works a model stitch of type `type` with `side` facing: one operation, or a
+// stitch that shows as a knit on the RS followed by a make-one. nullopt for types hand
+// patterns do not cover yet.
+struct Working {
+  HandOp op;
+  std::optional<HandOp> make;
+};
+std::optional<Working> working_of(StitchType type, Side side);
+
+// The stitch that looks like `type` in a mirror (left and right swapped).
+StitchType mirrored(StitchType type);
+
+}  // namespace skein::hand

@@ -1,0 +1,137 @@
+#include "hand/hand_target.hpp"
+
+#include <fmt/format.h>
+
+#include <ostream>
+
+#include "common/error.hpp"
+#include "driver/pipeline.hpp"
+#include "hand/fabric_compare.hpp"
+#include "hand/needle_sim.hpp"
+#include "hand/pattern_reader.hpp"
+#include "hand/pattern_writers.hpp"
+
+namespace skein {
+namespace hand {
+namespace {
+
+enum class Format : std::uint8_t { markdown, html, knitspeak };
+
+struct FormatInfo {
+  Format format;
+  const char* target;
+  const char* extension;
+  const char* description;
+};
+
+constexpr FormatInfo kFormats[] = {
+    {Format::markdown, "hand", ".md",
+     "a printable hand-knitting pattern (markdown): materials, gauge, abbreviations, rows and "
+     "rounds with repeats and stitch counts"},
+    {Format::html, "hand-html", ".html",
+     "the hand-knitting pattern as a self-contained printable page with a schematic and charts"},
+    {Format::knitspeak, "hand-knitspeak", ".knitspeak",
+     "the hand-knitting pattern's rows in Stitch-Maps' KnitSpeak"},
+};
+
+class HandTarget : public Target {
+ public:
+  explicit HandTarget(const FormatInfo& f) : f_(f) {}
+  std::string name() const override { return f_.target; }
+  std::string description() const override { return f_.description; }
+  std::string default_extension() const override { return f_.extension; }
+  void emit(const Compilation& c, const TargetOptions&, std::ostream& out) const override {
+    HandPattern pattern = build_hand_pattern(c);
+    Gauge gauge;
+    PatternDocument doc = make_document(
+        pattern, f_.format == Format::knitspeak ? Dialect::knitspeak : Dialect::standard, gauge);
+    switch (f_.format) {
+      case Format::markdown:
+        write_markdown(doc, out);
+        break;
+      case Format::html:
+        write_html(doc, pattern, gauge, out);
+        break;
+      case Format::knitspeak:
+        write_knitspeak(doc, out);
+        break;
+    }
+  }
+
+ private:
+  const FormatInfo& f_;
+};
+
+class HandSimulator : public Simulator {
+ public:
+  explicit HandSimulator(const FormatInfo& f) : f_(f) {}
+  std::string name() const override { return std::string(f_.target) + "-knitter"; }
+  std::string target() const override { return f_.target; }
+  std::string description() const override {
+    return "works the pattern as a knitter would (needles, markers, yarn) and proves it knits "
+           "the input stitch for stitch";
+  }
+  VerifyReport verify(const std::string& text, const std::string& file, const Compilation* against,
+                      const TargetOptions&) const override {
+    if (f_.format == Format::html) return verify_pattern(html_to_text(text), file, against);
+    return verify_pattern(text, file, against);
+  }
+
+ private:
+  const FormatInfo& f_;
+};
+
+std::string counted(std::uint32_t n, const char* one, const char* many) {
+  return fmt::format("{} {}", n, n == 1 ? one : many);
+}
+
+// "38 rnds worked, 8 printed stitch counts checked".
+std::string work_done(const Replay& r) {
+  std::string rows;
+  if (r.rows) rows = counted(r.rows, "row", "rows");
+  if (r.rounds) rows += (rows.empty() ? "" : " and ") + counted(r.rounds, "rnd", "rnds");
+  if (rows.empty()) rows = "no rows";
+  return fmt::format("{} worked by the hand simulator, {} checked", rows,
+                     counted(r.counts_checked, "printed stitch count", "printed stitch counts"));
+}
+
+VerifyReport proven(const Replay& r, const std::string& file, const Compilation& c, bool mirror) {
+  return {true, fmt::format(
+                    "{}: proven against {}: {}; the knitted fabric matches the model "
+                    "stitch for stitch ({} stitches: their types, loops and yarn order){}",
+                    file, c.input, work_done(r), r.fabric.size(),
+                    mirror ? ", as its mirror image (the model's rounds run left to right)" : "")};
+}
+
+}  // namespace
+
+VerifyReport verify_pattern(std::string_view text, const std::string& file,
+                            const Compilation* against) {
+  if (against && !against->knittability.knittable)
+    throw Error(
+        fmt::format("{} is not knittable, so no pattern of it can be proven", against->input));
+  Replay r = replay(read_pattern(text, file), file);
+  if (!r.ok) return {false, r.failure};
+  if (!against)
+    return {false, fmt::format("{}: {}, {} stitches knitted; give --against INPUT to compare "
+                               "them with the model",
+                               file, work_done(r), r.fabric.size())};
+  std::optional<Difference> straight = first_difference(r.fabric, *against, false);
+  if (!straight) return proven(r, file, *against, false);
+  std::optional<Difference> mirror = first_difference(r.fabric, *against, true);
+  if (!mirror) return proven(r, file, *against, true);
+  // Report the comparison that got further: the pattern is most likely meant that way.
+  const Difference& d = mirror->stitch > straight->stitch ? *mirror : *straight;
+  return {false, fmt::format("{}: not the model's fabric: {}", file, d.what)};
+}
+
+}  // namespace hand
+
+void register_hand_target(Registry& registry) {
+  for (const hand::FormatInfo& f : hand::kFormats) {
+    registry.add(std::make_unique<hand::HandTarget>(f));
+    registry.add(std::make_unique<hand::HandSimulator>(f));
+  }
+}
+
+}  // namespace skein

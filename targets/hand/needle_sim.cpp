@@ -1,0 +1,569 @@
+#include "hand/needle_sim.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace skein::hand {
+
+std::uint8_t Fabric::rs_slot(std::uint32_t loop) const {
+  std::uint32_t maker = loop_maker[loop];
+  return facing[maker] == Side::rs ? static_cast<std::uint8_t>(made[maker] - 1 - loop_index[loop])
+                                   : loop_index[loop];
+}
+
+std::vector<std::uint32_t> Fabric::rs_taken(std::uint32_t stitch) const {
+  std::vector<std::uint32_t> loops(taken.begin() + taken_first[stitch],
+                                   taken.begin() + taken_first[stitch + 1]);
+  // Facing the RS the knitter works right to left: the first loop taken is the rightmost.
+  if (facing[stitch] == Side::rs) std::reverse(loops.begin(), loops.end());
+  return loops;
+}
+
+std::string Fabric::row_label(std::uint32_t r) const {
+  const RowWorked& w = rows[r];
+  if (w.number == 0) return "Cast on";
+  std::string word = w.round ? "Rnd" : "Row";
+  std::string label = w.round ? fmt::format("Rnd {}", w.number)
+                              : fmt::format("Row {} ({})", w.number, side_name(w.side));
+  if (w.repeat_of) label += fmt::format(", {} {} again", word, w.repeat_of);
+  return label;
+}
+
+std::string Fabric::describe(std::uint32_t s) const {
+  return fmt::format("{}, st {} ({})", row_label(row[s]), position[s], abbreviation(type[s]));
+}
+
+namespace {
+
+constexpr std::uint32_t kNone = 0xffffffffu;
+constexpr std::uint32_t kMarkerBit = 0x80000000u;  // needle entries: a loop, or a marker
+
+bool is_marker_entry(std::uint32_t entry) {
+  return entry & kMarkerBit;
+}
+
+std::string sts(std::uint32_t n) {
+  return fmt::format("{} st{}", n, n == 1 ? "" : "s");
+}
+
+// An impossible step: where, and why.
+struct StepFailure {
+  std::string message;
+};
+
+class NeedleSimulator {
+ public:
+  NeedleSimulator(const Script& script, const std::string& file) : script_(script), file_(file) {
+    work_even_.resize(2);
+    for (HandOp op : {HandOp::k, HandOp::p}) {
+      Program& p = work_even_[op == HandOp::k ? 0 : 1];
+      p.nodes.push_back({Node::Kind::op, op, 1, {Until::Kind::end, 0}});
+      p.top_end = 1;
+    }
+  }
+
+  Replay run() && {
+    const Step* step = nullptr;
+    try {
+      for (const Step& s : script_.steps) {
+        step = &s;
+        do_step(s);
+      }
+      finish();
+    } catch (const StepFailure& f) {
+      out_.ok = false;
+      out_.failure = step ? fmt::format("{}:{}: {}", file_, step->line, f.message)
+                          : fmt::format("{}: {}", file_, f.message);
+    }
+    return std::move(out_);
+  }
+
+ private:
+  Fabric& fab() { return out_.fabric; }
+
+  [[noreturn]] void fail(const std::string& why) const {
+    throw StepFailure{in_row_ ? fmt::format("{}: {}", out_.fabric.row_label(row_), why) : why};
+  }
+
+  void do_step(const Step& s) {
+    switch (s.kind) {
+      case Step::Kind::piece:
+        break;
+      case Step::Kind::cast_on:
+        cast_on(s.count);
+        break;
+      case Step::Kind::join_round:
+        join(s.marker);
+        break;
+      case Step::Kind::row:
+        work_rows(s);
+        break;
+      case Step::Kind::repeat_rows:
+        repeat_rows(s);
+        break;
+      case Step::Kind::work_even:
+        work_even(s);
+        break;
+      case Step::Kind::fasten_off:
+        fasten_off();
+        break;
+    }
+  }
+
+  // --- pieces -------------------------------------------------------------------------------
+
+  void cast_on(std::uint32_t n) {
+    if (active_ && live_ > 0)
+      fail(fmt::format("Cast on: the piece before still has {} on the needle", sts(live_)));
+    if (n == 0) fail("Cast on: no sts to cast on");
+    active_ = true;
+    facing_ = Side::rs;
+    round_ = place_bor_ = false;
+    bor_ = kNone;
+    next_number_ = 1;
+    last_side_.reset();
+    defined_.clear();
+    left_.clear();
+    right_.clear();
+    piece_last_ = kNone;
+    fab().piece_first.push_back(fab().size());
+    fab().rows.push_back({0, 0, 0, false, Side::rs});
+    row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
+    position_ = 0;
+    next_link_ = YarnLink::course;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      std::uint32_t x = new_stitch(StitchType::co);
+      fab().taken_first.push_back(static_cast<std::uint32_t>(fab().taken.size()));
+      right_.push_back(new_loop(x));
+    }
+    live_ = n;
+  }
+
+  void join(bool marker) {
+    if (!active_ || next_number_ != 1 || round_)
+      fail("Join to work in the rnd: only right after a cast-on");
+    round_ = true;
+    place_bor_ = marker;
+  }
+
+  void fasten_off() {
+    if (!active_) fail("Fasten off: no yarn is being worked");
+    if (live_ > 0)
+      fail(fmt::format("Fasten off: {} still on the needle; bind them off first", sts(live_)));
+    active_ = false;
+  }
+
+  void finish() {
+    if (fab().piece_first.empty()) throw StepFailure{"the pattern casts nothing on"};
+    if (active_ && live_ > 0)
+      throw StepFailure{fmt::format("the pattern ends with {} still on the needle", sts(live_))};
+  }
+
+  // --- rows ---------------------------------------------------------------------------------
+
+  void check_kind(bool round_label, const char* what) const {
+    if (!active_)
+      throw StepFailure{fmt::format("{}: no sts are on the needle (cast on first)", what)};
+    if (round_label != round_)
+      throw StepFailure{
+          round_ ? fmt::format("{}: the work is joined in the rnd, so it has rnds, not rows", what)
+                 : fmt::format(
+                       "{}: the work is flat (never joined in the rnd), so it has rows, not rnds",
+                       what)};
+  }
+
+  void work_rows(const Step& s) {
+    check_kind(s.round, s.round ? "Rnd" : "Row");
+    if (s.number != next_number_)
+      throw StepFailure{fmt::format("{} {} comes next, not {} {}", s.round ? "Rnd" : "Row",
+                                    next_number_, s.round ? "Rnd" : "Row", s.number)};
+    for (std::uint32_t n = s.number; n <= s.last; ++n) {
+      if (defined_.size() <= n) defined_.resize(n + 1, kNone);
+      defined_[n] = s.program;
+      work_row(script_.programs[s.program], 0, n == s.number ? s.side : std::nullopt, s.line);
+    }
+    check_count(s);
+  }
+
+  void repeat_rows(const Step& s) {
+    std::string what =
+        s.number == s.last
+            ? fmt::format("Rep {} {}", s.round ? "Rnd" : "Row", s.number)
+            : fmt::format("Rep {} {}\u2013{}", s.round ? "Rnds" : "Rows", s.number, s.last);
+    check_kind(s.round, what.c_str());
+    for (std::uint32_t n = s.number; n <= s.last; ++n)
+      if (n >= defined_.size() || defined_[n] == kNone)
+        throw StepFailure{
+            fmt::format("{}: {} {} is not written out above", what, s.round ? "Rnd" : "Row", n)};
+    if (s.last + 1 != next_number_)
+      throw StepFailure{fmt::format("{}: the rows to repeat must be the last ones worked ({} {})",
+                                    what, s.round ? "Rnd" : "Row", next_number_ - 1)};
+    for (std::uint32_t t = 0; t < s.count; ++t)
+      for (std::uint32_t n = s.number; n <= s.last; ++n) {
+        std::uint32_t number = next_number_;
+        if (defined_.size() <= number) defined_.resize(number + 1, kNone);
+        defined_[number] = defined_[n];
+        work_row(script_.programs[defined_[n]], n, std::nullopt, s.line);
+      }
+    check_count(s);
+  }
+
+  void work_even(const Step& s) {
+    check_kind(s.round, s.round ? "every rnd" : "every row");
+    if (s.count < next_number_)
+      throw StepFailure{fmt::format("until {} {} in all: {} are already worked", s.count,
+                                    s.round ? "rnds" : "rows", next_number_ - 1)};
+    std::uint32_t program = s.op == HandOp::k ? 0 : 1;
+    while (next_number_ <= s.count) work_row(work_even_[program], 0, std::nullopt, s.line);
+  }
+
+  void check_count(const Step& s) {
+    if (!s.sts) return;
+    ++out_.counts_checked;
+    if (*s.sts != live_)
+      throw StepFailure{fmt::format("{}: the pattern says {}, but {} on the needle",
+                                    fab().row_label(row_), sts(*s.sts),
+                                    live_ == 1 ? "1 st is" : fmt::format("{} sts are", live_))};
+  }
+
+  void work_row(const Program& p, std::uint32_t repeat_of, std::optional<Side> label,
+                std::size_t line) {
+    Side facing = Side::rs;
+    if (!round_) facing = last_side_ ? other(*last_side_) : label.value_or(Side::rs);
+    fab().rows.push_back({line, next_number_, repeat_of, round_, facing});
+    row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
+    in_row_ = true;
+    if (label && !round_ && *label != facing)
+      fail(fmt::format("labelled {}, but the {} faces you: every row turns the work",
+                       side_name(*label), side_name(facing)));
+    begin_row(facing);
+    run_nodes(p, p.top_begin, p.top_end);
+    end_row();
+    in_row_ = false;
+    last_side_ = facing;
+    ++next_number_;
+    ++(round_ ? out_.rounds : out_.rows);
+  }
+
+  void begin_row(Side facing) {
+    facing_ = facing;
+    position_ = 0;
+    row_last_stitch_ = kNone;
+    pending_.clear();
+    last_make_ = std::nullopt;
+    if (round_)
+      left_.assign(right_.rbegin(), right_.rend());
+    else
+      left_.swap(right_);
+    right_.clear();
+    index_left_needle();
+    next_link_ = round_ ? YarnLink::shift : YarnLink::turn;
+    if (place_bor_) {
+      bor_ = new_marker();
+      right_.push_back(bor_);
+      place_bor_ = false;
+    } else if (bor_ != kNone && !left_.empty() && left_.back() == bor_) {
+      right_.push_back(left_.back());
+      left_.pop_back();
+    }
+  }
+
+  void end_row() {
+    if (left_loops_ > 0)
+      fail(fmt::format("{} left unworked at the end of the {}", sts(left_loops_),
+                       round_ ? "rnd" : "row"));
+    if (!left_.empty())
+      fail(fmt::format("a marker is left at the end of the {}: slip it (sm) or remove it (rm)",
+                       round_ ? "rnd" : "row"));
+    if (!pending_.empty())
+      fail(fmt::format("{} with no st worked in the {} to go with it",
+                       info(pending_.front().op).abbreviation, round_ ? "rnd" : "row"));
+    if (!round_ && last_make_ && *last_make_ != HandOp::yo)
+      fail(fmt::format("{} at the end of a row: there is no strand after the last st to lift",
+                       info(*last_make_).abbreviation));
+  }
+
+  // For each place on the left needle, the loops from there to the next marker (the tip is at
+  // the back), and whether a marker comes at all: "to m" in constant time.
+  void index_left_needle() {
+    to_marker_.resize(left_.size());
+    marker_ahead_.resize(left_.size());
+    left_loops_ = 0;
+    for (std::size_t i = 0; i < left_.size(); ++i) {
+      bool marker = is_marker_entry(left_[i]);
+      to_marker_[i] = marker ? 0 : (i ? to_marker_[i - 1] : 0) + 1;
+      marker_ahead_[i] = marker || (i && marker_ahead_[i - 1]);
+      left_loops_ += !marker;
+    }
+  }
+
+  std::uint32_t loops_to_marker() const { return left_.empty() ? 0 : to_marker_[left_.size() - 1]; }
+  bool marker_ahead() const { return !left_.empty() && marker_ahead_[left_.size() - 1]; }
+
+  // --- instructions -------------------------------------------------------------------------
+
+  void run_nodes(const Program& p, std::uint32_t begin, std::uint32_t end) {
+    for (std::uint32_t i = begin; i < end; ++i) run_node(p, p.nodes[i]);
+  }
+
+  void run_node(const Program& p, const Node& n) {
+    switch (n.kind) {
+      case Node::Kind::bind_off_all:
+        while (!left_.empty()) {
+          if (is_marker_entry(left_.back()))
+            left_.pop_back();  // binding off removes markers
+          else
+            apply(HandOp::bo);
+        }
+        return;
+      case Node::Kind::op:
+        if (n.until.kind == Until::Kind::count) {
+          for (std::uint32_t t = 0; t < n.times; ++t) apply(n.op);
+        } else {
+          // "k to end" slips the markers it meets; "k to m" stops at the first.
+          bool slips = n.until.kind == Until::Kind::end || n.until.kind == Until::Kind::last;
+          std::uint32_t times = whole_repeats(n.until, info(n.op).takes, info(n.op).abbreviation);
+          for (std::uint32_t t = 0; t < times; ++t) {
+            while (slips && !left_.empty() && is_marker_entry(left_.back())) apply(HandOp::sm);
+            apply(n.op);
+          }
+          while (n.until.kind == Until::Kind::end && !left_.empty()) apply(HandOp::sm);
+        }
+        return;
+      case Node::Kind::group:
+        if (n.until.kind == Until::Kind::count) {
+          for (std::uint32_t t = 0; t < n.times; ++t) run_nodes(p, n.first_child, n.end_child);
+        } else if (auto takes = fixed_takes(p, n.first_child, n.end_child)) {
+          std::uint32_t times = whole_repeats(n.until, *takes, "the repeat");
+          for (std::uint32_t t = 0; t < times; ++t) run_nodes(p, n.first_child, n.end_child);
+        } else {
+          while (remaining(n.until, "the repeat") > 0) {
+            std::uint32_t before = left_loops_;
+            run_nodes(p, n.first_child, n.end_child);
+            if (left_loops_ == before) fail("the repeat works no sts, so it never ends");
+          }
+        }
+        return;
+    }
+  }
+
+  // Loops one working of nodes[begin, end) takes, when that does not depend on the needle.
+  static std::optional<std::uint32_t> fixed_takes(const Program& p, std::uint32_t begin,
+                                                  std::uint32_t end) {
+    std::uint32_t total = 0;
+    for (std::uint32_t i = begin; i < end; ++i) {
+      const Node& n = p.nodes[i];
+      if (n.kind == Node::Kind::bind_off_all || n.until.kind != Until::Kind::count)
+        return std::nullopt;
+      if (n.kind == Node::Kind::op) {
+        total += info(n.op).takes * n.times;
+      } else {
+        auto inner = fixed_takes(p, n.first_child, n.end_child);
+        if (!inner) return std::nullopt;
+        total += *inner * n.times;
+      }
+    }
+    return total;
+  }
+
+  // Sts between the needle tip and where `until` stops.
+  std::uint32_t remaining(const Until& u, std::string_view what) const {
+    switch (u.kind) {
+      case Until::Kind::end:
+        return left_loops_;
+      case Until::Kind::last:
+        if (left_loops_ < u.sts)
+          fail(fmt::format("{} to last {}: only {} left", what, sts(u.sts), sts(left_loops_)));
+        return left_loops_ - u.sts;
+      case Until::Kind::marker:
+      case Until::Kind::before_marker: {
+        if (!marker_ahead()) fail(fmt::format("{} to m: no marker ahead on the left needle", what));
+        std::uint32_t to_m = loops_to_marker();
+        if (to_m < u.sts)
+          fail(fmt::format("{} to {} before m: only {} before the marker", what, sts(u.sts),
+                           sts(to_m)));
+        return to_m - u.sts;
+      }
+      case Until::Kind::count:
+        break;
+    }
+    return 0;
+  }
+
+  std::uint32_t whole_repeats(const Until& u, std::uint32_t takes, std::string_view what) const {
+    std::uint32_t left = remaining(u, what);
+    if (left == 0) return 0;
+    if (takes == 0) fail(fmt::format("{} works no sts, so it never ends", what));
+    if (left % takes != 0)
+      fail(fmt::format("{}: {} to go, not a whole number of repeats of {}", what, sts(left),
+                       sts(takes)));
+    return left / takes;
+  }
+
+  void apply(HandOp op) {
+    switch (op) {
+      case HandOp::pm:
+        right_.push_back(new_marker());
+        return;
+      case HandOp::sm:
+      case HandOp::rm: {
+        if (left_.empty() || !is_marker_entry(left_.back()))
+          fail(fmt::format("{}: the next thing on the left needle is {}, not a marker",
+                           info(op).abbreviation, left_.empty() ? "nothing" : "a st"));
+        std::uint32_t marker = left_.back();
+        left_.pop_back();
+        if (op == HandOp::sm)
+          right_.push_back(marker);
+        else if (marker == bor_)
+          bor_ = kNone;
+        return;
+      }
+      default:
+        break;
+    }
+    if (is_make_one(op))
+      make_one(op);
+    else
+      stitch(op);
+  }
+
+  void stitch(HandOp op) {
+    const HandOpInfo& oi = info(op);
+    std::uint32_t ready = loops_to_marker();
+    if (ready < oi.takes)
+      fail(fmt::format("{} needs {}{}, {} left", oi.abbreviation, sts(oi.takes),
+                       marker_ahead() ? " before the marker" : "", ready));
+    std::optional<StitchType> face = rs_face(op, facing_);
+    if (!face) wrong_side(op);
+    std::uint32_t x = new_stitch(*face);
+    for (std::uint32_t i = 0; i < oi.takes; ++i) {
+      fab().taken.push_back(left_.back());
+      left_.pop_back();
+    }
+    left_loops_ -= oi.takes;
+    fab().taken_first.push_back(static_cast<std::uint32_t>(fab().taken.size()));
+    for (const Pending& p : pending_) adopt(x, p.op, p.loop);
+    pending_.clear();
+    for (std::uint32_t i = 0; i < oi.makes; ++i) right_.push_back(new_loop(x));
+    live_ = live_ + oi.makes - oi.takes;
+    row_last_stitch_ = x;
+    last_make_.reset();
+  }
+
+  // A make-one goes with the stitch just worked, or (first in a row) with the next one.
+  void make_one(HandOp op) {
+    if (!round_ && op != HandOp::yo && row_last_stitch_ == kNone)
+      fail(fmt::format("{} at the start of a row: there is no strand before the first st to lift",
+                       info(op).abbreviation));
+    std::uint32_t loop = new_loop(kNone);
+    right_.push_back(loop);
+    ++live_;
+    last_make_ = op;
+    if (row_last_stitch_ == kNone)
+      pending_.push_back({op, loop});
+    else
+      adopt(row_last_stitch_, op, loop);
+  }
+
+  void adopt(std::uint32_t x, HandOp op, std::uint32_t loop) {
+    Fabric& f = fab();
+    bool single_knit = f.type[x] == StitchType::k && f.taken_first[x + 1] - f.taken_first[x] == 1 &&
+                       f.made[x] <= 1;
+    if (!single_knit)
+      fail(
+          fmt::format("{} must go with a plain knit st (k on RS rows, p on WS rows); with {} it "
+                      "makes a stitch the model cannot have",
+                      info(op).abbreviation, f.describe(x)));
+    std::optional<StitchType> face = rs_face(op, facing_);
+    if (!face) wrong_side(op);
+    f.type[x] = *face;
+    f.loop_maker[loop] = x;
+    f.loop_index[loop] = f.made[x]++;
+  }
+
+  [[noreturn]] void wrong_side(HandOp op) const {
+    std::optional<StitchType> shown = rs_face(op, other(facing_));
+    std::optional<Working> here = shown ? working_of(*shown, facing_) : std::nullopt;
+    std::string_view alternative =
+        here ? info(here->make ? *here->make : here->op).abbreviation : std::string_view("?");
+    fail(
+        fmt::format("{} is a {} stitch: worked with the {} facing it makes a stitch the model "
+                    "cannot have (on {} rows work {})",
+                    info(op).abbreviation, side_name(other(facing_)), side_name(facing_),
+                    side_name(facing_), alternative));
+  }
+
+  std::uint32_t new_stitch(StitchType type) {
+    Fabric& f = fab();
+    auto x = static_cast<std::uint32_t>(f.type.size());
+    f.type.push_back(type);
+    f.facing.push_back(facing_);
+    f.yarn_next.push_back(kNoStitch);
+    f.yarn_link.push_back(YarnLink::none);
+    f.row.push_back(row_);
+    f.position.push_back(++position_);
+    f.made.push_back(0);
+    if (piece_last_ != kNone) {
+      f.yarn_next[piece_last_] = x;
+      f.yarn_link[piece_last_] = next_link_;
+    }
+    next_link_ = YarnLink::course;
+    piece_last_ = x;
+    return x;
+  }
+
+  std::uint32_t new_loop(std::uint32_t maker) {
+    Fabric& f = fab();
+    auto loop = static_cast<std::uint32_t>(f.loop_maker.size());
+    f.loop_maker.push_back(maker);
+    f.loop_index.push_back(maker == kNone ? 0 : f.made[maker]++);
+    return loop;
+  }
+
+  std::uint32_t new_marker() { return kMarkerBit | markers_++; }
+
+  struct Pending {
+    HandOp op;
+    std::uint32_t loop;
+  };
+
+  const Script& script_;
+  const std::string& file_;
+  Replay out_;
+  std::vector<Program> work_even_;  // "k to end", "p to end"
+
+  // The piece being worked.
+  bool active_ = false, round_ = false, place_bor_ = false;
+  std::uint32_t bor_ = kNone;
+  std::uint32_t next_number_ = 1;
+  std::optional<Side> last_side_;
+  std::vector<std::uint32_t> defined_;  // per row number: the program that worked it
+  std::uint32_t live_ = 0;
+  std::uint32_t piece_last_ = kNone;
+  YarnLink next_link_ = YarnLink::course;
+
+  // The needles; tips at the back.
+  std::vector<std::uint32_t> left_, right_;
+  std::vector<std::uint32_t> to_marker_;
+  std::vector<std::uint8_t> marker_ahead_;
+  std::uint32_t left_loops_ = 0;
+  std::uint32_t markers_ = 0;
+
+  // The row being worked.
+  bool in_row_ = false;
+  std::uint32_t row_ = 0;
+  Side facing_ = Side::rs;
+  std::uint32_t position_ = 0;
+  std::uint32_t row_last_stitch_ = kNone;
+  std::vector<Pending> pending_;
+  std::optional<HandOp> last_make_;
+};
+
+}  // namespace
+
+Replay replay(const Script& script, const std::string& file) {
+  return NeedleSimulator(script, file).run();
+}
+
+}  // namespace skein::hand

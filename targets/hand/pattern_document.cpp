@@ -1,0 +1,390 @@
+#include "hand/pattern_document.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+
+namespace skein::hand {
+namespace {
+
+constexpr std::uint32_t kLongestBlock = 8;  // rows in one repeated block
+constexpr const char* kDash = "\u2014";     // before a stitch count
+constexpr const char* kRange = "\u2013";    // between row numbers
+constexpr double kCircularNeedleCm = 40;    // the shortest common circular needle
+
+std::string with_commas(std::uint64_t n) {
+  std::string digits = std::to_string(n), out;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+    out += digits[i];
+  }
+  return out;
+}
+
+std::string cm_and_inches(double cm) {
+  return fmt::format("{:.0f} cm ({:.1f} in)", cm, cm / 2.54);
+}
+
+// "once more", "twice more", "five more times", "12 more times".
+std::string more_times(std::uint32_t n) {
+  constexpr std::array<const char*, 11> kWords = {"",    "",      "",      "three", "four", "five",
+                                                  "six", "seven", "eight", "nine",  "ten"};
+  if (n == 1) return "once more";
+  if (n == 2) return "twice more";
+  if (n < kWords.size()) return fmt::format("{} more times", kWords[n]);
+  return fmt::format("{} more times", n);
+}
+
+std::string title_of(const std::string& source) {
+  std::string title = std::filesystem::path(source).stem().string();
+  bool start = true;
+  for (char& ch : title) {
+    if (ch == '-' || ch == '_') ch = ' ';
+    if (start) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+    start = ch == ' ';
+  }
+  return title.empty() ? "Pattern" : title;
+}
+
+// Writes the rows of each section, finding blocks of rows that repeat.
+class InstructionWriter {
+ public:
+  InstructionWriter(const HandPattern& p, Dialect dialect, std::vector<InstructionLine>& out)
+      : p_(p), dialect_(dialect), out_(out) {
+    texts_.reserve(p.rows.size());
+    for (const PatternRow& r : p.rows) texts_.push_back(row_instructions(p.ops_of(r), dialect));
+  }
+
+  void write() {
+    for (std::uint32_t s = 0; s < p_.sections.size(); ++s) {
+      const PatternSection& sec = p_.sections[s];
+      section_ = s;
+      if (p_.sections.size() > 1)
+        add(InstructionLine::Kind::heading, "",
+            fmt::format("Piece {} (yarn {})", s + 1, sec.yarn + 1), sec.first_row, sec.first_row);
+      add(InstructionLine::Kind::setup, "", setup_text(sec), sec.first_row, sec.first_row);
+      write_rows(sec.first_row, sec.end_row);
+      if (sec.end_row > sec.first_row && p_.rows[sec.end_row - 1].bind_off)
+        add(InstructionLine::Kind::finish, "", "Fasten off.", sec.end_row, sec.end_row);
+    }
+  }
+
+ private:
+  bool knitspeak() const { return dialect_ == Dialect::knitspeak; }
+
+  std::string setup_text(const PatternSection& sec) const {
+    std::string text = fmt::format("Cast on {} sts.", sec.cast_on);
+    if (sec.in_round) text += " Pm and join to work in the rnd, being careful not to twist.";
+    return text;
+  }
+
+  std::string rows_word(bool round, bool plural) const {
+    if (knitspeak()) return std::string(round ? "Round" : "Row") + (plural ? "s" : "");
+    return std::string(round ? "Rnd" : "Row") + (plural ? "s" : "");
+  }
+
+  std::string label(const PatternRow& r) const {
+    std::string word = rows_word(r.round, false);
+    if (r.round) return fmt::format("{} {}", word, r.number);
+    return fmt::format("{} {} ({})", word, r.number, side_name(r.side));
+  }
+
+  static std::string count_after(std::uint32_t before, std::uint32_t after) {
+    return before == after ? "" : fmt::format(" {} {} sts", kDash, after);
+  }
+
+  // The longest-covering block of rows starting at `i` that repeats, as (rows, times).
+  std::pair<std::uint32_t, std::uint32_t> best_block(std::uint32_t i, std::uint32_t end) const {
+    std::pair<std::uint32_t, std::uint32_t> best{1, 1};
+    for (std::uint32_t period = 1; period <= kLongestBlock && i + 2 * period <= end; ++period) {
+      std::uint32_t times = 1;
+      while (i + (times + 1) * period <= end && block_repeats(i, i + times * period, period))
+        ++times;
+      if (times >= 2 && times * period > best.first * best.second) best = {period, times};
+    }
+    return best;
+  }
+
+  bool block_repeats(std::uint32_t a, std::uint32_t b, std::uint32_t period) const {
+    for (std::uint32_t k = 0; k < period; ++k) {
+      const PatternRow &x = p_.rows[a + k], &y = p_.rows[b + k];
+      if (x.bind_off || y.bind_off || x.round != y.round || texts_[a + k] != texts_[b + k])
+        return false;
+    }
+    return true;
+  }
+
+  void write_rows(std::uint32_t first, std::uint32_t end) {
+    for (std::uint32_t i = first; i < end;) {
+      auto [period, times] = best_block(i, end);
+      std::uint32_t last = i + period * times - 1;
+      const PatternRow& r = p_.rows[i];
+      if (times > 1 && period == 1 && (texts_[i] == "Knit" || texts_[i] == "Purl") &&
+          !knitspeak()) {
+        add(InstructionLine::Kind::repeat, "",
+            fmt::format("{} every {} until {} {} in all.", texts_[i], r.round ? "rnd" : "row",
+                        p_.rows[last].number, r.round ? "rnds" : "rows"),
+            i, last + 1);
+      } else {
+        for (std::uint32_t k = 0; k < period; ++k) row_line(i + k);
+        if (times > 1) repeat_line(i, period, times);
+      }
+      i = last + 1;
+    }
+  }
+
+  void row_line(std::uint32_t i) {
+    const PatternRow& r = p_.rows[i];
+    std::string text = texts_[i];
+    if (r.bind_off && i > p_.sections[section_].first_row && knits_and_purls(p_.rows[i - 1]))
+      text += " in patt";
+    else if (!r.bind_off)
+      text += count_after(r.sts_before, r.sts_after);
+    add(InstructionLine::Kind::row, label(r), text + ".", i, i + 1);
+  }
+
+  // Does the row show both knits and purls on the side facing the knitter?
+  bool knits_and_purls(const PatternRow& r) const {
+    auto ops = p_.ops_of(r);
+    return std::find(ops.begin(), ops.end(), HandOp::k) != ops.end() &&
+           std::find(ops.begin(), ops.end(), HandOp::p) != ops.end();
+  }
+
+  void repeat_line(std::uint32_t i, std::uint32_t period, std::uint32_t times) {
+    const PatternRow &a = p_.rows[i], &b = p_.rows[i + period - 1];
+    std::uint32_t last = i + period * times - 1;
+    std::string rows = period == 1 ? fmt::format("{} {}", rows_word(a.round, false), a.number)
+                                   : fmt::format("{} {}{}{}", rows_word(a.round, true), a.number,
+                                                 knitspeak() ? "-" : kRange, b.number);
+    std::string verb = knitspeak() ? "Repeat" : "Rep";
+    add(InstructionLine::Kind::repeat, "",
+        fmt::format("{} {} {}{}.", verb, rows, more_times(times - 1),
+                    count_after(b.sts_after, p_.rows[last].sts_after)),
+        i + period, last + 1);
+  }
+
+  void add(InstructionLine::Kind kind, std::string label, std::string text, std::uint32_t first,
+           std::uint32_t end) {
+    out_.push_back({kind, std::move(label), std::move(text), section_, first, end});
+  }
+
+  const HandPattern& p_;
+  Dialect dialect_;
+  std::vector<InstructionLine>& out_;
+  std::vector<std::string> texts_;  // per pattern row, without label and count
+  std::uint32_t section_ = 0;
+};
+
+// What the front matter needs to know about the whole pattern.
+struct Totals {
+  bool flat = false, round = false;
+  std::uint32_t widest = 0, narrowest_round = 0;
+  std::vector<bool> used = std::vector<bool>(static_cast<std::size_t>(HandOp::rm) + 1, false);
+};
+
+Totals totals_of(const HandPattern& p) {
+  Totals t;
+  t.narrowest_round = ~0u;
+  for (const PatternSection& s : p.sections) {
+    (s.in_round ? t.round : t.flat) = true;
+    t.widest = std::max(t.widest, s.cast_on);
+    if (s.in_round) t.narrowest_round = std::min(t.narrowest_round, s.cast_on);
+  }
+  for (const PatternRow& r : p.rows) {
+    t.widest = std::max(t.widest, r.sts_after);
+    if (r.round && !r.bind_off) t.narrowest_round = std::min(t.narrowest_round, r.sts_after);
+  }
+  for (HandOp op : p.ops) t.used[static_cast<std::size_t>(op)] = true;
+  return t;
+}
+
+class FrontMatter {
+ public:
+  FrontMatter(const HandPattern& p, const Gauge& gauge, const std::vector<InstructionLine>& lines)
+      : p_(p), gauge_(gauge), t_(totals_of(p)) {
+    for (const InstructionLine& l : lines) text_ += l.label + " " + l.text + "\n";
+  }
+
+  std::vector<FrontSection> sections() const {
+    return {{"Finished measurements", measurements()},
+            {"Yarn", yarn()},
+            {"Needles and notions", needles()},
+            {"Gauge", {gauge_text()}},
+            {"Abbreviations", abbreviations()},
+            {"Techniques", techniques()},
+            {"Notes", notes()}};
+  }
+
+ private:
+  double width_cm(std::uint32_t sts) const { return sts * 10.0 / gauge_.sts_per_10cm; }
+  double length_cm(std::uint32_t rows) const { return rows * 10.0 / gauge_.rows_per_10cm; }
+
+  std::vector<std::string> measurements() const {
+    std::vector<std::string> items;
+    for (const PatternSection& s : p_.sections) {
+      std::uint32_t widest = s.cast_on, rows = s.end_row - s.first_row;
+      for (std::uint32_t r = s.first_row; r < s.end_row; ++r)
+        widest = std::max(widest, p_.rows[r].sts_after);
+      std::string piece =
+          p_.sections.size() > 1 ? fmt::format("Piece {}: ", &s - &p_.sections[0] + 1) : "";
+      items.push_back(fmt::format("{}{}: {}, {} sts at the widest. {}: {}, {} {}.", piece,
+                                  s.in_round ? "Circumference" : "Width",
+                                  cm_and_inches(width_cm(widest)), widest,
+                                  s.in_round ? "Height" : "Length", cm_and_inches(length_cm(rows)),
+                                  rows, s.in_round ? "rnds" : "rows"));
+    }
+    return items;
+  }
+
+  std::vector<std::string> yarn() const {
+    std::vector<std::string> items;
+    for (const PatternSection& s : p_.sections) {
+      double metres = std::ceil(s.stitches * gauge_.yarn_cm_per_stitch() / 100 + 0.4);
+      items.push_back(fmt::format(
+          "{}About {:.0f} m ({:.0f} yd) of worsted-weight yarn, estimated from its {} sts at the "
+          "gauge below, with 20 cm tails at each end.",
+          p_.sections.size() > 1 ? fmt::format("Yarn {}: ", s.yarn + 1) : "", metres,
+          std::ceil(metres / 0.9144), with_commas(s.stitches)));
+    }
+    return items;
+  }
+
+  std::vector<std::string> needles() const {
+    std::vector<std::string> items;
+    if (t_.flat)
+      items.push_back(
+          "4.5 mm (US 7) needles: straight, or a circular needle worked back and forth.");
+    if (t_.round) {
+      auto fits = static_cast<std::uint32_t>(kCircularNeedleCm * gauge_.sts_per_10cm / 10);
+      if (t_.widest >= fits)
+        items.push_back(
+            fmt::format("4.5 mm (US 7) circular needle, 40 cm (16 in) long, for rounds "
+                        "of {} sts or more.",
+                        fits));
+      if (t_.narrowest_round < fits)
+        items.push_back(
+            fmt::format("4.5 mm (US 7) double-pointed needles, or a long circular "
+                        "needle for magic loop, for rounds of fewer than {} sts.",
+                        fits));
+      items.push_back("1 stitch marker for the beginning of the round.");
+    }
+    items.push_back("Tapestry needle for weaving in ends.");
+    return items;
+  }
+
+  std::string gauge_text() const {
+    return fmt::format(
+        "{:.0f} sts and {:.0f} rows = 10 cm (4 in) in stockinette stitch. The model does not say "
+        "which yarn you use: the measurements and yarn amounts assume this gauge (worsted weight "
+        "on 4.5 mm needles). Knit a swatch and change needle size to match it.",
+        gauge_.sts_per_10cm, gauge_.rows_per_10cm);
+  }
+
+  bool uses(HandOp op) const { return t_.used[static_cast<std::size_t>(op)]; }
+  bool says(std::string_view words) const { return text_.find(words) != std::string::npos; }
+
+  std::vector<std::string> abbreviations() const {
+    std::vector<std::string> items;
+    for (auto op = HandOp::k; op <= HandOp::rm; op = static_cast<HandOp>(static_cast<int>(op) + 1))
+      if (uses(op) || (op == HandOp::pm && says("Pm ")))
+        items.push_back(fmt::format("**{}**: {}", info(op).abbreviation, info(op).meaning));
+    auto word = [&](bool used, const char* abbr, const char* meaning) {
+      if (used) items.push_back(fmt::format("**{}**: {}", abbr, meaning));
+    };
+    word(t_.round, "BOR", "beginning of round");
+    word(says(" m,") || says(" m.") || says(" m "), "m", "marker");
+    word(says("rep") || says("Rep "), "rep", "repeat");
+    word(says("Rnd"), "rnd(s)", "round(s)");
+    word(says("(RS)") || says("(WS)"), "RS / WS", "right side / wrong side of the work");
+    word(true, "st(s)", "stitch(es)");
+    return items;
+  }
+
+  std::vector<std::string> techniques() const {
+    std::vector<std::string> items = {fmt::format(
+        "**Cast on** with the long-tail method (any cast-on that makes one loop per stitch will "
+        "do). The cast-on is not counted: {} is the first worked after it.",
+        t_.flat && t_.round ? "Row 1 (or Rnd 1)"
+        : t_.flat           ? "Row 1"
+                            : "Rnd 1")};
+    if (t_.flat)
+      items.push_back(
+          "**Working flat:** at the end of every row, turn the work; the next row "
+          "starts with the last stitch just worked.");
+    if (t_.round)
+      items.push_back(
+          "**Joining in the round:** spread the cast-on stitches around the needle(s) "
+          "with the cast-on edge untwisted, place the BOR marker and knit the first "
+          "cast-on stitch with the working yarn. The marker then sits at the start of "
+          "every round: slip it as you come to it.");
+    if (uses(HandOp::bo))
+      items.push_back(
+          "**Binding off (BO):** work 2 sts as they appear, *pass the first st on the "
+          "right needle over the second; work 1 more st; rep from * until 1 st "
+          "remains; cut the yarn and pull it through that last loop (fasten off).");
+    return items;
+  }
+
+  std::vector<std::string> notes() const {
+    std::vector<std::string> items;
+    if (says(kDash))
+      items.push_back(
+          fmt::format("When a {} changes the number of stitches, the count on the "
+                      "needle at its end follows the dash: {} 56 sts.",
+                      t_.round ? (t_.flat ? "row or rnd" : "rnd") : "row", kDash));
+    if (says("Rep "))
+      items.push_back(
+          "\"Rep Rows 3\u20134 twice more\" means work them twice more after the first "
+          "time: three times in all; a stitch count after it is the count once all "
+          "repeats are done.");
+    if (says("every rnd until") || says("every row until"))
+      items.push_back(
+          "\"Knit every rnd until 24 rnds in all\" counts the rounds from the cast-on, "
+          "those already worked included.");
+    if (uses(HandOp::m1l) || uses(HandOp::m1r) || uses(HandOp::m1pl) || uses(HandOp::m1pr) ||
+        uses(HandOp::yo))
+      items.push_back(
+          "A make-one or yarn over goes with the stitch worked just before it: \"k1, "
+          "M1L\" makes 2 sts from 1.");
+    if (p_.mirror)
+      items.push_back(fmt::format(
+          "The rounds of the model ({}) run left to right as seen from the right side; hand "
+          "knitting runs right to left, so this pattern knits the model's mirror image: decreases "
+          "and increases lean the other way (ssk where the model has k2tog, M1R for M1L).",
+          p_.source));
+    return items;
+  }
+
+  const HandPattern& p_;
+  const Gauge& gauge_;
+  Totals t_;
+  std::string text_;  // every instruction, to see which abbreviations are used
+};
+
+}  // namespace
+
+double Gauge::yarn_cm_per_stitch() const {
+  double per_cm2 = sts_per_10cm / 10 * rows_per_10cm / 10;
+  return std::sqrt(19.0 / per_cm2) * 1.1;
+}
+
+PatternDocument make_document(const HandPattern& pattern, Dialect dialect, const Gauge& gauge) {
+  PatternDocument doc;
+  doc.title = title_of(pattern.source);
+  std::uint64_t stitches = 0;
+  for (const PatternSection& s : pattern.sections) stitches += s.stitches;
+  doc.subtitle = fmt::format(
+      "A hand-knitting pattern written by skein from {} ({} stitches). Prove it with `skein "
+      "verify` against the same model.",
+      pattern.source, with_commas(stitches));
+  InstructionWriter(pattern, dialect, doc.instructions).write();
+  doc.front = FrontMatter(pattern, gauge, doc.instructions).sections();
+  doc.finishing = {"Weave in the ends. Block lightly to the measurements."};
+  return doc;
+}
+
+}  // namespace skein::hand

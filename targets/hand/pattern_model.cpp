@@ -1,0 +1,284 @@
+#include "hand/pattern_model.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+
+#include "common/error.hpp"
+#include "driver/pipeline.hpp"
+
+namespace skein::hand {
+namespace {
+
+using T = StitchType;
+
+constexpr std::array kSupported = {T::k,   T::p,  T::co,    T::bo,  T::kfb,   T::m1l,
+                                   T::m1r, T::yo, T::k2tog, T::ssk, T::p2tog, T::s2kp};
+
+[[noreturn]] void unsupported(const std::string& what) {
+  throw Error(fmt::format("hand target: {}", what));
+}
+
+void check_supported(const Compilation& c) {
+  const KnitGraph& g = c.knit;
+  for (RowShape shape : g.row_shape) {
+    if (shape == RowShape::unknown)
+      unsupported(fmt::format(
+          "{} has no rows or rounds (the yarn of a stitch graph is one helix), so it cannot be "
+          "written as a hand pattern yet; give a stitch mesh (.obj)",
+          g.source_name));
+    if (shape == RowShape::short_row)
+      unsupported(
+          fmt::format("{} has short rows, which hand patterns do not cover yet", g.source_name));
+  }
+  for (StitchId s = 0; s < g.size(); ++s)
+    if (std::find(kSupported.begin(), kSupported.end(), g.type[s]) == kSupported.end())
+      unsupported(fmt::format("{} is a {} ({}), which hand patterns do not cover yet",
+                              g.describe(s), info(g.type[s]).name, abbreviation(g.type[s])));
+  for (const Loop& l : g.loops)
+    if (l.kind != LoopKind::wale || l.taker == kNoStitch)
+      unsupported(fmt::format(
+          "the loop {} makes {}: hand patterns cover loops between rows only", g.describe(l.maker),
+          l.taker == kNoStitch ? "is never worked"
+                               : "crosses a mismatched edge to " + g.describe(l.taker)));
+  for (const Event& e : c.schedule.events) {
+    if (e.kind == EventKind::hold)
+      unsupported(
+          fmt::format("yarn {} must put its stitches aside at {} until {} is knit; "
+                      "holding and resuming stitches is not covered yet",
+                      e.yarn + 1, g.describe(e.stitch), g.describe(e.waits_for)));
+    if (e.kind == EventKind::marker && e.marker != MarkerKind::beginning_of_round)
+      unsupported(fmt::format("a {} marker before {} is not covered yet", marker_name(e.marker),
+                              g.describe(e.stitch)));
+  }
+}
+
+// Which way each row runs seen from the RS. Along one yarn piece a turn reverses the
+// direction and a shift-path keeps it, so one bit per piece remains: the direction of its
+// first row. Two loops side by side in one stitch (slots count left to right) that were made,
+// or are taken, by two stitches of one row tell which way that row ran.
+class Handedness {
+ public:
+  explicit Handedness(const Compilation& c)
+      : g_(c.knit),
+        y_(c.yarns),
+        pos_(g_.size(), 0),
+        reversed_(g_.size(), 0),
+        first_lr_(y_.size(), 0) {
+    walk_yarns();
+    decide_first_rows();
+  }
+
+  // Does the row of `s` run left to right seen from the RS?
+  bool left_to_right(StitchId s) const { return first_lr_[y_.piece_of[s]] != reversed_[s]; }
+
+ private:
+  void walk_yarns() {
+    for (std::uint32_t p = 0; p < y_.size(); ++p) {
+      std::uint8_t reversed = 0;
+      StitchId s = y_.first[p];
+      for (std::uint32_t i = 0; i < y_.length[p]; ++i, s = g_.yarn_next[s]) {
+        pos_[s] = i;
+        reversed_[s] = reversed;
+        if (g_.yarn_link[s] == YarnLink::turn) reversed ^= 1;
+      }
+    }
+  }
+
+  void decide_first_rows() {
+    std::vector<std::array<std::uint32_t, 2>> votes(y_.size(), {0, 0});
+    auto observe = [&](StitchId left, StitchId right) {
+      if (left == right || left == kNoStitch || right == kNoStitch) return;
+      std::uint32_t p = y_.piece_of[left];
+      if (p != y_.piece_of[right] || g_.row[left] != g_.row[right]) return;
+      bool lr = pos_[left] < pos_[right];
+      ++votes[p][lr != static_cast<bool>(reversed_[left])];
+    };
+    for (StitchId s = 0; s < g_.size(); ++s) {
+      auto taken = g_.loops_taken_by(s);
+      for (std::size_t i = 1; i < taken.size(); ++i)
+        observe(g_.loops[taken[i - 1]].maker, g_.loops[taken[i]].maker);
+      auto made = g_.loops_made_by(s);
+      for (std::size_t i = 1; i < made.size(); ++i)
+        observe(g_.loops[made[i - 1]].taker, g_.loops[made[i]].taker);
+    }
+    for (std::uint32_t p = 0; p < y_.size(); ++p) {
+      if (votes[p][0] && votes[p][1])
+        unsupported(
+            fmt::format("the loops of yarn {} do not keep one left-to-right order, so "
+                        "its rows cannot be given a right and a wrong side",
+                        p + 1));
+      if (votes[p][0] || votes[p][1]) {
+        first_lr_[p] = votes[p][1] > 0;
+      } else {
+        // No stitch tells: work the first row after the cast-on from the RS.
+        StitchId s = y_.first[p];
+        while (g_.type[s] == T::co && g_.yarn_next[s] != kNoStitch) s = g_.yarn_next[s];
+        first_lr_[p] = reversed_[s];
+      }
+    }
+  }
+
+  const KnitGraph& g_;
+  const YarnPieces& y_;
+  std::vector<std::uint32_t> pos_;      // index along its yarn piece
+  std::vector<std::uint8_t> reversed_;  // runs against the first row of its piece
+  std::vector<std::uint8_t> first_lr_;  // per piece
+};
+
+// Hand knitting works every round right to left with the RS facing. When the model's rounds
+// run the other way, the pattern knits the mirror image.
+bool needs_mirror(const Compilation& c, const Handedness& hand) {
+  const KnitGraph& g = c.knit;
+  std::int8_t mirror = -1;
+  for (StitchId s = 0; s < g.size(); ++s) {
+    if (g.row_shape[g.row[s]] != RowShape::closed) continue;
+    std::int8_t lr = hand.left_to_right(s) ? 1 : 0;
+    if (mirror >= 0 && mirror != lr)
+      unsupported(fmt::format("the rounds of {} run both ways seen from the RS (see {})",
+                              g.source_name, g.describe(s)));
+    mirror = lr;
+  }
+  return mirror == 1;
+}
+
+class PatternBuilder {
+ public:
+  explicit PatternBuilder(const Compilation& c) : c_(c), g_(c.knit), hand_(c) {
+    out_.source = c.input;
+    out_.mirror = needs_mirror(c, hand_);
+  }
+
+  HandPattern run() && {
+    for (const Event& e : c_.schedule.events) {
+      switch (e.kind) {
+        case EventKind::yarn_start:
+          start_section(e.yarn);
+          break;
+        case EventKind::row_start:
+          flush_row();
+          break;
+        case EventKind::stitch:
+          row_.push_back(e.stitch);
+          break;
+        case EventKind::yarn_end:
+          end_section();
+          break;
+        default:
+          break;  // turns and round markers follow from the yarn links
+      }
+    }
+    return std::move(out_);
+  }
+
+ private:
+  PatternSection& section() { return out_.sections.back(); }
+
+  void start_section(std::uint32_t yarn) {
+    PatternSection& s = out_.sections.emplace_back();
+    s.yarn = yarn;
+    s.first_row = s.end_row = static_cast<std::uint32_t>(out_.rows.size());
+    live_ = 0;
+    cast_on_done_ = false;
+  }
+
+  void end_section() {
+    flush_row();
+    if (live_ != 0)
+      unsupported(
+          fmt::format("yarn {} ends with {} stitches still live", section().yarn + 1, live_));
+    section().end_row = static_cast<std::uint32_t>(out_.rows.size());
+  }
+
+  void flush_row() {
+    if (row_.empty()) return;
+    section().stitches += row_.size();
+    if (!cast_on_done_)
+      cast_on();
+    else
+      add_row();
+    previous_link_ = g_.yarn_link[row_.back()];
+    row_.clear();
+  }
+
+  void cast_on() {
+    for (StitchId s : row_)
+      if (g_.type[s] != T::co)
+        unsupported(fmt::format("yarn {} starts with {}, not with a row of cast-on stitches",
+                                section().yarn + 1, g_.describe(s)));
+    section().cast_on = live_ = static_cast<std::uint32_t>(row_.size());
+    section().in_round = g_.yarn_link[row_.back()] == YarnLink::shift;
+    cast_on_done_ = true;
+  }
+
+  void add_row() {
+    PatternRow r;
+    r.round = previous_link_ == YarnLink::shift;
+    if (r.round != section().in_round)
+      unsupported(fmt::format("{} switches between rounds and rows, which is not covered yet",
+                              g_.describe(row_.front())));
+    r.number = static_cast<std::uint32_t>(out_.rows.size()) - section().first_row + 1;
+    r.side = (hand_.left_to_right(row_.front()) != out_.mirror) ? Side::ws : Side::rs;
+    r.first_op = static_cast<std::uint32_t>(out_.ops.size());
+    r.sts_before = live_;
+    r.bind_off = g_.type[row_.front()] == T::bo;
+    std::uint32_t takes = 0;
+    for (StitchId s : row_) {
+      append_ops(s, r);
+      takes += info(g_.type[s]).loops_in;
+      live_ = live_ + info(g_.type[s]).loops_out - info(g_.type[s]).loops_in;
+    }
+    if (takes != r.sts_before)
+      unsupported(fmt::format("the row of {} works {} of the {} live stitches",
+                              g_.describe(row_.front()), takes, r.sts_before));
+    check_make_one_has_a_strand(r);
+    r.end_op = static_cast<std::uint32_t>(out_.ops.size());
+    r.sts_after = live_;
+    out_.rows.push_back(r);
+  }
+
+  void append_ops(StitchId s, const PatternRow& r) {
+    T type = g_.type[s];
+    if (type == T::co)
+      unsupported(fmt::format("{} casts on in the middle of the work, which is not covered yet",
+                              g_.describe(s)));
+    if ((type == T::bo) != r.bind_off)
+      unsupported(
+          fmt::format("the row of {} binds off only some of its stitches, which is not "
+                      "covered yet",
+                      g_.describe(s)));
+    std::optional<Working> w = working_of(out_.mirror ? mirrored(type) : type, r.side);
+    SKEIN_ASSERT(w.has_value(), "every supported stitch type has a hand working");
+    out_.ops.push_back(w->op);
+    if (w->make) out_.ops.push_back(*w->make);
+  }
+
+  // A make-one lifts the strand to the next stitch; the last stitch of a flat row has none.
+  void check_make_one_has_a_strand(const PatternRow& r) const {
+    T last = g_.type[row_.back()];
+    if (!r.round && (last == T::m1l || last == T::m1r))
+      unsupported(
+          fmt::format("{} is a make-one worked last in its row, where there is no strand "
+                      "to lift; make it kfb, or move it one stitch in",
+                      g_.describe(row_.back())));
+  }
+
+  const Compilation& c_;
+  const KnitGraph& g_;
+  Handedness hand_;
+  HandPattern out_;
+  std::vector<StitchId> row_;
+  std::uint32_t live_ = 0;
+  bool cast_on_done_ = false;
+  YarnLink previous_link_ = YarnLink::none;
+};
+
+}  // namespace
+
+HandPattern build_hand_pattern(const Compilation& c) {
+  check_supported(c);
+  return PatternBuilder(c).run();
+}
+
+}  // namespace skein::hand

@@ -1,0 +1,54 @@
+// The pattern as a knitter works it: sections (one per yarn piece), each a cast-on followed by
+// rows or rounds of hand operations in working order, each row worked with one side facing.
+// Built from the knit graph and Algorithm 1's schedule; the writers only phrase it.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "hand/hand_ops.hpp"
+
+namespace skein {
+struct Compilation;
+}
+
+namespace skein::hand {
+
+struct PatternRow {
+  std::uint32_t first_op = 0, end_op = 0;  // into HandPattern::ops
+  std::uint32_t number = 0;                // 1-based in its section; the cast-on is not a row
+  bool round = false;
+  Side side = Side::rs;  // the side facing the knitter (rounds: always the RS)
+  std::uint32_t sts_before = 0, sts_after = 0;
+  bool bind_off = false;  // the row binds off every stitch
+};
+
+struct PatternSection {
+  std::uint32_t yarn = 0;                    // model yarn piece (0-based)
+  std::uint32_t cast_on = 0;                 // stitches cast on
+  bool in_round = false;                     // joined to work in the round after the cast-on
+  std::uint32_t first_row = 0, end_row = 0;  // into HandPattern::rows
+  std::uint64_t stitches = 0;                // model stitches worked with this yarn
+};
+
+struct HandPattern {
+  std::string source;  // the input, as given
+  // The model's rounds run left to right seen from the RS, and hand knitting runs right to
+  // left: the pattern knits the model's mirror image (decreases and increases swap lean).
+  bool mirror = false;
+  std::vector<PatternSection> sections;
+  std::vector<PatternRow> rows;
+  std::vector<HandOp> ops;
+
+  std::span<const HandOp> ops_of(const PatternRow& row) const {
+    return {ops.data() + row.first_op, ops.data() + row.end_op};
+  }
+};
+
+// Throws Error naming the stitch when the model needs something hand patterns do not cover
+// yet (short rows, joins, splits, held pieces, stitch graphs without rows).
+HandPattern build_hand_pattern(const Compilation& compilation);
+
+}  // namespace skein::hand

@@ -1,0 +1,532 @@
+#include "hand/pattern_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <charconv>
+
+#include "common/error.hpp"
+
+namespace skein::hand {
+namespace {
+
+constexpr std::string_view kEmDash = "\u2014";
+constexpr std::string_view kEnDash = "\u2013";
+
+char lower(char ch) {
+  return ch >= 'A' && ch <= 'Z' ? static_cast<char>(ch - 'A' + 'a') : ch;
+}
+bool is_word_char(char ch) {
+  return (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9');
+}
+bool is_space(char ch) {
+  return ch == ' ' || ch == '\t' || ch == '\r' || ch == '\n';
+}
+
+bool starts_with_ci(std::string_view s, std::string_view prefix) {
+  if (s.size() < prefix.size()) return false;
+  for (std::size_t i = 0; i < prefix.size(); ++i)
+    if (lower(s[i]) != lower(prefix[i])) return false;
+  return true;
+}
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
+  while (!s.empty() && is_space(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+std::optional<std::uint32_t> number_word(std::string_view word) {
+  constexpr std::array<std::string_view, 21> kWords = {
+      "zero",     "one",     "two",     "three",     "four",     "five",     "six",
+      "seven",    "eight",   "nine",    "ten",       "eleven",   "twelve",   "thirteen",
+      "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen", "twenty"};
+  for (std::size_t i = 0; i < kWords.size(); ++i)
+    if (word.size() == kWords[i].size() && starts_with_ci(word, kWords[i]))
+      return static_cast<std::uint32_t>(i);
+  if (word.size() == 4 && starts_with_ci(word, "once")) return 1;
+  if (word.size() == 5 && starts_with_ci(word, "twice")) return 2;
+  return std::nullopt;
+}
+
+// A position in one sentence, with the small vocabulary of pattern text.
+class Cursor {
+ public:
+  explicit Cursor(std::string_view text) : s_(text) {}
+
+  bool done() {
+    spaces();
+    return i_ >= s_.size();
+  }
+  char peek() {
+    spaces();
+    return i_ < s_.size() ? s_[i_] : '\0';
+  }
+  bool eat_char(char ch) {
+    if (peek() != ch) return false;
+    ++i_;
+    return true;
+  }
+  // A whole word or symbol, case-insensitive: "to" matches in "to end" but not in "tog".
+  bool eat(std::string_view word) {
+    spaces();
+    if (!starts_with_ci(s_.substr(i_), word)) return false;
+    std::size_t end = i_ + word.size();
+    if (end < s_.size() && is_word_char(s_[end]) && is_word_char(word.back())) return false;
+    i_ = end;
+    return true;
+  }
+  bool eat_any(std::initializer_list<std::string_view> words) {
+    for (std::string_view w : words)
+      if (eat(w)) return true;
+    return false;
+  }
+  std::string_view word() {
+    spaces();
+    std::size_t start = i_;
+    while (i_ < s_.size() && is_word_char(s_[i_])) ++i_;
+    return s_.substr(start, i_ - start);
+  }
+  // Digits or a number word ("five", "twice").
+  std::optional<std::uint32_t> number() {
+    std::size_t start = (spaces(), i_);
+    std::string_view w = word();
+    std::uint32_t value = 0;
+    auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), value);
+    if (!w.empty() && ec == std::errc() && end == w.data() + w.size()) return value;
+    if (auto n = number_word(w)) return n;
+    i_ = start;
+    return std::nullopt;
+  }
+  std::string_view rest() {
+    spaces();
+    return s_.substr(i_);
+  }
+
+ private:
+  void spaces() {
+    while (i_ < s_.size() && is_space(s_[i_])) ++i_;
+  }
+  std::string_view s_;
+  std::size_t i_ = 0;
+};
+
+class SentenceReader {
+ public:
+  SentenceReader(Script& script, const std::string& file, std::size_t line_no,
+                 std::string_view line)
+      : script_(script), file_(file), line_no_(line_no), line_(line) {}
+
+  void read(std::string_view sentence) {
+    Cursor c(sentence);
+    if (starts_with_ci(sentence, "row") || starts_with_ci(sentence, "rnd") ||
+        starts_with_ci(sentence, "round"))
+      return row(c);
+    if (c.eat_any({"rep", "repeat"})) return repeat(c);
+    if (c.eat_any({"knit", "purl"})) return work_even(sentence, c);
+    if (std::size_t at = find_ci(sentence, "cast on"); at != std::string_view::npos)
+      return cast_on(Cursor(sentence.substr(at + 7)));
+    if (c.eat("co")) return cast_on(c);
+    if (mentions(sentence, "join") && (mentions(sentence, "rnd") || mentions(sentence, "round"))) {
+      Step step{Step::Kind::join_round, line_no_};
+      step.round = true;
+      step.marker = starts_with_ci(sentence, "pm");
+      return add(step);
+    }
+    if (mentions(sentence, "fasten off")) return add({Step::Kind::fasten_off, line_no_});
+    fail(
+        "expected a row ('Row 3 (RS): ...', 'Rnd 5: ...'), 'Cast on N sts', 'Pm and join to "
+        "work in the rnd', 'Rep Rows 3\u20134 N more times', 'Knit every rnd until N rnds in "
+        "all' or 'Fasten off'",
+        sentence);
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& expected, std::string_view found) const {
+    throw ParseError(file_, line_no_, std::string(line_),
+                     fmt::format("{}, found '{}'", expected, found));
+  }
+
+  static std::size_t find_ci(std::string_view s, std::string_view what) {
+    for (std::size_t i = 0; i + what.size() <= s.size(); ++i)
+      if (starts_with_ci(s.substr(i), what)) return i;
+    return std::string_view::npos;
+  }
+  static bool mentions(std::string_view s, std::string_view what) {
+    return find_ci(s, what) != std::string_view::npos;
+  }
+
+  void add(Step step) { script_.steps.push_back(step); }
+
+  std::uint32_t need_number(Cursor& c, const char* what) {
+    if (auto n = c.number()) return *n;
+    fail(fmt::format("expected {}", what), c.rest());
+  }
+
+  void need(bool ok, Cursor& c, const char* expected) {
+    if (!ok) fail(fmt::format("expected {}", expected), c.rest());
+  }
+
+  void cast_on(Cursor c) {
+    Step step{Step::Kind::cast_on, line_no_};
+    step.count = need_number(c, "the number of sts to cast on");
+    need(c.eat_any({"sts", "st"}), c, "'sts' after the number");
+    add(step);
+  }
+
+  // "Row 3 (RS): ...", "Rnds 2–16: ...".
+  void row(Cursor& c) {
+    Step step{Step::Kind::row, line_no_};
+    std::string_view word = c.word();
+    step.round = starts_with_ci(word, "rnd") || starts_with_ci(word, "round");
+    row_range(c, step);
+    if (c.eat_char('(')) {
+      if (c.eat("RS"))
+        step.side = Side::rs;
+      else if (c.eat("WS"))
+        step.side = Side::ws;
+      else
+        fail("expected (RS) or (WS)", c.rest());
+      need(c.eat_char(')'), c, "')' after the side");
+    }
+    need(c.eat_char(':'), c, "':' after the row label");
+    std::string_view text = c.rest();
+    step.sts = printed_count(text);
+    step.program = static_cast<std::uint32_t>(script_.programs.size());
+    script_.programs.push_back(program(text));
+    add(step);
+  }
+
+  void row_range(Cursor& c, Step& step) {
+    step.number = step.last = need_number(c, "a row number");
+    if (c.eat(kEnDash) || c.eat("-") || c.eat("to"))
+      step.last = need_number(c, "the last row number");
+    if (step.last < step.number) fail("expected the rows in increasing order", c.rest());
+  }
+
+  // "Rep Rows 3–4 five more times — 40 sts", "Repeat rows 3-4 5 more times".
+  void repeat(Cursor& c) {
+    Step step{Step::Kind::repeat_rows, line_no_};
+    std::string_view word = c.word();
+    if (!starts_with_ci(word, "row") && !starts_with_ci(word, "rnd") &&
+        !starts_with_ci(word, "round"))
+      fail("expected 'Rows' or 'Rnds' after 'Rep'", word);
+    step.round = !starts_with_ci(word, "row");
+    row_range(c, step);
+    step.count = need_number(c, "how many more times");
+    need(c.eat("more"), c, "'more' (as in 'twice more', 'five more times')");
+    c.eat_any({"times", "time"});
+    std::string_view rest = c.rest();
+    step.sts = printed_count(rest);
+    if (!trim(rest).empty()) fail("expected the end of the sentence", rest);
+    add(step);
+  }
+
+  // "Knit every rnd until 24 rnds in all".
+  void work_even(std::string_view sentence, Cursor& c) {
+    Step step{Step::Kind::work_even, line_no_};
+    step.op = starts_with_ci(sentence, "knit") ? HandOp::k : HandOp::p;
+    need(c.eat("every"), c, "'every rnd' or 'every row'");
+    std::string_view word = c.word();
+    step.round = starts_with_ci(word, "rnd") || starts_with_ci(word, "round");
+    need(c.eat("until"), c, "'until N rnds in all'");
+    step.count = need_number(c, "how many rows or rnds in all");
+    c.word();
+    need(c.eat("in") && c.eat("all"), c, "'in all'");
+    need(c.done(), c, "the end of the sentence");
+    add(step);
+  }
+
+  // Strips "— 56 sts" (or "(56 sts)") from the end of `text`.
+  std::optional<std::uint32_t> printed_count(std::string_view& text) {
+    std::size_t at = text.rfind(kEmDash);
+    std::size_t skip = kEmDash.size();
+    if (at == std::string_view::npos && (at = text.rfind("--")) != std::string_view::npos) skip = 2;
+    if (at == std::string_view::npos && !text.empty() && text.back() == ')' &&
+        (at = text.rfind('(')) != std::string_view::npos)
+      skip = 1;
+    if (at == std::string_view::npos) return std::nullopt;
+    Cursor c(text.substr(at + skip));
+    std::uint32_t n = need_number(c, "a stitch count after the dash");
+    need(c.eat_any({"sts", "st"}), c, "'sts' after the stitch count");
+    c.eat_char(')');
+    need(c.done(), c, "the end of the row after the stitch count");
+    text = trim(text.substr(0, at));
+    return n;
+  }
+
+  Program program(std::string_view text) {
+    Program p;
+    Cursor c(text);
+    std::vector<Node> top = items(c, p);
+    if (!c.done()) fail("expected ',' between instructions, or the end of the row", c.rest());
+    if (top.empty()) fail("expected instructions after the row label", text);
+    p.top_begin = static_cast<std::uint32_t>(p.nodes.size());
+    p.nodes.insert(p.nodes.end(), top.begin(), top.end());
+    p.top_end = static_cast<std::uint32_t>(p.nodes.size());
+    return p;
+  }
+
+  static bool at_rep_from(Cursor& c) {
+    std::string_view rest = c.rest();
+    return starts_with_ci(rest, "rep from") || starts_with_ci(rest, "repeat from");
+  }
+
+  // Items up to the end, a ']', a ';' or a "rep from *".
+  std::vector<Node> items(Cursor& c, Program& p) {
+    std::vector<Node> out;
+    for (;;) {
+      char next = c.peek();
+      if (next == '\0' || next == ']' || next == ';' || at_rep_from(c)) return out;
+      out.push_back(item(c, p));
+      if (!c.eat_char(',')) return out;
+    }
+  }
+
+  Node item(Cursor& c, Program& p) {
+    if (c.eat_char('*')) return star(c, p);
+    if (c.eat_char('[')) return bracket(c, p);
+    return operation(c);
+  }
+
+  Node group(std::vector<Node> body, Program& p, Cursor& c) {
+    if (body.empty()) fail("expected instructions to repeat", c.rest());
+    Node g;
+    g.kind = Node::Kind::group;
+    g.first_child = static_cast<std::uint32_t>(p.nodes.size());
+    p.nodes.insert(p.nodes.end(), body.begin(), body.end());
+    g.end_child = static_cast<std::uint32_t>(p.nodes.size());
+    return g;
+  }
+
+  // "*k2, p2; rep from * to last 2 sts" or KnitSpeak's "*k2, p2, repeat from *".
+  Node star(Cursor& c, Program& p) {
+    Node g = group(items(c, p), p, c);
+    c.eat_char(';');
+    need(c.eat_any({"rep", "repeat"}) && c.eat("from") && c.eat_char('*'), c, "'; rep from *'");
+    if (c.eat("to")) {
+      g.until = until(c);
+    } else if (auto n = c.number()) {
+      need(c.eat("more"), c, "'more times' after the number");
+      c.eat_any({"times", "time"});
+      g.times = *n + 1;
+    } else {
+      g.until.kind = Until::Kind::end;  // KnitSpeak: "repeat from *" alone
+    }
+    return g;
+  }
+
+  // "[k6, k2tog] 8 times".
+  Node bracket(Cursor& c, Program& p) {
+    Node g = group(items(c, p), p, c);
+    need(c.eat_char(']'), c, "']' closing the repeat");
+    std::optional<std::uint32_t> n = c.number();
+    if (!n) fail("expected how many times after ']'", c.rest());
+    c.eat_any({"times", "time"});
+    g.times = *n;
+    return g;
+  }
+
+  // After "to": "end", "m", "last N sts", "N sts before m".
+  Until until(Cursor& c) {
+    Until u;
+    if (c.eat("end")) {
+      u.kind = Until::Kind::end;
+    } else if (c.eat("m")) {
+      u.kind = Until::Kind::marker;
+    } else if (c.eat("last")) {
+      u.kind = Until::Kind::last;
+      u.sts = c.number().value_or(1);
+      need(c.eat_any({"sts", "st"}), c, "'sts' in 'to last N sts'");
+    } else if (auto n = c.number()) {
+      u.kind = Until::Kind::before_marker;
+      u.sts = *n;
+      need(c.eat_any({"sts", "st"}) && c.eat("before") && c.eat("m"), c, "'N sts before m'");
+    } else {
+      fail("expected 'to end', 'to m', 'to last N sts' or 'to N sts before m'", c.rest());
+    }
+    return u;
+  }
+
+  Node operation(Cursor& c) {
+    std::string_view w = c.word();
+    Node n;
+    if (starts_with_ci(w, "bo") && w.size() == 2) return bind_off(c);
+    if ((w.size() == 4 && (starts_with_ci(w, "knit") || starts_with_ci(w, "purl")))) {
+      n.op = lower(w[0]) == 'k' ? HandOp::k : HandOp::p;
+      n.until.kind = Until::Kind::end;
+      if (c.eat("to")) n.until = until(c);
+      return n;
+    }
+    if (auto op = hand_op_from(w)) {
+      n.op = *op;
+      if (c.eat("to")) n.until = until(c);
+      return n;
+    }
+    if (w.size() > 1 && (lower(w[0]) == 'k' || lower(w[0]) == 'p')) {
+      std::uint32_t count = 0;
+      auto [end, ec] = std::from_chars(w.data() + 1, w.data() + w.size(), count);
+      if (ec == std::errc() && end == w.data() + w.size()) {
+        n.op = lower(w[0]) == 'k' ? HandOp::k : HandOp::p;
+        n.times = count;
+        return n;
+      }
+    }
+    fail("expected a stitch (k, p, k2tog, ssk, M1L, yo, ...), a marker (pm, sm, rm), '*' or '['",
+         w.empty() ? c.rest() : w);
+  }
+
+  // "BO all sts", "BO rem 8 sts", "BO 5 sts".
+  Node bind_off(Cursor& c) {
+    Node n;
+    n.op = HandOp::bo;
+    if (c.eat("all")) {
+      need(c.eat_any({"sts", "st"}), c, "'BO all sts'");
+      c.eat_any({"knitwise", "purlwise", "in patt", "in pattern"});
+      n.kind = Node::Kind::bind_off_all;
+      return n;
+    }
+    c.eat("rem");
+    n.times = need_number(c, "how many sts to bind off");
+    need(c.eat_any({"sts", "st"}), c, "'sts' after the number");
+    return n;
+  }
+
+  Script& script_;
+  const std::string& file_;
+  std::size_t line_no_;
+  std::string_view line_;
+};
+
+// The part of the text a knitter follows: under "## Instructions" up to the next "## "
+// heading, or everything when there is no such heading (KnitSpeak rows).
+std::pair<std::size_t, std::size_t> instructions_region(
+    const std::vector<std::string_view>& lines) {
+  std::string heading = std::string("## ") + "Instructions";
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    if (!starts_with_ci(trim(lines[i]), heading)) continue;
+    std::size_t end = i + 1;
+    while (end < lines.size() && !(trim(lines[end]).starts_with("## "))) ++end;
+    return {i + 1, end};
+  }
+  return {0, lines.size()};
+}
+
+std::vector<std::string_view> split_lines(std::string_view text) {
+  std::vector<std::string_view> lines;
+  for (std::size_t pos = 0; pos <= text.size();) {
+    std::size_t end = text.find('\n', pos);
+    if (end == std::string_view::npos) end = text.size();
+    lines.push_back(text.substr(pos, end - pos));
+    pos = end + 1;
+  }
+  return lines;
+}
+
+// Removes markdown emphasis: "**Row 3 (RS):** K to end." reads "Row 3 (RS): K to end.".
+std::string plain(std::string_view line) {
+  std::string out;
+  out.reserve(line.size());
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    if (line.compare(i, 2, "**") == 0) {
+      ++i;
+      continue;
+    }
+    out += line[i];
+  }
+  return out;
+}
+
+void read_line(Script& script, const std::string& file, std::size_t line_no, std::string_view raw) {
+  std::string_view line = trim(raw);
+  if (line.empty()) return;
+  if (line.front() == '#' || starts_with_ci(line, "piece ")) {
+    script.steps.push_back({Step::Kind::piece, line_no});
+    return;
+  }
+  std::string text = plain(line);
+  SentenceReader reader(script, file, line_no, raw);
+  std::string_view rest = text;
+  while (!trim(rest).empty()) {
+    std::size_t end = rest.find(". ");
+    std::string_view sentence = end == std::string_view::npos ? rest : rest.substr(0, end);
+    rest = end == std::string_view::npos ? std::string_view() : rest.substr(end + 2);
+    sentence = trim(sentence);
+    if (!sentence.empty() && sentence.back() == '.') sentence.remove_suffix(1);
+    if (!sentence.empty()) reader.read(sentence);
+  }
+}
+
+std::string decoded_entities(std::string_view text) {
+  constexpr std::array<std::pair<std::string_view, std::string_view>, 8> kEntities = {{
+      {"&amp;", "&"},
+      {"&lt;", "<"},
+      {"&gt;", ">"},
+      {"&quot;", "\""},
+      {"&#39;", "'"},
+      {"&nbsp;", " "},
+      {"&mdash;", "\u2014"},
+      {"&ndash;", "\u2013"},
+  }};
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    bool replaced = false;
+    if (text[i] == '&')
+      for (auto [entity, ch] : kEntities)
+        if (text.compare(i, entity.size(), entity) == 0) {
+          out += ch;
+          i += entity.size();
+          replaced = true;
+          break;
+        }
+    if (!replaced) out += text[i++];
+  }
+  return out;
+}
+
+}  // namespace
+
+Script read_pattern(std::string_view text, const std::string& file) {
+  Script script;
+  std::vector<std::string_view> lines = split_lines(text);
+  auto [begin, end] = instructions_region(lines);
+  for (std::size_t i = begin; i < end; ++i) read_line(script, file, i + 1, lines[i]);
+  return script;
+}
+
+std::string html_to_text(std::string_view html) {
+  std::string out;
+  bool hidden = false;  // inside <style>, <script> or <figure>
+  for (std::string_view line : split_lines(html)) {
+    std::string_view t = trim(line);
+    bool opens = t.starts_with("<style") || t.starts_with("<script") || t.starts_with("<figure");
+    bool closes = t.find("</style>") != std::string_view::npos ||
+                  t.find("</script>") != std::string_view::npos ||
+                  t.find("</figure>") != std::string_view::npos;
+    if (opens) hidden = true;
+    if (hidden) {
+      hidden = !closes;
+      out += '\n';
+      continue;
+    }
+    if (t.starts_with("<h1")) out += "# ";
+    if (t.starts_with("<h2")) out += "## ";
+    if (t.starts_with("<h3")) out += "### ";
+    std::string stripped;
+    bool in_tag = false;
+    for (char ch : line) {
+      if (ch == '<')
+        in_tag = true;
+      else if (ch == '>')
+        in_tag = false;
+      else if (!in_tag)
+        stripped += ch;
+    }
+    out += decoded_entities(stripped);
+    out += '\n';
+  }
+  if (!out.empty()) out.pop_back();
+  return out;
+}
+
+}  // namespace skein::hand

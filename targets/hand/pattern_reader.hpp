@@ -1,0 +1,81 @@
+// Reads a hand-knitting pattern as a knitter reads it: the sentences under "Instructions"
+// ("Cast on 64 sts.", "Rnd 25: *K6, k2tog; rep from * to end — 56 sts.", "Rep Rows 3–4
+// twice more.", "Knit every rnd until 24 rnds in all.") become steps, and each row's text a
+// small program of operations, groups and "until" forms that the needle simulator executes.
+// Markdown, the HTML page (html_to_text) and KnitSpeak rows all read the same way.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "hand/hand_ops.hpp"
+
+namespace skein::hand {
+
+// Where a repeated operation or group stops.
+struct Until {
+  enum class Kind : std::uint8_t {
+    count,          // a fixed number of times
+    end,            // "to end"
+    marker,         // "to m"
+    last,           // "to last N sts"
+    before_marker,  // "to N sts before m"
+  };
+  Kind kind = Kind::count;
+  std::uint32_t sts = 0;
+};
+
+struct Node {
+  enum class Kind : std::uint8_t { op, group, bind_off_all };
+  Kind kind = Kind::op;
+  HandOp op = HandOp::k;
+  std::uint32_t times = 1;  // with Until::count
+  Until until;
+  std::uint32_t first_child = 0, end_child = 0;  // a group's nodes, in Program::nodes
+};
+
+// One row's instructions; its top-level nodes are nodes[top_begin, top_end).
+struct Program {
+  std::vector<Node> nodes;
+  std::uint32_t top_begin = 0, top_end = 0;
+};
+
+struct Step {
+  enum class Kind : std::uint8_t {
+    piece,        // a heading: a new piece or stage begins
+    cast_on,      // count = sts
+    join_round,   // marker: with "pm"
+    row,          // number..last (a range "Rows 2–16:"), program
+    repeat_rows,  // number..last repeated count more times
+    work_even,    // "Knit every rnd until <count> rnds in all": op is k or p
+    fasten_off,
+  };
+  Step(Kind step_kind, std::size_t line_no) : kind(step_kind), line(line_no) {}
+  Kind kind;
+  std::size_t line = 0;  // 1-based line of the file
+  std::uint32_t number = 0, last = 0;
+  std::uint32_t count = 0;
+  bool round = false;
+  bool marker = false;
+  std::optional<Side> side;
+  std::optional<std::uint32_t> sts;  // the printed stitch count ("— 56 sts")
+  std::uint32_t program = 0;         // into Script::programs
+  HandOp op = HandOp::k;
+};
+
+struct Script {
+  std::vector<Step> steps;
+  std::vector<Program> programs;
+};
+
+// Throws ParseError (file, line, the line quoted, what was expected) for text it cannot read.
+Script read_pattern(std::string_view text, const std::string& file);
+
+// The text of an HTML page a knitter sees, line for line (tags removed, entities decoded,
+// styles and figures blanked), so that line numbers still point into the page.
+std::string html_to_text(std::string_view html);
+
+}  // namespace skein::hand

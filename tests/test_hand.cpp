@@ -1,0 +1,234 @@
+// The hand target and its simulator: golden patterns of the samples, every format proven,
+// randomized shaped sheets and tubes proven, and the simulator's reasons for rejecting steps.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <random>
+#include <sstream>
+
+#include "builtin_targets.hpp"
+#include "common/error.hpp"
+#include "driver/pipeline.hpp"
+#include "fixtures.hpp"
+#include "golden.hpp"
+#include "hand/hand_target.hpp"
+#include "hand/row_text.hpp"
+#include "mesh/generate.hpp"
+
+namespace skein {
+namespace {
+
+using T = StitchType;
+
+std::string emit(const Compilation& c, const std::string& target) {
+  Registry registry;
+  register_builtin_targets(registry);
+  std::ostringstream out;
+  registry.target(target)->emit(c, {}, out);
+  return out.str();
+}
+
+VerifyReport verify(const Compilation& c, const std::string& target, const std::string& text) {
+  Registry registry;
+  register_builtin_targets(registry);
+  return registry.simulator_for(target)->verify(text, "pattern", &c, {});
+}
+
+// Works a pattern written by hand (no model to compare with): the failure, or "".
+std::string failure_of(const std::string& pattern) {
+  VerifyReport r = hand::verify_pattern(pattern, "p.md", nullptr);
+  return r.summary.find("give --against") == std::string::npos ? r.summary : "";
+}
+
+// Make-ones need a strand on both sides: none may be the last stitch of a flat row (sheet
+// rows alternate direction, the first worked row running right to left).
+RowPlan without_edge_make_ones(RowPlan plan, Layout layout) {
+  if (layout == Layout::tube) return plan;
+  for (std::size_t r = 1; r < plan.size(); ++r) {
+    T& last = r % 2 == 0 ? plan[r].back() : plan[r].front();
+    if (last == T::m1l || last == T::m1r) last = T::kfb;
+  }
+  return plan;
+}
+
+class HandSample : public ::testing::TestWithParam<const char*> {
+ protected:
+  void SetUp() override { std::filesystem::current_path(SKEIN_SOURCE_DIR); }
+};
+
+TEST_P(HandSample, PatternMatchesGoldenAndIsProven) {
+  Compilation c = compile_model(GetParam());
+  std::string pattern = emit(c, "hand");
+  testing::expect_golden(std::filesystem::path(GetParam()).replace_extension(".md").string(),
+                         pattern);
+  VerifyReport report = verify(c, "hand", pattern);
+  EXPECT_TRUE(report.proven) << report.summary;
+}
+
+TEST_P(HandSample, HtmlPageAndKnitSpeakRowsAreProvenToo) {
+  Compilation c = compile_model(GetParam());
+  for (const char* target : {"hand-html", "hand-knitspeak"}) {
+    VerifyReport report = verify(c, target, emit(c, target));
+    EXPECT_TRUE(report.proven) << target << ": " << report.summary;
+  }
+  std::string html = emit(c, "hand-html");
+  EXPECT_NE(html.find("<svg"), std::string::npos);
+  EXPECT_NE(html.find("@media print"), std::string::npos);
+  EXPECT_EQ(html.find("<script"), std::string::npos);
+  EXPECT_EQ(html.find("<link"), std::string::npos) << "self-contained";
+  EXPECT_EQ(html.find(" src="), std::string::npos) << "self-contained";
+}
+
+INSTANTIATE_TEST_SUITE_P(Samples, HandSample,
+                         ::testing::Values("samples/rib-swatch/rib-swatch.obj",
+                                           "samples/hat/hat.obj"),
+                         [](const auto& param_info) {
+                           std::string stem =
+                               std::filesystem::path(param_info.param).stem().string();
+                           return stem == "hat" ? "hat" : "rib_swatch";
+                         });
+
+TEST(HandTarget, SwatchRowsReadLikeAPublishedPattern) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  std::string pattern = emit(compile_model("samples/rib-swatch/rib-swatch.obj"), "hand");
+  EXPECT_NE(pattern.find("Cast on 20 sts.\n"), std::string::npos);
+  EXPECT_NE(pattern.find("**Row 1 (RS):** *P2, k2; rep from * to end.\n"), std::string::npos);
+  EXPECT_NE(pattern.find("Rep Row 1 15 more times.\n"), std::string::npos);
+}
+
+// The Error the hand target throws for a model it cannot write, or "".
+std::string emit_error(const Compilation& c) {
+  try {
+    emit(c, "hand");
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(HandTarget, StitchGraphsWithoutRowsAreRejectedNamingTheFile) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  std::string error = emit_error(compile_model("samples/autoknit/test-B.st"));
+  EXPECT_NE(error.find("test-B.st has no rows or rounds"), std::string::npos) << error;
+}
+
+TEST(HandTarget, StitchesNotCoveredYetAreNamed) {
+  Compilation c = compile_stitch_mesh(testing::join_mesh(MismatchYarn::Kind::extra), "join");
+  ASSERT_TRUE(c.knittability.knittable) << check_report(c);
+  std::string error = emit_error(c);
+  EXPECT_NE(error.find("three-needle bind-off (3nbo)"), std::string::npos) << error;
+}
+
+TEST(HandTarget, AMakeOneLastInAFlatRowHasNoStrandToLift) {
+  RowPlan plan = {{T::co, T::co, T::co}, {T::m1l, T::k, T::k}, {T::bo, T::bo, T::bo, T::bo}};
+  std::string error = emit_error(compile_stitch_mesh(build_from_rows(plan, Layout::sheet), "edge"));
+  EXPECT_NE(error.find("no strand to lift"), std::string::npos) << error;
+}
+
+// Generates many sheets and tubes with random shaping: the hand simulator is the judge.
+TEST(HandRandomized, ShapedSheetsAndTubesAreProven) {
+  std::mt19937_64 rng(5);
+  for (int trial = 0; trial < 200; ++trial) {
+    RandomShaping shaping;
+    shaping.min_width = 4;
+    shaping.purl = trial % 3 == 0 ? 0 : 0.3;
+    std::uint32_t width = 4 + static_cast<std::uint32_t>(rng() % 40);
+    std::uint32_t rows = 1 + static_cast<std::uint32_t>(rng() % 30);
+    Layout layout = trial % 2 ? Layout::tube : Layout::sheet;
+    RowPlan plan = without_edge_make_ones(random_rows(width, rows, shaping, rng()), layout);
+    Compilation c = compile_stitch_mesh(build_from_rows(plan, layout), "random");
+    ASSERT_TRUE(c.knittability.knittable) << check_report(c);
+    for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
+      if (trial % 10 != 0 && target != std::string("hand")) continue;
+      std::string pattern = emit(c, target);
+      VerifyReport report = verify(c, target, pattern);
+      ASSERT_TRUE(report.proven) << "trial " << trial << " " << target << ": " << report.summary
+                                 << "\n"
+                                 << pattern;
+    }
+  }
+}
+
+TEST(HandRowText, RepeatsAndCountsAKnitterNeedNotKeep) {
+  using O = hand::HandOp;
+  auto text = [](std::vector<O> ops) { return hand::row_instructions(ops); };
+  EXPECT_EQ(text({O::k, O::k, O::p, O::p, O::k, O::k, O::p, O::p, O::k, O::k}),
+            "*K2, p2; rep from * to last 2 sts, k2");
+  std::vector<O> decrease = {O::k, O::ssk};
+  decrease.resize(16, O::k);
+  decrease.push_back(O::k2tog);
+  decrease.push_back(O::k);
+  EXPECT_EQ(text(decrease), "K1, ssk, k to last 3 sts, k2tog, k1");
+  std::vector<O> crown;
+  for (int i = 0; i < 12; ++i) crown.push_back(i % 4 == 3 ? O::k2tog : O::k);
+  EXPECT_EQ(text(crown), "*K3, k2tog; rep from * to end");
+  EXPECT_EQ(text({O::k, O::yo, O::k, O::k}), "K1, yo, k2");
+  EXPECT_EQ(text({O::p, O::p, O::p}), "Purl");
+  EXPECT_EQ(text({O::bo, O::bo}), "BO all sts");
+  EXPECT_EQ(hand::row_instructions(crown, hand::Dialect::knitspeak), "*K3, k2tog, repeat from *");
+}
+
+TEST(HandSimulator, ProvesAHandWrittenPatternWithRepeatsAndMarkers) {
+  EXPECT_EQ(failure_of("## Instructions\nCast on 8 sts. Pm and join to work in the rnd.\n"
+                       "Rnd 1: K4, pm, k4.\nRnd 2: K to m, sm, k2tog, k to end — 7 sts.\n"
+                       "Rep Rnd 2 twice more — 5 sts.\nKnit every rnd until 6 rnds in all.\n"
+                       "Rnd 7: BO all sts.\nFasten off.\n"),
+            "");
+}
+
+TEST(HandSimulator, RejectsTheFirstImpossibleStepWithTheRowAndTheReason) {
+  const std::string rnd = "Cast on 6 sts. Pm and join to work in the rnd.\nRnd 1: K2, pm, k4.\n";
+  EXPECT_EQ(failure_of(rnd + "Rnd 2: K1, k2tog, sm, k4.\n"),
+            "p.md:3: Rnd 2: k2tog needs 2 sts before the marker, 1 left");
+  EXPECT_EQ(failure_of(rnd + "Rnd 2: K to m, sm, k2tog, k to end — 6 sts.\n"),
+            "p.md:3: Rnd 2: the pattern says 6 sts, but 5 sts are on the needle");
+  EXPECT_EQ(failure_of(rnd + "Rnd 2: K3, k to end.\n"),
+            "p.md:3: Rnd 2: k needs 1 st before the marker, 0 left");
+  const std::string flat = "Cast on 10 sts.\nRow 1 (RS): K7.\n";
+  EXPECT_EQ(failure_of(flat), "p.md:2: Row 1 (RS): 3 sts left unworked at the end of the row");
+  EXPECT_EQ(failure_of("Cast on 10 sts.\nRow 1 (RS): *K2, p2; rep from * to end.\n"),
+            "p.md:2: Row 1 (RS): the repeat: 10 sts to go, not a whole number of repeats of 4 sts");
+  EXPECT_EQ(failure_of("Cast on 4 sts.\nRow 1 (RS): Knit.\nRow 2 (RS): Knit.\n"),
+            "p.md:3: Row 2 (WS): labelled RS, but the WS faces you: every row turns the work");
+  EXPECT_EQ(failure_of("Cast on 4 sts.\nRow 1 (RS): Knit.\nRow 2 (WS): Ssk, p2.\n"),
+            "p.md:3: Row 2 (WS): ssk is a RS stitch: worked with the WS facing it makes a stitch "
+            "the model cannot have (on WS rows work ssp)");
+  EXPECT_EQ(
+      failure_of("Cast on 4 sts.\nRow 1 (RS): K3, M1L, k1.\nRow 2 (WS): P5, M1PL.\n"),
+      "p.md:3: Row 2 (WS): M1PL at the end of a row: there is no strand after the last st to lift");
+  EXPECT_EQ(failure_of("Cast on 4 sts.\nRow 1 (RS): Knit.\nRow 2 (WS): Purl.\nRow 3 (RS): Knit.\n"
+                       "Rep Rows 1\u20132 once more.\n"),
+            "p.md:5: Rep Rows 1\u20132: the rows to repeat must be the last ones worked (Row 3)");
+  EXPECT_EQ(failure_of("Cast on 4 sts.\nRow 1 (RS): Knit.\nRow 3 (RS): Knit.\n"),
+            "p.md:3: Row 2 comes next, not Row 3");
+  EXPECT_EQ(failure_of("Cast on 4 sts.\nRow 1 (RS): Knit.\nFasten off.\n"),
+            "p.md:3: Fasten off: 4 sts still on the needle; bind them off first");
+}
+
+TEST(HandSimulator, UnreadableTextIsAParseErrorQuotingTheLine) {
+  try {
+    hand::verify_pattern("Cast on 4 sts.\nRow 1 (RS): K2, frob, k1.\n", "p.md", nullptr);
+    FAIL() << "expected a ParseError";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 2u);
+    EXPECT_NE(std::string(e.what()).find("found 'frob'"), std::string::npos) << e.what();
+  }
+}
+
+TEST(HandSimulator, AWrongStitchIsFoundWhenTheFabricIsCompared) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  Compilation c = compile_model("samples/rib-swatch/rib-swatch.obj");
+  std::string pattern = emit(c, "hand");
+  std::size_t at = pattern.find("*P2, k2;");
+  ASSERT_NE(at, std::string::npos);
+  pattern.replace(at, 8, "*K2, p2;");
+  VerifyReport report = verify(c, "hand", pattern);
+  EXPECT_FALSE(report.proven);
+  EXPECT_NE(report.summary.find("Row 1 (RS), st 1 (k): the pattern makes k (as seen from the RS) "
+                                "where the model has p"),
+            std::string::npos)
+      << report.summary;
+}
+
+}  // namespace
+}  // namespace skein

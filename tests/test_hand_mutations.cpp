@@ -1,0 +1,312 @@
+// Mutation tests of the hand simulator: many single edits of each pattern's text (drop or swap
+// an instruction, change a stitch, a count, a repeat, a side, add a marker, delete or repeat a
+// line). Every edit must be rejected unless the fabric it knits is the same as the original's
+// (those are undetectable by design: the knitter makes the same thing).
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <map>
+#include <random>
+#include <regex>
+#include <sstream>
+
+#include "builtin_targets.hpp"
+#include "common/error.hpp"
+#include "driver/pipeline.hpp"
+#include "hand/hand_target.hpp"
+#include "hand/needle_sim.hpp"
+#include "mesh/generate.hpp"
+
+namespace skein {
+namespace {
+
+struct Mutant {
+  std::string kind;
+  std::string text;
+};
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::string joined(const std::vector<std::string>& lines) {
+  std::string out;
+  for (const std::string& l : lines) out += l + "\n";
+  return out;
+}
+
+// The row text's items, split at top-level commas (not inside brackets).
+std::vector<std::string> items_of(const std::string& text) {
+  std::vector<std::string> items(1);
+  int depth = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    depth += text[i] == '[' ? 1 : text[i] == ']' ? -1 : 0;
+    if (depth == 0 && text.compare(i, 2, ", ") == 0) {
+      items.emplace_back();
+      ++i;
+    } else {
+      items.back() += text[i];
+    }
+  }
+  return items;
+}
+
+std::string items_text(const std::vector<std::string>& items) {
+  std::string out;
+  for (const std::string& item : items) out += (out.empty() ? "" : ", ") + item;
+  return out;
+}
+
+class Mutator {
+ public:
+  explicit Mutator(const std::string& pattern) : lines_(lines_of(pattern)) {
+    for (std::size_t i = 0; i < lines_.size(); ++i) {
+      if (lines_[i] == "## Instructions") begin_ = i + 1;
+      if (begin_ && i > begin_ && lines_[i].rfind("## ", 0) == 0 && !end_) end_ = i;
+    }
+    if (!end_) end_ = lines_.size();
+  }
+
+  std::vector<Mutant> all() {
+    for (std::size_t i = begin_; i < end_; ++i) {
+      if (lines_[i].empty()) continue;
+      line_edits(i);
+      word_edits(i);
+      item_edits(i);
+    }
+    return std::move(out_);
+  }
+
+ private:
+  void add(const char* kind, std::size_t i, const std::string& line) {
+    if (line == lines_[i]) return;
+    std::vector<std::string> copy = lines_;
+    copy[i] = line;
+    out_.push_back({kind, joined(copy)});
+  }
+
+  void line_edits(std::size_t i) {
+    std::vector<std::string> copy = lines_;
+    copy.erase(copy.begin() + static_cast<std::ptrdiff_t>(i));
+    out_.push_back({"delete a line", joined(copy)});
+    copy = lines_;
+    copy.insert(copy.begin() + static_cast<std::ptrdiff_t>(i), lines_[i]);
+    out_.push_back({"repeat a line", joined(copy)});
+    if (lines_[i].find("Pm and join") != std::string::npos)
+      add("remove the marker", i, std::regex_replace(lines_[i], std::regex("Pm and join"), "Join"));
+  }
+
+  // Numbers, count words, stitches and sides, one occurrence at a time.
+  void word_edits(std::size_t i) {
+    const std::string& line = lines_[i];
+    static const std::regex kWord(R"([A-Za-z0-9]+|\(RS\)|\(WS\))");
+    for (auto it = std::sregex_iterator(line.begin(), line.end(), kWord);
+         it != std::sregex_iterator(); ++it) {
+      std::string word = it->str();
+      auto replace = [&](const char* kind, const std::string& with) {
+        add(kind, i,
+            line.substr(0, it->position()) + with + line.substr(it->position() + word.size()));
+      };
+      if (std::isdigit(static_cast<unsigned char>(word[0]))) {
+        int n = std::stoi(word);
+        replace("change a number", std::to_string(n + 1));
+        if (n > 0) replace("change a number", std::to_string(n - 1));
+      }
+      for (const auto& [from, tos] : kAlternatives)
+        if (word == from)
+          for (const char* to : tos) replace(kind_of(from), to);
+      static const std::regex kPlainRun(R"([KkPp]\d+)");
+      if (std::regex_match(word, kPlainRun)) replace("change a stitch", swapped_plain(word));
+    }
+  }
+
+  // "k12" <-> "p12", keeping the case.
+  static std::string swapped_plain(std::string word) {
+    constexpr std::string_view kFrom = "kpKP", kTo = "pkPK";
+    word[0] = kTo[kFrom.find(word[0])];
+    return word;
+  }
+
+  static const char* kind_of(const std::string& word) {
+    if (word == "(RS)" || word == "(WS)") return "flip a side";
+    if (word == "once" || word == "twice" || word == "three" || word == "four" || word == "five" ||
+        word == "six" || word == "fifteen")
+      return "change a repeat count";
+    if (word == "end" || word == "last") return "change a repeat form";
+    return "change a stitch";
+  }
+
+  void item_edits(std::size_t i) {
+    const std::string& line = lines_[i];
+    std::size_t colon = line.find(":** ");
+    if (colon == std::string::npos) return;
+    std::string label = line.substr(0, colon + 4), body = line.substr(colon + 4), tail;
+    std::size_t end = body.find(" \u2014");
+    if (end == std::string::npos) end = body.size() - 1;  // the period
+    tail = body.substr(end);
+    std::vector<std::string> items = items_of(body.substr(0, end));
+    for (std::size_t k = 0; k < items.size(); ++k) {
+      std::vector<std::string> edited = items;
+      edited.erase(edited.begin() + static_cast<std::ptrdiff_t>(k));
+      if (!edited.empty()) add("drop an instruction", i, label + items_text(edited) + tail);
+      edited = items;
+      edited.insert(edited.begin() + static_cast<std::ptrdiff_t>(k + 1), "pm");
+      add("place a marker", i, label + items_text(edited) + tail);
+      if (k + 1 < items.size()) {
+        edited = items;
+        std::swap(edited[k], edited[k + 1]);
+        add("swap two instructions", i, label + items_text(edited) + tail);
+      }
+    }
+  }
+
+  inline static const std::map<std::string, std::vector<const char*>> kAlternatives = {
+      {"k2tog", {"ssk", "p2tog", "s2kp", "kfb"}},
+      {"ssk", {"k2tog", "ssp", "s2kp"}},
+      {"Ssk", {"K2tog", "S2kp"}},
+      {"K2tog", {"Ssk", "P2tog"}},
+      {"p2tog", {"k2tog", "ssp", "s2pp"}},
+      {"ssp", {"p2tog", "ssk"}},
+      {"s2kp", {"k2tog", "s2pp"}},
+      {"s2pp", {"p2tog", "s2kp"}},
+      {"kfb", {"pfb", "M1L", "yo"}},
+      {"pfb", {"kfb", "M1PL"}},
+      {"M1L", {"M1R", "M1PL", "yo"}},
+      {"M1R", {"M1L", "M1PR"}},
+      {"M1PL", {"M1PR", "M1L"}},
+      {"M1PR", {"M1PL", "M1R"}},
+      {"yo", {"M1L", "kfb"}},
+      {"k", {"p"}},
+      {"p", {"k"}},
+      {"K", {"P"}},
+      {"P", {"K"}},
+      {"Knit", {"Purl"}},
+      {"Purl", {"Knit"}},
+      {"(RS)", {"(WS)"}},
+      {"(WS)", {"(RS)"}},
+      {"once", {"twice"}},
+      {"twice", {"once", "three"}},
+      {"three", {"twice", "four"}},
+      {"four", {"three", "five"}},
+      {"five", {"four", "six"}},
+      {"fifteen", {"fourteen", "sixteen"}},
+      {"end", {"last 1 st"}},
+      {"last", {"end, and"}},
+  };
+
+  std::vector<std::string> lines_;
+  std::size_t begin_ = 0, end_ = 0;
+  std::vector<Mutant> out_;
+};
+
+bool same_fabric(const hand::Fabric& a, const hand::Fabric& b) {
+  if (a.size() != b.size() || a.piece_first != b.piece_first) return false;
+  for (std::uint32_t x = 0; x < a.size(); ++x) {
+    if (a.type[x] != b.type[x] || a.yarn_next[x] != b.yarn_next[x] ||
+        a.yarn_link[x] != b.yarn_link[x] || a.made[x] != b.made[x])
+      return false;
+    std::vector<std::uint32_t> ta = a.rs_taken(x), tb = b.rs_taken(x);
+    if (ta.size() != tb.size()) return false;
+    for (std::size_t i = 0; i < ta.size(); ++i)
+      if (a.loop_maker[ta[i]] != b.loop_maker[tb[i]] || a.rs_slot(ta[i]) != b.rs_slot(tb[i]))
+        return false;
+  }
+  return true;
+}
+
+hand::Replay knit(const std::string& text) {
+  return hand::replay(hand::read_pattern(text, "p.md"), "p.md");
+}
+
+struct Tally {
+  std::map<std::string, int> outcome;                         // by outcome
+  std::map<std::string, std::map<std::string, int>> by_kind;  // kind -> outcome
+  int total = 0;
+  std::vector<std::string> missed;
+};
+
+void judge(const Compilation& c, const std::string& original, const Mutant& m, Tally& tally) {
+  std::string outcome;
+  try {
+    VerifyReport r = hand::verify_pattern(m.text, "mutant.md", &c);
+    if (r.proven) {
+      bool same = same_fabric(knit(original).fabric, knit(m.text).fabric);
+      outcome = same ? "same fabric: undetectable by design" : "MISSED";
+      if (!same) tally.missed.push_back(m.kind + ":\n" + m.text);
+    } else if (r.summary.find("not the model's fabric") != std::string::npos) {
+      outcome = "rejected: a different fabric";
+    } else if (r.summary.find("the pattern says") != std::string::npos) {
+      outcome = "rejected: a printed stitch count";
+    } else {
+      outcome = "rejected: an impossible step";
+    }
+  } catch (const ParseError&) {
+    outcome = "rejected: unreadable";
+  }
+  ++tally.total;
+  ++tally.outcome[outcome];
+  ++tally.by_kind[m.kind][outcome];
+}
+
+std::string report(const std::string& name, const Tally& t) {
+  int same = t.outcome.count("same fabric: undetectable by design")
+                 ? t.outcome.at("same fabric: undetectable by design")
+                 : 0;
+  int changing = t.total - same, rejected = changing - static_cast<int>(t.missed.size());
+  std::string out = fmt::format(
+      "{}: {} edits; {} change the fabric, {} of them rejected ({:.1f}%); "
+      "{} knit the same fabric\n",
+      name, t.total, changing, rejected, changing ? 100.0 * rejected / changing : 100.0, same);
+  for (const auto& [outcome, n] : t.outcome) out += fmt::format("    {:<40} {}\n", outcome, n);
+  for (const auto& [kind, outcomes] : t.by_kind) {
+    out += fmt::format("  {:<24}", kind);
+    for (const auto& [outcome, n] : outcomes) out += fmt::format(" {} {};", outcome, n);
+    out += "\n";
+  }
+  return out;
+}
+
+void mutate_and_judge(const std::string& name, const Compilation& c) {
+  Registry registry;
+  register_builtin_targets(registry);
+  std::ostringstream out;
+  registry.target("hand")->emit(c, {}, out);
+  std::string pattern = out.str();
+  ASSERT_TRUE(hand::verify_pattern(pattern, name, &c).proven);
+  Tally tally;
+  for (const Mutant& m : Mutator(pattern).all()) judge(c, pattern, m, tally);
+  std::cout << report(name, tally);
+  EXPECT_GE(tally.total, 25) << name;
+  EXPECT_TRUE(tally.missed.empty()) << name << ": an edit that changes the fabric was proven:\n"
+                                    << tally.missed.front();
+}
+
+TEST(HandMutations, SamplesRejectEveryEditThatChangesTheFabric) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  for (const char* sample : {"samples/rib-swatch/rib-swatch.obj", "samples/hat/hat.obj"})
+    mutate_and_judge(sample, compile_model(sample));
+}
+
+TEST(HandMutations, ShapedSheetsAndTubesRejectEveryEditThatChangesTheFabric) {
+  std::mt19937_64 rng(11);
+  for (int trial = 0; trial < 6; ++trial) {
+    RandomShaping shaping;
+    shaping.purl = 0.3;
+    shaping.increase = shaping.decrease = 0.1;
+    Layout layout = trial % 2 ? Layout::tube : Layout::sheet;
+    RowPlan plan = random_rows(10 + static_cast<std::uint32_t>(rng() % 10), 6, shaping, rng());
+    for (std::size_t r = 1; r + 1 < plan.size() && layout == Layout::sheet; ++r) {
+      StitchType& last = r % 2 == 0 ? plan[r].back() : plan[r].front();
+      if (last == StitchType::m1l || last == StitchType::m1r) last = StitchType::kfb;
+    }
+    mutate_and_judge(fmt::format("random {} {}", layout == Layout::tube ? "tube" : "sheet", trial),
+                     compile_stitch_mesh(build_from_rows(plan, layout), "random"));
+  }
+}
+
+}  // namespace
+}  // namespace skein
