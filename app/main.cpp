@@ -10,6 +10,9 @@
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "driver/pipeline.hpp"
+#include "labeling/shapes.hpp"
+#include "labeling/stitch_generation.hpp"
+#include "render/svg.hpp"
 
 namespace {
 
@@ -34,6 +37,9 @@ Examples:
   skein compile samples/swatch/rib-swatch.obj --target schedule -o swatch.schedule --verify
   skein verify hat.schedule --against samples/hat/hat.obj
   skein check samples/autoknit/test-B.st
+  skein new sock --circumference 20cm --length 15cm -o mysock   # writes mysock.obj + mysock.yaml
+  skein check mysock.yaml                   # a project: coarse mesh -> labeling -> stitch mesh
+  skein render samples/sock/sock.yaml -o sock.svg   # short rows red, shift-path green
 
 Exit codes: 0 success (knittable / proven), 1 not knittable or not proven, 2 bad input.
 )";
@@ -102,6 +108,18 @@ int run_verify(const Registry& registry, const std::string& file, const std::str
   return report_verification(simulator->verify(text, file, &c, options));
 }
 
+int run_new(const std::string& kind, const std::string& circumference, const std::string& width,
+            const std::string& length, const std::string& output) {
+  ShapeSize size;
+  if (!circumference.empty()) size.circumference = parse_length_cm(circumference);
+  if (!width.empty()) size.width = parse_length_cm(width);
+  if (!length.empty()) size.length = parse_length_cm(length);
+  std::string name = std::filesystem::path(output).filename().string();
+  std::cout << fmt::format("wrote {}.obj and {}\n", output,
+                           write_shape(make_shape(kind, size, name), output));
+  return kKnittable;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -134,6 +152,25 @@ int main(int argc, char** argv) {
   verify_cmd->add_option("-t,--target", target_name, "the target that wrote OUT (default: by extension)");
   verify_cmd->add_option("-m,--machine", options.machine, "machine profile name or path");
 
+  std::string shape_kind;
+  std::string circumference, width, length;
+  auto* new_cmd = app.add_subcommand("new", "write a parametric coarse mesh and its project file");
+  new_cmd->add_option("KIND", shape_kind, "sheet, tube, hat, sock or sweater")->required();
+  new_cmd->add_option("--circumference", circumference, "tube, hat, sock or chest size (e.g. 40cm)");
+  new_cmd->add_option("--width", width, "sheet width (e.g. 20cm)");
+  new_cmd->add_option("--length", length, "length or height (e.g. 20cm)");
+  new_cmd->add_option("-o,--output", output, "NAME: writes NAME.obj and NAME.yaml")->required();
+
+  auto* generate = app.add_subcommand("generate", "label a project's coarse mesh and write its stitch mesh");
+  generate->add_option("PROJECT", input, "project file (.yaml)")->required();
+  generate->add_option("-o,--output", output, "the stitch mesh (.obj) to write")->required();
+
+  bool coarse = false;
+  auto* render = app.add_subcommand("render", "draw INPUT as an SVG picture");
+  render->add_option("INPUT", input, "stitch mesh (.obj), project (.yaml) or coarse mesh (.obj)")->required();
+  render->add_option("-o,--output", output, "the .svg file to write")->required();
+  render->add_flag("--coarse", coarse, "for a project: draw the labelled coarse mesh");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -143,6 +180,9 @@ int main(int argc, char** argv) {
 
   try {
     if (*check) return run_check(input, verbose);
+    if (*new_cmd) return run_new(shape_kind, circumference, width, length, output);
+    if (*render) return render_file(input, output, coarse), kKnittable;
+    if (*generate) return write_generated_stitch_mesh(input, output), kKnittable;
     if (*compile) return run_compile(registry, input, target_name, options, output, verify, verbose);
     return run_verify(registry, file, against, target_name, options, verbose);
   } catch (const Error& e) {

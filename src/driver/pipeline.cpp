@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "knitgraph/from_mesh.hpp"
+#include "labeling/stitch_generation.hpp"
 #include "mesh/autoknit_st.hpp"
 #include "mesh/obj_format.hpp"
 #include "transforms/mismatches.hpp"
@@ -39,6 +40,10 @@ Compilation compile_model(const std::string& input, const StageObserver& observe
   if (ends_with(input, ".st"))
     return compile_knit_graph(
         timed(observe, "read stitch graph", [&] { return read_autoknit_st(input); }), input, observe);
+  if (is_project_file(input))
+    return compile_stitch_mesh(
+        timed(observe, "label and generate", [&] { return build_project(read_project(input)).mesh; }),
+        input, observe);
   return compile_stitch_mesh(
       timed(observe, "read stitch mesh", [&] { return read_stitch_mesh(input); }), input, observe);
 }

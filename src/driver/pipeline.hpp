@@ -2,6 +2,7 @@
 // beside it; compile_model() runs them in order with a check between them.
 //
 //   read_stitch_mesh        mesh/obj_format      .obj text        -> StitchMesh
+//   build_project           labeling             .yaml + coarse .obj -> StitchMesh (labeling, §3.4)
 //   validate                mesh/stitch_mesh     StitchMesh       -> (throws MeshError)
 //   place_shift_paths       transforms           StitchMesh       -> marks on every round (§3.1)
 //   build_knit_graph        knitgraph/from_mesh  StitchMesh       -> KnitGraph

@@ -1,0 +1,307 @@
+#include "labeling/project.hpp"
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <numeric>
+
+#include "common/atomic_file.hpp"
+#include "common/error.hpp"
+
+namespace skein {
+namespace {
+
+using Names = std::vector<std::string_view>;
+
+constexpr std::pair<std::string_view, double> kUnitsPerCm[] = {
+    {"mm", 10}, {"cm", 1}, {"m", 0.01}, {"in", 1 / 2.54}};
+constexpr std::string_view kPatterns[] = {"knit", "purl", "k1p1", "k2p2"};
+
+// Reads YAML nodes and turns every problem into a ParseError on the node's line.
+class Reader {
+ public:
+  Reader(const std::string& text, std::string file) : file_(std::move(file)) {
+    for (std::size_t start = 0; start <= text.size();) {
+      std::size_t end = text.find('\n', start);
+      if (end == std::string::npos) end = text.size();
+      std::string line = text.substr(start, end - start);
+      if (!line.empty() && line.back() == '\r') line.pop_back();
+      lines_.push_back(std::move(line));
+      start = end + 1;
+    }
+  }
+
+  [[noreturn]] void fail(const YAML::Mark& mark, const std::string& expected) const {
+    std::size_t line = mark.line < 0 ? 0 : static_cast<std::size_t>(mark.line);
+    throw ParseError(file_, line + 1, line < lines_.size() ? lines_[line] : "", expected);
+  }
+  [[noreturn]] void fail(const YAML::Node& node, const std::string& expected) const {
+    fail(node.Mark(), expected);
+  }
+  int line(const YAML::Node& node) const { return node.Mark().line + 1; }
+
+  // Calls visit(key, value) for each field; an unknown key names the nearest known one.
+  template <class Visit>
+  void fields(const YAML::Node& map, const Names& known, std::string_view what, Visit visit) const {
+    if (!map.IsMap()) fail(map, fmt::format("expected the fields of {} (key: value)", what));
+    for (const auto& item : map) {
+      std::string key = item.first.as<std::string>();
+      if (std::find(known.begin(), known.end(), key) == known.end())
+        fail(item.first, fmt::format("unknown field '{}' in {}; did you mean '{}'? (known: {})", key,
+                                     what, nearest_name(key, known), fmt::join(known, ", ")));
+      visit(key, item.second);
+    }
+  }
+
+  std::string text(const YAML::Node& node, std::string_view what) const {
+    if (!node.IsScalar()) fail(node, fmt::format("expected {} (a single value)", what));
+    return node.Scalar();
+  }
+  double number(const YAML::Node& node, std::string_view what) const {
+    std::string s = text(node, what);
+    try {
+      std::size_t used = 0;
+      double v = std::stod(s, &used);
+      if (used == s.size() && v > 0) return v;
+    } catch (const std::exception&) {
+    }
+    fail(node, fmt::format("expected {} (a positive number), found '{}'", what, s));
+  }
+  std::uint32_t index(const YAML::Node& node, std::string_view what) const {
+    std::string s = text(node, what);
+    if (!s.empty() && std::all_of(s.begin(), s.end(), ::isdigit) && s.size() < 10 && std::stoul(s) > 0)
+      return static_cast<std::uint32_t>(std::stoul(s) - 1);
+    fail(node, fmt::format("expected {} (a number from 1, as in the OBJ file), found '{}'", what, s));
+  }
+  CoarseEdgeRef edge(const YAML::Node& node) const {
+    if (!node.IsSequence() || node.size() != 2)
+      fail(node, "expected an edge as its two vertex numbers, e.g. [3, 4]");
+    return {index(node[0], "a vertex number"), index(node[1], "a vertex number"), line(node)};
+  }
+  std::vector<CoarseEdgeRef> edges(const YAML::Node& node) const {
+    if (!node.IsSequence()) fail(node, "expected a list of edges, e.g. [[3, 4], [4, 5]]");
+    std::vector<CoarseEdgeRef> out;
+    for (const auto& item : node) out.push_back(edge(item));
+    return out;
+  }
+  template <std::size_t N>
+  std::size_t choice(const YAML::Node& node, std::string_view what,
+                     const std::string_view (&names)[N]) const {
+    std::string s = text(node, what);
+    for (std::size_t i = 0; i < N; ++i)
+      if (names[i] == s) return i;
+    Names known(std::begin(names), std::end(names));
+    fail(node, fmt::format("unknown {} '{}'; did you mean '{}'? (known: {})", what, s,
+                           nearest_name(s, known), fmt::join(known, ", ")));
+  }
+
+ private:
+  std::string file_;
+  std::vector<std::string> lines_;
+};
+
+StitchPattern read_pattern(const Reader& r, const YAML::Node& node) {
+  return static_cast<StitchPattern>(r.choice(node, "stitch pattern", kPatterns));
+}
+
+void read_gauge(const Reader& r, const YAML::Node& node, Project& p) {
+  r.fields(node, {"stitches", "rows"}, "gauge", [&](const std::string& key, const YAML::Node& v) {
+    (key == "stitches" ? p.stitches_per_10cm : p.rows_per_10cm) =
+        r.number(v, key == "stitches" ? "stitches per 10 cm" : "rows per 10 cm");
+  });
+}
+
+void read_stitch_size(const Reader& r, const YAML::Node& node, Project& p) {
+  r.fields(node, {"width", "height"}, "stitch_size",
+           [&](const std::string& key, const YAML::Node& v) {
+             (key == "width" ? p.stitch_width : p.stitch_height) =
+                 r.number(v, "a size in mesh units");
+           });
+  if (!p.stitch_width || !p.stitch_height) r.fail(node, "expected both width and height");
+}
+
+void read_start(const Reader& r, const YAML::Node& node, Project& p) {
+  if (node.IsScalar() && node.Scalar() == "auto") return;
+  if (!node.IsSequence())
+    r.fail(node, "expected 'auto' or a list of starts, e.g. [auto, {edge: [1, 2]}, {vertex: 5}]");
+  for (const auto& item : node) {
+    if (item.IsScalar() && item.Scalar() == "auto") {
+      p.start.push_back({StartSeed::Kind::lowest, {0, 0, r.line(item)}});
+      continue;
+    }
+    r.fields(item, {"edge", "vertex"}, "a start", [&](const std::string& key, const YAML::Node& v) {
+      StartSeed seed;
+      if (key == "edge") {
+        seed.edge = r.edge(v);
+      } else {
+        seed.kind = StartSeed::Kind::vertex;
+        seed.edge = {r.index(v, "a vertex number"), 0, r.line(v)};
+      }
+      p.start.push_back(seed);
+    });
+  }
+}
+
+void read_short_rows(const Reader& r, const YAML::Node& node, Project& p) {
+  constexpr std::string_view kMethods[] = {"sr4", "sr5"};
+  r.fields(node, {"method", "faces"}, "short_rows", [&](const std::string& key, const YAML::Node& v) {
+    if (key == "method") {
+      p.short_row_method = static_cast<ShortRowMethod>(r.choice(v, "short-row method", kMethods));
+      return;
+    }
+    if (!v.IsSequence()) r.fail(v, "expected a list of faces, e.g. [12, {face: 13, wide_edge: [4, 5]}]");
+    for (const auto& item : v) {
+      ShortRowFaceMark mark{0, std::nullopt, r.line(item)};
+      if (item.IsScalar()) {
+        mark.face = r.index(item, "a face number");
+      } else {
+        bool has_face = false;
+        r.fields(item, {"face", "wide_edge"}, "a short-row face",
+                 [&](const std::string& k, const YAML::Node& w) {
+                   if (k == "face") {
+                     mark.face = r.index(w, "a face number");
+                     has_face = true;
+                   } else {
+                     mark.wide_edge = r.edge(w);
+                   }
+                 });
+        if (!has_face) r.fail(item, "expected 'face: N'");
+      }
+      p.short_row_faces.push_back(mark);
+    }
+  });
+}
+
+void read_yarn(const Reader& r, const YAML::Node& node, Project& p) {
+  constexpr std::string_view kUses[] = {"auto", "extra", "own"};
+  r.fields(node, {"default", "edges"}, "yarn", [&](const std::string& key, const YAML::Node& v) {
+    if (key == "default") {
+      p.default_yarn = static_cast<YarnHandling>(r.choice(v, "yarn handling", kUses));
+      return;
+    }
+    if (!v.IsSequence()) r.fail(v, "expected a list of {edge: [a, b], use: extra|own, face: N}");
+    for (const auto& item : v) {
+      YarnMark mark;
+      bool has_edge = false;
+      r.fields(item, {"edge", "use", "face"}, "a yarn choice",
+               [&](const std::string& k, const YAML::Node& w) {
+                 if (k == "edge") {
+                   mark.edge = r.edge(w);
+                   has_edge = true;
+                 } else if (k == "use") {
+                   mark.use = static_cast<YarnHandling>(r.choice(w, "yarn handling", kUses));
+                 } else {
+                   mark.face = r.index(w, "a face number");
+                 }
+               });
+      if (!has_edge) r.fail(item, "expected 'edge: [a, b]'");
+      p.yarn_marks.push_back(mark);
+    }
+  });
+}
+
+void read_target(const Reader& r, const YAML::Node& node, Project& p) {
+  if (!node.IsMap()) r.fail(node, "expected target options (key: value)");
+  for (const auto& item : node)
+    p.target[item.first.as<std::string>()] = r.text(item.second, "a target option value");
+}
+
+}  // namespace
+
+double Project::stitch_width_in_units() const {
+  if (stitch_width) return *stitch_width;
+  auto it = std::find_if(std::begin(kUnitsPerCm), std::end(kUnitsPerCm),
+                         [&](const auto& u) { return u.first == unit; });
+  return 10.0 / stitches_per_10cm * it->second;
+}
+
+double Project::stitch_height_in_units() const {
+  if (stitch_height) return *stitch_height;
+  auto it = std::find_if(std::begin(kUnitsPerCm), std::end(kUnitsPerCm),
+                         [&](const auto& u) { return u.first == unit; });
+  return 10.0 / rows_per_10cm * it->second;
+}
+
+std::string_view pattern_name(StitchPattern pattern) {
+  return kPatterns[static_cast<std::size_t>(pattern)];
+}
+
+std::string nearest_name(std::string_view word, const std::vector<std::string_view>& names) {
+  auto distance = [&](std::string_view name) {
+    std::vector<std::size_t> row(name.size() + 1);
+    std::iota(row.begin(), row.end(), 0u);
+    for (std::size_t i = 1; i <= word.size(); ++i) {
+      std::size_t diagonal = row[0];
+      row[0] = i;
+      for (std::size_t j = 1; j <= name.size(); ++j) {
+        std::size_t up = row[j];
+        row[j] = std::min({row[j] + 1, row[j - 1] + 1,
+                           diagonal + (std::tolower(word[i - 1]) == std::tolower(name[j - 1]) ? 0 : 1)});
+        diagonal = up;
+      }
+    }
+    return row.back();
+  };
+  return std::string(*std::min_element(names.begin(), names.end(), [&](auto a, auto b) {
+    return distance(a) < distance(b);
+  }));
+}
+
+bool is_project_file(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  return ext == ".yaml" || ext == ".yml";
+}
+
+Project parse_project(const std::string& text, const std::string& file) {
+  Reader r(text, file);
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    r.fail(e.mark, fmt::format("not valid YAML: {}", e.msg));
+  }
+  Project p;
+  p.file = file;
+  if (!root.IsMap()) r.fail(root, "expected a project: at least 'mesh: FILE.obj'");
+  constexpr std::string_view kUnits[] = {"mm", "cm", "m", "in"};
+  const Names known = {"mesh",       "unit",       "gauge", "stitch_size", "start",      "pattern",
+                       "patterns",   "short_rows", "mismatches", "yarn",   "shift_paths", "target"};
+  r.fields(root, known, "the project", [&](const std::string& key, const YAML::Node& v) {
+    if (key == "mesh") {
+      std::filesystem::path mesh = r.text(v, "the coarse mesh file");
+      p.mesh = mesh.is_absolute() ? mesh.string()
+                                  : (std::filesystem::path(file).parent_path() / mesh).string();
+    } else if (key == "unit") {
+      p.unit = std::string(kUnits[r.choice(v, "unit", kUnits)]);
+    } else if (key == "gauge") {
+      read_gauge(r, v, p);
+    } else if (key == "stitch_size") {
+      read_stitch_size(r, v, p);
+    } else if (key == "start") {
+      read_start(r, v, p);
+    } else if (key == "pattern") {
+      p.pattern = read_pattern(r, v);
+    } else if (key == "patterns") {
+      if (!v.IsMap()) r.fail(v, "expected OBJ group names with a pattern each, e.g. cuff: k2p2");
+      for (const auto& item : v) p.group_patterns[item.first.as<std::string>()] = read_pattern(r, item.second);
+    } else if (key == "short_rows") {
+      read_short_rows(r, v, p);
+    } else if (key == "mismatches") {
+      p.mismatch_edges = r.edges(v);
+    } else if (key == "yarn") {
+      read_yarn(r, v, p);
+    } else if (key == "shift_paths") {
+      p.shift_paths = r.edges(v);
+    } else {
+      read_target(r, v, p);
+    }
+  });
+  if (p.mesh.empty()) r.fail(root, "expected 'mesh: FILE.obj' (the coarse polygon mesh)");
+  return p;
+}
+
+Project read_project(const std::string& path) { return parse_project(read_file(path), path); }
+
+}  // namespace skein

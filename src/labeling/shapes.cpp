@@ -1,0 +1,311 @@
+#include "labeling/shapes.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <numbers>
+
+#include "common/atomic_file.hpp"
+#include "common/error.hpp"
+
+namespace skein {
+namespace {
+
+constexpr std::uint32_t kSides = 8;  // coarse faces around a body tube
+constexpr double kPi = std::numbers::pi;
+
+Vec3 sub(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+
+// Collects faces, each turned so that its normal points where `outward` says, and groups.
+class Draft {
+ public:
+  std::uint32_t vertex(double x, double y, double z) {
+    positions_.push_back({static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)});
+    return static_cast<std::uint32_t>(positions_.size() - 1);
+  }
+  // True when the corners run counter-clockwise seen from where `outward` points.
+  bool faces_outward(const std::vector<std::uint32_t>& corners, const std::function<Vec3(Vec3)>& outward) const {
+    Vec3 n, c;
+    for (std::size_t i = 0; i < corners.size(); ++i) {  // Newell's normal
+      Vec3 a = positions_[corners[i]], b = positions_[corners[(i + 1) % corners.size()]];
+      n = {n.x + (a.y - b.y) * (a.z + b.z), n.y + (a.z - b.z) * (a.x + b.x), n.z + (a.x - b.x) * (a.y + b.y)};
+      c = {c.x + a.x, c.y + a.y, c.z + a.z};
+    }
+    float k = static_cast<float>(corners.size());
+    Vec3 o = outward({c.x / k, c.y / k, c.z / k});
+    return n.x * o.x + n.y * o.y + n.z * o.z >= 0;
+  }
+  void add(std::vector<std::uint32_t> corners, const std::string& group) {
+    faces_.push_back(std::move(corners));
+    auto it = std::find(groups_.begin(), groups_.end(), group);
+    face_group_.push_back(static_cast<std::uint32_t>(it - groups_.begin()));
+    if (it == groups_.end()) groups_.push_back(group);
+  }
+  // A ring of kSides vertices around the vertical axis through (cx, cz); lift[j] raises
+  // vertex j.
+  std::vector<std::uint32_t> ring(double y, double radius, double cx = 0, double cz = 0,
+                                  const std::vector<double>& lift = {}) {
+    std::vector<std::uint32_t> r;
+    for (std::uint32_t j = 0; j < kSides; ++j) {
+      double a = 2 * kPi * j / kSides;
+      r.push_back(vertex(cx + radius * std::cos(a), y + (lift.empty() ? 0 : lift[j]), cz - radius * std::sin(a)));
+    }
+    return r;
+  }
+  // Faces between two rings of equal size, outward from the axis through `axis_point`
+  // along `axis`. Returns the first face's index.
+  std::uint32_t band(const std::vector<std::uint32_t>& below, const std::vector<std::uint32_t>& above,
+                     Vec3 axis_point, Vec3 axis, const std::string& group) {
+    std::uint32_t first = static_cast<std::uint32_t>(faces_.size());
+    auto outward = [=](Vec3 p) {
+      Vec3 d = sub(p, axis_point);
+      float along = d.x * axis.x + d.y * axis.y + d.z * axis.z;
+      return Vec3{d.x - along * axis.x, d.y - along * axis.y, d.z - along * axis.z};
+    };
+    // The first face, on the regular part of every ring, decides the band's orientation.
+    bool flip = false;
+    for (std::size_t j = 0; j < below.size(); ++j) {
+      std::size_t k = (j + 1) % below.size();
+      std::vector<std::uint32_t> corners{below[j], below[k], above[k], above[j]};
+      if (j == 0) flip = !faces_outward(corners, outward);
+      if (flip) std::reverse(corners.begin(), corners.end());
+      add(std::move(corners), group);
+    }
+    return first;
+  }
+  CoarseMesh finish(const std::string& name) const {
+    CoarseMesh m = build_coarse_mesh(name, positions_, faces_);
+    m.groups = groups_;
+    m.group = face_group_;
+    return m;
+  }
+
+ private:
+  std::vector<Vec3> positions_;
+  std::vector<std::vector<std::uint32_t>> faces_;
+  std::vector<std::string> groups_;
+  std::vector<std::uint32_t> face_group_;
+};
+
+constexpr Vec3 kUp{0, 1, 0};
+
+std::uint32_t pieces(double length, double piece) {
+  return std::max<std::uint32_t>(1, static_cast<std::uint32_t>(std::lround(length / piece)));
+}
+
+std::string project_text(const std::string& name, const std::string& what, const std::string& extra) {
+  return fmt::format(
+      "# {}: made by `skein new`. Every field is documented in docs/formats.md.\n"
+      "mesh: {}.obj\n"
+      "unit: cm\n"
+      "gauge: {{stitches: 22, rows: 30}}   # per 10 cm\n{}",
+      what, name, extra);
+}
+
+// Rings up the y axis at the given heights and radii; returns the first ring.
+std::vector<std::uint32_t> tube(Draft& d, const std::vector<double>& heights,
+                                const std::vector<double>& radii, const std::string& group,
+                                std::vector<std::uint32_t> below = {}) {
+  if (below.empty()) below = d.ring(heights[0], radii[0]);
+  std::vector<std::uint32_t> first = below;
+  for (std::size_t i = 1; i < heights.size(); ++i) {
+    std::vector<std::uint32_t> above = d.ring(heights[i], radii[i]);
+    d.band(below, above, {0, 0, 0}, kUp, group);
+    below = std::move(above);
+  }
+  return first;
+}
+
+Shape sheet(const ShapeSize& s, const std::string& name) {
+  double w = s.width > 0 ? s.width : 20, l = s.length > 0 ? s.length : 20;
+  std::uint32_t cols = pieces(w, 10), rows = pieces(l, 10);
+  Draft d;
+  std::vector<std::uint32_t> v;
+  for (std::uint32_t r = 0; r <= rows; ++r)
+    for (std::uint32_t c = 0; c <= cols; ++c) v.push_back(d.vertex(w * c / cols - w / 2, l * r / rows, 0));
+  for (std::uint32_t r = 0; r < rows; ++r)
+    for (std::uint32_t c = 0; c < cols; ++c) {
+      std::uint32_t a = r * (cols + 1) + c;
+      d.add({v[a], v[a + 1], v[a + cols + 2], v[a + cols + 1]}, r == 0 ? "border" : "body");
+    }
+  return {d.finish(name + ".obj"),
+          project_text(name, fmt::format("a flat sheet {} x {} cm", w, l), "patterns: {border: k2p2}\n")};
+}
+
+Shape straight_tube(const ShapeSize& s, const std::string& name) {
+  double c = s.circumference > 0 ? s.circumference : 40, l = s.length > 0 ? s.length : 20;
+  std::uint32_t n = pieces(l, 5);
+  std::vector<double> heights, radii;
+  for (std::uint32_t i = 0; i <= n; ++i) {
+    heights.push_back(l * i / n);
+    radii.push_back(c / (2 * kPi));
+  }
+  Draft d;
+  tube(d, heights, radii, "body");
+  return {d.finish(name + ".obj"), project_text(name, fmt::format("a tube {} cm round, {} cm long", c, l), "")};
+}
+
+Shape hat(const ShapeSize& s, const std::string& name) {
+  double c = s.circumference > 0 ? s.circumference : 54, l = s.length > 0 ? s.length : 21;
+  double r = c / (2 * kPi), body = l * 0.6;
+  std::vector<double> heights{0, 4}, radii{r, r};
+  for (double h = 4 + 5; h < body; h += 5) heights.push_back(h), radii.push_back(r);
+  const double crown[] = {0.85, 0.6, 0.35, 0.15};  // crown rings, fractions of the radius
+  for (std::size_t i = 0; i < std::size(crown); ++i) {
+    heights.push_back(body + (l - body) * (i + 1) / std::size(crown));
+    radii.push_back(r * crown[i]);
+  }
+  Draft d;
+  std::vector<std::uint32_t> brim = d.ring(heights[0], radii[0]), top = d.ring(heights[1], radii[1]);
+  d.band(brim, top, {0, 0, 0}, kUp, "brim");
+  tube(d, std::vector<double>(heights.begin() + 1, heights.end()),
+       std::vector<double>(radii.begin() + 1, radii.end()), "crown", top);
+  return {d.finish(name + ".obj"),
+          project_text(name, fmt::format("a hat {} cm round, {} cm deep, crown decreases", c, l),
+                       "patterns: {brim: k2p2}\n")};
+}
+
+// A tube with a short-row heel: the heel band's top ring is the leg's ring turned about the
+// front (the back rises by the heel height), so the band is taller at the back; its two faces
+// where the height changes are short-row quads. The foot and toe follow the turned axis.
+Shape sock(const ShapeSize& s, const std::string& name) {
+  double c = s.circumference > 0 ? s.circumference : 20, leg = s.length > 0 ? s.length : 15;
+  double r = c / (2 * kPi), band = 1.5, foot = c;
+  double sin_a = std::min(0.95, 0.3 * c / (2 * r)), cos_a = std::sqrt(1 - sin_a * sin_a);
+  Draft d;
+  std::vector<std::uint32_t> below = d.ring(0, r), top = d.ring(3, r);
+  d.band(below, top, {0, 0, 0}, kUp, "cuff");
+  below = top;
+  for (double h = 3 + 4;; h += 4) {
+    std::vector<std::uint32_t> above = d.ring(std::min(h, leg), r);
+    d.band(below, above, {0, 0, 0}, kUp, "leg");
+    below = std::move(above);
+    if (h >= leg) break;
+  }
+  // A ring of the foot: the leg's ring turned about the front (x = r) and moved `along` the
+  // foot's axis (sin a, cos a, 0), scaled by `scale`.
+  auto foot_ring = [&](double along, double scale) {
+    std::vector<std::uint32_t> ring;
+    for (std::uint32_t j = 0; j < kSides; ++j) {
+      double a = 2 * kPi * j / kSides, x = r * std::cos(a) * scale, z = -r * std::sin(a) * scale;
+      double cx = r - r * scale;  // scaled rings stay centred on the axis
+      ring.push_back(d.vertex(r + (x + cx - r) * cos_a + along * sin_a,
+                              leg + band - (x + cx - r) * sin_a + along * cos_a, z));
+    }
+    return ring;
+  };
+  Vec3 foot_axis{static_cast<float>(sin_a), static_cast<float>(cos_a), 0};
+  Vec3 foot_point{static_cast<float>(r - r * cos_a), static_cast<float>(leg + band + r * sin_a), 0};
+  std::vector<std::uint32_t> heel_top = foot_ring(0, 1);
+  std::uint32_t first = d.band(below, heel_top, {0, 0, 0}, kUp, "heel");
+  below = heel_top;
+  const double toe[] = {1, 1, 1, 0.7, 0.35};
+  for (std::size_t i = 0; i < std::size(toe); ++i) {
+    std::vector<std::uint32_t> above = foot_ring(foot * (i + 1) / std::size(toe), toe[i]);
+    d.band(below, above, foot_point, foot_axis, i + 2 < std::size(toe) ? "foot" : "toe");
+    below = std::move(above);
+  }
+  return {d.finish(name + ".obj"),
+          project_text(name, fmt::format("a sock {} cm round, leg {} cm, short-row heel", c, leg),
+                       fmt::format("patterns: {{cuff: k2p2}}\n"
+                                   "short_rows:\n  method: sr4\n  faces: [{}, {}]   # where the "
+                                   "heel band grows taller towards the back\n",
+                                   first + 2, first + 7))};
+}
+
+// Body and two sleeves knit in the round from the hem and cuffs, joined at the yoke (the
+// paper's sweater: three yarn pieces). Each armpit stays open, bound off on both sides.
+Shape sweater(const ShapeSize& s, const std::string& name) {
+  double c = s.circumference > 0 ? s.circumference : 90, body = s.length > 0 ? s.length : 36;
+  double r = c / (2 * kPi), sleeve_r = r * 0.35, sleeve = 40, yoke = 18, dip = sleeve_r * 0.5;
+  Draft d;
+  std::vector<std::uint32_t> hem = d.ring(0, r), below = d.ring(5, r);
+  d.band(hem, below, {0, 0, 0}, kUp, "hem");
+  for (double h = 5 + 10;; h += 10) {
+    std::vector<std::uint32_t> above = d.ring(std::min(h, body), r);
+    d.band(below, above, {0, 0, 0}, kUp, "body");
+    below = std::move(above);
+    if (h >= body) break;
+  }
+  // Sleeves along +x and -x, knit from the cuff inwards: rings of 4 (top, front, bottom,
+  // back); the innermost ring shares the body's front and back vertices next to the armpit.
+  auto add_sleeve = [&](int sign, std::uint32_t front, std::uint32_t back, std::uint32_t& top_vertex,
+                        std::uint32_t& cuff_vertex) {
+    Vec3 axis_point{0, static_cast<float>(body + dip), 0};
+    Vec3 axis{1, 0, 0};
+    std::vector<std::vector<std::uint32_t>> rings;
+    for (int k = 0; k <= 4; ++k) {
+      double x = sign * (r + sleeve * (1 - k / 4.0));
+      double rr = k == 0 ? sleeve_r * 0.8 : sleeve_r;
+      rings.push_back({d.vertex(x, body + dip + rr, 0), d.vertex(x, body + dip, -rr),
+                       d.vertex(x, body + dip - rr, 0), d.vertex(x, body + dip, rr)});
+    }
+    double x = sign * r * 0.95;
+    std::vector<std::uint32_t> inner{d.vertex(x, body + dip + sleeve_r, 0), front,
+                                     d.vertex(sign * r * 1.1, body - dip, 0), back};
+    for (int k = 0; k < 5; ++k)
+      d.band(rings[k], k < 4 ? rings[k + 1] : inner, axis_point, axis, k == 0 ? "cuff" : "sleeve");
+    top_vertex = inner[0];
+    cuff_vertex = rings[0][0];
+  };
+  std::uint32_t right_top, left_top, right_cuff, left_cuff;
+  add_sleeve(+1, below[1], below[7], right_top, right_cuff);
+  add_sleeve(-1, below[3], below[5], left_top, left_cuff);
+  std::vector<std::uint32_t> yoke_ring{right_top, below[1], below[2], below[3],
+                                       left_top,  below[5], below[6], below[7]};
+  const double shrink[] = {0.85, 0.7, 0.55};
+  for (std::size_t i = 0; i < std::size(shrink); ++i) {
+    std::vector<std::uint32_t> above = d.ring(body + dip + yoke * (i + 1) / std::size(shrink), r * shrink[i]);
+    d.band(yoke_ring, above, {0, 0, 0}, kUp, i + 1 < std::size(shrink) ? "yoke" : "neck");
+    yoke_ring = std::move(above);
+  }
+  return {d.finish(name + ".obj"),
+          project_text(name, fmt::format("a sweater {} cm round, body {} cm, sleeves {} cm", c, body, sleeve),
+                       fmt::format("start:                 # the hem, then both cuffs\n"
+                                   "  - vertex: {}\n  - vertex: {}\n  - vertex: {}\n"
+                                   "patterns: {{hem: k2p2, cuff: k2p2, neck: k2p2}}\n",
+                                   hem[2] + 1, right_cuff + 1, left_cuff + 1))};
+}
+
+}  // namespace
+
+std::vector<std::string> shape_kinds() { return {"sheet", "tube", "hat", "sock", "sweater"}; }
+
+Shape make_shape(const std::string& kind, const ShapeSize& size, const std::string& name) {
+  if (size.circumference < 0 || size.width < 0 || size.length < 0)
+    throw UsageError("sizes must be positive");
+  if (kind == "sheet") return sheet(size, name);
+  if (kind == "tube") return straight_tube(size, name);
+  if (kind == "hat") return hat(size, name);
+  if (kind == "sock") return sock(size, name);
+  if (kind == "sweater") return sweater(size, name);
+  throw UsageError(fmt::format("unknown shape '{}'; known: sheet, tube, hat, sock, sweater", kind));
+}
+
+double parse_length_cm(const std::string& text) {
+  constexpr std::pair<std::string_view, double> kUnits[] = {{"mm", 0.1}, {"cm", 1}, {"in", 2.54}, {"m", 100}};
+  std::size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  std::string_view unit = std::string_view(text).substr(used);
+  for (auto [name, cm] : kUnits)
+    if (used > 0 && value > 0 && (unit == name || unit.empty())) return value * (unit.empty() ? 1 : cm);
+  throw UsageError(fmt::format("'{}' is not a length; expected a positive number with mm, cm, m "
+                               "or in, e.g. 40cm",
+                               text));
+}
+
+std::string write_shape(const Shape& shape, const std::string& path_without_extension) {
+  std::string obj = path_without_extension + ".obj", yaml = path_without_extension + ".yaml";
+  write_file_atomically(obj, [&](std::ostream& out) { write_coarse_mesh(shape.mesh, out); });
+  write_file_atomically(yaml, [&](std::ostream& out) { out << shape.project; });
+  return yaml;
+}
+
+}  // namespace skein

@@ -1,0 +1,269 @@
+// Labeling (paper §3.4) and stitch-mesh generation at a gauge: every face gets its directions,
+// every failure names the faces left over and why, and generated stitch meshes are valid and
+// knittable (randomized grids and cylinders of varying radius, compiled and scheduled).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "driver/pipeline.hpp"
+#include "labeling/labeling.hpp"
+#include "labeling/shapes.hpp"
+#include "labeling/stitch_generation.hpp"
+
+namespace skein {
+namespace {
+
+using Faces = std::vector<std::vector<std::uint32_t>>;
+
+Project project_with_stitch(double width, double height) {
+  Project p;
+  p.file = "test.yaml";
+  p.stitch_width = width;
+  p.stitch_height = height;
+  return p;
+}
+
+// A sheet of cols x rows quads in the xy plane, column widths and row heights jittered.
+CoarseMesh grid(std::uint32_t cols, std::uint32_t rows, std::mt19937& rng) {
+  std::uniform_real_distribution<double> size(3, 9);
+  std::vector<double> xs{0}, ys{0};
+  for (std::uint32_t c = 0; c < cols; ++c) xs.push_back(xs.back() + size(rng));
+  for (std::uint32_t r = 0; r < rows; ++r) ys.push_back(ys.back() + size(rng));
+  std::vector<Vec3> v;
+  for (double y : ys)
+    for (double x : xs) v.push_back({static_cast<float>(x), static_cast<float>(y), 0});
+  Faces faces;
+  for (std::uint32_t r = 0; r < rows; ++r)
+    for (std::uint32_t c = 0; c < cols; ++c) {
+      std::uint32_t a = r * (cols + 1) + c;
+      faces.push_back({a, a + 1, a + cols + 2, a + cols + 1});
+    }
+  return build_coarse_mesh("<grid>", v, faces);
+}
+
+// A tube up the y axis: `sides` faces round, one ring per radius (varying: shaping).
+CoarseMesh cylinder(std::uint32_t sides, const std::vector<double>& radii, double ring_height) {
+  std::vector<Vec3> v;
+  for (std::size_t r = 0; r < radii.size(); ++r)
+    for (std::uint32_t j = 0; j < sides; ++j) {
+      double a = 2 * std::numbers::pi * j / sides;
+      v.push_back({static_cast<float>(radii[r] * std::cos(a)), static_cast<float>(r * ring_height),
+                   static_cast<float>(-radii[r] * std::sin(a))});
+    }
+  Faces faces;
+  for (std::uint32_t r = 0; r + 1 < radii.size(); ++r)
+    for (std::uint32_t j = 0; j < sides; ++j) {
+      std::uint32_t k = (j + 1) % sides;
+      faces.push_back({r * sides + j, r * sides + k, (r + 1) * sides + k, (r + 1) * sides + j});
+    }
+  return build_coarse_mesh("<cylinder>", v, faces);
+}
+
+std::string labeling_error(const CoarseMesh& mesh, const Project& project) {
+  try {
+    label_coarse_mesh(mesh, project);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+// Every edge of the coarse mesh carries the same number of stitch segments on both sides, and
+// the compiled model is knittable with the expected yarn pieces.
+void expect_generated_knittable(const CoarseMesh& coarse, const Project& project,
+                                std::uint32_t yarn_pieces) {
+  Labeling labeling = label_coarse_mesh(coarse, project);
+  GeneratedStitchMesh g = generate_stitch_mesh(coarse, labeling, project);
+  ASSERT_NO_THROW(validate(g.mesh));
+  EXPECT_EQ(g.coarse_face.size(), g.mesh.num_faces());
+  Compilation c = compile_stitch_mesh(std::move(g.mesh), coarse.source);
+  EXPECT_TRUE(c.knittability.knittable) << check_report(c);
+  EXPECT_EQ(c.yarns.size(), yarn_pieces) << check_report(c);
+}
+
+TEST(Labeling, SheetRowsRunAcrossFromTheLowestEdge) {
+  std::mt19937 rng(1);
+  CoarseMesh m = grid(3, 2, rng);
+  Labeling l = label_coarse_mesh(m, project_with_stitch(1, 1));
+  for (CoarseFace f : m.faces()) {
+    CoarseHalfedge b = l.find(m, f, CoarseRole::bottom);
+    EXPECT_EQ(m.at(m.tail(b)).y, m.at(m.head(b)).y);  // horizontal bottoms
+    EXPECT_LT(m.at(m.tail(b)).x, m.at(m.head(b)).x);  // running left to right
+  }
+  // The first row is labelled first, across: faces 1-3, then 4-6.
+  EXPECT_LT(l.order[2], l.order[3]);
+}
+
+TEST(Labeling, TubeRowsCloseIntoRings) {
+  CoarseMesh m = cylinder(6, {5, 5, 5}, 4);
+  Labeling l = label_coarse_mesh(m, project_with_stitch(1, 1));
+  for (CoarseFace f : m.faces()) {
+    CoarseHalfedge r = l.find(m, f, CoarseRole::right);
+    EXPECT_EQ(l[m.twin(r)], CoarseRole::left);  // every neighbour in the ring agrees
+  }
+}
+
+TEST(Labeling, TriangleReachedSidewaysEndsShortRows) {
+  Project p;
+  p.file = "test.yaml";
+  p.mesh = std::string(SKEIN_SOURCE_DIR) + "/samples/short-row-wedge/short-row-wedge.obj";
+  CoarseMesh m = read_coarse_mesh(p.mesh);
+  Labeling l = label_coarse_mesh(m, p);
+  EXPECT_TRUE(l.short_row[2]);
+  EXPECT_EQ(l.wide_side[2], CoarseRole::right);
+  CoarseHalfedge wale = l.find(m, CoarseFace(2), CoarseRole::right);
+  EXPECT_EQ(m.describe(wale), "edge 5-7");
+}
+
+TEST(Labeling, TriangleDetectedWhenItsNeighboursAreLabelled) {
+  // The triangle (face 3) is reached from below first; once the quad beside it is labelled,
+  // the side that quad gives it decides its wale edge (paper §3.4).
+  std::vector<Vec3> v{{0, 0, 0}, {2, 0, 0}, {4, 0, 0}, {0, 2, 0}, {2, 2, 0}, {4, 2, 0}, {2, 4, 0}, {4, 4, 0}};
+  Faces faces{{0, 1, 4, 3}, {1, 2, 5, 4}, {3, 4, 6}, {4, 5, 7, 6}};
+  CoarseMesh m = build_coarse_mesh("<t>", v, faces);
+  Labeling l = label_coarse_mesh(m, project_with_stitch(0.5, 0.5));
+  EXPECT_TRUE(l.short_row[2]);
+  EXPECT_EQ(l.wide_side[2], CoarseRole::right);
+}
+
+TEST(Labeling, ClosedSurfaceHasNoStart) {
+  // A cube: every edge is shared.
+  std::vector<Vec3> v{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  Faces faces{{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  EXPECT_EQ(labeling_error(build_coarse_mesh("cube.obj", v, faces), project_with_stitch(1, 1)),
+            "cube.obj: the mesh has no open boundary to start from; name an interior edge to cast "
+            "on along in the project file (start: [{edge: [a, b]}])");
+}
+
+TEST(Labeling, SeparatePieceNeedsItsOwnStart) {
+  std::vector<Vec3> v{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {3, 5, 0}, {4, 5, 0}, {4, 6, 0}, {3, 6, 0}};
+  Faces faces{{0, 1, 2, 3}, {4, 5, 6, 7}};
+  EXPECT_EQ(labeling_error(build_coarse_mesh("two.obj", v, faces), project_with_stitch(1, 1)),
+            "two.obj: 1 of 2 faces could not be labelled:\n  face 2 (around (3.5, 5.5, 0)): they "
+            "are not connected to any start; add one at their boundary, e.g. start: [{edge: [5, "
+            "6]}]");
+}
+
+TEST(Labeling, FacesReachedOnlyFromAboveAreNamed) {
+  // Face 3 hangs under face 2 without touching face 1: rows come down into it head-on.
+  std::vector<Vec3> v{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {1, 2, 0}, {0, 2, 0},
+                      {2, 1, 0}, {2, 2, 0}, {1.2f, 0, 0}, {2, 0, 0}};
+  Faces faces{{0, 1, 2, 3}, {3, 2, 4, 5}, {8, 9, 6, 2}, {2, 6, 7, 4}};
+  std::string e = labeling_error(build_coarse_mesh("hang.obj", v, faces), project_with_stitch(1, 1));
+  EXPECT_NE(e.find("face 3 (around (1.55, 0.5, 0)): they are reached only from above (edge 7-3), so "
+                   "rows would run into them head-on; add a start at their own boundary, e.g. "
+                   "start: [{edge: [9, 10]}]"),
+            std::string::npos)
+      << e;
+}
+
+TEST(Labeling, RowsStopAtMarkedMismatchEdges) {
+  std::mt19937 rng(2);
+  CoarseMesh m = grid(2, 1, rng);
+  Project p = project_with_stitch(1, 1);
+  p.mismatch_edges.push_back({1, 4, 7});  // the edge between the two faces
+  std::string e = labeling_error(m, p);
+  EXPECT_NE(e.find("face 2 (around"), std::string::npos) << e;
+  EXPECT_NE(e.find("they are reached only across edge 5-2, where rows stop"), std::string::npos) << e;
+}
+
+TEST(Labeling, PolygonsAndUnlabelledTrianglesAreExplained) {
+  std::vector<Vec3> v{{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1.5f, 0}, {0, 1, 0}, {1, 3, 0}};
+  Faces faces{{0, 1, 2, 3, 4}};
+  EXPECT_NE(labeling_error(build_coarse_mesh("penta.obj", v, faces), project_with_stitch(1, 1))
+                .find("face 1 has 5 sides; labeling knows quads and triangles"),
+            std::string::npos);
+  // A lone triangle on a quad: which side carries its short rows is unknown.
+  std::vector<Vec3> w{{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, {1, 3, 0}};
+  Faces g{{0, 1, 2, 3}, {3, 2, 4}};
+  EXPECT_NE(labeling_error(build_coarse_mesh("roof.obj", w, g), project_with_stitch(1, 1))
+                .find("triangle 2 is reached only from below (edge 4-3), so which side carries "
+                      "its short rows is unknown"),
+            std::string::npos);
+}
+
+TEST(Labeling, ProjectEdgesMustExist) {
+  std::mt19937 rng(3);
+  Project p = project_with_stitch(1, 1);
+  p.start.push_back({StartSeed::Kind::edge, {0, 7, 4}});
+  EXPECT_EQ(labeling_error(grid(1, 1, rng), p),
+            "test.yaml:4: vertices 1 and 8 share no edge in <grid>; expected the two ends of an "
+            "edge of the coarse mesh");
+}
+
+TEST(Generation, CountsAreSharedAndShapingIsSpread) {
+  // A cone: the bottom 40 stitches round, the top 20; decreases spread, never stacked here.
+  CoarseMesh m = cylinder(4, {40 / (2 * std::numbers::pi), 20 / (2 * std::numbers::pi)}, 20);
+  Project p = project_with_stitch(1.0, 1.0);
+  Labeling l = label_coarse_mesh(m, p);
+  GeneratedStitchMesh g = generate_stitch_mesh(m, l, p);
+  validate(g.mesh);
+  std::uint32_t decreases = 0, stacked = 0;
+  for (Face f : g.mesh.faces()) {
+    if (g.mesh.stitch[f] != StitchType::k2tog) continue;
+    ++decreases;
+    for (Halfedge h : g.mesh.halfedges(f)) {
+      Face above = g.mesh.neighbour(h);
+      if (g.mesh.role[h] == EdgeRole::top && above.valid() && g.mesh.stitch[above] == StitchType::k2tog)
+        ++stacked;
+    }
+  }
+  EXPECT_GT(decreases, 0u);
+  EXPECT_EQ(stacked, 0u);
+  for (CoarseHalfedge h : m.halfedges())
+    if (!m.is_border(h)) {
+      EXPECT_EQ(g.segments[h.index()], g.segments[m.twin(h).index()]);
+    }
+}
+
+TEST(Generation, RandomGridsAreKnittable) {
+  for (std::uint32_t seed = 0; seed < 12; ++seed) {
+    std::mt19937 rng(seed);
+    CoarseMesh m = grid(1 + seed % 4, 1 + seed % 3, rng);
+    SCOPED_TRACE(seed);
+    expect_generated_knittable(m, project_with_stitch(0.5 + 0.1 * (seed % 3), 0.4), 1);
+  }
+}
+
+TEST(Generation, RandomCylindersOfVaryingRadiusAreKnittable) {
+  for (std::uint32_t seed = 0; seed < 12; ++seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> radius(2, 8);
+    std::vector<double> radii;
+    for (std::uint32_t r = 0; r < 2 + seed % 4; ++r) radii.push_back(radius(rng));
+    SCOPED_TRACE(seed);
+    expect_generated_knittable(cylinder(3 + seed % 6, radii, 3), project_with_stitch(0.5, 0.4), 1);
+  }
+}
+
+TEST(Generation, ShortRowWedgeTurnsInItsTriangle) {
+  Project p;
+  p.file = "test.yaml";
+  p.mesh = std::string(SKEIN_SOURCE_DIR) + "/samples/short-row-wedge/short-row-wedge.obj";
+  CoarseMesh m = read_coarse_mesh(p.mesh);
+  for (ShortRowMethod method : {ShortRowMethod::sr4, ShortRowMethod::sr5}) {
+    p.short_row_method = method;
+    GeneratedStitchMesh g = generate_stitch_mesh(m, label_coarse_mesh(m, p), p);
+    validate(g.mesh);
+    std::uint32_t turns = 0;
+    for (Face f : g.mesh.faces()) turns += info(g.mesh.stitch[f]).wales_adjacent;
+    EXPECT_EQ(turns, g.segments[label_coarse_mesh(m, p).find(m, CoarseFace(2), CoarseRole::right).index()] / 2);
+    Compilation c = compile_stitch_mesh(std::move(g.mesh), "wedge");
+    EXPECT_TRUE(c.knittability.knittable) << check_report(c);
+  }
+}
+
+TEST(Generation, EveryShapeOfSkeinNewGeneratesAValidStitchMesh) {
+  for (const std::string& kind : shape_kinds()) {
+    SCOPED_TRACE(kind);
+    Shape s = make_shape(kind, {}, kind);
+    Project p = parse_project(s.project, kind + ".yaml");
+    GeneratedStitchMesh g = generate_stitch_mesh(s.mesh, label_coarse_mesh(s.mesh, p), p);
+    EXPECT_NO_THROW(validate(g.mesh));
+  }
+}
+
+}  // namespace
+}  // namespace skein
