@@ -113,7 +113,7 @@ class Matcher {
         }
     } else if (t == StitchType::bo) {
       if (previous_bo != kNoLoop) through.push_back(previous_bo);
-      return parents_are(loops[0], through, s, why);
+      return parents_are(loops[0], through, s, why) && travels_along_course(s, t, loops, 1, why);
     } else if (made.size() == 2) {
       bool ltr = l_.left_to_right[s];
       for (std::uint8_t i = 0; i < 2; ++i) {
@@ -139,7 +139,7 @@ class Matcher {
                         info(t).name, where(loops[0]), is_purl(t) ? "front" : "back");
       return false;
     }
-    if (!travels_along_course(s, t, loops[0], why)) return false;
+    if (!travels_along_course(s, t, loops, std::max<std::size_t>(made.size(), 1), why)) return false;
     for (std::size_t i = 0; i < made.size(); ++i)
       loop_of_[made[slot_along_yarn(l_.left_to_right[s], static_cast<std::uint8_t>(i),
                                     static_cast<std::uint8_t>(made.size()))]] = loops[i];
@@ -150,15 +150,20 @@ class Matcher {
   // matched: on a sheet, rows alternate; in a tube the back half runs against the front half
   // (a stitch's half is the bed it is made on, the other for a purl). A loop made against
   // its course leaves a float where the carrier turns back.
-  bool travels_along_course(StitchId s, StitchType t, LoopId x, std::string& why) {
-    const FabricLoop& fl = f_.loops[x];
-    bool back_half = l_.tube && fl.front == is_purl(t);
-    int sign = (l_.left_to_right[s] ? 1 : -1) * (back_half ? -1 : 1) * static_cast<int>(fl.dir);
-    if (sign_ == 0) sign_ = sign;
-    if (sign == sign_) return true;
-    why = fmt::format("{} is knit against the direction of its row: {} goes {}", g_.describe(s),
-                      where(x), direction_char(fl.dir));
-    return false;
+  bool travels_along_course(StitchId s, StitchType t, const LoopId* loops, std::size_t n,
+                            std::string& why) {
+    bool back_half = l_.tube && f_.loops[loops[0]].front == is_purl(t);
+    for (std::size_t i = 0; i < n; ++i) {
+      const FabricLoop& fl = f_.loops[loops[i]];
+      int sign = (l_.left_to_right[s] ? 1 : -1) * (back_half ? -1 : 1) * static_cast<int>(fl.dir);
+      if (sign_ == 0) sign_ = sign;
+      if (sign != sign_) {
+        why = fmt::format("{} is knit against the direction of its row: {} goes {}", g_.describe(s),
+                          where(loops[i]), direction_char(fl.dir));
+        return false;
+      }
+    }
+    return true;
   }
 
   // Every loop of the input is pulled through as often as its taker needs (kfb twice).
@@ -207,6 +212,8 @@ ProofResult prove_fabric(const Replay& r, const std::vector<std::string_view>& l
       std::size_t reached = 0;
       if (m.match(carrier, start, why, reached)) {
         result.proven = true;
+        result.first_line = r.fabric.loops[yarn[start]].line;
+        result.last_line = r.fabric.loops[yarn[start + needed - 1]].line;
         result.summary = fmt::format(
             "proven against {}: all {} stitches are there, knit with carrier {} in yarn order "
             "after a border of {} loops, each pulled through the right loops{}",

@@ -24,6 +24,9 @@ namespace skein::knitout {
 struct ProofResult {
   bool proven = false;
   std::string summary;  // what was proven, or the first difference
+  // When proven: the lines that make the input's first and last loops (what lies outside is
+  // border, waste yarn or tag).
+  std::size_t first_line = 0, last_line = 0;
 };
 
 ProofResult prove_fabric(const Replay& replay, const std::vector<std::string_view>& lines,

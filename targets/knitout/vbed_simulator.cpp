@@ -66,6 +66,7 @@ class VirtualBed {
         continue;
       }
       ++r_.stats.operations;
+      last_op_line_ = line_;
       apply(op);
     }
     finish();
@@ -212,8 +213,6 @@ class VirtualBed {
     const char* what = op.code == OpCode::split ? "split" : "xfer";
     if (is_slider(op.a.bed) && is_slider(op.b.bed))
       fail(fmt::format("{} {} {} moves from slider to slider", what, needle_name(op.a), needle_name(op.b)));
-    if (op.code == OpCode::split && is_slider(op.a.bed))
-      fail(fmt::format("split cannot start from a slider ({})", needle_name(op.a)));
     if (is_front(op.a.bed) == is_front(op.b.bed))
       fail(fmt::format("{} {} {} stays on one bed: loops move only between front and back", what,
                        needle_name(op.a), needle_name(op.b)));
@@ -252,6 +251,8 @@ class VirtualBed {
   }
 
   void stitch_op(const Op& op) {
+    if (op.code == OpCode::split && is_slider(op.a.bed))
+      fail(fmt::format("split cannot start from a slider ({})", needle_name(op.a)));
     if (is_slider(op.a.bed))
       fail(fmt::format("{} on a slider ({}): sliders only hold loops moved there", op_name(op.code), needle_name(op.a)));
     if (op.code == OpCode::miss) {
@@ -359,7 +360,7 @@ class VirtualBed {
 
   void finish() {
     close_pass();
-    line_ = lines_.size();
+    line_ = last_op_line_ ? last_op_line_ : lines_.size();
     for (std::size_t c = 0; c < carriers_.size(); ++c)
       if (carriers_[c].state != CarrierState::out)
         fail(fmt::format("carrier {} is still in at the end of the file (take it out with {})",
@@ -385,7 +386,7 @@ class VirtualBed {
   std::int32_t rack_ = 0, n_ = 0, lo_ = 0, hi_ = 0, span_lo_ = 0, span_hi_ = 0;
   bool keep_ = true;
   PassTracker pass_;
-  std::size_t line_ = 0;
+  std::size_t line_ = 0, last_op_line_ = 0;
 };
 
 }  // namespace

@@ -1,0 +1,218 @@
+// Mutation tests: single-operation edits of valid knitout (drop a line, swap two lines, change
+// a needle, a direction, a rack, a carrier). Every edit that changes the fabric or breaks a rule
+// must be rejected, by a rule of the virtual v-bed or by the proof. An edit that the proof
+// accepts leaves every loop pulled through the same loops in the same yarn order: it is
+// undetectable by design, and is classified to show why (outside the fabric, commuting
+// operations, a rack no transfer sees, a machine setting).
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <random>
+
+#include "common/error.hpp"
+#include "mesh/generate.hpp"
+#include "test_knitout_util.hpp"
+
+namespace skein {
+namespace {
+
+using T = StitchType;
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  for (std::string_view l : knitout::split_lines(text)) lines.emplace_back(l);
+  return lines;
+}
+std::string join(const std::vector<std::string>& lines) {
+  std::string out;
+  for (const std::string& l : lines) out += l + '\n';
+  return out;
+}
+std::vector<std::string> words(const std::string& line) {
+  std::vector<std::string> w;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    std::size_t j = line.find(' ', i);
+    if (j == std::string::npos) j = line.size();
+    if (j > i) w.push_back(line.substr(i, j - i));
+    i = j + 1;
+  }
+  return w;
+}
+bool is_op(const std::string& line) { return !line.empty() && line[0] != ';'; }
+bool is_needle(const std::string& w) {
+  return w.size() >= 2 && (w[0] == 'f' || w[0] == 'b') && (std::isdigit(static_cast<unsigned char>(w.back())));
+}
+
+struct Mutant {
+  std::string kind;                 // drop, swap, needle, direction, rack, carrier
+  std::vector<std::size_t> lines;   // 0-based lines edited
+  std::vector<std::string> text;
+};
+
+// One edit of `kind` at op line `i` (0-based), or nothing when it does not apply there.
+std::optional<Mutant> mutate(const std::vector<std::string>& lines, std::size_t i, const std::string& kind,
+                             const knitout::MachineProfile& p) {
+  Mutant m{kind, {i}, lines};
+  std::vector<std::string> w = words(lines[i]);
+  auto rebuild = [&] {
+    std::string l;
+    for (const std::string& x : w) l += (l.empty() ? "" : " ") + x;
+    m.text[i] = l;
+  };
+  if (kind == "drop") {
+    m.text.erase(m.text.begin() + static_cast<std::ptrdiff_t>(i));
+  } else if (kind == "swap") {
+    std::size_t j = i + 1;
+    while (j < lines.size() && !is_op(lines[j])) ++j;
+    if (j == lines.size() || lines[i] == lines[j]) return std::nullopt;
+    std::swap(m.text[i], m.text[j]);
+    m.lines.push_back(j);
+  } else if (kind == "needle") {
+    auto it = std::find_if(w.begin(), w.end(), is_needle);
+    if (it == w.end()) return std::nullopt;
+    std::size_t digits = (*it)[1] == 's' ? 2 : 1;
+    *it = it->substr(0, digits) + std::to_string(std::stoi(it->substr(digits)) + 1);
+    rebuild();
+  } else if (kind == "direction") {
+    if (w.size() < 2 || (w[1] != "+" && w[1] != "-")) return std::nullopt;
+    w[1] = w[1] == "+" ? "-" : "+";
+    rebuild();
+  } else if (kind == "rack") {
+    if (w.size() != 2 || w[0] != "rack") return std::nullopt;
+    w[1] = std::to_string(std::stoi(w[1]) + 1);
+    rebuild();
+  } else if (kind == "carrier") {
+    if (w.empty() || w.back() != p.yarn_carrier) return std::nullopt;
+    w.back() = p.yarn_carrier == "2" ? "5" : "2";
+    rebuild();
+  }
+  return m;
+}
+
+struct Tally {
+  std::map<std::string, int> outcome;  // rejected by a rule, not proven, undetectable: <why>
+  int total = 0;
+  std::vector<std::string> unexplained;
+};
+
+std::vector<std::string> needles_of(const std::string& line) {
+  std::vector<std::string> w = words(line), n;
+  std::copy_if(w.begin(), w.end(), std::back_inserter(n), is_needle);
+  return n;
+}
+bool disjoint_needles(const std::string& a, const std::string& b) {
+  for (const std::string& x : needles_of(a))
+    for (const std::string& y : needles_of(b))
+      if (x == y) return false;
+  return true;
+}
+// "xfer A B" at line i is followed by "xfer B A" before anything else touches A or B.
+bool comes_straight_back(const std::vector<std::string>& lines, std::size_t i) {
+  std::vector<std::string> ab = needles_of(lines[i]);
+  for (std::size_t j = i + 1; j < lines.size(); ++j) {
+    if (!is_op(lines[j])) continue;
+    std::vector<std::string> n = needles_of(lines[j]);
+    if (n == std::vector<std::string>{ab[1], ab[0]}) return words(lines[j]).front() == "xfer";
+    if (!disjoint_needles(lines[i], lines[j])) return false;
+  }
+  return false;
+}
+
+// Why an accepted edit cannot change the fabric, or "" when there is no such reason.
+std::string why_undetectable(const Mutant& m, const std::vector<std::string>& original,
+                             const knitout::ProofResult& proof) {
+  bool outside = std::all_of(m.lines.begin(), m.lines.end(), [&](std::size_t i) {
+    return i + 1 < proof.first_line || i + 1 > proof.last_line;
+  });
+  if (outside) return "outside the fabric (cast-on border, waste yarn, tag)";
+  auto op = [&](std::size_t i) { return words(original[i]).front(); };
+  if (m.kind == "swap" && op(m.lines[0]) == "xfer" && op(m.lines[1]) == "xfer")
+    return "two transfers in one transfer pass swapped (they commute)";
+  if (m.kind == "swap" && (op(m.lines[0]) == "xfer") != (op(m.lines[1]) == "xfer") &&
+      disjoint_needles(original[m.lines[0]], original[m.lines[1]]))
+    return "a transfer and a stitch on other needles swapped (they commute)";
+  if (m.kind == "drop" && op(m.lines[0]) == "xfer")
+    return comes_straight_back(original, m.lines[0])
+               ? "a transfer that a later one undoes before the loop is used (a redundant pair)"
+               : "a transfer whose loop joins the same stack, in the same order, by a later one";
+  if (op(m.lines[0]).starts_with("x-")) return "a machine setting (stitch size, speed)";
+  if (m.kind == "rack" || (m.kind == "drop" && op(m.lines[0]) == "rack") ||
+      (m.kind == "swap" && (op(m.lines[0]) == "rack" || op(m.lines[1]) == "rack")))
+    return "a rack that no transfer sees (knitting does not depend on the rack)";
+  return "";
+}
+
+void run_mutants(const std::string& name, const Compilation& c, const knitout::MachineProfile& p,
+                 std::size_t samples, Tally& tally) {
+  std::string text = testing::emit_knitout_text(c, p);
+  ASSERT_TRUE(testing::replay_and_prove(text, c, p).proven) << name;
+  std::vector<std::string> lines = lines_of(text);
+  std::vector<std::size_t> ops;
+  for (std::size_t i = 0; i < lines.size(); ++i)
+    if (is_op(lines[i])) ops.push_back(i);
+  std::mt19937_64 rng(std::hash<std::string>()(name));
+  const char* kinds[] = {"drop", "swap", "needle", "direction", "rack", "carrier"};
+  for (std::size_t n = 0; n < samples; ++n) {
+    std::size_t i = ops[rng() % ops.size()];
+    for (const char* kind : kinds) {
+      std::optional<Mutant> m = mutate(lines, i, kind, p);
+      if (!m) continue;
+      ++tally.total;
+      std::string verdict;
+      knitout::ProofResult proof;
+      try {
+        proof = testing::replay_and_prove(join(m->text), c, p);
+        verdict = proof.proven ? "" : "rejected: not proven against the input";
+      } catch (const ParseError&) {
+        verdict = "rejected: breaks a rule of the v-bed";
+      }
+      if (verdict.empty()) {
+        std::string why = why_undetectable(*m, lines, testing::replay_and_prove(text, c, p));
+        verdict = "undetectable by design: " + (why.empty() ? "UNEXPLAINED" : why);
+        if (why.empty())
+          tally.unexplained.push_back(fmt::format("{} {} at line {}: '{}'{}", name, kind, i + 1, lines[i],
+                                                  m->lines.size() > 1 ? " with '" + lines[m->lines[1]] + "'" : ""));
+      }
+      ++tally.outcome[verdict];
+    }
+  }
+}
+
+TEST(KnitoutMutation, EveryEditThatChangesTheFabricOrBreaksARuleIsRejected) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  Tally tally;
+  run_mutants("rib swatch on swg091n2", compile_model("samples/rib-swatch/rib-swatch.obj"),
+              testing::shipped_profile("swg091n2"), 150, tally);
+  run_mutants("hat on kniterate", compile_model("samples/hat/hat.obj"), testing::shipped_profile("kniterate"),
+              150, tally);
+  RowPlan sheet = {{T::co, T::co, T::co, T::co, T::co, T::co},
+                   {T::k, T::kfb, T::p, T::yo, T::k, T::m1l},
+                   {T::k, T::k2tog, T::p, T::ssk, T::m1r, T::k, T::p},
+                   {T::k, T::p, T::s2kp, T::k, T::p2tog},
+                   {T::bo, T::bo, T::bo, T::bo, T::bo}};
+  run_mutants("shaped sheet on generic", compile_stitch_mesh(build_from_rows(sheet, Layout::sheet), "sheet"),
+              testing::shipped_profile("generic"), 150, tally);
+  RandomShaping shaping;
+  run_mutants("shaped tube on swg091n2",
+              compile_stitch_mesh(build_from_rows(random_rows(20, 10, shaping, 7), Layout::tube), "tube"),
+              testing::shipped_profile("swg091n2"), 150, tally);
+  int rejected = 0, undetectable = 0;
+  std::cout << "knitout mutants: " << tally.total << "\n";
+  for (const auto& [verdict, count] : tally.outcome) {
+    std::cout << fmt::format("  {:5}  {}\n", count, verdict);
+    (verdict.starts_with("rejected") ? rejected : undetectable) += count;
+  }
+  std::cout << fmt::format("  detection rate of edits that change the fabric or break a rule: {}/{}\n",
+                           rejected, tally.total - undetectable);
+  EXPECT_TRUE(tally.unexplained.empty()) << fmt::format("{} accepted edits have no reason:\n  {}",
+                                                        tally.unexplained.size(),
+                                                        fmt::join(tally.unexplained, "\n  "));
+  EXPECT_GT(rejected, tally.total * 3 / 4);
+}
+
+}  // namespace
+}  // namespace skein

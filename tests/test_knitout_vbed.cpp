@@ -1,0 +1,73 @@
+// The virtual v-bed, one rule at a time: tests/data/knitout/*.k are small hand-written knitout
+// files, each ending with '; profile: NAME' and '; expect: valid' or '; expect: line N: message'
+// (the exact message of the first invalid line).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fmt/format.h>
+
+#include "common/atomic_file.hpp"
+#include "common/error.hpp"
+#include "test_knitout_util.hpp"
+
+namespace skein {
+namespace {
+
+std::string trailer(const std::string& text, const std::string& key) {
+  std::size_t at = text.rfind("; " + key + ": ");
+  if (at == std::string::npos) return "";
+  std::size_t start = at + key.size() + 4;
+  return text.substr(start, text.find('\n', start) - start);
+}
+
+std::vector<std::filesystem::path> rule_files() {
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::directory_iterator(testing::source_path("tests/data/knitout")))
+    if (entry.path().extension() == ".k") files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+TEST(VbedRules, EachHandWrittenFileGivesItsExactVerdict) {
+  std::vector<std::filesystem::path> files = rule_files();
+  ASSERT_GE(files.size(), 45u);
+  int valid = 0;
+  for (const auto& path : files) {
+    std::string text = read_file(path.string());
+    std::string expect = trailer(text, "expect"), profile = trailer(text, "profile");
+    ASSERT_FALSE(expect.empty() || profile.empty()) << path << " needs '; profile:' and '; expect:' lines";
+    std::string verdict = "valid";
+    try {
+      knitout::replay_knitout(text, path.filename().string(), testing::shipped_profile(profile));
+    } catch (const ParseError& e) {
+      verdict = fmt::format("line {}: {}", e.line(), e.expected());
+      EXPECT_TRUE(std::string(e.what()).starts_with(fmt::format("{}:{}: ", path.filename().string(), e.line())));
+    }
+    EXPECT_EQ(verdict, expect) << path.filename();
+    valid += verdict == "valid";
+  }
+  EXPECT_GE(valid, 3);
+}
+
+// What a shop reads: passes, transfers, racks, drops, yarn pieces and time.
+TEST(VbedRules, ShopSummaryCountsWhatTheFileDoes) {
+  std::string path = testing::source_path("tests/data/knitout/valid-swg-sheet.k");
+  knitout::MachineProfile p = testing::shipped_profile("swg091n2");
+  knitout::Replay r = knitout::replay_knitout(read_file(path), path, p);
+  EXPECT_EQ(r.stats.knits, 8u);
+  EXPECT_EQ(r.stats.tucks, 4u);
+  EXPECT_EQ(r.stats.splits, 1u);
+  EXPECT_EQ(r.stats.misses, 1u);
+  EXPECT_EQ(r.stats.transfers, 2u);
+  EXPECT_EQ(r.stats.racks, 2u);
+  EXPECT_EQ(r.stats.yarn_pieces, 1u);
+  EXPECT_EQ(r.stats.loops_dropped, 4u);  // f3 is empty after its transfer
+  EXPECT_EQ(r.stats.stitch_passes, 5u);
+  EXPECT_GT(r.stats.seconds, 0);
+  std::string summary = knitout::shop_summary(r, p);
+  EXPECT_NE(summary.find("carriage passes: "), std::string::npos) << summary;
+  EXPECT_NE(summary.find("transfers: 2, rack changes: 2, loops dropped: 4"), std::string::npos) << summary;
+}
+
+}  // namespace
+}  // namespace skein
