@@ -255,6 +255,24 @@ TEST(Generation, ShortRowWedgeTurnsInItsTriangle) {
   }
 }
 
+TEST(Generation, ShiftPathsFollowTheProjectOrContinueFromBelow) {
+  CoarseMesh m = cylinder(4, {5, 5, 5}, 4);
+  Project p = project_with_stitch(1, 1);
+  p.shift_paths.push_back({{2, 6, 9}, 3});  // the side edge from vertex 3 up to vertex 7
+  GeneratedStitchMesh g = generate_stitch_mesh(m, label_coarse_mesh(m, p), p);
+  EXPECT_EQ(g.shift_paths, 1u);  // the upper ring continues the path of the lower one
+  std::uint32_t marked = 0;
+  for (Edge e : g.mesh.edges()) {
+    marked += g.mesh.shift_path[e] != kNotShifted;
+    if (g.mesh.shift_path[e]) {
+      EXPECT_EQ(g.mesh.shift_path[e], kShiftDownRight);  // the ring above inherits the option
+    }
+  }
+  EXPECT_EQ(marked, g.segments[m.find_halfedge(CoarseVertex(2), CoarseVertex(6)).index()] * 2);
+  p.shift_paths = {{{0, 1, 9}, 1}};  // a course edge: no round starts there
+  EXPECT_THROW(generate_stitch_mesh(m, label_coarse_mesh(m, p), p), Error);
+}
+
 TEST(Generation, EveryShapeOfSkeinNewGeneratesAValidStitchMesh) {
   for (const std::string& kind : shape_kinds()) {
     SCOPED_TRACE(kind);

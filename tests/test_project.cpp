@@ -47,7 +47,8 @@ yarn:
   default: extra
   edges:
     - {edge: [10, 11], use: own, face: 2}
-shift_paths: [[12, 13]]
+shift_paths: [[12, 13], {edge: [14, 15], option: down-left}]
+shift_option: up-left
 target: {machine: kniterate}
 )",
                             "p.yaml");
@@ -68,7 +69,9 @@ target: {machine: kniterate}
   EXPECT_EQ(p.default_yarn, YarnHandling::extra);
   EXPECT_EQ(p.yarn_marks.at(0).use, YarnHandling::own);
   EXPECT_EQ(*p.yarn_marks.at(0).face, 1u);
-  EXPECT_EQ(p.shift_paths.at(0).b, 12u);
+  EXPECT_EQ(p.shift_paths.at(0).edge.b, 12u);
+  EXPECT_EQ(p.shift_paths.at(0).option, 2);  // shift_option, though written after the list
+  EXPECT_EQ(p.shift_paths.at(1).option, 4);
   EXPECT_EQ(p.target.at("machine"), "kniterate");
 }
 
@@ -82,7 +85,7 @@ TEST(Project, MisspelledFieldNamesLineAndNearestName) {
   EXPECT_EQ(error_of("mesh: m.obj\nguage: {stitches: 20}\n"),
             "dir/p.yaml:2: unknown field 'guage' in the project; did you mean 'gauge'? (known: "
             "mesh, unit, gauge, stitch_size, start, pattern, patterns, short_rows, mismatches, "
-            "yarn, shift_paths, target)\n      2 | guage: {stitches: 20}");
+            "yarn, shift_paths, shift_option, target)\n      2 | guage: {stitches: 20}");
   EXPECT_NE(error_of("mesh: m.obj\ngauge:\n  stiches: 20\n").find(
                 ":3: unknown field 'stiches' in gauge; did you mean 'stitches'?"),
             std::string::npos);

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <numeric>
+#include <optional>
 
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
@@ -202,6 +203,29 @@ void read_yarn(const Reader& r, const YAML::Node& node, Project& p) {
   });
 }
 
+constexpr std::string_view kShiftOptions[] = {"up-right", "up-left", "down-right", "down-left"};
+
+std::uint8_t read_shift_option(const Reader& r, const YAML::Node& node) {
+  return static_cast<std::uint8_t>(r.choice(node, "shift option", kShiftOptions) + 1);
+}
+
+void read_shift_paths(const Reader& r, const YAML::Node& node, Project& p) {
+  if (!node.IsSequence()) r.fail(node, "expected a list of edges or {edge: [a, b], option: up-left}");
+  for (const auto& item : node) {
+    if (item.IsSequence()) {
+      p.shift_paths.push_back({r.edge(item), p.shift_option});
+      continue;
+    }
+    ShiftPathMark mark{{}, 0};
+    r.fields(item, {"edge", "option"}, "a shift-path", [&](const std::string& key, const YAML::Node& v) {
+      if (key == "edge") mark.edge = r.edge(v);
+      else mark.option = read_shift_option(r, v);
+    });
+    if (mark.edge.line == 0) r.fail(item, "expected 'edge: [a, b]'");
+    p.shift_paths.push_back(mark);
+  }
+}
+
 void read_target(const Reader& r, const YAML::Node& node, Project& p) {
   if (!node.IsMap()) r.fail(node, "expected target options (key: value)");
   for (const auto& item : node)
@@ -264,10 +288,12 @@ Project parse_project(const std::string& text, const std::string& file) {
   }
   Project p;
   p.file = file;
+  std::optional<YAML::Node> shift_paths;
   if (!root.IsMap()) r.fail(root, "expected a project: at least 'mesh: FILE.obj'");
   constexpr std::string_view kUnits[] = {"mm", "cm", "m", "in"};
-  const Names known = {"mesh",       "unit",       "gauge", "stitch_size", "start",      "pattern",
-                       "patterns",   "short_rows", "mismatches", "yarn",   "shift_paths", "target"};
+  const Names known = {"mesh",    "unit",       "gauge",      "stitch_size", "start",
+                       "pattern", "patterns",   "short_rows", "mismatches",  "yarn",
+                       "shift_paths", "shift_option", "target"};
   r.fields(root, known, "the project", [&](const std::string& key, const YAML::Node& v) {
     if (key == "mesh") {
       std::filesystem::path mesh = r.text(v, "the coarse mesh file");
@@ -293,11 +319,16 @@ Project parse_project(const std::string& text, const std::string& file) {
     } else if (key == "yarn") {
       read_yarn(r, v, p);
     } else if (key == "shift_paths") {
-      p.shift_paths = r.edges(v);
+      shift_paths = v;  // read last: plain edges take shift_option, wherever it is written
+    } else if (key == "shift_option") {
+      p.shift_option = read_shift_option(r, v);
     } else {
       read_target(r, v, p);
     }
   });
+  if (shift_paths) read_shift_paths(r, *shift_paths, p);
+  for (ShiftPathMark& mark : p.shift_paths)
+    if (mark.option == 0) mark.option = p.shift_option;
   if (p.mesh.empty()) r.fail(root, "expected 'mesh: FILE.obj' (the coarse polygon mesh)");
   return p;
 }

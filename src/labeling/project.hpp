@@ -33,6 +33,13 @@ struct ShortRowFaceMark {
   int line = 0;
 };
 
+// Fig. 3's shift operations, as the stitch mesh stores them (ShiftOption: 1 up-right ... 4
+// down-left).
+struct ShiftPathMark {
+  CoarseEdgeRef edge;
+  std::uint8_t option = 1;
+};
+
 struct YarnMark {
   CoarseEdgeRef edge;
   YarnHandling use = YarnHandling::extra;
@@ -60,7 +67,8 @@ struct Project {
   std::vector<CoarseEdgeRef> mismatch_edges;  // rows stop here (perpendicular mismatches)
   YarnHandling default_yarn = YarnHandling::by_default;
   std::vector<YarnMark> yarn_marks;
-  std::vector<CoarseEdgeRef> shift_paths;  // coarse wale edges a tube's shift-path follows
+  std::vector<ShiftPathMark> shift_paths;  // coarse side edges a tube's shift-path follows
+  std::uint8_t shift_option = 1;           // for paths skein places (default up-right)
   std::map<std::string, std::string> target;  // passed through to targets
 };
 

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
+#include <set>
 
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
@@ -103,7 +105,7 @@ class Generator {
     GeneratedStitchMesh out{std::move(builder_).build(), std::move(origin_), {}, closed_rows_,
                             open_rows_, chains_};
     for (CoarseHalfedge h : m_.halfedges()) out.segments.push_back(segments(h));
-    for (CoarseHalfedge h : shift_edges_) mark_edge(out.mesh, h, [&](Edge e) { out.mesh.shift_path[e] = 1; });
+    for (auto [h, option] : shift_edges_) mark_edge(out.mesh, h, [&](Edge e) { out.mesh.shift_path[e] = option; });
     choose_yarns(out);
     return out;
   }
@@ -235,6 +237,12 @@ class Generator {
         plan_open_row(row);
       }
     }
+    for (std::size_t k = 0; k < p_.shift_paths.size(); ++k)
+      if (!used_shift_marks_.count(k))
+        throw Error(fmt::format("{}:{}: {} is not a side of a ring of faces where rows can start; "
+                                "a shift-path runs up a side edge of faces knit in the round",
+                                p_.file, p_.shift_paths[k].edge.line,
+                                m_.describe(find_project_edge(m_, p_, p_.shift_paths[k].edge))));
   }
 
   std::vector<Segment> cut(const std::vector<CoarseFace>& faces, CoarseHalfedge first_side) {
@@ -277,33 +285,50 @@ class Generator {
     store(segs);
   }
 
-  // The shift-path runs up a side edge where rows never turn: a project mark, else where the
-  // chain from below arrives, else the first such edge (a new chain).
-  void plan_closed_row(const std::vector<CoarseFace>& faces) {
-    std::size_t best = faces.size();
-    bool continued = false;
+  // Where a ring's shift-path runs and with which shift option (Fig. 3).
+  struct PathChoice {
+    std::size_t face;      // the path runs up this face's left side
+    std::uint8_t option;   // the stitch mesh's ShiftOption
+    bool continued;        // the path of a ring below goes on here
+  };
+
+  // The shift-path runs up a side edge where no short rows turn: a project mark, else where
+  // the path of a ring below arrives, else the first such edge (a new path, new yarn).
+  PathChoice choose_path(const std::vector<CoarseFace>& faces) {
+    std::optional<PathChoice> marked, continued, first;
     for (std::size_t i = 0; i < faces.size(); ++i) {
-      CoarseFace f = faces[i];
-      CoarseHalfedge h = side(f, CoarseRole::left);
-      CoarseFace before = faces[(i + faces.size() - 1) % faces.size()];
+      CoarseFace f = faces[i], before = faces[(i + faces.size() - 1) % faces.size()];
       bool turns_here = (L_.short_row[f.index()] && L_.wide_side[f.index()] == CoarseRole::left) ||
                         (L_.short_row[before.index()] && L_.wide_side[before.index()] == CoarseRole::right);
       if (turns_here) continue;
-      for (const CoarseEdgeRef& e : p_.shift_paths)
-        if (m_.canonical(find_project_edge(m_, p_, e)) == m_.canonical(h)) best = i, continued = true;
-      if (!continued && std::count(chain_tops_.begin(), chain_tops_.end(), m_.head(h)))
-        best = i, continued = true;
-      if (best == faces.size()) best = i;
+      CoarseHalfedge h = side(f, CoarseRole::left);
+      for (std::size_t k = 0; k < p_.shift_paths.size(); ++k)
+        if (m_.canonical(find_project_edge(m_, p_, p_.shift_paths[k].edge)) == m_.canonical(h)) {
+          used_shift_marks_.insert(k);
+          marked = PathChoice{i, p_.shift_paths[k].option, false};
+        }
+      for (auto [top, option] : chain_tops_)
+        if (top == m_.head(h) && !continued) continued = PathChoice{i, option, true};
+      if (!first) first = PathChoice{i, p_.shift_option, false};
     }
-    if (best == faces.size())
+    if (!first)
       fail(faces.front(), "every side of this ring of faces has short rows turning at it, so no "
                           "shift-path can run through it");
-    if (!continued) ++chains_;
-    std::vector<CoarseFace> rotated(faces.begin() + static_cast<std::ptrdiff_t>(best), faces.end());
-    rotated.insert(rotated.end(), faces.begin(), faces.begin() + static_cast<std::ptrdiff_t>(best));
+    if (marked) {
+      marked->continued = continued && continued->face == marked->face;
+      return *marked;
+    }
+    return continued ? *continued : *first;
+  }
+
+  void plan_closed_row(const std::vector<CoarseFace>& faces) {
+    PathChoice path = choose_path(faces);
+    if (!path.continued) ++chains_;
+    std::vector<CoarseFace> rotated(faces.begin() + static_cast<std::ptrdiff_t>(path.face), faces.end());
+    rotated.insert(rotated.end(), faces.begin(), faces.begin() + static_cast<std::ptrdiff_t>(path.face));
     CoarseHalfedge shift = side(rotated.front(), CoarseRole::left);
-    shift_edges_.push_back(shift);
-    chain_tops_.push_back(m_.tail(shift));
+    shift_edges_.push_back({shift, path.option});
+    chain_tops_.push_back({m_.tail(shift), path.option});
     std::vector<Segment> segs = cut(rotated, shift);
     walk_yarn(segs, rotated, true, true);
     store(segs);
@@ -634,8 +659,10 @@ class Generator {
   std::vector<std::uint32_t> edge_first_;   // per canonical halfedge: first interior vertex
   std::vector<std::vector<std::uint8_t>> rightward_;  // per quad: direction of each row
   std::vector<std::vector<Token>> tokens_;  // per short-row face
-  std::vector<CoarseVertex> yarn_ends_, chain_tops_;
-  std::vector<CoarseHalfedge> shift_edges_;
+  std::vector<CoarseVertex> yarn_ends_;
+  std::vector<std::pair<CoarseVertex, std::uint8_t>> chain_tops_;     // where paths arrive
+  std::vector<std::pair<CoarseHalfedge, std::uint8_t>> shift_edges_;  // and their options
+  std::set<std::size_t> used_shift_marks_;  // project shift_paths entries placed
   std::vector<std::uint32_t> origin_;
   std::vector<Vec3> positions_;
   std::vector<std::uint32_t> offset_;  // per coarse face: its first column in its coarse row
