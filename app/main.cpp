@@ -72,8 +72,9 @@ int report_verification(const VerifyReport& report) {
 }
 
 int run_compile(const Registry& registry, const std::string& input, const std::string& target_name,
-                const TargetOptions& options, const std::string& output, bool verify, bool verbose) {
+                TargetOptions options, const std::string& output, bool verify, bool verbose) {
   const Target& target = find_target(registry, target_name);
+  if (options.machine.empty()) options.machine = project_target_option(input, "machine");
   Compilation c = compile_model(input, progress_printer(verbose));
   if (!c.knittability.knittable) {
     std::cerr << check_report(c) << fmt::format("skein: nothing written to {}\n", output);

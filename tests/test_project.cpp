@@ -2,6 +2,8 @@
 // nearest valid name.
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "common/error.hpp"
 #include "labeling/project.hpp"
 
@@ -109,6 +111,14 @@ TEST(Project, BadValuesNameWhatWasExpected) {
   EXPECT_NE(error_of("unit: cm\n").find("expected 'mesh: FILE.obj'"), std::string::npos);
   EXPECT_NE(error_of("mesh: [a\n").find("not valid YAML"), std::string::npos);
   EXPECT_NE(error_of("- just a list\n").find("expected a project"), std::string::npos);
+}
+
+TEST(Project, TargetOptionsComeFromTheProjectFile) {
+  std::string dir = ::testing::TempDir();
+  std::ofstream(dir + "/t.yaml") << "mesh: m.obj\ntarget: {machine: kniterate}\n";
+  EXPECT_EQ(project_target_option(dir + "/t.yaml", "machine"), "kniterate");
+  EXPECT_EQ(project_target_option(dir + "/t.yaml", "carriers"), "");
+  EXPECT_EQ(project_target_option("samples/hat/hat.obj", "machine"), "");  // not a project
 }
 
 TEST(Project, NearestNameIgnoresCase) {

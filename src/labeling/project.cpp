@@ -335,4 +335,11 @@ Project parse_project(const std::string& text, const std::string& file) {
 
 Project read_project(const std::string& path) { return parse_project(read_file(path), path); }
 
+std::string project_target_option(const std::string& path, const std::string& key) {
+  if (!is_project_file(path)) return "";
+  Project p = read_project(path);
+  auto it = p.target.find(key);
+  return it == p.target.end() ? "" : it->second;
+}
+
 }  // namespace skein

@@ -79,6 +79,10 @@ Project read_project(const std::string& path);
 
 bool is_project_file(const std::string& path);  // .yaml or .yml
 
+// The project's `target:` option `key` ("" when `path` is not a project or does not set it):
+// what the command line uses when its own option is not given.
+std::string project_target_option(const std::string& path, const std::string& key);
+
 std::string_view pattern_name(StitchPattern pattern);
 
 // The valid name nearest to `word` (edit distance), for "did you mean" hints.

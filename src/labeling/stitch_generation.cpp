@@ -212,6 +212,7 @@ class Generator {
     std::vector<CoarseFace> by_order(m_.num_faces());
     for (CoarseFace f : m_.faces()) by_order[L_.order[f.index()]] = f;
     std::vector<std::uint8_t> seen(m_.num_faces(), 0);
+    std::vector<std::pair<std::vector<CoarseFace>, bool>> rows;  // faces left to right, closed
     for (CoarseFace start : by_order) {
       if (seen[start.index()]) continue;
       CoarseFace first = start;
@@ -229,6 +230,14 @@ class Generator {
            g = across(g, CoarseRole::right, CoarseRole::left))
         row.push_back(g);
       for (CoarseFace g : row) seen[g.index()] = 1;
+      // An open row ending in a short-row triangle can only start at its other end.
+      if (!closed && !side(row.front(), CoarseRole::left).valid())
+        wanted_starts_.push_back(m_.tail(side(row.back(), CoarseRole::right)));
+      if (!closed && !side(row.back(), CoarseRole::right).valid())
+        wanted_starts_.push_back(m_.head(side(row.front(), CoarseRole::left)));
+      rows.emplace_back(std::move(row), closed);
+    }
+    for (const auto& [row, closed] : rows) {
       if (closed) {
         ++closed_rows_;
         plan_closed_row(row);
@@ -273,8 +282,24 @@ class Generator {
     // Enter where the yarn of a row below stopped, at an end with rows to knit.
     bool can_left = segs.front().rows > 0, can_right = segs.back().rows > 0;
     bool from_left = can_left;
-    auto ended_at = [&](CoarseVertex v) { return std::count(yarn_ends_.begin(), yarn_ends_.end(), v) > 0; };
-    if (can_left && can_right && ended_at(m_.tail(right)) && !ended_at(m_.head(left))) from_left = false;
+    auto among = [](const std::vector<CoarseVertex>& list, CoarseVertex v) {
+      return std::count(list.begin(), list.end(), v) > 0;
+    };
+    // Where this row stops when it enters at the left (or right) end (nowhere if it cannot).
+    auto stops_at = [&](bool left_end) {
+      std::vector<Segment> trial = segs;
+      try {
+        return walk_yarn(trial, faces, false, left_end) ? m_.tail(left) : m_.head(right);
+      } catch (const Error&) {
+        return CoarseVertex();
+      }
+    };
+    if (can_left && can_right) {
+      if (among(yarn_ends_, m_.tail(right)) && !among(yarn_ends_, m_.head(left))) from_left = false;
+      // Else, free to choose: stop where a row above must start, so one yarn goes on.
+      if (!among(yarn_ends_, m_.tail(right)) && !among(yarn_ends_, m_.head(left)))
+        from_left = among(wanted_starts_, stops_at(true)) || !among(wanted_starts_, stops_at(false));
+    }
     if (!can_left && !can_right)
       fail(faces.front(), fmt::format("this row of faces ({} to {}) is closed at both ends by "
                                       "short-row triangles, so no row can start; give one end a "
@@ -659,7 +684,8 @@ class Generator {
   std::vector<std::uint32_t> edge_first_;   // per canonical halfedge: first interior vertex
   std::vector<std::vector<std::uint8_t>> rightward_;  // per quad: direction of each row
   std::vector<std::vector<Token>> tokens_;  // per short-row face
-  std::vector<CoarseVertex> yarn_ends_;
+  std::vector<CoarseVertex> yarn_ends_;     // top corners where open rows stopped
+  std::vector<CoarseVertex> wanted_starts_;  // bottom corners where open rows must start
   std::vector<std::pair<CoarseVertex, std::uint8_t>> chain_tops_;     // where paths arrive
   std::vector<std::pair<CoarseHalfedge, std::uint8_t>> shift_edges_;  // and their options
   std::set<std::size_t> used_shift_marks_;  // project shift_paths entries placed
