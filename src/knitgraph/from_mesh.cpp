@@ -231,18 +231,11 @@ void flag_stitches(const StitchMesh& m, KnitGraph& g) {
   }
 }
 
-// A row is closed when its stitches form a ring, short when it starts after a turn at a
-// short-row face, open otherwise.
 void shape_rows(const StitchMesh& m, KnitGraph& g) {
-  std::vector<std::uint8_t> closed = closed_rows(m);
-  g.row_shape.resize(closed.size());
-  for (std::size_t r = 0; r < closed.size(); ++r)
-    g.row_shape[r] = closed[r] ? RowShape::closed : RowShape::open;
-  for (Face f : m.faces()) {
-    StitchId next = g.yarn_next[f.index()];
-    if (is_short_row_face(m.stitch[f]) && next != kNoStitch)
-      g.row_shape[g.row[next]] = RowShape::short_row;
-  }
+  for (RowKind kind : row_kinds(m))
+    g.row_shape.push_back(kind == RowKind::closed    ? RowShape::closed
+                          : kind == RowKind::short_row ? RowShape::short_row
+                                                       : RowShape::open);
 }
 
 }  // namespace

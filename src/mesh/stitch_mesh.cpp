@@ -312,17 +312,24 @@ void assign_rows(StitchMesh& mesh) {
   for (Face f : mesh.faces()) mesh.row[f] = number[root[f.index()]];
 }
 
-std::vector<std::uint8_t> closed_rows(const StitchMesh& mesh) {
+std::vector<RowKind> row_kinds(const StitchMesh& mesh) {
   std::uint32_t rows = 0;
   for (Face f : mesh.faces()) rows = std::max(rows, mesh.row[f] + 1);
-  std::vector<std::uint8_t> closed(rows, 1);
+  std::vector<RowKind> kinds(rows, RowKind::closed);
   for (Face f : mesh.faces()) {
     Halfedge t = mesh.twin(mesh.wale_out(f));
     bool ring_link = t.valid() && mesh.role[t] == EdgeRole::wale_in &&
                      mesh.row[mesh.face(t)] == mesh.row[f];
-    if (!ring_link) closed[mesh.row[f]] = 0;
+    if (!ring_link && kinds[mesh.row[f]] == RowKind::closed) kinds[mesh.row[f]] = RowKind::open;
   }
-  return closed;
+  // Both rows meeting in a short-row face are short: the one that turns there and the next.
+  for (Face f : mesh.faces()) {
+    if (!info(mesh.stitch[f]).wales_adjacent) continue;
+    kinds[mesh.row[f]] = RowKind::short_row;
+    Face next = mesh.neighbour(mesh.wale_out(f));
+    if (next.valid()) kinds[mesh.row[next]] = RowKind::short_row;
+  }
+  return kinds;
 }
 
 // ---------------------------------------------------------------- validation

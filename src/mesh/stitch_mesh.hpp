@@ -162,8 +162,10 @@ void assign_rows(StitchMesh& mesh);
 // Checks every invariant of a stitch mesh; throws MeshError naming the face or edge.
 void validate(const StitchMesh& mesh);
 
-// Per row: 1 when its stitches close into a ring (a round), 0 for open and short rows.
-std::vector<std::uint8_t> closed_rows(const StitchMesh& mesh);
+// What a row is (paper §4.2): a closed ring (a round), a short row (it starts or ends at a
+// short-row face), or an open row (both ends on a border or a perpendicular mismatch).
+enum class RowKind : std::uint8_t { open, closed, short_row };
+std::vector<RowKind> row_kinds(const StitchMesh& mesh);
 
 // "face 12 (k, row 7)": how reports name a face (1-based like the file format).
 std::string describe(const StitchMesh& mesh, Face f);

@@ -19,8 +19,8 @@ bool is_course_link(const StitchMesh& m, Halfedge h) {
 class ShiftPaths {
  public:
   explicit ShiftPaths(StitchMesh& m)
-      : m_(m), closed_(closed_rows(m)), path_edge_(closed_.size(), Edge()),
-        reversed_(closed_.size(), 0) {}
+      : m_(m), kinds_(row_kinds(m)), path_edge_(kinds_.size(), Edge()),
+        reversed_(kinds_.size(), 0) {}
 
   ShiftPathSummary run() && {
     check_marks();
@@ -36,10 +36,10 @@ class ShiftPaths {
     for (Edge e : m_.edges()) {
       if (!m_.shift_path[e]) continue;
       std::uint32_t row = m_.row[m_.face(m_.halfedge(e))];
-      if (!closed_[row])
-        throw MeshError(fmt::format("{} is marked as a shift-path, but row {} is not a closed "
-                                    "round: open rows need no shift-path (the work turns at the "
-                                    "border); expected the mark on a round",
+      if (kinds_[row] == RowKind::open)
+        throw MeshError(fmt::format("{} is marked as a shift-path, but row {} is an open row: open "
+                                    "rows need no shift-path (the work turns at the border); "
+                                    "expected the mark on a round or a short row between rounds",
                                     describe(m_, e), row + 1));
       if (path_edge_[row].valid())
         throw MeshError(fmt::format("row {} is cut by two shift-path edges, {} and {}; expected "
@@ -59,7 +59,7 @@ class ShiftPaths {
 
   void place_missing_paths() {
     for (Face f : m_.faces()) {  // faces in order: lowest unmarked round first
-      if (!closed_[m_.row[f]] || path_edge_[m_.row[f]].valid()) continue;
+      if (kinds_[m_.row[f]] != RowKind::closed || path_edge_[m_.row[f]].valid()) continue;
       Edge start = m_.edge(m_.wale_in(f));
       mark(start, kShiftUpRight);
       trace(start, kShiftUpRight);
@@ -98,7 +98,8 @@ class ShiftPaths {
     if (!v.valid()) return {};
     for (Halfedge out : m_.outgoing(v))
       for (Halfedge c : {out, m_.prev(out)}) {
-        if (!is_course_link(m_, c) || m_.edge(c) == e || !closed_[m_.row[m_.face(c)]]) continue;
+        if (!is_course_link(m_, c) || m_.edge(c) == e || kinds_[m_.row[m_.face(c)]] != RowKind::closed)
+          continue;
         if ((up ? m_.wale_bottom(c) : m_.wale_top(c)) == v) return m_.edge(c);
       }
     return {};
@@ -107,7 +108,7 @@ class ShiftPaths {
   // Each path's option says which way its rounds run; the rows of a path whose labelled
   // direction disagrees are turned, all of a path's rows alike.
   void apply_options() {
-    for (std::uint32_t row = 0; row < closed_.size(); ++row) {
+    for (std::uint32_t row = 0; row < kinds_.size(); ++row) {
       Edge e = path_edge_[row];
       if (!e.valid()) continue;
       auto option = static_cast<ShiftOption>(m_.shift_path[e]);
@@ -137,7 +138,7 @@ class ShiftPaths {
   }
 
   StitchMesh& m_;
-  std::vector<std::uint8_t> closed_;
+  std::vector<RowKind> kinds_;
   std::vector<Edge> path_edge_;  // per row: the shift-path edge that cuts it
   std::vector<std::uint8_t> reversed_;
   ShiftPathSummary summary_;
