@@ -45,12 +45,22 @@ void BM_LabelingGenerate(benchmark::State& state) {
     benchmark::DoNotOptimize(g);
   }
   state.counters["stitches"] = static_cast<double>(stitches);
-  state.counters["stitches/s"] =
-      benchmark::Counter(static_cast<double>(stitches), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["stitches/s"] = benchmark::Counter(static_cast<double>(stitches),
+                                                    benchmark::Counter::kIsIterationInvariantRate);
 }
-BENCHMARK(BM_LabelingGenerate)->Name("Labeling/generate/10K")->Arg(100)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_LabelingGenerate)->Name("Labeling/generate/100K")->Arg(32)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_LabelingGenerate)->Name("Labeling/generate/1M")->Arg(10)->Iterations(3)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LabelingGenerate)
+    ->Name("Labeling/generate/10K")
+    ->Arg(100)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LabelingGenerate)
+    ->Name("Labeling/generate/100K")
+    ->Arg(32)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LabelingGenerate)
+    ->Name("Labeling/generate/1M")
+    ->Arg(10)
+    ->Iterations(3)
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace skein

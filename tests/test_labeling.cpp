@@ -120,7 +120,8 @@ TEST(Labeling, TriangleReachedSidewaysEndsShortRows) {
 TEST(Labeling, TriangleDetectedWhenItsNeighboursAreLabelled) {
   // The triangle (face 3) is reached from below first; once the quad beside it is labelled,
   // the side that quad gives it decides its wale edge (paper §3.4).
-  std::vector<Vec3> v{{0, 0, 0}, {2, 0, 0}, {4, 0, 0}, {0, 2, 0}, {2, 2, 0}, {4, 2, 0}, {2, 4, 0}, {4, 4, 0}};
+  std::vector<Vec3> v{{0, 0, 0}, {2, 0, 0}, {4, 0, 0}, {0, 2, 0},
+                      {2, 2, 0}, {4, 2, 0}, {2, 4, 0}, {4, 4, 0}};
   Faces faces{{0, 1, 4, 3}, {1, 2, 5, 4}, {3, 4, 6}, {4, 5, 7, 6}};
   CoarseMesh m = build_coarse_mesh("<t>", v, faces);
   Labeling l = label_coarse_mesh(m, project_with_stitch(0.5, 0.5));
@@ -130,7 +131,8 @@ TEST(Labeling, TriangleDetectedWhenItsNeighboursAreLabelled) {
 
 TEST(Labeling, ClosedSurfaceHasNoStart) {
   // A cube: every edge is shared.
-  std::vector<Vec3> v{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  std::vector<Vec3> v{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                      {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
   Faces faces{{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
   EXPECT_EQ(labeling_error(build_coarse_mesh("cube.obj", v, faces), project_with_stitch(1, 1)),
             "cube.obj: the mesh has no open boundary to start from; name an interior edge to cast "
@@ -138,7 +140,8 @@ TEST(Labeling, ClosedSurfaceHasNoStart) {
 }
 
 TEST(Labeling, SeparatePieceNeedsItsOwnStart) {
-  std::vector<Vec3> v{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {3, 5, 0}, {4, 5, 0}, {4, 6, 0}, {3, 6, 0}};
+  std::vector<Vec3> v{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                      {3, 5, 0}, {4, 5, 0}, {4, 6, 0}, {3, 6, 0}};
   Faces faces{{0, 1, 2, 3}, {4, 5, 6, 7}};
   EXPECT_EQ(labeling_error(build_coarse_mesh("two.obj", v, faces), project_with_stitch(1, 1)),
             "two.obj: 1 of 2 faces could not be labelled:\n  face 2 (around (3.5, 5.5, 0)): they "
@@ -148,14 +151,16 @@ TEST(Labeling, SeparatePieceNeedsItsOwnStart) {
 
 TEST(Labeling, FacesReachedOnlyFromAboveAreNamed) {
   // Face 3 hangs under face 2 without touching face 1: rows come down into it head-on.
-  std::vector<Vec3> v{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {1, 2, 0}, {0, 2, 0},
-                      {2, 1, 0}, {2, 2, 0}, {1.2f, 0, 0}, {2, 0, 0}};
+  std::vector<Vec3> v{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},    {1, 2, 0},
+                      {0, 2, 0}, {2, 1, 0}, {2, 2, 0}, {1.2f, 0, 0}, {2, 0, 0}};
   Faces faces{{0, 1, 2, 3}, {3, 2, 4, 5}, {8, 9, 6, 2}, {2, 6, 7, 4}};
-  std::string e = labeling_error(build_coarse_mesh("hang.obj", v, faces), project_with_stitch(1, 1));
-  EXPECT_NE(e.find("face 3 (around (1.55, 0.5, 0)): they are reached only from above (edge 7-3), so "
-                   "rows would run into them head-on; add a start at their own boundary, e.g. "
-                   "start: [{edge: [9, 10]}]"),
-            std::string::npos)
+  std::string e =
+      labeling_error(build_coarse_mesh("hang.obj", v, faces), project_with_stitch(1, 1));
+  EXPECT_NE(
+      e.find("face 3 (around (1.55, 0.5, 0)): they are reached only from above (edge 7-3), so "
+             "rows would run into them head-on; add a start at their own boundary, e.g. "
+             "start: [{edge: [9, 10]}]"),
+      std::string::npos)
       << e;
 }
 
@@ -166,7 +171,8 @@ TEST(Labeling, RowsStopAtMarkedMismatchEdges) {
   p.mismatch_edges.push_back({1, 4, 7});  // the edge between the two faces
   std::string e = labeling_error(m, p);
   EXPECT_NE(e.find("face 2 (around"), std::string::npos) << e;
-  EXPECT_NE(e.find("they are reached only across edge 5-2, where rows stop"), std::string::npos) << e;
+  EXPECT_NE(e.find("they are reached only across edge 5-2, where rows stop"), std::string::npos)
+      << e;
 }
 
 TEST(Labeling, PolygonsAndUnlabelledTrianglesAreExplained) {
@@ -206,7 +212,8 @@ TEST(Generation, CountsAreSharedAndShapingIsSpread) {
     ++decreases;
     for (Halfedge h : g.mesh.halfedges(f)) {
       Face above = g.mesh.neighbour(h);
-      if (g.mesh.role[h] == EdgeRole::top && above.valid() && g.mesh.stitch[above] == StitchType::k2tog)
+      if (g.mesh.role[h] == EdgeRole::top && above.valid() &&
+          g.mesh.stitch[above] == StitchType::k2tog)
         ++stacked;
     }
   }
@@ -249,7 +256,9 @@ TEST(Generation, ShortRowWedgeTurnsInItsTriangle) {
     validate(g.mesh);
     std::uint32_t turns = 0;
     for (Face f : g.mesh.faces()) turns += info(g.mesh.stitch[f]).wales_adjacent;
-    EXPECT_EQ(turns, g.segments[label_coarse_mesh(m, p).find(m, CoarseFace(2), CoarseRole::right).index()] / 2);
+    EXPECT_EQ(
+        turns,
+        g.segments[label_coarse_mesh(m, p).find(m, CoarseFace(2), CoarseRole::right).index()] / 2);
     Compilation c = compile_stitch_mesh(std::move(g.mesh), "wedge");
     EXPECT_TRUE(c.knittability.knittable) << check_report(c);
   }

@@ -41,7 +41,8 @@ class LabelingCli : public ::testing::Test {
 };
 
 TEST_F(LabelingCli, NewWritesMeshAndProjectThatCheck) {
-  ASSERT_EQ(skein("new tube --circumference 40cm --length 20cm -o " + at("tube")), 0) << read("err");
+  ASSERT_EQ(skein("new tube --circumference 40cm --length 20cm -o " + at("tube")), 0)
+      << read("err");
   EXPECT_TRUE(fs::exists(at("tube.obj")));
   EXPECT_NE(read("tube.yaml").find("mesh: tube.obj"), std::string::npos);
   EXPECT_EQ(skein("check " + at("tube.yaml")), 0) << read("err");
@@ -70,8 +71,9 @@ TEST_F(LabelingCli, RenderAndGenerateWriteWholeFiles) {
 TEST_F(LabelingCli, ProjectErrorsNameTheLineAndLeaveNothing) {
   std::ofstream(at("p.yaml")) << "mesh: ../nowhere.obj\ngauge: {stiches: 20}\n";
   EXPECT_EQ(skein("render " + at("p.yaml") + " -o " + at("p.svg")), 2);
-  EXPECT_NE(read("err").find("p.yaml:2: unknown field 'stiches' in gauge; did you mean 'stitches'?"),
-            std::string::npos)
+  EXPECT_NE(
+      read("err").find("p.yaml:2: unknown field 'stiches' in gauge; did you mean 'stitches'?"),
+      std::string::npos)
       << read("err");
   EXPECT_FALSE(fs::exists(at("p.svg")));
 }

@@ -88,8 +88,8 @@ TEST(Project, MisspelledFieldNamesLineAndNearestName) {
             "dir/p.yaml:2: unknown field 'guage' in the project; did you mean 'gauge'? (known: "
             "mesh, unit, gauge, stitch_size, start, pattern, patterns, short_rows, mismatches, "
             "yarn, shift_paths, shift_option, target)\n      2 | guage: {stitches: 20}");
-  EXPECT_NE(error_of("mesh: m.obj\ngauge:\n  stiches: 20\n").find(
-                ":3: unknown field 'stiches' in gauge; did you mean 'stitches'?"),
+  EXPECT_NE(error_of("mesh: m.obj\ngauge:\n  stiches: 20\n")
+                .find(":3: unknown field 'stiches' in gauge; did you mean 'stitches'?"),
             std::string::npos);
   EXPECT_NE(error_of("mesh: m.obj\nshort_rows: {methd: sr5}\n").find("did you mean 'method'?"),
             std::string::npos);
@@ -102,10 +102,13 @@ TEST(Project, BadValuesNameWhatWasExpected) {
   EXPECT_NE(error_of("mesh: m.obj\ngauge: {stitches: -3}\n")
                 .find("expected stitches per 10 cm (a positive number), found '-3'"),
             std::string::npos);
-  EXPECT_NE(error_of("mesh: m.obj\nstart: [{edge: [1]}]\n").find("expected an edge as its two vertex numbers"),
+  EXPECT_NE(error_of("mesh: m.obj\nstart: [{edge: [1]}]\n")
+                .find("expected an edge as its two vertex numbers"),
             std::string::npos);
-  EXPECT_NE(error_of("mesh: m.obj\nstart: [{vertex: 0}]\n").find("a number from 1"), std::string::npos);
-  EXPECT_NE(error_of("mesh: m.obj\nunit: furlong\n").find("unknown unit 'furlong'"), std::string::npos);
+  EXPECT_NE(error_of("mesh: m.obj\nstart: [{vertex: 0}]\n").find("a number from 1"),
+            std::string::npos);
+  EXPECT_NE(error_of("mesh: m.obj\nunit: furlong\n").find("unknown unit 'furlong'"),
+            std::string::npos);
   EXPECT_NE(error_of("mesh: m.obj\nyarn: {default: spare}\n").find("unknown yarn handling 'spare'"),
             std::string::npos);
   EXPECT_NE(error_of("unit: cm\n").find("expected 'mesh: FILE.obj'"), std::string::npos);

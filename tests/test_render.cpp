@@ -34,7 +34,8 @@ TEST(Render, StitchMeshDrawsEveryFaceInItsColour) {
 }
 
 TEST(Render, ShortRowFacesAreRed) {
-  Project p = read_project(std::string(SKEIN_SOURCE_DIR) + "/samples/short-row-wedge/short-row-wedge.yaml");
+  Project p =
+      read_project(std::string(SKEIN_SOURCE_DIR) + "/samples/short-row-wedge/short-row-wedge.yaml");
   GeneratedStitchMesh g = build_project(p);
   std::ostringstream out;
   render_stitch_mesh_svg(g.mesh, "wedge", out);

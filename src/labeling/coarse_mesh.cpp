@@ -44,7 +44,9 @@ float CoarseMesh::length(CoarseHalfedge h) const {
   return std::hypot(b.x - a.x, b.y - a.y, b.z - a.z);
 }
 
-std::string format_point(Vec3 p) { return fmt::format("({:.3g}, {:.3g}, {:.3g})", p.x, p.y, p.z); }
+std::string format_point(Vec3 p) {
+  return fmt::format("({:.3g}, {:.3g}, {:.3g})", p.x, p.y, p.z);
+}
 
 std::string CoarseMesh::describe(CoarseHalfedge h) const {
   return fmt::format("edge {}-{}", tail(h).index() + 1, head(h).index() + 1);
@@ -67,8 +69,8 @@ CoarseMesh build_coarse_mesh(std::string source, std::vector<Vec3> positions,
                                   f.index() + 1, corners.size()));
     for (std::uint32_t v : corners) {
       if (v >= m.num_vertices())
-        throw MeshError(fmt::format("{}: face {} uses vertex {}, but there are only {}",
-                                    m.source, f.index() + 1, v + 1, m.num_vertices()));
+        throw MeshError(fmt::format("{}: face {} uses vertex {}, but there are only {}", m.source,
+                                    f.index() + 1, v + 1, m.num_vertices()));
       m.outgoing_[v].push_back(CoarseHalfedge(m.num_halfedges()));
       m.tail_.push_back(CoarseVertex(v));
       m.face_.push_back(f);
@@ -79,8 +81,8 @@ CoarseMesh build_coarse_mesh(std::string source, std::vector<Vec3> positions,
   for (CoarseHalfedge h : m.halfedges()) {
     CoarseVertex a = m.tail(h), b = m.head(h);
     if (a == b)
-      throw MeshError(fmt::format("{}: face {} repeats vertex {}", m.source,
-                                  m.face(h).index() + 1, a.index() + 1));
+      throw MeshError(fmt::format("{}: face {} repeats vertex {}", m.source, m.face(h).index() + 1,
+                                  a.index() + 1));
     for (CoarseHalfedge o : m.outgoing_[a.index()])
       if (o != h && m.head(o) == b)
         throw MeshError(fmt::format(
@@ -101,7 +103,8 @@ CoarseMesh read_coarse_mesh(const std::string& path) {
   config.vertex_color = false;
   tinyobj::ObjReader reader;
   if (!reader.ParseFromFile(path, config))
-    throw Error(fmt::format("{}: {}", path, reader.Error().empty() ? "cannot read" : reader.Error()));
+    throw Error(
+        fmt::format("{}: {}", path, reader.Error().empty() ? "cannot read" : reader.Error()));
   const auto& v = reader.GetAttrib().vertices;
   std::vector<Vec3> positions;
   for (std::size_t i = 0; i + 2 < v.size(); i += 3) positions.push_back({v[i], v[i + 1], v[i + 2]});

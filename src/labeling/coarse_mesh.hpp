@@ -20,10 +20,10 @@ using CoarseFace = Handle<struct CoarseFaceTag>;
 // named by its two vertices, as in the file (1-based in every message).
 class CoarseMesh {
  public:
-  std::string source;                  // file name, for messages
-  std::vector<Vec3> position;          // per vertex
-  std::vector<std::string> groups;     // OBJ group names ("" for faces before any group)
-  std::vector<std::uint32_t> group;    // per face: index into groups
+  std::string source;                // file name, for messages
+  std::vector<Vec3> position;        // per vertex
+  std::vector<std::string> groups;   // OBJ group names ("" for faces before any group)
+  std::vector<std::uint32_t> group;  // per face: index into groups
 
   std::uint32_t num_vertices() const { return static_cast<std::uint32_t>(position.size()); }
   std::uint32_t num_faces() const { return static_cast<std::uint32_t>(face_first_.size() - 1); }

@@ -19,9 +19,10 @@ CoarseHalfedge find_project_edge(const CoarseMesh& mesh, const Project& project,
   CoarseHalfedge h = mesh.find_halfedge(CoarseVertex(ref.a), CoarseVertex(ref.b));
   if (!h.valid()) h = mesh.find_halfedge(CoarseVertex(ref.b), CoarseVertex(ref.a));
   if (!h.valid())
-    throw Error(fmt::format("{}:{}: vertices {} and {} share no edge in {}; expected the two ends "
-                            "of an edge of the coarse mesh",
-                            project.file, ref.line, ref.a + 1, ref.b + 1, mesh.source));
+    throw Error(
+        fmt::format("{}:{}: vertices {} and {} share no edge in {}; expected the two ends "
+                    "of an edge of the coarse mesh",
+                    project.file, ref.line, ref.a + 1, ref.b + 1, mesh.source));
   return h;
 }
 
@@ -63,9 +64,10 @@ class Labeler {
                                 mark.line, mark.face + 1, m_.source, m_.num_faces()));
       CoarseFace f(mark.face);
       if (m_.degree(f) > 4)
-        throw Error(fmt::format("{}:{}: face {} has {} sides; a short-row face is a triangle or "
-                                "a quad",
-                                p_.file, mark.line, mark.face + 1, m_.degree(f)));
+        throw Error(
+            fmt::format("{}:{}: face {} has {} sides; a short-row face is a triangle or "
+                        "a quad",
+                        p_.file, mark.line, mark.face + 1, m_.degree(f)));
       L_.short_row[f.index()] = 1;
       if (!mark.wide_edge) continue;
       CoarseHalfedge h = find_project_edge(m_, p_, *mark.wide_edge);
@@ -199,7 +201,8 @@ class Labeler {
   void choose_wide_sides() {
     for (CoarseFace f : m_.faces()) {
       if (!L_.short_row[f.index()] || m_.degree(f) != 4 || !labelled(f)) continue;
-      CoarseHalfedge left = L_.find(m_, f, CoarseRole::left), right = L_.find(m_, f, CoarseRole::right);
+      CoarseHalfedge left = L_.find(m_, f, CoarseRole::left),
+                     right = L_.find(m_, f, CoarseRole::right);
       CoarseHalfedge wide = wide_mark_[f.index()];
       if (wide.valid() && wide != left && wide != right)
         throw LabelingError(fmt::format(
@@ -218,9 +221,10 @@ class Labeler {
       for (CoarseHalfedge c : m_.halfedges())
         if (m_.is_border(c) && m_.tail(c).index() == s.edge.a) h = c;
       if (!h.valid())
-        throw Error(fmt::format("{}:{}: vertex {} is not on an open boundary of {}; expected a "
-                                "vertex of a boundary loop",
-                                p_.file, s.edge.line, s.edge.a + 1, m_.source));
+        throw Error(
+            fmt::format("{}:{}: vertex {} is not on an open boundary of {}; expected a "
+                        "vertex of a boundary loop",
+                        p_.file, s.edge.line, s.edge.a + 1, m_.source));
       seeds_.push_back(h);
       return;
     }
@@ -254,9 +258,10 @@ class Labeler {
     for (std::uint32_t i : faces) {
       CoarseFace f(i);
       if (m_.degree(f) > 4)
-        return fmt::format("face {} has {} sides; labeling knows quads and triangles (short-row "
-                           "ends) only",
-                           i + 1, m_.degree(f));
+        return fmt::format(
+            "face {} has {} sides; labeling knows quads and triangles (short-row "
+            "ends) only",
+            i + 1, m_.degree(f));
       if (pending_[i].valid())
         return fmt::format(
             "triangle {} is reached only from below ({}), so which side carries its short rows "
@@ -278,25 +283,28 @@ class Labeler {
         if (is_side(r) && !from_side.valid()) from_side = h;
       }
     if (from_side.valid())
-      return fmt::format("they are reached only across {}, where rows stop (a mismatch mark or a "
-                         "face rows cannot cross); add a start for them",
-                         m_.describe(from_side));
+      return fmt::format(
+          "they are reached only across {}, where rows stop (a mismatch mark or a "
+          "face rows cannot cross); add a start for them",
+          m_.describe(from_side));
     if (from_above.valid() && !border.valid())
-      return fmt::format("they form a ring with no open boundary, reached only from above ({}); "
-                         "add a start on one of their edges (a cast-on along it)",
-                         m_.describe(from_above));
+      return fmt::format(
+          "they form a ring with no open boundary, reached only from above ({}); "
+          "add a start on one of their edges (a cast-on along it)",
+          m_.describe(from_above));
     if (from_above.valid())
-      return fmt::format("they are reached only from above ({}), so rows would run into them "
-                         "head-on; add a start at their own boundary, e.g. start: [{{edge: [{}, "
-                         "{}]}}]",
-                         m_.describe(from_above), m_.tail(border).index() + 1,
-                         m_.head(border).index() + 1);
+      return fmt::format(
+          "they are reached only from above ({}), so rows would run into them "
+          "head-on; add a start at their own boundary, e.g. start: [{{edge: [{}, "
+          "{}]}}]",
+          m_.describe(from_above), m_.tail(border).index() + 1, m_.head(border).index() + 1);
     if (!border.valid())
       return "they form a closed surface with no open boundary; add a start on one of their "
              "edges (a cast-on along it)";
-    return fmt::format("they are not connected to any start; add one at their boundary, e.g. "
-                       "start: [{{edge: [{}, {}]}}]",
-                       m_.tail(border).index() + 1, m_.head(border).index() + 1);
+    return fmt::format(
+        "they are not connected to any start; add one at their boundary, e.g. "
+        "start: [{{edge: [{}, {}]}}]",
+        m_.tail(border).index() + 1, m_.head(border).index() + 1);
   }
 
   void report_leftovers() const {

@@ -18,7 +18,9 @@ namespace skein {
 // bottom runs left to right, the right side up, the top right to left, the left side down.
 // The course direction of a face is left to right; rows may be knit either way.
 enum class CoarseRole : std::uint8_t { none, bottom, right, top, left };
-inline bool is_side(CoarseRole r) { return r == CoarseRole::left || r == CoarseRole::right; }
+inline bool is_side(CoarseRole r) {
+  return r == CoarseRole::left || r == CoarseRole::right;
+}
 
 struct Labeling {
   std::vector<CoarseRole> role;         // per coarse halfedge (none on unlabelled faces)

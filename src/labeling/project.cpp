@@ -50,8 +50,8 @@ class Reader {
     for (const auto& item : map) {
       std::string key = item.first.as<std::string>();
       if (std::find(known.begin(), known.end(), key) == known.end())
-        fail(item.first, fmt::format("unknown field '{}' in {}; did you mean '{}'? (known: {})", key,
-                                     what, nearest_name(key, known), fmt::join(known, ", ")));
+        fail(item.first, fmt::format("unknown field '{}' in {}; did you mean '{}'? (known: {})",
+                                     key, what, nearest_name(key, known), fmt::join(known, ", ")));
       visit(key, item.second);
     }
   }
@@ -72,9 +72,11 @@ class Reader {
   }
   std::uint32_t index(const YAML::Node& node, std::string_view what) const {
     std::string s = text(node, what);
-    if (!s.empty() && std::all_of(s.begin(), s.end(), ::isdigit) && s.size() < 10 && std::stoul(s) > 0)
+    if (!s.empty() && std::all_of(s.begin(), s.end(), ::isdigit) && s.size() < 10 &&
+        std::stoul(s) > 0)
       return static_cast<std::uint32_t>(std::stoul(s) - 1);
-    fail(node, fmt::format("expected {} (a number from 1, as in the OBJ file), found '{}'", what, s));
+    fail(node,
+         fmt::format("expected {} (a number from 1, as in the OBJ file), found '{}'", what, s));
   }
   CoarseEdgeRef edge(const YAML::Node& node) const {
     if (!node.IsSequence() || node.size() != 2)
@@ -115,11 +117,10 @@ void read_gauge(const Reader& r, const YAML::Node& node, Project& p) {
 }
 
 void read_stitch_size(const Reader& r, const YAML::Node& node, Project& p) {
-  r.fields(node, {"width", "height"}, "stitch_size",
-           [&](const std::string& key, const YAML::Node& v) {
-             (key == "width" ? p.stitch_width : p.stitch_height) =
-                 r.number(v, "a size in mesh units");
-           });
+  r.fields(
+      node, {"width", "height"}, "stitch_size", [&](const std::string& key, const YAML::Node& v) {
+        (key == "width" ? p.stitch_width : p.stitch_height) = r.number(v, "a size in mesh units");
+      });
   if (!p.stitch_width || !p.stitch_height) r.fail(node, "expected both width and height");
 }
 
@@ -147,32 +148,35 @@ void read_start(const Reader& r, const YAML::Node& node, Project& p) {
 
 void read_short_rows(const Reader& r, const YAML::Node& node, Project& p) {
   constexpr std::string_view kMethods[] = {"sr4", "sr5"};
-  r.fields(node, {"method", "faces"}, "short_rows", [&](const std::string& key, const YAML::Node& v) {
-    if (key == "method") {
-      p.short_row_method = static_cast<ShortRowMethod>(r.choice(v, "short-row method", kMethods));
-      return;
-    }
-    if (!v.IsSequence()) r.fail(v, "expected a list of faces, e.g. [12, {face: 13, wide_edge: [4, 5]}]");
-    for (const auto& item : v) {
-      ShortRowFaceMark mark{0, std::nullopt, r.line(item)};
-      if (item.IsScalar()) {
-        mark.face = r.index(item, "a face number");
-      } else {
-        bool has_face = false;
-        r.fields(item, {"face", "wide_edge"}, "a short-row face",
-                 [&](const std::string& k, const YAML::Node& w) {
-                   if (k == "face") {
-                     mark.face = r.index(w, "a face number");
-                     has_face = true;
-                   } else {
-                     mark.wide_edge = r.edge(w);
-                   }
-                 });
-        if (!has_face) r.fail(item, "expected 'face: N'");
-      }
-      p.short_row_faces.push_back(mark);
-    }
-  });
+  r.fields(node, {"method", "faces"}, "short_rows",
+           [&](const std::string& key, const YAML::Node& v) {
+             if (key == "method") {
+               p.short_row_method =
+                   static_cast<ShortRowMethod>(r.choice(v, "short-row method", kMethods));
+               return;
+             }
+             if (!v.IsSequence())
+               r.fail(v, "expected a list of faces, e.g. [12, {face: 13, wide_edge: [4, 5]}]");
+             for (const auto& item : v) {
+               ShortRowFaceMark mark{0, std::nullopt, r.line(item)};
+               if (item.IsScalar()) {
+                 mark.face = r.index(item, "a face number");
+               } else {
+                 bool has_face = false;
+                 r.fields(item, {"face", "wide_edge"}, "a short-row face",
+                          [&](const std::string& k, const YAML::Node& w) {
+                            if (k == "face") {
+                              mark.face = r.index(w, "a face number");
+                              has_face = true;
+                            } else {
+                              mark.wide_edge = r.edge(w);
+                            }
+                          });
+                 if (!has_face) r.fail(item, "expected 'face: N'");
+               }
+               p.short_row_faces.push_back(mark);
+             }
+           });
 }
 
 void read_yarn(const Reader& r, const YAML::Node& node, Project& p) {
@@ -210,17 +214,21 @@ std::uint8_t read_shift_option(const Reader& r, const YAML::Node& node) {
 }
 
 void read_shift_paths(const Reader& r, const YAML::Node& node, Project& p) {
-  if (!node.IsSequence()) r.fail(node, "expected a list of edges or {edge: [a, b], option: up-left}");
+  if (!node.IsSequence())
+    r.fail(node, "expected a list of edges or {edge: [a, b], option: up-left}");
   for (const auto& item : node) {
     if (item.IsSequence()) {
       p.shift_paths.push_back({r.edge(item), p.shift_option});
       continue;
     }
     ShiftPathMark mark{{}, 0};
-    r.fields(item, {"edge", "option"}, "a shift-path", [&](const std::string& key, const YAML::Node& v) {
-      if (key == "edge") mark.edge = r.edge(v);
-      else mark.option = read_shift_option(r, v);
-    });
+    r.fields(item, {"edge", "option"}, "a shift-path",
+             [&](const std::string& key, const YAML::Node& v) {
+               if (key == "edge")
+                 mark.edge = r.edge(v);
+               else
+                 mark.option = read_shift_option(r, v);
+             });
     if (mark.edge.line == 0) r.fail(item, "expected 'edge: [a, b]'");
     p.shift_paths.push_back(mark);
   }
@@ -261,16 +269,16 @@ std::string nearest_name(std::string_view word, const std::vector<std::string_vi
       row[0] = i;
       for (std::size_t j = 1; j <= name.size(); ++j) {
         std::size_t up = row[j];
-        row[j] = std::min({row[j] + 1, row[j - 1] + 1,
-                           diagonal + (std::tolower(word[i - 1]) == std::tolower(name[j - 1]) ? 0 : 1)});
+        row[j] =
+            std::min({row[j] + 1, row[j - 1] + 1,
+                      diagonal + (std::tolower(word[i - 1]) == std::tolower(name[j - 1]) ? 0 : 1)});
         diagonal = up;
       }
     }
     return row.back();
   };
-  return std::string(*std::min_element(names.begin(), names.end(), [&](auto a, auto b) {
-    return distance(a) < distance(b);
-  }));
+  return std::string(*std::min_element(names.begin(), names.end(),
+                                       [&](auto a, auto b) { return distance(a) < distance(b); }));
 }
 
 bool is_project_file(const std::string& path) {
@@ -291,8 +299,8 @@ Project parse_project(const std::string& text, const std::string& file) {
   std::optional<YAML::Node> shift_paths;
   if (!root.IsMap()) r.fail(root, "expected a project: at least 'mesh: FILE.obj'");
   constexpr std::string_view kUnits[] = {"mm", "cm", "m", "in"};
-  const Names known = {"mesh",    "unit",       "gauge",      "stitch_size", "start",
-                       "pattern", "patterns",   "short_rows", "mismatches",  "yarn",
+  const Names known = {"mesh",        "unit",         "gauge",      "stitch_size", "start",
+                       "pattern",     "patterns",     "short_rows", "mismatches",  "yarn",
                        "shift_paths", "shift_option", "target"};
   r.fields(root, known, "the project", [&](const std::string& key, const YAML::Node& v) {
     if (key == "mesh") {
@@ -311,7 +319,8 @@ Project parse_project(const std::string& text, const std::string& file) {
       p.pattern = read_pattern(r, v);
     } else if (key == "patterns") {
       if (!v.IsMap()) r.fail(v, "expected OBJ group names with a pattern each, e.g. cuff: k2p2");
-      for (const auto& item : v) p.group_patterns[item.first.as<std::string>()] = read_pattern(r, item.second);
+      for (const auto& item : v)
+        p.group_patterns[item.first.as<std::string>()] = read_pattern(r, item.second);
     } else if (key == "short_rows") {
       read_short_rows(r, v, p);
     } else if (key == "mismatches") {
@@ -333,7 +342,9 @@ Project parse_project(const std::string& text, const std::string& file) {
   return p;
 }
 
-Project read_project(const std::string& path) { return parse_project(read_file(path), path); }
+Project read_project(const std::string& path) {
+  return parse_project(read_file(path), path);
+}
 
 std::string project_target_option(const std::string& path, const std::string& key) {
   if (!is_project_file(path)) return "";

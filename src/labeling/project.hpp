@@ -28,7 +28,7 @@ struct StartSeed {
 };
 
 struct ShortRowFaceMark {
-  std::uint32_t face = 0;                // 0-based
+  std::uint32_t face = 0;                  // 0-based
   std::optional<CoarseEdgeRef> wide_edge;  // the side with the extra rows (default: the longer)
   int line = 0;
 };
@@ -67,8 +67,8 @@ struct Project {
   std::vector<CoarseEdgeRef> mismatch_edges;  // rows stop here (perpendicular mismatches)
   YarnHandling default_yarn = YarnHandling::by_default;
   std::vector<YarnMark> yarn_marks;
-  std::vector<ShiftPathMark> shift_paths;  // coarse side edges a tube's shift-path follows
-  std::uint8_t shift_option = 1;           // for paths skein places (default up-right)
+  std::vector<ShiftPathMark> shift_paths;     // coarse side edges a tube's shift-path follows
+  std::uint8_t shift_option = 1;              // for paths skein places (default up-right)
   std::map<std::string, std::string> target;  // passed through to targets
 };
 

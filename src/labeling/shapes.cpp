@@ -16,7 +16,9 @@ namespace {
 constexpr std::uint32_t kSides = 8;  // coarse faces around a body tube
 constexpr double kPi = std::numbers::pi;
 
-Vec3 sub(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+Vec3 sub(Vec3 a, Vec3 b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
 
 // Collects faces, each turned so that its normal points where `outward` says, and groups.
 class Draft {
@@ -26,11 +28,13 @@ class Draft {
     return static_cast<std::uint32_t>(positions_.size() - 1);
   }
   // True when the corners run counter-clockwise seen from where `outward` points.
-  bool faces_outward(const std::vector<std::uint32_t>& corners, const std::function<Vec3(Vec3)>& outward) const {
+  bool faces_outward(const std::vector<std::uint32_t>& corners,
+                     const std::function<Vec3(Vec3)>& outward) const {
     Vec3 n, c;
     for (std::size_t i = 0; i < corners.size(); ++i) {  // Newell's normal
       Vec3 a = positions_[corners[i]], b = positions_[corners[(i + 1) % corners.size()]];
-      n = {n.x + (a.y - b.y) * (a.z + b.z), n.y + (a.z - b.z) * (a.x + b.x), n.z + (a.x - b.x) * (a.y + b.y)};
+      n = {n.x + (a.y - b.y) * (a.z + b.z), n.y + (a.z - b.z) * (a.x + b.x),
+           n.z + (a.x - b.x) * (a.y + b.y)};
       c = {c.x + a.x, c.y + a.y, c.z + a.z};
     }
     float k = static_cast<float>(corners.size());
@@ -50,14 +54,16 @@ class Draft {
     std::vector<std::uint32_t> r;
     for (std::uint32_t j = 0; j < kSides; ++j) {
       double a = 2 * kPi * j / kSides;
-      r.push_back(vertex(cx + radius * std::cos(a), y + (lift.empty() ? 0 : lift[j]), cz - radius * std::sin(a)));
+      r.push_back(vertex(cx + radius * std::cos(a), y + (lift.empty() ? 0 : lift[j]),
+                         cz - radius * std::sin(a)));
     }
     return r;
   }
   // Faces between two rings of equal size, outward from the axis through `axis_point`
   // along `axis`. Returns the first face's index.
-  std::uint32_t band(const std::vector<std::uint32_t>& below, const std::vector<std::uint32_t>& above,
-                     Vec3 axis_point, Vec3 axis, const std::string& group) {
+  std::uint32_t band(const std::vector<std::uint32_t>& below,
+                     const std::vector<std::uint32_t>& above, Vec3 axis_point, Vec3 axis,
+                     const std::string& group) {
     std::uint32_t first = static_cast<std::uint32_t>(faces_.size());
     auto outward = [=](Vec3 p) {
       Vec3 d = sub(p, axis_point);
@@ -95,7 +101,8 @@ std::uint32_t pieces(double length, double piece) {
   return std::max<std::uint32_t>(1, static_cast<std::uint32_t>(std::lround(length / piece)));
 }
 
-std::string project_text(const std::string& name, const std::string& what, const std::string& extra) {
+std::string project_text(const std::string& name, const std::string& what,
+                         const std::string& extra) {
   return fmt::format(
       "# {}: made by `skein new`. Every field is documented in docs/formats.md.\n"
       "mesh: {}.obj\n"
@@ -124,14 +131,15 @@ Shape sheet(const ShapeSize& s, const std::string& name) {
   Draft d;
   std::vector<std::uint32_t> v;
   for (std::uint32_t r = 0; r <= rows; ++r)
-    for (std::uint32_t c = 0; c <= cols; ++c) v.push_back(d.vertex(w * c / cols - w / 2, l * r / rows, 0));
+    for (std::uint32_t c = 0; c <= cols; ++c)
+      v.push_back(d.vertex(w * c / cols - w / 2, l * r / rows, 0));
   for (std::uint32_t r = 0; r < rows; ++r)
     for (std::uint32_t c = 0; c < cols; ++c) {
       std::uint32_t a = r * (cols + 1) + c;
       d.add({v[a], v[a + 1], v[a + cols + 2], v[a + cols + 1]}, r == 0 ? "border" : "body");
     }
-  return {d.finish(name + ".obj"),
-          project_text(name, fmt::format("a flat sheet {} x {} cm", w, l), "patterns: {border: k2p2}\n")};
+  return {d.finish(name + ".obj"), project_text(name, fmt::format("a flat sheet {} x {} cm", w, l),
+                                                "patterns: {border: k2p2}\n")};
 }
 
 Shape straight_tube(const ShapeSize& s, const std::string& name) {
@@ -144,7 +152,8 @@ Shape straight_tube(const ShapeSize& s, const std::string& name) {
   }
   Draft d;
   tube(d, heights, radii, "body");
-  return {d.finish(name + ".obj"), project_text(name, fmt::format("a tube {} cm round, {} cm long", c, l), "")};
+  return {d.finish(name + ".obj"),
+          project_text(name, fmt::format("a tube {} cm round, {} cm long", c, l), "")};
 }
 
 Shape hat(const ShapeSize& s, const std::string& name) {
@@ -158,7 +167,8 @@ Shape hat(const ShapeSize& s, const std::string& name) {
     radii.push_back(r * crown[i]);
   }
   Draft d;
-  std::vector<std::uint32_t> brim = d.ring(heights[0], radii[0]), top = d.ring(heights[1], radii[1]);
+  std::vector<std::uint32_t> brim = d.ring(heights[0], radii[0]),
+                             top = d.ring(heights[1], radii[1]);
   d.band(brim, top, {0, 0, 0}, kUp, "brim");
   tube(d, std::vector<double>(heights.begin() + 1, heights.end()),
        std::vector<double>(radii.begin() + 1, radii.end()), "crown", top);
@@ -231,8 +241,8 @@ Shape sweater(const ShapeSize& s, const std::string& name) {
   }
   // Sleeves along +x and -x, knit from the cuff inwards: rings of 4 (top, front, bottom,
   // back); the innermost ring shares the body's front and back vertices next to the armpit.
-  auto add_sleeve = [&](int sign, std::uint32_t front, std::uint32_t back, std::uint32_t& top_vertex,
-                        std::uint32_t& cuff_vertex) {
+  auto add_sleeve = [&](int sign, std::uint32_t front, std::uint32_t back,
+                        std::uint32_t& top_vertex, std::uint32_t& cuff_vertex) {
     Vec3 axis_point{0, static_cast<float>(body + dip), 0};
     Vec3 axis{1, 0, 0};
     std::vector<std::vector<std::uint32_t>> rings;
@@ -257,21 +267,26 @@ Shape sweater(const ShapeSize& s, const std::string& name) {
                                        left_top,  below[5], below[6], below[7]};
   const double shrink[] = {0.85, 0.7, 0.55};
   for (std::size_t i = 0; i < std::size(shrink); ++i) {
-    std::vector<std::uint32_t> above = d.ring(body + dip + yoke * (i + 1) / std::size(shrink), r * shrink[i]);
+    std::vector<std::uint32_t> above =
+        d.ring(body + dip + yoke * (i + 1) / std::size(shrink), r * shrink[i]);
     d.band(yoke_ring, above, {0, 0, 0}, kUp, i + 1 < std::size(shrink) ? "yoke" : "neck");
     yoke_ring = std::move(above);
   }
-  return {d.finish(name + ".obj"),
-          project_text(name, fmt::format("a sweater {} cm round, body {} cm, sleeves {} cm", c, body, sleeve),
-                       fmt::format("start:                 # the hem, then both cuffs\n"
-                                   "  - vertex: {}\n  - vertex: {}\n  - vertex: {}\n"
-                                   "patterns: {{hem: k2p2, cuff: k2p2, neck: k2p2}}\n",
-                                   hem[2] + 1, right_cuff + 1, left_cuff + 1))};
+  return {
+      d.finish(name + ".obj"),
+      project_text(name,
+                   fmt::format("a sweater {} cm round, body {} cm, sleeves {} cm", c, body, sleeve),
+                   fmt::format("start:                 # the hem, then both cuffs\n"
+                               "  - vertex: {}\n  - vertex: {}\n  - vertex: {}\n"
+                               "patterns: {{hem: k2p2, cuff: k2p2, neck: k2p2}}\n",
+                               hem[2] + 1, right_cuff + 1, left_cuff + 1))};
 }
 
 }  // namespace
 
-std::vector<std::string> shape_kinds() { return {"sheet", "tube", "hat", "sock", "sweater"}; }
+std::vector<std::string> shape_kinds() {
+  return {"sheet", "tube", "hat", "sock", "sweater"};
+}
 
 Shape make_shape(const std::string& kind, const ShapeSize& size, const std::string& name) {
   if (size.circumference < 0 || size.width < 0 || size.length < 0)
@@ -285,7 +300,8 @@ Shape make_shape(const std::string& kind, const ShapeSize& size, const std::stri
 }
 
 double parse_length_cm(const std::string& text) {
-  constexpr std::pair<std::string_view, double> kUnits[] = {{"mm", 0.1}, {"cm", 1}, {"in", 2.54}, {"m", 100}};
+  constexpr std::pair<std::string_view, double> kUnits[] = {
+      {"mm", 0.1}, {"cm", 1}, {"in", 2.54}, {"m", 100}};
   std::size_t used = 0;
   double value = 0;
   try {
@@ -295,10 +311,12 @@ double parse_length_cm(const std::string& text) {
   }
   std::string_view unit = std::string_view(text).substr(used);
   for (auto [name, cm] : kUnits)
-    if (used > 0 && value > 0 && (unit == name || unit.empty())) return value * (unit.empty() ? 1 : cm);
-  throw UsageError(fmt::format("'{}' is not a length; expected a positive number with mm, cm, m "
-                               "or in, e.g. 40cm",
-                               text));
+    if (used > 0 && value > 0 && (unit == name || unit.empty()))
+      return value * (unit.empty() ? 1 : cm);
+  throw UsageError(
+      fmt::format("'{}' is not a length; expected a positive number with mm, cm, m "
+                  "or in, e.g. 40cm",
+                  text));
 }
 
 std::string write_shape(const Shape& shape, const std::string& path_without_extension) {

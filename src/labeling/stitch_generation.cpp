@@ -79,12 +79,13 @@ struct Segment {
   bool wide_left = false;               // short-row face: the wide side is the segment before
   std::uint32_t pairs = 0, passes = 0;  // short-row face: how many of each to place
   std::vector<Token> tokens;
-  std::uint32_t pairs_done() const {
-    return static_cast<std::uint32_t>(std::count_if(tokens.begin(), tokens.end(), [](auto t) { return t.pair; }));
+  std::uint32_t pairs_done = 0, passes_done = 0;
+  void place(Token t) {
+    tokens.push_back(t);
+    ++(t.pair ? pairs_done : passes_done);
   }
-  std::uint32_t passes_done() const { return static_cast<std::uint32_t>(tokens.size()) - pairs_done(); }
   bool complete() const {
-    return short_row ? pairs_done() == pairs && passes_done() == passes : done == rows;
+    return short_row ? pairs_done == pairs && passes_done == passes : done == rows;
   }
 };
 
@@ -98,14 +99,17 @@ class Generator {
     plan_rows();
     add_vertices();
     for (CoarseFace f : m_.faces()) {
-      if (L_.short_row[f.index()]) add_short_row_face(f);
-      else add_quad(f);
+      if (L_.short_row[f.index()])
+        add_short_row_face(f);
+      else
+        add_quad(f);
     }
     for (Vec3 p : positions_) builder_.add_vertex(p);
-    GeneratedStitchMesh out{std::move(builder_).build(), std::move(origin_), {}, closed_rows_,
-                            open_rows_, chains_};
+    GeneratedStitchMesh out{
+        std::move(builder_).build(), std::move(origin_), {}, closed_rows_, open_rows_, chains_};
     for (CoarseHalfedge h : m_.halfedges()) out.segments.push_back(segments(h));
-    for (auto [h, option] : shift_edges_) mark_edge(out.mesh, h, [&](Edge e) { out.mesh.shift_path[e] = option; });
+    for (auto [h, option] : shift_edges_)
+      mark_edge(out.mesh, h, [&](Edge e) { out.mesh.shift_path[e] = option; });
     choose_yarns(out);
     return out;
   }
@@ -114,7 +118,8 @@ class Generator {
   CoarseHalfedge side(CoarseFace f, CoarseRole r) const { return L_.find(m_, f, r); }
   std::uint32_t segments(CoarseHalfedge h) const { return count_[m_.canonical(h).index()]; }
   [[noreturn]] void fail(CoarseFace f, const std::string& what) const {
-    throw Error(fmt::format("{}: cannot generate stitches for {}: {}", m_.source, m_.describe(f), what));
+    throw Error(
+        fmt::format("{}: cannot generate stitches for {}: {}", m_.source, m_.describe(f), what));
   }
 
   // ------------------------------------------------------------------ counts
@@ -143,7 +148,8 @@ class Generator {
     count_.assign(n, 0);
     for (CoarseHalfedge h : m_.halfedges()) {
       std::uint32_t g = groups.find(h.index());
-      count_[h.index()] = std::max<std::uint32_t>(1, static_cast<std::uint32_t>(std::lround(sum[g] / weight[g])));
+      count_[h.index()] =
+          std::max<std::uint32_t>(1, static_cast<std::uint32_t>(std::lround(sum[g] / weight[g])));
     }
     auto group_count = [&](CoarseHalfedge h) -> std::uint32_t& {
       return count_[groups.find(m_.canonical(h).index())];
@@ -160,7 +166,9 @@ class Generator {
       for (CoarseFace f : m_.faces()) {
         if (L_.short_row[f.index()]) {
           CoarseHalfedge wide = side(f, L_.wide_side[f.index()]);
-          CoarseHalfedge narrow = side(f, L_.wide_side[f.index()] == CoarseRole::left ? CoarseRole::right : CoarseRole::left);
+          CoarseHalfedge narrow =
+              side(f, L_.wide_side[f.index()] == CoarseRole::left ? CoarseRole::right
+                                                                  : CoarseRole::left);
           std::uint32_t base = narrow.valid() ? group_count(narrow) : 0;
           std::uint32_t w = std::max(group_count(wide), base + 2);
           at_least(wide, w + (w - base) % 2);
@@ -177,13 +185,15 @@ class Generator {
   template <class Count>
   std::uint32_t rows_needed(CoarseFace f, Count& count) const {
     std::uint32_t nb = count(side(f, CoarseRole::bottom)), nt = count(side(f, CoarseRole::top));
-    std::uint32_t fixed = m_.is_border(side(f, CoarseRole::bottom)) + m_.is_border(side(f, CoarseRole::top));
+    std::uint32_t fixed =
+        m_.is_border(side(f, CoarseRole::bottom)) + m_.is_border(side(f, CoarseRole::top));
     std::uint32_t taper = nb == nt ? 0 : 1;
     while (!taper_fits(nb, nt, taper)) ++taper;
     return std::max<std::uint32_t>(1, fixed + taper);
   }
 
-  static std::uint32_t width_at(std::uint32_t nb, std::uint32_t nt, std::uint32_t i, std::uint32_t taper) {
+  static std::uint32_t width_at(std::uint32_t nb, std::uint32_t nt, std::uint32_t i,
+                                std::uint32_t taper) {
     return static_cast<std::uint32_t>(std::lround(nb + (double(nt) - nb) * i / taper));
   }
   static bool taper_fits(std::uint32_t nb, std::uint32_t nt, std::uint32_t taper) {
@@ -226,8 +236,8 @@ class Generator {
         first = g;
       }
       std::vector<CoarseFace> row{first};
-      for (CoarseFace g = across(first, CoarseRole::right, CoarseRole::left); g.valid() && g != first;
-           g = across(g, CoarseRole::right, CoarseRole::left))
+      for (CoarseFace g = across(first, CoarseRole::right, CoarseRole::left);
+           g.valid() && g != first; g = across(g, CoarseRole::right, CoarseRole::left))
         row.push_back(g);
       for (CoarseFace g : row) seen[g.index()] = 1;
       // An open row ending in a short-row triangle can only start at its other end.
@@ -248,10 +258,11 @@ class Generator {
     }
     for (std::size_t k = 0; k < p_.shift_paths.size(); ++k)
       if (!used_shift_marks_.count(k))
-        throw Error(fmt::format("{}:{}: {} is not a side of a ring of faces where rows can start; "
-                                "a shift-path runs up a side edge of faces knit in the round",
-                                p_.file, p_.shift_paths[k].edge.line,
-                                m_.describe(find_project_edge(m_, p_, p_.shift_paths[k].edge))));
+        throw Error(
+            fmt::format("{}:{}: {} is not a side of a ring of faces where rows can start; "
+                        "a shift-path runs up a side edge of faces knit in the round",
+                        p_.file, p_.shift_paths[k].edge.line,
+                        m_.describe(find_project_edge(m_, p_, p_.shift_paths[k].edge))));
   }
 
   std::vector<Segment> cut(const std::vector<CoarseFace>& faces, CoarseHalfedge first_side) {
@@ -278,7 +289,8 @@ class Generator {
 
   void plan_open_row(const std::vector<CoarseFace>& faces) {
     std::vector<Segment> segs = cut(faces, side(faces.front(), CoarseRole::left));
-    CoarseHalfedge left = side(faces.front(), CoarseRole::left), right = side(faces.back(), CoarseRole::right);
+    CoarseHalfedge left = side(faces.front(), CoarseRole::left),
+                   right = side(faces.back(), CoarseRole::right);
     // Enter where the yarn of a row below stopped, at an end with rows to knit.
     bool can_left = segs.front().rows > 0, can_right = segs.back().rows > 0;
     bool from_left = can_left;
@@ -298,7 +310,8 @@ class Generator {
       if (among(yarn_ends_, m_.tail(right)) && !among(yarn_ends_, m_.head(left))) from_left = false;
       // Else, free to choose: stop where a row above must start, so one yarn goes on.
       if (!among(yarn_ends_, m_.tail(right)) && !among(yarn_ends_, m_.head(left)))
-        from_left = among(wanted_starts_, stops_at(true)) || !among(wanted_starts_, stops_at(false));
+        from_left =
+            among(wanted_starts_, stops_at(true)) || !among(wanted_starts_, stops_at(false));
     }
     if (!can_left && !can_right)
       fail(faces.front(), fmt::format("this row of faces ({} to {}) is closed at both ends by "
@@ -312,9 +325,9 @@ class Generator {
 
   // Where a ring's shift-path runs and with which shift option (Fig. 3).
   struct PathChoice {
-    std::size_t face;      // the path runs up this face's left side
-    std::uint8_t option;   // the stitch mesh's ShiftOption
-    bool continued;        // the path of a ring below goes on here
+    std::size_t face;     // the path runs up this face's left side
+    std::uint8_t option;  // the stitch mesh's ShiftOption
+    bool continued;       // the path of a ring below goes on here
   };
 
   // The shift-path runs up a side edge where no short rows turn: a project mark, else where
@@ -323,8 +336,9 @@ class Generator {
     std::optional<PathChoice> marked, continued, first;
     for (std::size_t i = 0; i < faces.size(); ++i) {
       CoarseFace f = faces[i], before = faces[(i + faces.size() - 1) % faces.size()];
-      bool turns_here = (L_.short_row[f.index()] && L_.wide_side[f.index()] == CoarseRole::left) ||
-                        (L_.short_row[before.index()] && L_.wide_side[before.index()] == CoarseRole::right);
+      bool turns_here =
+          (L_.short_row[f.index()] && L_.wide_side[f.index()] == CoarseRole::left) ||
+          (L_.short_row[before.index()] && L_.wide_side[before.index()] == CoarseRole::right);
       if (turns_here) continue;
       CoarseHalfedge h = side(f, CoarseRole::left);
       for (std::size_t k = 0; k < p_.shift_paths.size(); ++k)
@@ -337,8 +351,9 @@ class Generator {
       if (!first) first = PathChoice{i, p_.shift_option, false};
     }
     if (!first)
-      fail(faces.front(), "every side of this ring of faces has short rows turning at it, so no "
-                          "shift-path can run through it");
+      fail(faces.front(),
+           "every side of this ring of faces has short rows turning at it, so no "
+           "shift-path can run through it");
     if (marked) {
       marked->continued = continued && continued->face == marked->face;
       return *marked;
@@ -349,8 +364,10 @@ class Generator {
   void plan_closed_row(const std::vector<CoarseFace>& faces) {
     PathChoice path = choose_path(faces);
     if (!path.continued) ++chains_;
-    std::vector<CoarseFace> rotated(faces.begin() + static_cast<std::ptrdiff_t>(path.face), faces.end());
-    rotated.insert(rotated.end(), faces.begin(), faces.begin() + static_cast<std::ptrdiff_t>(path.face));
+    std::vector<CoarseFace> rotated(faces.begin() + static_cast<std::ptrdiff_t>(path.face),
+                                    faces.end());
+    rotated.insert(rotated.end(), faces.begin(),
+                   faces.begin() + static_cast<std::ptrdiff_t>(path.face));
     CoarseHalfedge shift = side(rotated.front(), CoarseRole::left);
     shift_edges_.push_back({shift, path.option});
     chain_tops_.push_back({m_.tail(shift), path.option});
@@ -366,16 +383,21 @@ class Generator {
     const std::size_t ends = segs.size();
     std::size_t b = from_left ? 0 : ends;  // boundary: segment s lies between s and s+1
     bool right = from_left;
-    auto all_done = [&] { return std::all_of(segs.begin(), segs.end(), [](const Segment& s) { return s.complete(); }); };
+    auto all_done = [&] {
+      return std::all_of(segs.begin(), segs.end(), [](const Segment& s) { return s.complete(); });
+    };
     std::uint64_t limit = 8;
     for (const Segment& s : segs) limit += 4ull * (s.rows + s.pairs + s.passes);
     for (std::uint64_t steps = 0;; ++steps) {
       SKEIN_ASSERT(steps < limit, "the yarn walk of a coarse row ends");
       if ((right && b == ends) || (!right && b == 0)) {
         if (all_done()) return b == 0;
-        if (closed && !right) fail(faces.front(), "a short row would run backwards across the shift-path");
-        if (closed) b = 0;
-        else right = !right;
+        if (closed && !right)
+          fail(faces.front(), "a short row would run backwards across the shift-path");
+        if (closed)
+          b = 0;
+        else
+          right = !right;
         continue;
       }
       Segment& s = segs[right ? b : b - 1];
@@ -390,19 +412,19 @@ class Generator {
         continue;
       }
       bool from_wide = right == s.wide_left;
-      std::uint32_t pairs_done = s.pairs_done(), passes_done = s.passes_done();
+      const std::uint32_t pairs_done = s.pairs_done, passes_done = s.passes_done;
       // Turn where the wide side needs rows, spread so that the pairs are done by the last pass.
       if (from_wide && pairs_done < s.pairs) {
         bool must_turn = (closed && !right) || passes_done == s.passes;
         if (must_turn || pairs_done * s.passes < s.pairs * (passes_done + 1)) {
-          s.tokens.push_back({true, true, 0});
+          s.place({true, true, 0});
           right = !right;
           continue;
         }
       }
       if (passes_done == s.passes || (closed && !right))
         fail(s.face, "its short rows cannot all turn where the yarn reaches it");
-      s.tokens.push_back({false, from_wide, 0});
+      s.place({false, from_wide, 0});
       b = right ? b + 1 : b - 1;
     }
   }
@@ -427,7 +449,8 @@ class Generator {
       for (Token& t : s.tokens) {
         if (!t.pair) continue;
         ++j;
-        t.depth = j <= peak ? (columns - 1) * j / peak : (columns - 1) * (k + 1 - j) / (k + 1 - peak);
+        t.depth =
+            j <= peak ? (columns - 1) * j / peak : (columns - 1) * (k + 1 - j) / (k + 1 - peak);
       }
       tokens_[s.face.index()] = std::move(s.tokens);
     }
@@ -492,10 +515,14 @@ class Generator {
   }
   static bool purl_at(StitchPattern pattern, std::uint32_t column) {
     switch (pattern) {
-      case StitchPattern::knit: return false;
-      case StitchPattern::purl: return true;
-      case StitchPattern::k1p1: return column % 2 == 1;
-      case StitchPattern::k2p2: return column % 4 >= 2;
+      case StitchPattern::knit:
+        return false;
+      case StitchPattern::purl:
+        return true;
+      case StitchPattern::k1p1:
+        return column % 2 == 1;
+      case StitchPattern::k2p2:
+        return column % 4 >= 2;
     }
     return false;
   }
@@ -517,7 +544,8 @@ class Generator {
     std::reverse(top.begin(), top.end());
     const std::uint32_t a = cast_on, z = bind_off ? n - 1 : n;  // lines where shaping starts, ends
     const std::vector<std::uint8_t>& rightward = rightward_[f.index()];
-    Vec3 bl = m_.at(m_.tail(hb)), br = m_.at(m_.head(hb)), tr = m_.at(m_.tail(ht)), tl = m_.at(m_.head(ht));
+    Vec3 bl = m_.at(m_.tail(hb)), br = m_.at(m_.head(hb)), tr = m_.at(m_.tail(ht)),
+         tl = m_.at(m_.head(ht));
     SKEIN_ASSERT(rightward.size() == n, "every row of a quad has a direction");
     StitchPattern pat = pattern(f);
     for (std::uint32_t i = 1; i <= n; ++i) {
@@ -527,12 +555,15 @@ class Generator {
         return lerp(lerp(bl, br, u), lerp(tl, tr, u), t);
       });
       bool first = i == 1 && cast_on, last = i == n && bind_off;
-      std::vector<Shape> shapes = row_shapes(static_cast<std::uint32_t>(below.size() - 1), width, i);
+      std::vector<Shape> shapes =
+          row_shapes(static_cast<std::uint32_t>(below.size() - 1), width, i);
       std::uint32_t u = 0, o = 0;
       for (Shape s : shapes) {
-        StitchType type = first ? StitchType::co : last ? StitchType::bo : type_of(s, purl_at(pat, offset_[f.index()] + u));
-        emit(f, {below.begin() + u, below.begin() + u + s.in + 1}, {above.begin() + o, above.begin() + o + s.out + 1},
-             rightward[i - 1], type, false);
+        StitchType type = first  ? StitchType::co
+                          : last ? StitchType::bo
+                                 : type_of(s, purl_at(pat, offset_[f.index()] + u));
+        emit(f, {below.begin() + u, below.begin() + u + s.in + 1},
+             {above.begin() + o, above.begin() + o + s.out + 1}, rightward[i - 1], type, false);
         u += s.in;
         o += s.out;
       }
@@ -562,9 +593,12 @@ class Generator {
       fail(f, "a short-row face needs neighbours above and below (its bottom or top is open)");
     for (std::uint32_t x = 1; x <= columns; ++x) {
       std::vector<Vertex> p;
-      if (x == columns) p = narrow.valid() ? upward(narrow, !wide_left) : std::vector<Vertex>{bottom.back()};
-      else p = line(bottom[x], top[x], rows_at(x));
-      if (x == columns && !narrow.valid()) SKEIN_ASSERT(rows_at(x) == 0, "a triangle's point has no rows");
+      if (x == columns)
+        p = narrow.valid() ? upward(narrow, !wide_left) : std::vector<Vertex>{bottom.back()};
+      else
+        p = line(bottom[x], top[x], rows_at(x));
+      if (x == columns && !narrow.valid())
+        SKEIN_ASSERT(rows_at(x) == 0, "a triangle's point has no rows");
       add_column(f, tokens, w, p, x, !wide_left);
       w = std::move(p);
     }
@@ -599,7 +633,8 @@ class Generator {
         while (up < tokens.size() && tokens[up].pair && tokens[up].depth + 1 < x) ++up;
         bool covered = up < tokens.size() && (!tokens[up].pair || tokens[up].depth >= x);
         std::vector<Vertex> top{w[iw + 2], p[ip]};
-        if (sr5 && covered) top.insert(top.begin() + 1, new_vertex(lerp(pos(w[iw + 2]), pos(p[ip]), 0.5f)));
+        if (sr5 && covered)
+          top.insert(top.begin() + 1, new_vertex(lerp(pos(w[iw + 2]), pos(p[ip]), 0.5f)));
         corners_.assign(run.begin(), run.end());  // ends at the point, where the top starts
         corners_.insert(corners_.end(), top.rbegin() + 1, top.rend());
         corners_.push_back(w[iw + 1]);
@@ -658,9 +693,11 @@ class Generator {
       Halfedge h = mesh.halfedge(e);
       Face a = mesh.face(h), b = mesh.face(mesh.twin(h));
       std::uint32_t ca = out.coarse_face[a.index()], cb = out.coarse_face[b.index()];
-      Face own = coarse_face ? (*coarse_face == ca ? a : b) : (L_.order[ca] <= L_.order[cb] ? a : b);
-      mesh.mismatch_yarn[e] = use == YarnHandling::extra ? MismatchYarn{MismatchYarn::Kind::extra, {}}
-                                                          : MismatchYarn{MismatchYarn::Kind::own, own};
+      Face own =
+          coarse_face ? (*coarse_face == ca ? a : b) : (L_.order[ca] <= L_.order[cb] ? a : b);
+      mesh.mismatch_yarn[e] = use == YarnHandling::extra
+                                  ? MismatchYarn{MismatchYarn::Kind::extra, {}}
+                                  : MismatchYarn{MismatchYarn::Kind::own, own};
       return true;
     };
     for (Edge e : mesh.edges()) choice(e, p_.default_yarn, std::nullopt);
@@ -669,23 +706,23 @@ class Generator {
       bool any = false;
       mark_edge(mesh, h, [&](Edge e) { any |= choice(e, y.use, y.face); });
       if (!any)
-        throw Error(fmt::format("{}:{}: {} is not a joining or splitting edge, so it takes no yarn "
-                                "choice",
-                                p_.file, y.edge.line, m_.describe(h)));
+        throw Error(
+            fmt::format("{}:{}: {} is not a joining or splitting edge, so it takes no yarn "
+                        "choice",
+                        p_.file, y.edge.line, m_.describe(h)));
     }
   }
-
 
   const CoarseMesh& m_;
   const Labeling& L_;
   const Project& p_;
   StitchMeshBuilder builder_;
-  std::vector<std::uint32_t> count_;        // per halfedge (group root first, then copied)
-  std::vector<std::uint32_t> edge_first_;   // per canonical halfedge: first interior vertex
+  std::vector<std::uint32_t> count_;       // per halfedge (group root first, then copied)
+  std::vector<std::uint32_t> edge_first_;  // per canonical halfedge: first interior vertex
   std::vector<std::vector<std::uint8_t>> rightward_;  // per quad: direction of each row
-  std::vector<std::vector<Token>> tokens_;  // per short-row face
-  std::vector<CoarseVertex> yarn_ends_;     // top corners where open rows stopped
-  std::vector<CoarseVertex> wanted_starts_;  // bottom corners where open rows must start
+  std::vector<std::vector<Token>> tokens_;            // per short-row face
+  std::vector<CoarseVertex> yarn_ends_;               // top corners where open rows stopped
+  std::vector<CoarseVertex> wanted_starts_;           // bottom corners where open rows must start
   std::vector<std::pair<CoarseVertex, std::uint8_t>> chain_tops_;     // where paths arrive
   std::vector<std::pair<CoarseHalfedge, std::uint8_t>> shift_edges_;  // and their options
   std::set<std::size_t> used_shift_marks_;  // project shift_paths entries placed
@@ -729,8 +766,8 @@ std::string describe_generation(const CoarseMesh& coarse, const Labeling& labeli
                    l = labeling.find(coarse, f, CoarseRole::left),
                    r = labeling.find(coarse, f, CoarseRole::right);
     std::string rows = labeling.short_row[f.index()]
-                           ? fmt::format("short rows: {} left, {} right",
-                                         l.valid() ? count(l) : 0, r.valid() ? count(r) : 0)
+                           ? fmt::format("short rows: {} left, {} right", l.valid() ? count(l) : 0,
+                                         r.valid() ? count(r) : 0)
                            : fmt::format("rows {}", count(l));
     out += fmt::format("face {}: labelled #{}, bottom {}, {}, stitches {} -> {}, {} faces\n",
                        f.index() + 1, labeling.order[f.index()] + 1, coarse.describe(b), rows,

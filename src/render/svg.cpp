@@ -35,9 +35,9 @@ struct Colour {
 // The paper's colours for the structures, quiet ones for plain stitches.
 constexpr Colour kShortRow{"#e6194b", "short-row end"}, kShift{"#3cb44b", "beside a shift-path"},
     kSplit{"#ffe119", "splitting mismatch"}, kJoin{"#4363d8", "joining mismatch"},
-    kExpanding{"#bfef45", "expanding perpendicular"}, kContracting{"#911eb4", "contracting perpendicular"},
-    kCastOn{"#c8c8c8", "cast-on / bind-off"}, kShaping{"#f4c28a", "increase / decrease"},
-    kPurl{"#d9cbb0", "purl"}, kKnit{"#f7f2e8", "knit"};
+    kExpanding{"#bfef45", "expanding perpendicular"},
+    kContracting{"#911eb4", "contracting perpendicular"}, kCastOn{"#c8c8c8", "cast-on / bind-off"},
+    kShaping{"#f4c28a", "increase / decrease"}, kPurl{"#d9cbb0", "purl"}, kKnit{"#f7f2e8", "knit"};
 
 class Canvas {
  public:
@@ -53,13 +53,17 @@ class Canvas {
     return depth;
   }
   void arrow(Point a, Point b, double depth) {
-    items_.push_back({depth + 1e-6, fmt::format(R"(<line x1="{:.2f}" y1="{:.2f}" x2="{:.2f}" y2="{:.2f}" class="a"/>)",
-                                              a.x, a.y, b.x, b.y)});
+    items_.push_back(
+        {depth + 1e-6,
+         fmt::format(R"(<line x1="{:.2f}" y1="{:.2f}" x2="{:.2f}" y2="{:.2f}" class="a"/>)", a.x,
+                     a.y, b.x, b.y)});
   }
   void text(Point p, const std::string& s, double depth) {
-    items_.push_back({depth + 2e-6, fmt::format(R"(<text x="{:.2f}" y="{:.2f}">{}</text>)", p.x, p.y, s)});
+    items_.push_back(
+        {depth + 2e-6, fmt::format(R"(<text x="{:.2f}" y="{:.2f}">{}</text>)", p.x, p.y, s)});
   }
-  void write(std::ostream& out, const std::string& title, const std::vector<Colour>& legend, double unit) const {
+  void write(std::ostream& out, const std::string& title, const std::vector<Colour>& legend,
+             double unit) const {
     double pad = unit * 3, h = max_y_ - min_y_ + 2 * pad;
     double w = std::max(max_x_ - min_x_ + 2 * pad, unit * 0.7 * static_cast<double>(title.size()));
     double legend_h = unit * 1.6 * (legend.size() + 2);
@@ -77,13 +81,16 @@ class Canvas {
     out << fmt::format(R"(<text x="{:.2f}" y="{:.2f}">{}</text>)", x, y, title) << '\n';
     for (const Colour& c : legend) {
       y += unit * 1.6;
-      out << fmt::format(R"(<rect x="{:.2f}" y="{:.2f}" width="{:.2f}" height="{:.2f}" fill="{}" stroke="#555" stroke-width="{:.3f}"/><text x="{:.2f}" y="{:.2f}">{}</text>)",
-                         x, y - unit, unit * 1.2, unit * 1.2, c.fill, unit * 0.06, x + unit * 1.8, y, c.name)
+      out << fmt::format(
+                 R"(<rect x="{:.2f}" y="{:.2f}" width="{:.2f}" height="{:.2f}" fill="{}" stroke="#555" stroke-width="{:.3f}"/><text x="{:.2f}" y="{:.2f}">{}</text>)",
+                 x, y - unit, unit * 1.2, unit * 1.2, c.fill, unit * 0.06, x + unit * 1.8, y,
+                 c.name)
           << '\n';
     }
     std::vector<const std::pair<double, std::string>*> order;
     for (const auto& item : items_) order.push_back(&item);
-    std::stable_sort(order.begin(), order.end(), [](auto a, auto b) { return a->first < b->first; });
+    std::stable_sort(order.begin(), order.end(),
+                     [](auto a, auto b) { return a->first < b->first; });
     for (const auto* item : order) out << item->second << '\n';
     out << "</svg>\n";
   }
@@ -99,7 +106,9 @@ class Canvas {
   double min_x_ = 1e300, max_x_ = -1e300, min_y_ = 1e300, max_y_ = -1e300;
 };
 
-Point mid(Point a, Point b, double t = 0.5) { return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.depth}; }
+Point mid(Point a, Point b, double t = 0.5) {
+  return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.depth};
+}
 
 // Seen from behind when its corners run clockwise on the picture.
 bool facing_away(const std::vector<Point>& pts) {
@@ -116,11 +125,16 @@ Colour stitch_colour(const StitchMesh& m, Face f) {
   if (t.wales_adjacent) return kShortRow;
   for (Halfedge h : m.halfedges(f)) {
     switch (m.kind(m.edge(h))) {
-      case EdgeKind::split: return kSplit;
-      case EdgeKind::join: return kJoin;
-      case EdgeKind::expanding_perpendicular: return kExpanding;
-      case EdgeKind::contracting_perpendicular: return kContracting;
-      default: break;
+      case EdgeKind::split:
+        return kSplit;
+      case EdgeKind::join:
+        return kJoin;
+      case EdgeKind::expanding_perpendicular:
+        return kExpanding;
+      case EdgeKind::contracting_perpendicular:
+        return kContracting;
+      default:
+        break;
     }
     if (m.shift_path[m.edge(h)]) return kShift;
   }
@@ -173,8 +187,10 @@ void render_stitch_mesh_svg(const StitchMesh& m, const std::string& title, std::
     for (const Point& q : pts) p = q.x < p.x ? q : p;
     canvas.text({p.x - unit * 2.4, p.y, p.depth}, std::to_string(r + 1), 1e9);
   }
-  canvas.write(out, title + " (row numbers in knitting order)",
-               {kShift, kSplit, kJoin, kShortRow, kExpanding, kContracting, kCastOn, kShaping, kPurl, kKnit}, unit);
+  canvas.write(
+      out, title + " (row numbers in knitting order)",
+      {kShift, kSplit, kJoin, kShortRow, kExpanding, kContracting, kCastOn, kShaping, kPurl, kKnit},
+      unit);
 }
 
 void render_coarse_mesh_svg(const CoarseMesh& m, const Labeling& labeling, const std::string& title,
@@ -186,17 +202,24 @@ void render_coarse_mesh_svg(const CoarseMesh& m, const Labeling& labeling, const
   }
   double unit = typical_edge(faces) / 6;
   Canvas canvas;
-  auto edge_mid = [&](CoarseHalfedge h) { return mid(project(m.at(m.tail(h))), project(m.at(m.head(h)))); };
+  auto edge_mid = [&](CoarseHalfedge h) {
+    return mid(project(m.at(m.tail(h))), project(m.at(m.head(h))));
+  };
   for (CoarseFace f : m.faces()) {
     const auto& pts = faces[f.index()];
     bool back = facing_away(pts);
-    double depth = canvas.polygon(pts, labeling.short_row[f.index()] ? kShortRow.fill : kKnit.fill, back);
+    double depth =
+        canvas.polygon(pts, labeling.short_row[f.index()] ? kShortRow.fill : kKnit.fill, back);
     if (back) continue;
-    CoarseHalfedge b = labeling.find(m, f, CoarseRole::bottom), t = labeling.find(m, f, CoarseRole::top),
-                   l = labeling.find(m, f, CoarseRole::left), r = labeling.find(m, f, CoarseRole::right);
-    if (b.valid() && t.valid()) canvas.arrow(mid(edge_mid(b), edge_mid(t), 0.2), mid(edge_mid(b), edge_mid(t), 0.8), depth);
+    CoarseHalfedge b = labeling.find(m, f, CoarseRole::bottom),
+                   t = labeling.find(m, f, CoarseRole::top),
+                   l = labeling.find(m, f, CoarseRole::left),
+                   r = labeling.find(m, f, CoarseRole::right);
+    if (b.valid() && t.valid())
+      canvas.arrow(mid(edge_mid(b), edge_mid(t), 0.2), mid(edge_mid(b), edge_mid(t), 0.8), depth);
     Point c = mid(edge_mid(b), edge_mid(t));
-    if (l.valid() && r.valid()) canvas.arrow(mid(edge_mid(l), edge_mid(r), 0.3), mid(edge_mid(l), edge_mid(r), 0.7), depth);
+    if (l.valid() && r.valid())
+      canvas.arrow(mid(edge_mid(l), edge_mid(r), 0.3), mid(edge_mid(l), edge_mid(r), 0.7), depth);
     canvas.text(c, fmt::format("{}", f.index() + 1), depth);
   }
   canvas.write(out, title + " (arrows: wale up, course left to right; numbers: faces)",
@@ -209,21 +232,25 @@ void render_file(const std::string& input, const std::string& output, bool coars
     CoarseMesh mesh = read_coarse_mesh(project.mesh);
     Labeling labeling = label_coarse_mesh(mesh, project);
     if (coarse)
-      return write_file_atomically(output, [&](std::ostream& o) { render_coarse_mesh_svg(mesh, labeling, input, o); });
+      return write_file_atomically(
+          output, [&](std::ostream& o) { render_coarse_mesh_svg(mesh, labeling, input, o); });
     GeneratedStitchMesh g = generate_stitch_mesh(mesh, labeling, project);
-    return write_file_atomically(output, [&](std::ostream& o) { render_stitch_mesh_svg(g.mesh, input, o); });
+    return write_file_atomically(
+        output, [&](std::ostream& o) { render_stitch_mesh_svg(g.mesh, input, o); });
   }
   std::string text = read_file(input);
   if (text.find("#~skein-stitch-mesh") != std::string::npos) {
     StitchMesh mesh = parse_stitch_mesh(text, input);
-    return write_file_atomically(output, [&](std::ostream& o) { render_stitch_mesh_svg(mesh, input, o); });
+    return write_file_atomically(output,
+                                 [&](std::ostream& o) { render_stitch_mesh_svg(mesh, input, o); });
   }
   Project project;
   project.file = input;
   project.mesh = input;
   CoarseMesh mesh = read_coarse_mesh(input);
   Labeling labeling = label_coarse_mesh(mesh, project);
-  write_file_atomically(output, [&](std::ostream& o) { render_coarse_mesh_svg(mesh, labeling, input, o); });
+  write_file_atomically(output,
+                        [&](std::ostream& o) { render_coarse_mesh_svg(mesh, labeling, input, o); });
 }
 
 }  // namespace skein
