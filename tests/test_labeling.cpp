@@ -282,6 +282,19 @@ TEST(Generation, ShiftPathsFollowTheProjectOrContinueFromBelow) {
   EXPECT_THROW(generate_stitch_mesh(m, label_coarse_mesh(m, p), p), Error);
 }
 
+TEST(Generation, SkeinNewShapesAreKnittableAtSeveralSizes) {
+  // Sheets, tubes, hats and socks (short rows inside rounds) on one yarn; sweaters on three
+  // (body and sleeves, as the paper's).
+  for (double size : {12.0, 19.0, 27.0, 41.0})
+    for (const char* kind : {"sheet", "tube", "hat", "sock", "sweater"}) {
+      SCOPED_TRACE(std::string(kind) + " " + std::to_string(size));
+      bool sweater = std::string(kind) == "sweater";
+      if (sweater && size < 27) continue;  // the sleeves need room at the armpits
+      Shape s = make_shape(kind, {sweater ? size * 3 : size, size * 0.8, size * 0.7}, "shape");
+      expect_generated_knittable(s.mesh, parse_project(s.project, "shape.yaml"), sweater ? 3 : 1);
+    }
+}
+
 TEST(Generation, EveryShapeOfSkeinNewGeneratesAValidStitchMesh) {
   for (const std::string& kind : shape_kinds()) {
     SCOPED_TRACE(kind);
