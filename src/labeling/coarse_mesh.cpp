@@ -96,6 +96,15 @@ CoarseMesh build_coarse_mesh(std::string source, std::vector<Vec3> positions,
   return m;
 }
 
+namespace {
+
+std::string trimmed(std::string s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.pop_back();
+  return s;
+}
+
+}  // namespace
+
 CoarseMesh read_coarse_mesh(const std::string& path) {
   if (!std::filesystem::exists(path)) throw IoError(fmt::format("cannot open {}", path));
   tinyobj::ObjReaderConfig config;
@@ -103,8 +112,8 @@ CoarseMesh read_coarse_mesh(const std::string& path) {
   config.vertex_color = false;
   tinyobj::ObjReader reader;
   if (!reader.ParseFromFile(path, config))
-    throw Error(
-        fmt::format("{}: {}", path, reader.Error().empty() ? "cannot read" : reader.Error()));
+    throw Error(fmt::format("{}: {}", path,
+                            reader.Error().empty() ? "cannot read" : trimmed(reader.Error())));
   const auto& v = reader.GetAttrib().vertices;
   std::vector<Vec3> positions;
   for (std::size_t i = 0; i + 2 < v.size(); i += 3) positions.push_back({v[i], v[i + 1], v[i + 2]});
