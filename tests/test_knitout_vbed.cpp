@@ -49,6 +49,20 @@ TEST(VbedRules, EachHandWrittenFileGivesItsExactVerdict) {
   EXPECT_GE(valid, 3);
 }
 
+TEST(VbedRules, ATransferMayNotStretchFurtherThanTheProfileAllows) {
+  knitout::MachineProfile p = testing::shipped_profile("generic");
+  p.max_transfer_stretch = 2;
+  std::string text = ";!knitout-2\n;;Carriers: 1 2 3 4 5 6 7 8 9 10\nin 1\ntuck + f5 1\nrack 3\n"
+                     "xfer f5 b2\n";
+  try {
+    knitout::replay_knitout(text, "stretch.k", p);
+    FAIL() << "expected a ParseError";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 6u);
+    EXPECT_EQ(e.expected(), "xfer at rack 3 stretches a loop 3 needles, generic allows 2");
+  }
+}
+
 // What a shop reads: passes, transfers, racks, drops, yarn pieces and time.
 TEST(VbedRules, ShopSummaryCountsWhatTheFileDoes) {
   std::string path = testing::source_path("tests/data/knitout/valid-swg-sheet.k");

@@ -55,6 +55,8 @@ class VirtualBed {
     for (auto& bed : beds_) bed.assign(static_cast<std::size_t>(hi_ - lo_), Stack{});
     carriers_.assign(r_.header.carriers.size(), Carrier{});
     r_.fabric.by_carrier.assign(r_.header.carriers.size(), {});
+    r_.fabric.loops.reserve(lines_.size());  // at most one loop a line: no regrowth
+    r_.fabric.parents.reserve(lines_.size());
     r_.stats.min_needle = std::numeric_limits<std::int32_t>::max();
     r_.stats.max_needle = std::numeric_limits<std::int32_t>::min();
     std::string error;
@@ -246,7 +248,11 @@ class VirtualBed {
       if (children < 255) ++children;
     }
     r_.fabric.loops.push_back(l);
-    each(yarn, [&](Carrier&, std::size_t c) { r_.fabric.by_carrier[c].push_back(id); });
+    each(yarn, [&](Carrier&, std::size_t c) {
+      std::vector<LoopId>& along = r_.fabric.by_carrier[c];
+      if (along.empty()) along.reserve(lines_.size());
+      along.push_back(id);
+    });
     return id;
   }
 

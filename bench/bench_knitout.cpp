@@ -1,0 +1,103 @@
+// The knitout target on 1M-stitch models: writing the knitout, replaying it on the virtual
+// v-bed (every rule checked), and replaying plus proving the fabric against the model, each
+// timed on its own. The model is compiled once per case, outside the timing. The profile is
+// the generic one widened to 4000 needles so that every case fits.
+//
+//   skein_bench --benchmark_filter=Knitout
+#include <benchmark/benchmark.h>
+
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include "driver/pipeline.hpp"
+#include "knitout/emit.hpp"
+#include "knitout/fabric_proof.hpp"
+#include "knitout/machine_profile.hpp"
+#include "knitout/vbed_simulator.hpp"
+#include "mesh/generate.hpp"
+
+namespace skein {
+namespace {
+
+using T = StitchType;
+
+enum class KnitoutCase { hat_tube, ribbed_sheet, shaped_tube };
+
+// About a million stitches each, about 1000 a row.
+const Compilation& model(KnitoutCase c) {
+  static std::map<KnitoutCase, std::unique_ptr<Compilation>> cache;
+  auto& slot = cache[c];
+  if (slot) return *slot;
+  RandomShaping shaping{
+      .purl = 0.3, .increase = 0.03, .decrease = 0.03, .min_width = 900, .max_width = 1100};
+  RowPlan plan = c == KnitoutCase::hat_tube       ? hat_rows(1000, 990, 8)
+                 : c == KnitoutCase::ribbed_sheet ? ribbed_rows(1000, 998, {T::k, T::k, T::p, T::p})
+                                                  : random_rows(1000, 1000, shaping, 2026);
+  Layout layout = c == KnitoutCase::ribbed_sheet ? Layout::sheet : Layout::tube;
+  slot = std::make_unique<Compilation>(compile_stitch_mesh(build_from_rows(plan, layout), "bench"));
+  return *slot;
+}
+
+const knitout::MachineProfile& profile() {
+  static knitout::MachineProfile p = [] {
+    knitout::MachineProfile wide = knitout::load_machine_profile("generic");
+    wide.needles = 4000;
+    return wide;
+  }();
+  return p;
+}
+
+const std::string& knitout_of(KnitoutCase c) {
+  static std::map<KnitoutCase, std::string> cache;
+  std::string& text = cache[c];
+  if (text.empty()) {
+    std::ostringstream out;
+    knitout::emit_knitout(model(c), profile(), out);
+    text = out.str();
+  }
+  return text;
+}
+
+void BM_KnitoutEmit(benchmark::State& state) {
+  const Compilation& c = model(static_cast<KnitoutCase>(state.range(0)));
+  for (auto _ : state) {
+    std::ostringstream out;
+    knitout::emit_knitout(c, profile(), out);
+    benchmark::DoNotOptimize(out);
+  }
+  state.counters["stitches"] = c.knit.size();
+}
+
+void BM_KnitoutReplay(benchmark::State& state) {
+  const std::string& text = knitout_of(static_cast<KnitoutCase>(state.range(0)));
+  std::uint64_t ops = 0;
+  for (auto _ : state) {
+    knitout::Replay r = knitout::replay_knitout(text, "bench.k", profile());
+    ops = r.stats.operations;
+    benchmark::DoNotOptimize(r);
+  }
+  state.counters["operations"] = static_cast<double>(ops);
+  state.counters["ops_per_second"] =
+      benchmark::Counter(static_cast<double>(ops), benchmark::Counter::kIsIterationInvariantRate);
+}
+
+void BM_KnitoutVerify(benchmark::State& state) {
+  const Compilation& c = model(static_cast<KnitoutCase>(state.range(0)));
+  const std::string& text = knitout_of(static_cast<KnitoutCase>(state.range(0)));
+  for (auto _ : state) {
+    knitout::Replay r = knitout::replay_knitout(text, "bench.k", profile());
+    knitout::ProofResult proof = knitout::prove_fabric(r, knitout::split_lines(text), c);
+    if (!proof.proven) state.SkipWithError(proof.summary.c_str());
+  }
+  state.counters["stitches"] = c.knit.size();
+}
+
+#define KNITOUT_CASES ->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(3)
+BENCHMARK(BM_KnitoutEmit) KNITOUT_CASES;
+BENCHMARK(BM_KnitoutReplay) KNITOUT_CASES;
+BENCHMARK(BM_KnitoutVerify) KNITOUT_CASES;
+
+}  // namespace
+}  // namespace skein
