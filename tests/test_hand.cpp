@@ -149,6 +149,49 @@ TEST(HandRandomized, ShapedSheetsAndTubesAreProven) {
   }
 }
 
+// A plain row, then `shapings` rows that widen or narrow each of `sections` equal wedges by
+// one stitch with `shaper` (at the end of each wedge), `plain` rows after each.
+RowPlan wedge_plan(std::uint32_t sections, std::uint32_t wedge, std::uint32_t shapings,
+                   std::uint32_t plain, T shaper) {
+  RowPlan plan = {std::vector<T>(sections * wedge, T::co), std::vector<T>(sections * wedge, T::k)};
+  for (std::uint32_t i = 0; i < shapings; ++i) {
+    std::vector<T>& row = plan.emplace_back();
+    std::uint32_t takes = info(shaper).bottom_edges, makes = info(shaper).top_edges;
+    for (std::uint32_t s = 0; s < sections; ++s) {
+      row.insert(row.end(), wedge - takes, T::k);
+      row.push_back(shaper);
+    }
+    wedge = wedge - takes + makes;
+    for (std::uint32_t k = 0; k < plain; ++k) plan.emplace_back(sections * wedge, T::k);
+  }
+  plan.emplace_back(sections * wedge, T::bo);
+  return plan;
+}
+
+// Crowns and wedge increases, flat and in the round, proven; in the round with section markers.
+TEST(HandRandomized, WedgeShapingGetsSectionMarkersAndIsProven) {
+  std::mt19937_64 rng(3);
+  const T kTubeShapers[] = {T::k2tog, T::ssk, T::s2kp, T::kfb, T::yo, T::m1l, T::m1r};
+  for (int trial = 0; trial < 60; ++trial) {
+    Layout layout = trial % 2 ? Layout::tube : Layout::sheet;
+    T shaper = kTubeShapers[rng() % (layout == Layout::tube ? 7 : 5)];
+    auto sections = 2 + static_cast<std::uint32_t>(rng() % 6);
+    auto shapings = 2 + static_cast<std::uint32_t>(rng() % 3);
+    auto wedge = 3 + 2 * shapings + static_cast<std::uint32_t>(rng() % 8);  // never runs out
+    auto plain = static_cast<std::uint32_t>(rng() % 3);
+    Compilation c = compile_stitch_mesh(
+        build_from_rows(wedge_plan(sections, wedge, shapings, plain, shaper), layout), "wedges");
+    std::string pattern = emit(c, "hand");
+    VerifyReport report = verify(c, "hand", pattern);
+    ASSERT_TRUE(report.proven) << "trial " << trial << ": " << report.summary << "\n" << pattern;
+    if (layout == Layout::tube) {
+      EXPECT_NE(pattern.find(", sm; rep from * to end"), std::string::npos)
+          << "trial " << trial << "\n"
+          << pattern;
+    }
+  }
+}
+
 TEST(HandRowText, RepeatsAndCountsAKnitterNeedNotKeep) {
   using O = hand::HandOp;
   auto text = [](std::vector<O> ops) { return hand::row_instructions(ops); };

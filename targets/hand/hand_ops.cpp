@@ -1,6 +1,7 @@
 #include "hand/hand_ops.hpp"
 
 #include <array>
+#include <vector>
 
 #include "common/error.hpp"
 
@@ -94,12 +95,13 @@ bool equal_ignoring_case(std::string_view a, std::string_view b) {
 }
 
 // rs_face and working_of answer from tables filled once from kFaces.
-constexpr std::size_t kTypes = static_cast<std::size_t>(T::tuck) + 1;
 constexpr std::size_t kHandOps = static_cast<std::size_t>(O::rm) + 1;
 
 struct FaceTables {
   std::array<std::array<std::optional<StitchType>, 2>, kHandOps> face{};
-  std::array<std::array<std::optional<HandOp>, 2>, kTypes> op{};
+  // By stitch type: the catalogue grows with the core, so it is sized from it.
+  std::vector<std::array<std::optional<HandOp>, 2>> op =
+      std::vector<std::array<std::optional<HandOp>, 2>>(stitch_catalogue().size());
   FaceTables() {
     for (const FaceRule& rule : kFaces) {
       auto side = static_cast<std::size_t>(rule.side);
@@ -147,6 +149,7 @@ std::optional<StitchType> rs_face(HandOp op, Side side) {
 }
 
 std::optional<Working> working_of(StitchType type, Side side) {
+  if (static_cast<std::size_t>(type) >= face_tables().op.size()) return std::nullopt;
   std::optional<HandOp> op =
       face_tables().op[static_cast<std::size_t>(type)][static_cast<std::size_t>(side)];
   if (!op) return std::nullopt;

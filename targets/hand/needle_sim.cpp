@@ -299,7 +299,11 @@ class NeedleSimulator {
   }
 
   std::uint32_t loops_to_marker() const { return left_.empty() ? 0 : to_marker_[left_.size() - 1]; }
-  bool marker_ahead() const { return !left_.empty() && marker_ahead_[left_.size() - 1]; }
+  // In the round the beginning-of-round marker ends the round: it counts as the last marker.
+  bool end_is_marker() const { return round_ && bor_ != kNone; }
+  bool marker_ahead() const {
+    return (!left_.empty() && marker_ahead_[left_.size() - 1]) || end_is_marker();
+  }
 
   // --- instructions -------------------------------------------------------------------------
 
@@ -408,6 +412,10 @@ class NeedleSimulator {
         return;
       case HandOp::sm:
       case HandOp::rm: {
+        if (left_.empty() && end_is_marker()) {  // the beginning-of-round marker
+          if (op == HandOp::rm) remove_bor();
+          return;
+        }
         if (left_.empty() || !is_marker_entry(left_.back()))
           fail(fmt::format("{}: the next thing on the left needle is {}, not a marker",
                            info(op).abbreviation, left_.empty() ? "nothing" : "a st"));
@@ -426,6 +434,12 @@ class NeedleSimulator {
       make_one(op);
     else
       stitch(op);
+  }
+
+  void remove_bor() {
+    auto at = std::find(right_.begin(), right_.end(), bor_);
+    if (at != right_.end()) right_.erase(at);
+    bor_ = kNone;
   }
 
   void stitch(HandOp op) {

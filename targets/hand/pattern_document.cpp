@@ -56,7 +56,8 @@ class InstructionWriter {
   InstructionWriter(const HandPattern& p, Dialect dialect, std::vector<InstructionLine>& out)
       : p_(p), dialect_(dialect), out_(out) {
     texts_.reserve(p.rows.size());
-    for (const PatternRow& r : p.rows) texts_.push_back(row_instructions(p.ops_of(r), dialect));
+    for (const PatternRow& r : p.rows)
+      texts_.push_back(row_instructions(p.ops_of(r), dialect, r.round));
   }
 
   void write() {
@@ -270,8 +271,14 @@ class FrontMatter {
             fmt::format("4.5 mm (US 7) double-pointed needles, or a long circular "
                         "needle for magic loop, for rounds of fewer than {} sts.",
                         fits));
-      items.push_back("1 stitch marker for the beginning of the round.");
     }
+    if (p_.markers == 1)
+      items.push_back("1 stitch marker for the beginning of the round.");
+    else if (p_.markers > 1)
+      items.push_back(fmt::format("{} stitch markers{}.", p_.markers,
+                                  t_.round ? ", one of them in another colour for the beginning "
+                                             "of the round"
+                                           : ""));
     items.push_back("Tapestry needle for weaving in ends.");
     return items;
   }
@@ -285,6 +292,14 @@ class FrontMatter {
   }
 
   bool uses(HandOp op) const { return t_.used[static_cast<std::size_t>(op)]; }
+
+  // The first instruction sentence that starts with `start`, without its count and period.
+  std::string first_sentence(std::string_view start) const {
+    std::size_t at = text_.find(start);
+    if (at == std::string::npos) return "";
+    std::size_t end = std::min(text_.find(".", at), text_.find(kDash, at) - 1);
+    return text_.substr(at, end - at);
+  }
   bool says(std::string_view words) const { return text_.find(words) != std::string::npos; }
 
   std::vector<std::string> abbreviations() const {
@@ -325,7 +340,8 @@ class FrontMatter {
       items.push_back(
           "**Binding off (BO):** work 2 sts as they appear, *pass the first st on the "
           "right needle over the second; work 1 more st; rep from * until 1 st "
-          "remains; cut the yarn and pull it through that last loop (fasten off).");
+          "remains, removing any markers as you come to them; cut the yarn and pull it "
+          "through that last loop (fasten off).");
     return items;
   }
 
@@ -336,15 +352,22 @@ class FrontMatter {
           fmt::format("When a {} changes the number of stitches, the count on the "
                       "needle at its end follows the dash: {} 56 sts.",
                       t_.round ? (t_.flat ? "row or rnd" : "rnd") : "row", kDash));
-    if (says("Rep "))
+    if (std::string rep = first_sentence("Rep "); !rep.empty())
       items.push_back(
-          "\"Rep Rows 3\u20134 twice more\" means work them twice more after the first "
-          "time: three times in all; a stitch count after it is the count once all "
-          "repeats are done.");
-    if (says("every rnd until") || says("every row until"))
+          fmt::format("\"{}\" works those rows again that many more times after "
+                      "the first (once more in all than the number says); a stitch "
+                      "count after it is the count once all the repeats are done.",
+                      rep));
+    if (std::string even = first_sentence("Knit every "); !even.empty())
       items.push_back(
-          "\"Knit every rnd until 24 rnds in all\" counts the rounds from the cast-on, "
-          "those already worked included.");
+          fmt::format("\"{}\" counts every {} from the cast-on, those already "
+                      "worked included.",
+                      even, t_.round ? "rnd" : "row"));
+    if (p_.markers > 1)
+      items.push_back(t_.round ? "Slip the markers as you come to them. The beginning-of-round "
+                                 "marker is the last \"m\" of every round: \"to m\" in the last "
+                                 "section of a round goes up to it."
+                               : "Slip the markers as you come to them.");
     if (uses(HandOp::m1l) || uses(HandOp::m1r) || uses(HandOp::m1pl) || uses(HandOp::m1pr) ||
         uses(HandOp::yo))
       items.push_back(

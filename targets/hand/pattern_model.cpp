@@ -7,6 +7,7 @@
 
 #include "common/error.hpp"
 #include "driver/pipeline.hpp"
+#include "hand/marker_plan.hpp"
 
 namespace skein::hand {
 namespace {
@@ -278,7 +279,9 @@ class PatternBuilder {
 
 HandPattern build_hand_pattern(const Compilation& c) {
   check_supported(c);
-  return PatternBuilder(c).run();
+  HandPattern pattern = PatternBuilder(c).run();
+  place_section_markers(pattern);
+  return pattern;
 }
 
 }  // namespace skein::hand

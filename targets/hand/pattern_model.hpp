@@ -38,6 +38,7 @@ struct HandPattern {
   // The model's rounds run left to right seen from the RS, and hand knitting runs right to
   // left: the pattern knits the model's mirror image (decreases and increases swap lean).
   bool mirror = false;
+  std::uint32_t markers = 0;  // the most stitch markers on the needle at once
   std::vector<PatternSection> sections;
   std::vector<PatternRow> rows;
   std::vector<HandOp> ops;
@@ -48,7 +49,8 @@ struct HandPattern {
 };
 
 // Throws Error naming the stitch when the model needs something hand patterns do not cover
-// yet (short rows, joins, splits, held pieces, stitch graphs without rows).
+// yet (short rows, joins, splits, held pieces, stitch graphs without rows). Rows shaped alike
+// get section markers (marker_plan.hpp).
 HandPattern build_hand_pattern(const Compilation& compilation);
 
 }  // namespace skein::hand

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <optional>
 #include <vector>
 
 namespace skein::hand {
@@ -88,13 +89,14 @@ std::string sts(std::uint32_t n) {
 
 // Where an "until" item stops: the end of the row or the next marker, `rest` sts before it.
 std::string until_text(std::uint32_t rest, bool marker) {
-  if (marker) return rest == 0 ? "to m" : fmt::format("to {} before m", sts(rest));
+  if (marker)
+    return rest == 0 ? "to m" : fmt::format("to {} st{} before m", rest, rest == 1 ? "" : "s");
   return rest == 0 ? "to end" : fmt::format("to last {}", sts(rest));
 }
 
 // Gives the "until" form to the one repeat of a stretch, or else to its last long plain run,
 // when what follows it is short enough to count at a glance.
-void choose_until(std::vector<Item>& items, const std::vector<Token>& t) {
+void choose_until(std::vector<Item>& items, const std::vector<Token>& t, std::uint32_t short_run) {
   std::uint32_t rest = 0;
   auto repeats =
       std::count_if(items.begin(), items.end(), [](const Item& i) { return i.repeat(); });
@@ -103,7 +105,7 @@ void choose_until(std::vector<Item>& items, const std::vector<Token>& t) {
       it->until = repeats == 1;
       return;
     }
-    if (repeats == 0 && is_plain(t[it->begin].op) && t[it->begin].count >= kShortRun) {
+    if (repeats == 0 && is_plain(t[it->begin].op) && t[it->begin].count >= short_run) {
       it->until = true;
       return;
     }
@@ -111,10 +113,12 @@ void choose_until(std::vector<Item>& items, const std::vector<Token>& t) {
   }
 }
 
+// Before a marker every run goes "to m": rows shaped between markers then read the same
+// whatever the width ("k to 2 sts before m, ssk").
 std::string stretch_text(std::span<const HandOp> ops, bool before_marker, Dialect dialect) {
   std::vector<Token> tokens = tokens_of(ops);
   std::vector<Item> items = items_of(tokens);
-  choose_until(items, tokens);
+  choose_until(items, tokens, before_marker ? 1 : kShortRun);
   std::string out;
   std::uint32_t rest = 0;
   for (const Item& item : items) rest += item.takes;
@@ -147,23 +151,64 @@ void capitalise(std::string& text) {
 
 }  // namespace
 
-std::string row_instructions(std::span<const HandOp> ops, Dialect dialect) {
-  if (!ops.empty() &&
-      std::all_of(ops.begin(), ops.end(), [](HandOp op) { return op == HandOp::bo; }))
-    return "BO all sts";
-  if (!ops.empty() && is_plain(ops[0]) &&
-      std::all_of(ops.begin(), ops.end(), [&](HandOp op) { return op == ops[0]; }))
-    return ops[0] == HandOp::k ? "Knit" : "Purl";
-  // Stretches end at the markers met on the left needle: their runs and repeats go "to m".
-  std::string out;
+std::optional<RowRepeat> whole_row_repeat(std::span<const HandOp> ops) {
+  // The shortest period from the prefix function (Knuth-Morris-Pratt): linear.
+  const std::size_t n = ops.size();
+  if (n < 2) return std::nullopt;
+  std::vector<std::uint32_t> border(n, 0);
+  for (std::size_t i = 1; i < n; ++i) {
+    std::uint32_t b = border[i - 1];
+    while (b > 0 && ops[i] != ops[b]) b = border[b - 1];
+    border[i] = b + (ops[i] == ops[b] ? 1 : 0);
+  }
+  std::size_t period = n - border[n - 1];
+  if (period == n || n % period != 0) return std::nullopt;
+  return RowRepeat{static_cast<std::uint32_t>(period), static_cast<std::uint32_t>(n / period)};
+}
+
+std::string row_instructions(std::span<const HandOp> ops, Dialect dialect, bool end_is_marker) {
+  auto is = [&](HandOp want) { return [want](HandOp op) { return op == want; }; };
+  if (!ops.empty() && std::all_of(ops.begin(), ops.end(), is(HandOp::bo))) return "BO all sts";
+  // Plain rows slip the markers they meet.
+  auto plain = std::find_if_not(ops.begin(), ops.end(), is(HandOp::sm));
+  if (plain != ops.end() && is_plain(*plain) && std::all_of(ops.begin(), ops.end(), [&](HandOp op) {
+        return op == *plain || op == HandOp::sm;
+      }))
+    return *plain == HandOp::k ? "Knit" : "Purl";
+  // Stretches end at the markers met on the left needle: their runs and repeats go "to m". In
+  // the round the beginning-of-round marker ends the last one.
+  std::vector<std::string> stretches;
+  std::vector<HandOp> markers;
   std::size_t start = 0;
   for (std::size_t i = 0; i <= ops.size(); ++i) {
-    bool boundary = i == ops.size() || ops[i] == HandOp::sm || ops[i] == HandOp::rm;
-    if (!boundary) continue;
-    std::string stretch = stretch_text(ops.subspan(start, i - start), i < ops.size(), dialect);
-    if (!stretch.empty()) out += (out.empty() ? "" : ", ") + stretch;
-    if (i < ops.size()) out += (out.empty() ? "" : ", ") + std::string(info(ops[i]).abbreviation);
+    if (i < ops.size() && ops[i] != HandOp::sm && ops[i] != HandOp::rm) continue;
+    bool marker = i < ops.size() || (end_is_marker && !markers.empty());
+    stretches.push_back(stretch_text(ops.subspan(start, i - start), marker, dialect));
+    if (i < ops.size()) markers.push_back(ops[i]);
     start = i + 1;
+  }
+  std::string out;
+  if (end_is_marker && !markers.empty() && !stretches[0].empty() &&
+      std::all_of(markers.begin(), markers.end(), is(HandOp::sm)) &&
+      std::all_of(stretches.begin(), stretches.end(),
+                  [&](const std::string& s) { return s == stretches[0]; })) {
+    out = fmt::format("*{}, sm{}", stretches[0],
+                      dialect == Dialect::knitspeak ? ", repeat from *" : "; rep from * to end");
+  } else {
+    // Equal sections in a row read "[K to 3 sts before m, s2kp, sm] 2 times".
+    for (std::size_t k = 0; k < stretches.size();) {
+      std::size_t same = 1;
+      while (k + same < markers.size() && markers[k] == HandOp::sm &&
+             markers[k + same] == HandOp::sm && !stretches[k].empty() &&
+             stretches[k + same] == stretches[k])
+        ++same;
+      std::string part = stretches[k];
+      if (k < markers.size())
+        part += (part.empty() ? "" : ", ") + std::string(info(markers[k]).abbreviation);
+      if (same > 1) part = fmt::format("[{}] {} times", part, same);
+      if (!part.empty()) out += (out.empty() ? "" : ", ") + part;
+      k += same;
+    }
   }
   capitalise(out);
   return out;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -17,7 +18,18 @@ enum class Dialect : std::uint8_t {
   knitspeak,  // Stitch-Maps' KnitSpeak: "*K2, p2, repeat from *"
 };
 
-// "*K2, p2; rep from * to end": no label, no final period, first letter capitalised.
-std::string row_instructions(std::span<const HandOp> ops, Dialect dialect = Dialect::standard);
+// "*K2, p2; rep from * to end": no label, no final period, first letter capitalised. With
+// `end_is_marker` (a round with a beginning-of-round marker) the end of the row counts as a
+// marker, so that "*K to 2 sts before m, ssk, sm; rep from * to end" covers every section.
+std::string row_instructions(std::span<const HandOp> ops, Dialect dialect = Dialect::standard,
+                             bool end_is_marker = false);
+
+// When the whole row is one unit of operations worked `count` times (count >= 2), the
+// shortest such unit: its length in operations.
+struct RowRepeat {
+  std::uint32_t unit_ops;
+  std::uint32_t count;
+};
+std::optional<RowRepeat> whole_row_repeat(std::span<const HandOp> ops);
 
 }  // namespace skein::hand
