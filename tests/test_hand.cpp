@@ -192,6 +192,32 @@ TEST(HandRandomized, WedgeShapingGetsSectionMarkersAndIsProven) {
   }
 }
 
+// Lines under "## Instructions" per 1,000 stitches: plain knitting compresses to a few lines.
+double lines_per_thousand(const Compilation& c, const std::string& pattern) {
+  std::istringstream in(pattern.substr(pattern.find("## Instructions\n") + 16));
+  int lines = 0;
+  for (std::string line; std::getline(in, line) && line.rfind("## ", 0) != 0;)
+    lines += !line.empty();
+  return 1000.0 * lines / c.knit.size();
+}
+
+TEST(HandReadability, PlainKnittingTakesAFewLines) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  for (auto [input, most] : {std::pair{"samples/rib-swatch/rib-swatch.obj", 14.0},
+                             std::pair{"samples/hat/hat.obj", 4.5}}) {
+    Compilation c = compile_model(input);
+    double figure = lines_per_thousand(c, emit(c, "hand"));
+    std::cout << input << ": " << figure << " instruction lines per 1,000 sts\n";
+    EXPECT_LE(figure, most) << input;
+  }
+  Compilation tube =
+      compile_stitch_mesh(build_from_rows(hat_rows(200, 500, 8), Layout::tube), "tube");
+  double figure = lines_per_thousand(tube, emit(tube, "hand"));
+  std::cout << "a 200-st hat of 500 rnds (" << tube.knit.size() << " sts): " << figure
+            << " instruction lines per 1,000 sts\n";
+  EXPECT_LE(figure, 0.1);
+}
+
 TEST(HandRowText, RepeatsAndCountsAKnitterNeedNotKeep) {
   using O = hand::HandOp;
   auto text = [](std::vector<O> ops) { return hand::row_instructions(ops); };

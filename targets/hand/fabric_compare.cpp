@@ -82,12 +82,15 @@ class Comparison {
       return differ(x, fmt::format("the pattern {} after it, the model {}",
                                    link_words(f_.yarn_link[x]), link_words(g_.yarn_link[s])));
     StitchType want = mirror_ ? mirrored(g_.type[s]) : g_.type[s];
-    if (f_.type[x] != want)
-      return differ(
+    if (f_.type[x] != want) {
+      std::optional<Difference> d = differ(
           x,
           fmt::format("the pattern makes {} (as seen from the RS) where the model has {}{}",
                       abbreviation(f_.type[x]), abbreviation(g_.type[s]),
                       mirror_ ? fmt::format(" ({} in its mirror image)", abbreviation(want)) : ""));
+      d->type = true;
+      return d;
+    }
     if (f_.made[x] != g_.loops_made_by(s).size())
       return differ(x, fmt::format("it makes {} loop(s), the model's stitch {}", f_.made[x],
                                    g_.loops_made_by(s).size()));

@@ -20,6 +20,7 @@ namespace skein::hand {
 struct Difference {
   std::uint32_t stitch;  // the first fabric stitch that differs (in the order worked)
   std::string what;
+  bool type = false;  // its stitch type differs (not only its loops or yarn)
 };
 
 std::optional<Difference> first_difference(const Fabric& fabric, const Compilation& model,

@@ -120,8 +120,11 @@ VerifyReport verify_pattern(std::string_view text, const std::string& file,
   if (!straight) return proven(r, file, *against, false);
   std::optional<Difference> mirror = first_difference(r.fabric, *against, true);
   if (!mirror) return proven(r, file, *against, true);
-  // Report the comparison that got further: the pattern is most likely meant that way.
-  const Difference& d = mirror->stitch > straight->stitch ? *mirror : *straight;
+  // Report the comparison that got further (the pattern is most likely meant that way); at
+  // the same stitch, a wrong stitch type says more than loops in another order.
+  bool mirror_first = mirror->stitch != straight->stitch ? mirror->stitch > straight->stitch
+                                                         : mirror->type && !straight->type;
+  const Difference& d = mirror_first ? *mirror : *straight;
   return {false, fmt::format("{}: not the model's fabric: {}", file, d.what)};
 }
 
