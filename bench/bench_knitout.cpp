@@ -88,7 +88,7 @@ void BM_KnitoutVerify(benchmark::State& state) {
   const std::string& text = knitout_of(static_cast<KnitoutCase>(state.range(0)));
   for (auto _ : state) {
     knitout::Replay r = knitout::replay_knitout(text, "bench.k", profile());
-    knitout::ProofResult proof = knitout::prove_fabric(r, knitout::split_lines(text), c);
+    knitout::ProofResult proof = knitout::prove_fabric(r, text, c);
     if (!proof.proven) state.SkipWithError(proof.summary.c_str());
   }
   state.counters["stitches"] = c.knit.size();

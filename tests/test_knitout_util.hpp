@@ -27,7 +27,7 @@ inline std::string emit_knitout_text(const Compilation& c, const knitout::Machin
 inline knitout::ProofResult replay_and_prove(const std::string& text, const Compilation& c,
                                              const knitout::MachineProfile& p) {
   knitout::Replay replay = knitout::replay_knitout(text, "out.k", p);
-  return knitout::prove_fabric(replay, knitout::split_lines(text), c);
+  return knitout::prove_fabric(replay, text, c);
 }
 
 }  // namespace skein::testing

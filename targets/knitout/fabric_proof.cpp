@@ -15,9 +15,8 @@ std::uint32_t fabric_loops(StitchType t) { return std::max<std::uint32_t>(info(t
 
 class Matcher {
  public:
-  Matcher(const Replay& r, const std::vector<std::string_view>& lines, const Compilation& c,
-          const CourseLayout& l)
-      : f_(r.fabric), r_(r), lines_(lines), c_(c), g_(c.knit), l_(l) {
+  Matcher(const Replay& r, std::string_view text, const Compilation& c, const CourseLayout& l)
+      : f_(r.fabric), r_(r), text_(text), c_(c), g_(c.knit), l_(l) {
     loop_of_.assign(g_.loops.size(), kNoLoop);
     stamp_.assign(f_.loops.size(), 0);
   }
@@ -58,6 +57,7 @@ class Matcher {
 
  private:
   std::string where(LoopId x) const {
+    if (lines_.empty()) lines_ = split_lines(text_);  // only ever needed for a message
     std::uint32_t line = f_.loops[x].line;
     return fmt::format("line {} ({})", line, line && line <= lines_.size() ? lines_[line - 1] : "");
   }
@@ -184,7 +184,8 @@ class Matcher {
 
   const Fabric& f_;
   const Replay& r_;
-  const std::vector<std::string_view>& lines_;
+  std::string_view text_;
+  mutable std::vector<std::string_view> lines_;
   const Compilation& c_;
   const KnitGraph& g_;
   const CourseLayout& l_;
@@ -196,12 +197,11 @@ class Matcher {
 
 }  // namespace
 
-ProofResult prove_fabric(const Replay& r, const std::vector<std::string_view>& lines,
-                         const Compilation& c) {
+ProofResult prove_fabric(const Replay& r, std::string_view text, const Compilation& c) {
   CourseLayout l = lay_out_courses(c);
   std::size_t needed = 0;
   for (StitchId s = 0; s < c.knit.size(); ++s) needed += fabric_loops(c.knit.type[s]);
-  Matcher m(r, lines, c, l);
+  Matcher m(r, text, c, l);
   ProofResult result;
   std::size_t best = 0;
   std::string best_why;

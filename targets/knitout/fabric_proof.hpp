@@ -29,7 +29,7 @@ struct ProofResult {
   std::size_t first_line = 0, last_line = 0;
 };
 
-ProofResult prove_fabric(const Replay& replay, const std::vector<std::string_view>& lines,
-                         const Compilation& input);
+// `text` is the replayed file, quoted in the message when the proof fails.
+ProofResult prove_fabric(const Replay& replay, std::string_view text, const Compilation& input);
 
 }  // namespace skein::knitout

@@ -95,7 +95,12 @@ bool parse_carriers(const Tokens& t, int first, const Header& h, CarrierMask& ma
   mask = 0;
   for (int i = first; i < t.count; ++i) {
     std::size_t c = 0;
-    while (c < h.carriers.size() && h.carriers[c] != t.word[i]) ++c;
+    std::int32_t number = 0;
+    if (h.numbered && parse_int(t.word[i], number) && number >= 1 && t.word[i][0] != '+' &&
+        static_cast<std::size_t>(number) <= h.carriers.size())
+      c = static_cast<std::size_t>(number - 1);
+    else
+      while (c < h.carriers.size() && h.carriers[c] != t.word[i]) ++c;
     if (c == h.carriers.size()) {
       error = fmt::format("carrier '{}' is not named in the ;;Carriers: header", t.word[i]);
       return false;
@@ -169,6 +174,9 @@ Header parse_header(const std::vector<std::string_view>& lines, const std::strin
       }
       if (h.carriers.empty() || h.carriers.size() > 32)
         fail("expected ;;Carriers: with 1 to 32 carrier names separated by spaces");
+      h.numbered = true;
+      for (std::size_t c = 0; c < h.carriers.size(); ++c)
+        h.numbered = h.numbered && h.carriers[c] == std::to_string(c + 1);
     } else if (key == "Machine") {
       h.machine = value;
     } else if (key == "Gauge") {
@@ -192,6 +200,123 @@ Header parse_header(const std::vector<std::string_view>& lines, const std::strin
   return h;
 }
 
+namespace {
+
+// Parses the words of one operation; the operation is told apart by its first letter first,
+// so the common ones cost one comparison.
+class OpParser {
+ public:
+  OpParser(const Tokens& t, const Header& h, Op& op, std::string& error)
+      : t_(t), h_(h), op_(op), error_(error) {}
+
+  bool parse() {
+    std::string_view name = t_.word[0];
+    switch (name.empty() ? ' ' : name[0]) {
+      case 'k': if (name == "knit") return stitch(OpCode::knit, "knit D N CS"); break;
+      case 't': if (name == "tuck") return stitch(OpCode::tuck, "tuck D N CS"); break;
+      case 'm': if (name == "miss") return stitch(OpCode::miss, "miss D N CS"); break;
+      case 'x':
+        if (name == "xfer") return words(3, "xfer N N2 (no carriers: split moves with yarn)") &&
+                                   needle(1, op_.a, "xfer N N2") && needle(2, op_.b, "xfer N N2") &&
+                                   set(OpCode::xfer);
+        if (name.starts_with("x-")) return extension(name);
+        break;
+      case 'd':
+        if (name == "drop") return words(2, kDrop) && needle(1, op_.a, kDrop) && set(OpCode::drop);
+        break;
+      case 'a':
+        if (name == "amiss") return words(2, "amiss N") && needle(1, op_.a, "amiss N") && set(OpCode::amiss);
+        break;
+      case 'r':
+        if (name == "rack") return words(2, "rack R") && rack();
+        if (name == "releasehook") return yarn(OpCode::releasehook, name);
+        break;
+      case 's':
+        if (name == "split") return split();
+        if (name == "stitch") return stitch_size();
+        break;
+      case 'i':
+        if (name == "in") return yarn(OpCode::in, name);
+        if (name == "inhook") return yarn(OpCode::inhook, name);
+        break;
+      case 'o':
+        if (name == "out") return yarn(OpCode::out, name);
+        if (name == "outhook") return yarn(OpCode::outhook, name);
+        break;
+      case 'p':
+        if (name == "pause") return words(1, "pause") && set(OpCode::pause);
+        break;
+    }
+    return fail(fmt::format("unknown operation '{}'; expected in, inhook, releasehook, out, outhook, "
+                            "knit, tuck, split, miss, drop, amiss, xfer, rack, stitch, pause or x-...",
+                            name));
+  }
+
+ private:
+  static constexpr const char* kDrop = "drop N (no carriers: knit drops with yarn)";
+
+  bool fail(std::string why) {
+    error_ = std::move(why);
+    return false;
+  }
+  bool set(OpCode code) {
+    op_.code = code;
+    return true;
+  }
+  bool words(int n, const char* form) { return t_.count == n || fail(fmt::format("expected '{}'", form)); }
+  bool at_least(int n, const char* form) { return t_.count >= n || fail(fmt::format("expected '{}'", form)); }
+  bool needle(int i, Needle& n, const char* form) {
+    return parse_needle(t_.word[i], n) ||
+           fail(fmt::format("expected '{}': '{}' is not a needle such as f12 or bs3", form, t_.word[i]));
+  }
+  bool direction(const char* form) {
+    return parse_direction(t_.word[1], op_.dir) ||
+           fail(fmt::format("expected '{}': the direction must be + or -, found '{}'", form, t_.word[1]));
+  }
+  bool carriers(int first) { return parse_carriers(t_, first, h_, op_.carriers, error_); }
+
+  bool stitch(OpCode code, const char* form) {
+    op_.code = code;
+    return at_least(3, form) && direction(form) && needle(2, op_.a, form) && carriers(3);
+  }
+  bool split() {
+    op_.code = OpCode::split;
+    const char* form = "split D N N2 CS";
+    return at_least(4, form) && direction(form) && needle(2, op_.a, form) && needle(3, op_.b, form) &&
+           carriers(4);
+  }
+  bool yarn(OpCode code, std::string_view name) {
+    op_.code = code;
+    if (!carriers(1)) return false;
+    return op_.carriers != 0 || fail(fmt::format("expected '{} CS' with at least one carrier", name));
+  }
+  bool rack() {
+    op_.code = OpCode::rack;
+    return parse_rack(t_.word[1], op_.rack_quarters) ||
+           fail(fmt::format("expected 'rack R': '{}' is not a racking such as -2, 1 or 0.25", t_.word[1]));
+  }
+  bool stitch_size() {
+    op_.code = OpCode::stitch;
+    std::int32_t l = 0, s = 0;
+    return (t_.count == 3 && parse_int(t_.word[1], l) && parse_int(t_.word[2], s)) ||
+           fail("expected 'stitch L T' with two whole numbers");
+  }
+  bool extension(std::string_view name) {
+    op_.code = OpCode::extension;
+    if (name != "x-stitch-number" && name != "x-speed-number") return true;
+    std::int32_t v = 0;
+    return (t_.count == 2 && parse_int(t_.word[1], v) && v >= 0) ||
+           fail(fmt::format("expected '{} K' with a whole number K >= 0", name));
+  }
+
+  const Tokens& t_;
+  const Header& h_;
+  Op& op_;
+  std::string& error_;
+};
+
+}  // namespace
+
 bool parse_op(std::string_view line, const Header& h, Op& op, std::string& error) {
   Tokens t = tokenize(line);
   if (t.count == 0) return false;
@@ -199,96 +324,8 @@ bool parse_op(std::string_view line, const Header& h, Op& op, std::string& error
     error = "expected at most 8 words on an operation line";
     return false;
   }
-  std::string_view name = t.word[0];
   op = Op{};
-  auto need = [&](int words, const char* form) {
-    if (t.count >= words) return true;
-    error = fmt::format("expected '{}'", form);
-    return false;
-  };
-  auto exactly = [&](int words, const char* form) {
-    if (t.count == words) return true;
-    error = fmt::format("expected '{}'", form);
-    return false;
-  };
-  auto needle = [&](int i, Needle& n, const char* form) {
-    if (parse_needle(t.word[i], n)) return true;
-    error = fmt::format("expected '{}': '{}' is not a needle such as f12 or bs3", form, t.word[i]);
-    return false;
-  };
-  auto direction = [&](const char* form) {
-    if (parse_direction(t.word[1], op.dir)) return true;
-    error = fmt::format("expected '{}': the direction must be + or -, found '{}'", form, t.word[1]);
-    return false;
-  };
-  if (name == "knit" || name == "tuck" || name == "miss") {
-    op.code = name == "knit" ? OpCode::knit : name == "tuck" ? OpCode::tuck : OpCode::miss;
-    const char* form = name == "knit" ? "knit D N CS" : name == "tuck" ? "tuck D N CS" : "miss D N CS";
-    return need(3, form) && direction(form) && needle(2, op.a, form) &&
-           parse_carriers(t, 3, h, op.carriers, error);
-  }
-  if (name == "split") {
-    op.code = OpCode::split;
-    return need(4, "split D N N2 CS") && direction("split D N N2 CS") &&
-           needle(2, op.a, "split D N N2 CS") && needle(3, op.b, "split D N N2 CS") &&
-           parse_carriers(t, 4, h, op.carriers, error);
-  }
-  if (name == "drop" || name == "amiss") {
-    op.code = name == "drop" ? OpCode::drop : OpCode::amiss;
-    const char* form = name == "drop" ? "drop N (no carriers: knit drops with yarn)" : "amiss N";
-    return exactly(2, form) && needle(1, op.a, form);
-  }
-  if (name == "xfer") {
-    op.code = OpCode::xfer;
-    return exactly(3, "xfer N N2 (no carriers: split moves with yarn)") &&
-           needle(1, op.a, "xfer N N2") && needle(2, op.b, "xfer N N2");
-  }
-  if (name == "in" || name == "inhook" || name == "releasehook" || name == "out" ||
-      name == "outhook") {
-    op.code = name == "in"            ? OpCode::in
-              : name == "inhook"      ? OpCode::inhook
-              : name == "releasehook" ? OpCode::releasehook
-              : name == "out"         ? OpCode::out
-                                      : OpCode::outhook;
-    if (!parse_carriers(t, 1, h, op.carriers, error)) return false;
-    if (op.carriers == 0) {
-      error = fmt::format("expected '{} CS' with at least one carrier", name);
-      return false;
-    }
-    return true;
-  }
-  if (name == "rack") {
-    op.code = OpCode::rack;
-    if (!exactly(2, "rack R")) return false;
-    if (parse_rack(t.word[1], op.rack_quarters)) return true;
-    error = fmt::format("expected 'rack R': '{}' is not a racking such as -2, 1 or 0.25", t.word[1]);
-    return false;
-  }
-  if (name == "stitch") {
-    op.code = OpCode::stitch;
-    std::int32_t l = 0, s = 0;
-    if (exactly(3, "stitch L T") && parse_int(t.word[1], l) && parse_int(t.word[2], s)) return true;
-    error = "expected 'stitch L T' with two whole numbers";
-    return false;
-  }
-  if (name == "pause") {
-    op.code = OpCode::pause;
-    return exactly(1, "pause");
-  }
-  if (name.starts_with("x-")) {
-    op.code = OpCode::extension;
-    if (name == "x-stitch-number" || name == "x-speed-number") {
-      std::int32_t v = 0;
-      if (t.count == 2 && parse_int(t.word[1], v) && v >= 0) return true;
-      error = fmt::format("expected '{} K' with a whole number K >= 0", name);
-      return false;
-    }
-    return true;
-  }
-  error = fmt::format("unknown operation '{}'; expected in, inhook, releasehook, out, outhook, "
-                      "knit, tuck, split, miss, drop, amiss, xfer, rack, stitch, pause or x-...",
-                      name);
-  return false;
+  return OpParser(t, h, op, error).parse();
 }
 
 std::string carrier_names(const Header& h, CarrierMask mask) {

@@ -47,6 +47,7 @@ struct Header {
   std::string machine, gauge, position, width;
   std::vector<std::string> carriers;  // ;;Carriers:, in order
   bool has_carriers = false;
+  bool numbered = false;               // the carriers are exactly 1 2 ... n (a fast lookup)
   std::size_t carriers_line = 0;       // 1-based line of ;;Carriers: (0 if absent)
   std::size_t first_op_line = 0;       // the first line after the header
 };

@@ -47,7 +47,7 @@ class VbedSimulator : public Simulator {
     }
     if (!against->knittability.knittable)
       throw Error(fmt::format("{} is not knittable, so no knitout of it can be proven", against->input));
-    knitout::ProofResult proof = knitout::prove_fabric(replay, knitout::split_lines(text), *against);
+    knitout::ProofResult proof = knitout::prove_fabric(replay, text, *against);
     report.proven = proof.proven;
     report.summary = fmt::format("{}: every operation is valid on {}; {}\n{}", file, profile.name,
                                  proof.summary, shop);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstring>
 #include <bit>
 #include <limits>
 
@@ -42,7 +43,7 @@ struct PassTracker {
 class VirtualBed {
  public:
   VirtualBed(const std::string& file, const MachineProfile& profile, std::string_view text)
-      : file_(file), p_(profile), lines_(split_lines(text)) {
+      : file_(file), p_(profile), text_(text), lines_(header_lines(text)) {
     n_ = static_cast<std::int32_t>(p_.needles);
   }
 
@@ -55,20 +56,27 @@ class VirtualBed {
     for (auto& bed : beds_) bed.assign(static_cast<std::size_t>(hi_ - lo_), Stack{});
     carriers_.assign(r_.header.carriers.size(), Carrier{});
     r_.fabric.by_carrier.assign(r_.header.carriers.size(), {});
-    r_.fabric.loops.reserve(lines_.size());  // at most one loop a line: no regrowth
-    r_.fabric.parents.reserve(lines_.size());
+    r_.fabric.loops.reserve(most_lines());  // at most one loop a line: no regrowth
+    r_.fabric.parents.reserve(most_lines());
     r_.stats.min_needle = std::numeric_limits<std::int32_t>::max();
     r_.stats.max_needle = std::numeric_limits<std::int32_t>::min();
     std::string error;
     Op op;
-    for (line_ = r_.header.first_op_line; line_ <= lines_.size(); ++line_) {
-      std::string_view text = lines_[line_ - 1];
+    // Operations are read straight from the text, a line at a time.
+    std::size_t pos = 0;
+    for (std::size_t skip = 1; skip < r_.header.first_op_line && pos < text_.size(); ++skip)
+      pos = next_line(pos);
+    for (line_ = r_.header.first_op_line; pos < text_.size(); ++line_) {
+      std::size_t next = next_line(pos);
+      std::string_view text = current_ = text_.substr(pos, next - pos - 1);
+      pos = next;
       if (!parse_op(text, r_.header, op, error)) {
         if (!error.empty()) fail(error);
         continue;
       }
       ++r_.stats.operations;
       last_op_line_ = line_;
+      last_op_ = current_;
       apply(op);
     }
     finish();
@@ -77,9 +85,26 @@ class VirtualBed {
 
  private:
   [[noreturn]] void fail(const std::string& why) const {
-    std::size_t line = std::min(line_, lines_.size());
-    throw ParseError(file_, line, line ? std::string(lines_[line - 1]) : std::string(), why);
+    throw ParseError(file_, line_, std::string(current_), why);
   }
+
+  // The magic line, the header and the line after it: all that is ever quoted by number.
+  static std::vector<std::string_view> header_lines(std::string_view text) {
+    std::vector<std::string_view> lines;
+    for (std::size_t pos = 0; pos < text.size();) {
+      std::size_t end = std::min(text.find('\n', pos), text.size());
+      lines.push_back(text.substr(pos, end - pos));
+      if (lines.size() > 1 && !lines.back().starts_with(";;")) break;
+      pos = end + 1;
+    }
+    return lines;
+  }
+  std::size_t next_line(std::size_t pos) const {
+    const void* end = std::memchr(text_.data() + pos, '\n', text_.size() - pos);
+    return end ? static_cast<std::size_t>(static_cast<const char*>(end) - text_.data()) + 1 : text_.size() + 1;
+  }
+  std::size_t most_lines() const { return text_.size() / 8 + 16; }  // the shortest op is 'drop f1'
+
   [[noreturn]] void fail_header(std::size_t line, const std::string& why) const {
     throw ParseError(file_, line, line && line <= lines_.size() ? std::string(lines_[line - 1]) : "", why);
   }
@@ -250,7 +275,7 @@ class VirtualBed {
     r_.fabric.loops.push_back(l);
     each(yarn, [&](Carrier&, std::size_t c) {
       std::vector<LoopId>& along = r_.fabric.by_carrier[c];
-      if (along.empty()) along.reserve(lines_.size());
+      if (along.empty()) along.reserve(most_lines());
       along.push_back(id);
     });
     return id;
@@ -367,6 +392,7 @@ class VirtualBed {
   void finish() {
     close_pass();
     line_ = last_op_line_ ? last_op_line_ : lines_.size();
+    current_ = last_op_line_ ? last_op_ : lines_.back();
     for (std::size_t c = 0; c < carriers_.size(); ++c)
       if (carriers_[c].state != CarrierState::out)
         fail(fmt::format("carrier {} is still in at the end of the file (take it out with {})",
@@ -383,7 +409,9 @@ class VirtualBed {
 
   std::string file_;
   const MachineProfile& p_;
-  std::vector<std::string_view> lines_;
+  std::string_view text_;
+  std::vector<std::string_view> lines_;  // the header's lines only
+  std::string_view current_, last_op_;   // the line being replayed, the last operation's
   Replay r_;
   std::array<std::vector<Stack>, 4> beds_;
   std::vector<Carrier> carriers_;
