@@ -60,19 +60,23 @@ std::string emit_error(const Compilation& c, const char* profile) {
 }
 
 TEST(KnitoutFit, TooWideForTheBedSaysHowManyNeedles) {
-  Compilation c = compile_stitch_mesh(build_from_rows(ribbed_rows(300, 2, {T::k}), Layout::sheet), "wide.obj");
+  Compilation c =
+      compile_stitch_mesh(build_from_rows(ribbed_rows(300, 2, {T::k}), Layout::sheet), "wide.obj");
   EXPECT_EQ(emit_error(c, "kniterate"),
             "wide.obj needs 300 needles (row 1, from face 1 (co, row 1)), kniterate has 252");
-  Compilation tube = compile_stitch_mesh(build_from_rows(ribbed_rows(260, 2, {T::k}), Layout::tube), "tube.obj");
+  Compilation tube =
+      compile_stitch_mesh(build_from_rows(ribbed_rows(260, 2, {T::k}), Layout::tube), "tube.obj");
   EXPECT_EQ(emit_error(tube, "kniterate"),
-            "tube.obj needs 260 needles in half gauge (row 1, from face 1 (co, row 1)), kniterate has 252");
+            "tube.obj needs 260 needles in half gauge (row 1, from face 1 (co, row 1)), kniterate "
+            "has 252");
 }
 
 TEST(KnitoutFit, ADoubleDecreaseNeedsThreeLoopsPerNeedle) {
   RowPlan plan = {{T::co, T::co, T::co, T::co}, {T::k, T::s2kp}, {T::bo, T::bo}};
   Compilation c = compile_stitch_mesh(build_from_rows(plan, Layout::sheet), "s2kp.obj");
-  EXPECT_EQ(emit_error(c, "kniterate"),
-            "a 3-to-1 decrease exceeds the 2 loops per needle kniterate allows, at face 6 (s2kp, row 2)");
+  EXPECT_EQ(
+      emit_error(c, "kniterate"),
+      "a 3-to-1 decrease exceeds the 2 loops per needle kniterate allows, at face 6 (s2kp, row 2)");
   EXPECT_EQ(emit_error(c, "swg091n2"), "no error");
 }
 
@@ -82,7 +86,8 @@ TEST(KnitoutFit, WhatIsNotSupportedYetIsNamedWithItsStitch) {
             "not yet supported by the knitout target: a stitch graph without rows (.st import), at "
             "line 1 (co)");
   EXPECT_EQ(emit_error(compile_model("samples/autoknit/test-C.st"), "generic"),
-            "not yet supported by the knitout target: several yarn pieces at once (2 pieces), at line 352 (k)");
+            "not yet supported by the knitout target: several yarn pieces at once (2 pieces), at "
+            "line 352 (k)");
 }
 
 TEST(KnitoutTarget, IsRegisteredWithItsSimulator) {
@@ -96,7 +101,8 @@ TEST(KnitoutTarget, IsRegisteredWithItsSimulator) {
 
 // The errors a model may give on a profile too small for it; anything else is a bug.
 bool is_fit_error(const std::string& what) {
-  return what.find(" needles") != std::string::npos || what.find("loops per needle") != std::string::npos;
+  return what.find(" needles") != std::string::npos ||
+         what.find("loops per needle") != std::string::npos;
 }
 
 // Many generated sheets and tubes with random shaping: each compiles and proves on every
@@ -122,7 +128,8 @@ TEST(KnitoutRandomized, ShapedSheetsAndTubesCompileAndProveOnEveryProfileTheyFit
       try {
         text = testing::emit_knitout_text(c, p);
       } catch (const Error& e) {
-        EXPECT_TRUE(is_fit_error(e.what())) << "trial " << trial << " on " << name << ": " << e.what();
+        EXPECT_TRUE(is_fit_error(e.what()))
+            << "trial " << trial << " on " << name << ": " << e.what();
         ++refused;
         continue;
       }

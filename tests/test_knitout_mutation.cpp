@@ -42,20 +42,23 @@ std::vector<std::string> words(const std::string& line) {
   }
   return w;
 }
-bool is_op(const std::string& line) { return !line.empty() && line[0] != ';'; }
+bool is_op(const std::string& line) {
+  return !line.empty() && line[0] != ';';
+}
 bool is_needle(const std::string& w) {
-  return w.size() >= 2 && (w[0] == 'f' || w[0] == 'b') && (std::isdigit(static_cast<unsigned char>(w.back())));
+  return w.size() >= 2 && (w[0] == 'f' || w[0] == 'b') &&
+         (std::isdigit(static_cast<unsigned char>(w.back())));
 }
 
 struct Mutant {
-  std::string kind;                 // drop, swap, needle, direction, rack, carrier
-  std::vector<std::size_t> lines;   // 0-based lines edited
+  std::string kind;                // drop, swap, needle, direction, rack, carrier
+  std::vector<std::size_t> lines;  // 0-based lines edited
   std::vector<std::string> text;
 };
 
 // One edit of `kind` at op line `i` (0-based), or nothing when it does not apply there.
-std::optional<Mutant> mutate(const std::vector<std::string>& lines, std::size_t i, const std::string& kind,
-                             const knitout::MachineProfile& p) {
+std::optional<Mutant> mutate(const std::vector<std::string>& lines, std::size_t i,
+                             const std::string& kind, const knitout::MachineProfile& p) {
   Mutant m{kind, {i}, lines};
   std::vector<std::string> w = words(lines[i]);
   auto rebuild = [&] {
@@ -174,8 +177,9 @@ void run_mutants(const std::string& name, const Compilation& c, const knitout::M
         std::string why = why_undetectable(*m, lines, testing::replay_and_prove(text, c, p));
         verdict = "undetectable by design: " + (why.empty() ? "UNEXPLAINED" : why);
         if (why.empty())
-          tally.unexplained.push_back(fmt::format("{} {} at line {}: '{}'{}", name, kind, i + 1, lines[i],
-                                                  m->lines.size() > 1 ? " with '" + lines[m->lines[1]] + "'" : ""));
+          tally.unexplained.push_back(
+              fmt::format("{} {} at line {}: '{}'{}", name, kind, i + 1, lines[i],
+                          m->lines.size() > 1 ? " with '" + lines[m->lines[1]] + "'" : ""));
       }
       ++tally.outcome[verdict];
     }
@@ -187,30 +191,33 @@ TEST(KnitoutMutation, EveryEditThatChangesTheFabricOrBreaksARuleIsRejected) {
   Tally tally;
   run_mutants("rib swatch on swg091n2", compile_model("samples/rib-swatch/rib-swatch.obj"),
               testing::shipped_profile("swg091n2"), 150, tally);
-  run_mutants("hat on kniterate", compile_model("samples/hat/hat.obj"), testing::shipped_profile("kniterate"),
-              150, tally);
+  run_mutants("hat on kniterate", compile_model("samples/hat/hat.obj"),
+              testing::shipped_profile("kniterate"), 150, tally);
   RowPlan sheet = {{T::co, T::co, T::co, T::co, T::co, T::co},
                    {T::k, T::kfb, T::p, T::yo, T::k, T::m1l},
                    {T::k, T::k2tog, T::p, T::ssk, T::m1r, T::k, T::p},
                    {T::k, T::p, T::s2kp, T::k, T::p2tog},
                    {T::bo, T::bo, T::bo, T::bo, T::bo}};
-  run_mutants("shaped sheet on generic", compile_stitch_mesh(build_from_rows(sheet, Layout::sheet), "sheet"),
+  run_mutants("shaped sheet on generic",
+              compile_stitch_mesh(build_from_rows(sheet, Layout::sheet), "sheet"),
               testing::shipped_profile("generic"), 150, tally);
   RandomShaping shaping;
-  run_mutants("shaped tube on swg091n2",
-              compile_stitch_mesh(build_from_rows(random_rows(20, 10, shaping, 7), Layout::tube), "tube"),
-              testing::shipped_profile("swg091n2"), 150, tally);
+  run_mutants(
+      "shaped tube on swg091n2",
+      compile_stitch_mesh(build_from_rows(random_rows(20, 10, shaping, 7), Layout::tube), "tube"),
+      testing::shipped_profile("swg091n2"), 150, tally);
   int rejected = 0, undetectable = 0;
   std::cout << "knitout mutants: " << tally.total << "\n";
   for (const auto& [verdict, count] : tally.outcome) {
     std::cout << fmt::format("  {:5}  {}\n", count, verdict);
     (verdict.starts_with("rejected") ? rejected : undetectable) += count;
   }
-  std::cout << fmt::format("  detection rate of edits that change the fabric or break a rule: {}/{}\n",
-                           rejected, tally.total - undetectable);
-  EXPECT_TRUE(tally.unexplained.empty()) << fmt::format("{} accepted edits have no reason:\n  {}",
-                                                        tally.unexplained.size(),
-                                                        fmt::join(tally.unexplained, "\n  "));
+  std::cout << fmt::format(
+      "  detection rate of edits that change the fabric or break a rule: {}/{}\n", rejected,
+      tally.total - undetectable);
+  EXPECT_TRUE(tally.unexplained.empty())
+      << fmt::format("{} accepted edits have no reason:\n  {}", tally.unexplained.size(),
+                     fmt::join(tally.unexplained, "\n  "));
   EXPECT_GT(rejected, tally.total * 3 / 4);
 }
 

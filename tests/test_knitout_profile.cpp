@@ -20,7 +20,7 @@ TEST(KnitoutProfile, ShippedProfilesLoadWithTheirBackEndsCarriers) {
   EXPECT_EQ(swg.hook, knitout::YarnHook::inhook);
   EXPECT_EQ(swg.first_pass, knitout::Direction::minus);
   EXPECT_TRUE(swg.rack_allowed(4 * 4 + 1 - 4));  // 3.25
-  EXPECT_FALSE(swg.rack_allowed(2));              // 0.5
+  EXPECT_FALSE(swg.rack_allowed(2));             // 0.5
   EXPECT_FALSE(swg.rack_allowed(-5 * 4));
   knitout::MachineProfile kn = testing::shipped_profile("kniterate");
   EXPECT_EQ(kn.carriers_line(), "1 2 3 4 5 6");
@@ -42,9 +42,10 @@ TEST(KnitoutProfile, ShippedNamesAreFoundFromTheSourceTree) {
     knitout::load_machine_profile("swg999");
     FAIL() << "expected a UsageError";
   } catch (const UsageError& e) {
-    EXPECT_EQ(std::string(e.what()),
-              "no machine profile 'swg999' in machine_profiles/ (looked beside the current directory "
-              "and the skein executable); known profiles: generic, kniterate, swg091n2");
+    EXPECT_EQ(
+        std::string(e.what()),
+        "no machine profile 'swg999' in machine_profiles/ (looked beside the current directory "
+        "and the skein executable); known profiles: generic, kniterate, swg091n2");
   }
   EXPECT_THROW(knitout::load_machine_profile(""), UsageError);
 }
@@ -67,12 +68,14 @@ std::string error_after_edit(const std::string& from, const std::string& to) {
 }
 
 TEST(KnitoutProfile, ABadOrUnknownFieldNamesTheFileLineAndField) {
-  EXPECT_EQ(error_after_edit("sliders: true", "slider: true"),
-            "line 16: unknown field 'slider'; known fields here: name, description, machine, gauge, "
-            "needles, position, width_header, carriers, racking, max_loops_per_needle, sliders, "
-            "knit_empty_needle, yarn, stitch_number, speed_number, cast_on, bind_off, timing");
+  EXPECT_EQ(
+      error_after_edit("sliders: true", "slider: true"),
+      "line 16: unknown field 'slider'; known fields here: name, description, machine, gauge, "
+      "needles, position, width_header, carriers, racking, max_loops_per_needle, sliders, "
+      "knit_empty_needle, yarn, stitch_number, speed_number, cast_on, bind_off, timing");
   EXPECT_EQ(error_after_edit("  max: 4 ", "  maximum: 4 "),
-            "line 12: unknown field 'racking.maximum'; known fields here: max, fractions, max_transfer_stretch");
+            "line 12: unknown field 'racking.maximum'; known fields here: max, fractions, "
+            "max_transfer_stretch");
   EXPECT_EQ(error_after_edit("needles: 540", "needles: many"),
             "line 7: field 'needles' must be a number from 8 to 100000, found 'many'");
   EXPECT_EQ(error_after_edit("needles: 540", "needles: 540.5"),

@@ -3,8 +3,8 @@
 // (the exact message of the first invalid line).
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <fmt/format.h>
+#include <filesystem>
 
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
@@ -22,7 +22,8 @@ std::string trailer(const std::string& text, const std::string& key) {
 
 std::vector<std::filesystem::path> rule_files() {
   std::vector<std::filesystem::path> files;
-  for (const auto& entry : std::filesystem::directory_iterator(testing::source_path("tests/data/knitout")))
+  for (const auto& entry :
+       std::filesystem::directory_iterator(testing::source_path("tests/data/knitout")))
     if (entry.path().extension() == ".k") files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   return files;
@@ -35,13 +36,15 @@ TEST(VbedRules, EachHandWrittenFileGivesItsExactVerdict) {
   for (const auto& path : files) {
     std::string text = read_file(path.string());
     std::string expect = trailer(text, "expect"), profile = trailer(text, "profile");
-    ASSERT_FALSE(expect.empty() || profile.empty()) << path << " needs '; profile:' and '; expect:' lines";
+    ASSERT_FALSE(expect.empty() || profile.empty())
+        << path << " needs '; profile:' and '; expect:' lines";
     std::string verdict = "valid";
     try {
       knitout::replay_knitout(text, path.filename().string(), testing::shipped_profile(profile));
     } catch (const ParseError& e) {
       verdict = fmt::format("line {}: {}", e.line(), e.expected());
-      EXPECT_TRUE(std::string(e.what()).starts_with(fmt::format("{}:{}: ", path.filename().string(), e.line())));
+      EXPECT_TRUE(std::string(e.what()).starts_with(
+          fmt::format("{}:{}: ", path.filename().string(), e.line())));
     }
     EXPECT_EQ(verdict, expect) << path.filename();
     valid += verdict == "valid";
@@ -52,8 +55,9 @@ TEST(VbedRules, EachHandWrittenFileGivesItsExactVerdict) {
 TEST(VbedRules, ATransferMayNotStretchFurtherThanTheProfileAllows) {
   knitout::MachineProfile p = testing::shipped_profile("generic");
   p.max_transfer_stretch = 2;
-  std::string text = ";!knitout-2\n;;Carriers: 1 2 3 4 5 6 7 8 9 10\nin 1\ntuck + f5 1\nrack 3\n"
-                     "xfer f5 b2\n";
+  std::string text =
+      ";!knitout-2\n;;Carriers: 1 2 3 4 5 6 7 8 9 10\nin 1\ntuck + f5 1\nrack 3\n"
+      "xfer f5 b2\n";
   try {
     knitout::replay_knitout(text, "stretch.k", p);
     FAIL() << "expected a ParseError";
@@ -80,7 +84,8 @@ TEST(VbedRules, ShopSummaryCountsWhatTheFileDoes) {
   EXPECT_GT(r.stats.seconds, 0);
   std::string summary = knitout::shop_summary(r, p);
   EXPECT_NE(summary.find("carriage passes: "), std::string::npos) << summary;
-  EXPECT_NE(summary.find("transfers: 2, rack changes: 2, loops dropped: 4"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("transfers: 2, rack changes: 2, loops dropped: 4"), std::string::npos)
+      << summary;
 }
 
 }  // namespace

@@ -8,14 +8,24 @@ namespace skein::knitout {
 namespace {
 
 [[noreturn]] void unsupported(const KnitGraph& g, const std::string& what, StitchId s) {
-  throw Error(fmt::format("not yet supported by the knitout target: {}, at {}", what, g.describe(s)));
+  throw Error(
+      fmt::format("not yet supported by the knitout target: {}, at {}", what, g.describe(s)));
 }
 
 bool has_machine_recipe(StitchType t) {
   switch (t) {
-    case StitchType::k: case StitchType::p: case StitchType::co: case StitchType::bo:
-    case StitchType::kfb: case StitchType::m1l: case StitchType::m1r: case StitchType::yo:
-    case StitchType::k2tog: case StitchType::ssk: case StitchType::p2tog: case StitchType::s2kp:
+    case StitchType::k:
+    case StitchType::p:
+    case StitchType::co:
+    case StitchType::bo:
+    case StitchType::kfb:
+    case StitchType::m1l:
+    case StitchType::m1r:
+    case StitchType::yo:
+    case StitchType::k2tog:
+    case StitchType::ssk:
+    case StitchType::p2tog:
+    case StitchType::s2kp:
       return true;
     default:
       return false;
@@ -25,7 +35,8 @@ bool has_machine_recipe(StitchType t) {
 void check_stitches(const KnitGraph& g) {
   for (StitchId s = 0; s < g.size(); ++s) {
     if (!has_machine_recipe(g.type[s]))
-      unsupported(g, fmt::format("the {} stitch ({})", info(g.type[s]).name, abbreviation(g.type[s])), s);
+      unsupported(
+          g, fmt::format("the {} stitch ({})", info(g.type[s]).name, abbreviation(g.type[s])), s);
     RowShape shape = g.row_shape[g.row[s]];
     if (shape == RowShape::unknown) unsupported(g, "a stitch graph without rows (.st import)", s);
     if (shape == RowShape::short_row) unsupported(g, "short rows", s);
@@ -59,16 +70,23 @@ void check_borders(const KnitGraph& g, const CourseLayout& l) {
     StitchId s = l.order[i];
     bool in_first = i < first.end, in_last = i >= last.begin;
     if (in_first != (g.type[s] == StitchType::co))
-      unsupported(g, in_first ? "a first row that is not all cast-on stitches" : "a cast-on stitch above the first row", s);
+      unsupported(g,
+                  in_first ? "a first row that is not all cast-on stitches"
+                           : "a cast-on stitch above the first row",
+                  s);
     if (in_last != (g.type[s] == StitchType::bo))
-      unsupported(g, in_last ? "a last row that is not all bind-off stitches" : "a bind-off stitch below the last row", s);
+      unsupported(g,
+                  in_last ? "a last row that is not all bind-off stitches"
+                          : "a bind-off stitch below the last row",
+                  s);
   }
   for (std::size_t c = 1; c < l.courses.size(); ++c) {
     StitchId end = l.order[l.courses[c].begin - 1];
     YarnLink link = g.yarn_link[end];
     if (link != (l.tube ? YarnLink::shift : YarnLink::turn))
-      unsupported(g, l.tube ? "a round that does not continue the helix across a shift-path"
-                            : "a row that does not start with a turn",
+      unsupported(g,
+                  l.tube ? "a round that does not continue the helix across a shift-path"
+                         : "a row that does not start with a turn",
                   l.order[l.courses[c].begin]);
   }
 }
@@ -109,7 +127,8 @@ CourseLayout lay_out_courses(const Compilation& c) {
   const KnitGraph& g = c.knit;
   if (g.size() == 0) throw Error("the model has no stitches: nothing to knit");
   if (c.yarns.size() != 1)
-    unsupported(g, fmt::format("several yarn pieces at once ({} pieces)", c.yarns.size()), c.yarns.first[1]);
+    unsupported(g, fmt::format("several yarn pieces at once ({} pieces)", c.yarns.size()),
+                c.yarns.first[1]);
   if (c.yarns.ring[0]) unsupported(g, "a yarn that closes on itself", c.yarns.first[0]);
   check_stitches(g);
   CourseLayout l;

@@ -13,14 +13,14 @@
 namespace skein::knitout {
 
 struct Course {
-  std::uint32_t row = 0;               // the knit graph's row number
-  std::uint32_t begin = 0, end = 0;    // its stitches: CourseLayout::order[begin, end)
-  bool left_to_right = true;           // the yarn runs left to right in its stitches' frames
+  std::uint32_t row = 0;             // the knit graph's row number
+  std::uint32_t begin = 0, end = 0;  // its stitches: CourseLayout::order[begin, end)
+  bool left_to_right = true;         // the yarn runs left to right in its stitches' frames
 };
 
 struct CourseLayout {
-  bool tube = false;               // closed rounds (a helix) rather than open rows
-  std::vector<StitchId> order;     // every stitch, in yarn order
+  bool tube = false;            // closed rounds (a helix) rather than open rows
+  std::vector<StitchId> order;  // every stitch, in yarn order
   std::vector<Course> courses;
   std::vector<std::uint8_t> left_to_right;  // per stitch
 };

@@ -18,9 +18,15 @@ struct Place {
   std::int32_t needle = 0;
   friend bool operator==(const Place&, const Place&) = default;
 };
-Needle at(Place p) { return {p.bed, p.needle}; }
-Bed other(Bed b) { return b == Bed::f ? Bed::b : Bed::f; }
-Place facing(Place p) { return {other(p.bed), p.needle}; }
+Needle at(Place p) {
+  return {p.bed, p.needle};
+}
+Bed other(Bed b) {
+  return b == Bed::f ? Bed::b : Bed::f;
+}
+Place facing(Place p) {
+  return {other(p.bed), p.needle};
+}
 
 // Where a stitch is knit in its course.
 struct StitchPlan {
@@ -47,7 +53,9 @@ std::int32_t rack_of(const Move& m) {
 }
 
 // Needles a course occupies: per stitch max(made, 1), laid out left to right.
-std::uint32_t footprint(StitchType t) { return std::max<std::uint32_t>(info(t).loops_out, 1); }
+std::uint32_t footprint(StitchType t) {
+  return std::max<std::uint32_t>(info(t).loops_out, 1);
+}
 
 class Emitter {
  public:
@@ -70,15 +78,18 @@ class Emitter {
       const Course& course = l_.courses[i];
       plan_course(course, false);
       transition(course);
-      if (i + 1 == l_.courses.size()) bind_off(course);
-      else knit_course(course);
+      if (i + 1 == l_.courses.size())
+        bind_off(course);
+      else
+        knit_course(course);
     }
   }
 
  private:
   // ---- fitting the model on the profile ----
   struct Footprint {
-    std::uint32_t total = 0, front = 0, split = 0;  // split: first stitch (left to right) on the back
+    std::uint32_t total = 0, front = 0,
+                  split = 0;  // split: first stitch (left to right) on the back
   };
   template <typename F>
   void each_left_to_right(const Course& c, F f) const {
@@ -112,21 +123,24 @@ class Emitter {
       std::uint32_t n = needles_needed(measure(c));
       if (n > widest) widest = n, at_course = &c;
     }
-    std::int32_t span = static_cast<std::int32_t>(p_.needles / 2), half = static_cast<std::int32_t>(widest / 2);
+    std::int32_t span = static_cast<std::int32_t>(p_.needles / 2),
+                 half = static_cast<std::int32_t>(widest / 2);
     fold_ = (span + half) / 2 - 1;
     if (widest > p_.needles)
-      throw Error(fmt::format("{} needs {} needles{} (row {}, from {}), {} has {}", c_.input, widest,
-                              l_.tube ? " in half gauge" : "", at_course->row + 1,
+      throw Error(fmt::format("{} needs {} needles{} (row {}, from {}), {} has {}", c_.input,
+                              widest, l_.tube ? " in half gauge" : "", at_course->row + 1,
                               g_.describe(l_.order[at_course->begin]), p_.name, p_.needles));
     for (StitchId s = 0; s < g_.size(); ++s) {
       std::uint32_t in = info(g_.type[s]).loops_in;
       if (in > p_.max_loops_per_needle)
-        throw Error(fmt::format("a {}-to-1 decrease exceeds the {} loop{} per needle {} allows, at {}",
-                                in, p_.max_loops_per_needle, p_.max_loops_per_needle == 1 ? "" : "s",
-                                p_.name, g_.describe(s)));
+        throw Error(
+            fmt::format("a {}-to-1 decrease exceeds the {} loop{} per needle {} allows, at {}", in,
+                        p_.max_loops_per_needle, p_.max_loops_per_needle == 1 ? "" : "s", p_.name,
+                        g_.describe(s)));
       if (in == 3 && reach_ < 2 * pitch_)
-        throw Error(fmt::format("a 3-to-1 decrease needs transfers across {} needles, {} allows {}, at {}",
-                                2 * pitch_, p_.name, p_.max_transfer_stretch, g_.describe(s)));
+        throw Error(
+            fmt::format("a 3-to-1 decrease needs transfers across {} needles, {} allows {}, at {}",
+                        2 * pitch_, p_.name, p_.max_transfer_stretch, g_.describe(s)));
     }
     if (reach_ < pitch_)
       throw Error(fmt::format("{} allows no sideways transfer (racking.max_transfer_stretch {})",
@@ -148,7 +162,9 @@ class Emitter {
     kept.total = f.total;
     std::uint32_t back = f.total - kept.front;
     bool balanced = kept.front <= back + 2 && back <= kept.front + 2;
-    if (kept.split > 0 && balanced && std::max(kept.front, back) <= static_cast<std::uint32_t>(fold_ + 1)) f = kept;
+    if (kept.split > 0 && balanced &&
+        std::max(kept.front, back) <= static_cast<std::uint32_t>(fold_ + 1))
+      f = kept;
   }
 
   void plan_course(const Course& c, bool first) {
@@ -166,7 +182,9 @@ class Emitter {
       sp.home = on_back ? Bed::b : Bed::f;
       sp.step = on_back ? -pitch_ : pitch_;
       // A sheet counts from its left end; a tube from its right fold, where the two beds meet.
-      std::int32_t rank = static_cast<std::int32_t>(!l_.tube ? qk : on_back ? qk - f.front : f.front - 1 - qk);
+      std::int32_t rank = static_cast<std::int32_t>(!l_.tube  ? qk
+                                                    : on_back ? qk - f.front
+                                                              : f.front - 1 - qk);
       std::int32_t sign = l_.tube ? -1 : 1;
       sp.needle = l_.tube ? 2 * (offset - rank) + (on_back ? 1 : 0) : offset + rank;
       sp.knit = is_purl(g_.type[s]) ? other(sp.home) : sp.home;
@@ -206,9 +224,9 @@ class Emitter {
     if (p_.width_header) w_.line(fmt::format(";;Width: {}", p_.needles));
     w_.line(fmt::format(";;Carriers: {}", p_.carriers_line()));
     w_.line(fmt::format(";;Position: {}", p_.position));
-    w_.line(fmt::format(";!source: {} ({} stitches, {} {}), knit by skein for {}", c_.input, g_.size(),
-                        l_.courses.size(), l_.tube ? "rounds: a tube in half gauge" : "rows: a sheet",
-                        p_.name));
+    w_.line(fmt::format(";!source: {} ({} stitches, {} {}), knit by skein for {}", c_.input,
+                        g_.size(), l_.courses.size(),
+                        l_.tube ? "rounds: a tube in half gauge" : "rows: a sheet", p_.name));
     if (p_.stitch_number) w_.line(fmt::format("x-stitch-number {}", p_.stitch_number));
     if (p_.speed_number) w_.line(fmt::format("x-speed-number {}", p_.speed_number));
   }
@@ -245,7 +263,8 @@ class Emitter {
     for (std::uint32_t i = c.begin; i < c.end; ++i) {
       const StitchPlan& sp = plan_[l_.order[i]];
       for (std::uint32_t loop : taken(l_.order[i]))
-        if (std::abs(ring(live_[loop].home) - ring({sp.home, sp.needle})) > reach_ / pitch_) return false;
+        if (std::abs(ring(live_[loop].home) - ring({sp.home, sp.needle})) > reach_ / pitch_)
+          return false;
     }
     return true;
   }
@@ -345,7 +364,8 @@ class Emitter {
       emit_moves(landing);
     }
     for (const Stack& st : stacks)
-      for (std::uint32_t loop : taken(st.stitch)) live_[loop].now = live_[loop].home = place_at(st.target);
+      for (std::uint32_t loop : taken(st.stitch))
+        live_[loop].now = live_[loop].home = place_at(st.target);
   }
 
   void send_purls(const Course& c, const std::vector<std::uint8_t>& ready) {
@@ -377,7 +397,8 @@ class Emitter {
     }
     std::uint32_t extra = 1u - sp.knit_slot;
     Place extra_home = sp.home_of(extra);
-    if (t == StitchType::kfb) {  // split: the old loop waits on the facing needle, then is knit there
+    if (t ==
+        StitchType::kfb) {  // split: the old loop waits on the facing needle, then is knit there
       Needle behind{other(sp.knit), sp.needle};
       w_.split(sp.travel, n, behind, carrier_);
       w_.knit(sp.travel, behind, carrier_);
@@ -441,8 +462,8 @@ class Emitter {
   void cast_on(const Course& c) {
     Direction next = p_.first_pass;
     if (p_.waste_rows > 0) {
-      w_.line(fmt::format(";!source: waste section: {} {} of waste yarn (carrier {})", p_.waste_rows,
-                          l_.tube ? "rounds" : "rows", p_.waste_carrier));
+      w_.line(fmt::format(";!source: waste section: {} {} of waste yarn (carrier {})",
+                          p_.waste_rows, l_.tube ? "rounds" : "rows", p_.waste_carrier));
       yarn_in(p_.waste_carrier);
       Direction d = tuck_border(c, p_.waste_carrier);
       release(p_.waste_carrier);
@@ -506,7 +527,7 @@ class Emitter {
   CourseLayout l_;
   KnitoutWriter w_;
   std::int32_t pitch_ = 1, reach_ = 1;
-  std::int32_t fold_ = 0;  // a tube's right fold: front f2R faces back b2R+1 beside it
+  std::int32_t fold_ = 0;         // a tube's right fold: front f2R faces back b2R+1 beside it
   std::vector<StitchPlan> plan_;  // per stitch, for the course being knit
   std::vector<LoopPlace> live_;   // per loop of the knit graph
   std::string carrier_;

@@ -11,7 +11,9 @@ namespace skein::knitout {
 namespace {
 
 // Fabric loops a stitch makes along its yarn (a bind-off's chain loop included).
-std::uint32_t fabric_loops(StitchType t) { return std::max<std::uint32_t>(info(t).loops_out, 1); }
+std::uint32_t fabric_loops(StitchType t) {
+  return std::max<std::uint32_t>(info(t).loops_out, 1);
+}
 
 class Matcher {
  public:
@@ -35,14 +37,16 @@ class Matcher {
       StitchType t = g_.type[s];
       std::uint32_t n = fabric_loops(t);
       if (pos + n > yarn.size()) {
-        why = fmt::format("the yarn of carrier {} ends before {}", r_.header.carriers[carrier], g_.describe(s));
+        why = fmt::format("the yarn of carrier {} ends before {}", r_.header.carriers[carrier],
+                          g_.describe(s));
         return false;
       }
       for (std::uint32_t i = 0; i < n; ++i) {
         const FabricLoop& fl = f_.loops[yarn[pos + i]];
         if (fl.yarn != mask || fl.piece != f_.loops[yarn[start]].piece) {
           why = fmt::format("{}: {} is made {}", g_.describe(s), where(yarn[pos + i]),
-                            fl.yarn != mask ? "by several carriers together" : "by another yarn piece (the yarn was cut)");
+                            fl.yarn != mask ? "by several carriers together"
+                                            : "by another yarn piece (the yarn was cut)");
           return false;
         }
       }
@@ -77,7 +81,8 @@ class Matcher {
     std::string out = "through the loop";
     out += expected.size() > 1 ? "s of " : " of ";
     for (std::size_t i = 0; i < expected.size(); ++i)
-      out += fmt::format("{}{} ({})", i ? ", " : "", describe_maker(expected[i]), where(expected[i]));
+      out +=
+          fmt::format("{}{} ({})", i ? ", " : "", describe_maker(expected[i]), where(expected[i]));
     return out;
   }
   std::string describe_maker(LoopId x) const {
@@ -93,8 +98,8 @@ class Matcher {
     std::sort(have.begin(), have.end());
     std::sort(want.begin(), want.end());
     if (have == want) return true;
-    why = fmt::format("{} is not there: {} makes its loop {}, expected {}", g_.describe(s), where(x),
-                      describe_parents(x), describe_expected(expected));
+    why = fmt::format("{} is not there: {} makes its loop {}, expected {}", g_.describe(s),
+                      where(x), describe_parents(x), describe_expected(expected));
     return false;
   }
 
@@ -118,7 +123,9 @@ class Matcher {
       bool ltr = l_.left_to_right[s];
       for (std::uint8_t i = 0; i < 2; ++i) {
         std::uint8_t slot = slot_along_yarn(ltr, i, 2);
-        if (!parents_are(loops[i], made_slot_pulled_through(t, slot, ltr) ? through : std::vector<LoopId>{}, s, why))
+        if (!parents_are(loops[i],
+                         made_slot_pulled_through(t, slot, ltr) ? through : std::vector<LoopId>{},
+                         s, why))
           return false;
       }
     } else {
@@ -127,19 +134,20 @@ class Matcher {
         auto parents = f_.parents_of(loops[0]);
         LoopId top = loop_of_[taken[stacking_order(t).back()]];
         if (parents.back() != top) {
-          why = fmt::format("{} leans the wrong way: {} has the loop of {} on top, expected that of {}",
-                            g_.describe(s), where(loops[0]), describe_maker(parents.back()),
-                            describe_maker(top));
+          why = fmt::format(
+              "{} leans the wrong way: {} has the loop of {} on top, expected that of {}",
+              g_.describe(s), where(loops[0]), describe_maker(parents.back()), describe_maker(top));
           return false;
         }
       }
     }
     if (!l_.tube && !made.empty() && f_.loops[loops[0]].front == is_purl(t)) {
-      why = fmt::format("{} is a {} but {} knits it on the {} bed", g_.describe(s),
-                        info(t).name, where(loops[0]), is_purl(t) ? "front" : "back");
+      why = fmt::format("{} is a {} but {} knits it on the {} bed", g_.describe(s), info(t).name,
+                        where(loops[0]), is_purl(t) ? "front" : "back");
       return false;
     }
-    if (!travels_along_course(s, t, loops, std::max<std::size_t>(made.size(), 1), why)) return false;
+    if (!travels_along_course(s, t, loops, std::max<std::size_t>(made.size(), 1), why))
+      return false;
     for (std::size_t i = 0; i < made.size(); ++i)
       loop_of_[made[slot_along_yarn(l_.left_to_right[s], static_cast<std::uint8_t>(i),
                                     static_cast<std::uint8_t>(made.size()))]] = loops[i];
@@ -173,8 +181,8 @@ class Matcher {
       std::uint32_t want = g_.type[l.taker] == StitchType::kfb ? 2 : 1;
       LoopId x = loop_of_[loop];
       if (f_.loops[x].children != want) {
-        why = fmt::format("the loop {} makes for {} is pulled through {} time{}, expected {}", where(x),
-                          g_.describe(l.maker), f_.loops[x].children,
+        why = fmt::format("the loop {} makes for {} is pulled through {} time{}, expected {}",
+                          where(x), g_.describe(l.maker), f_.loops[x].children,
                           f_.loops[x].children == 1 ? "" : "s", want);
         return false;
       }
@@ -189,7 +197,7 @@ class Matcher {
   const Compilation& c_;
   const KnitGraph& g_;
   const CourseLayout& l_;
-  std::vector<LoopId> loop_of_;      // per knit graph loop: its fabric loop
+  std::vector<LoopId> loop_of_;       // per knit graph loop: its fabric loop
   std::vector<std::uint32_t> stamp_;  // per fabric loop: the try that matched it
   std::uint32_t try_ = 0;
   int sign_ = 0;  // the first stitch's direction relative to its frame
@@ -227,9 +235,10 @@ ProofResult prove_fabric(const Replay& r, std::string_view text, const Compilati
   if (best_why.empty()) {
     std::size_t most = 0;
     for (const auto& yarn : r.fabric.by_carrier) most = std::max(most, yarn.size());
-    best_why = fmt::format("no carrier makes enough loops: the input needs {} (one per stitch, two "
-                           "per increase), the busiest carrier makes {}",
-                           needed, most);
+    best_why = fmt::format(
+        "no carrier makes enough loops: the input needs {} (one per stitch, two "
+        "per increase), the busiest carrier makes {}",
+        needed, most);
   }
   result.summary = fmt::format("NOT proven against {}: {}", c.input, best_why);
   return result;

@@ -11,7 +11,9 @@ namespace {
 
 constexpr std::string_view kMagic = ";!knitout-2";
 
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+bool is_space(char c) {
+  return c == ' ' || c == '\t' || c == '\r';
+}
 
 // Splits the code part of a line (before any ';') into at most 8 tokens.
 struct Tokens {
@@ -60,9 +62,12 @@ bool parse_needle(std::string_view s, Needle& n) {
 }
 
 bool parse_direction(std::string_view s, Direction& d) {
-  if (s == "+") d = Direction::plus;
-  else if (s == "-") d = Direction::minus;
-  else return false;
+  if (s == "+")
+    d = Direction::plus;
+  else if (s == "-")
+    d = Direction::minus;
+  else
+    return false;
   return true;
 }
 
@@ -80,11 +85,16 @@ bool parse_rack(std::string_view s, std::int32_t& quarters) {
   if (dot != std::string_view::npos) {
     std::string_view frac = s.substr(dot + 1);
     while (!frac.empty() && frac.back() == '0') frac.remove_suffix(1);
-    if (frac == "") q += 0;
-    else if (frac == "25") q += 1;
-    else if (frac == "5") q += 2;
-    else if (frac == "75") q += 3;
-    else return false;
+    if (frac == "")
+      q += 0;
+    else if (frac == "25")
+      q += 1;
+    else if (frac == "5")
+      q += 2;
+    else if (frac == "75")
+      q += 3;
+    else
+      return false;
   }
   quarters = negative ? -q : q;
   return true;
@@ -120,15 +130,21 @@ std::string_view trim(std::string_view s) {
 
 const char* bed_name(Bed bed) {
   switch (bed) {
-    case Bed::f: return "f";
-    case Bed::b: return "b";
-    case Bed::fs: return "fs";
-    case Bed::bs: return "bs";
+    case Bed::f:
+      return "f";
+    case Bed::b:
+      return "b";
+    case Bed::fs:
+      return "fs";
+    case Bed::bs:
+      return "bs";
   }
   return "?";
 }
 
-std::string needle_name(Needle n) { return fmt::format("{}{}", bed_name(n.bed), n.index); }
+std::string needle_name(Needle n) {
+  return fmt::format("{}{}", bed_name(n.bed), n.index);
+}
 
 const char* op_name(OpCode code) {
   constexpr const char* kNames[] = {"in",   "inhook", "releasehook", "out",  "outhook", "knit",
@@ -161,7 +177,9 @@ Header parse_header(const std::vector<std::string_view>& lines, const std::strin
     std::size_t colon = line.find(": ");
     if (colon == std::string_view::npos) break;  // a comment that only looks like a header
     std::string_view key = line.substr(2, colon - 2), value = trim(line.substr(colon + 2));
-    auto fail = [&](const std::string& why) { throw ParseError(file, i + 1, std::string(lines[i]), why); };
+    auto fail = [&](const std::string& why) {
+      throw ParseError(file, i + 1, std::string(lines[i]), why);
+    };
     if (key == "Carriers") {
       h.has_carriers = true;
       h.carriers_line = i + 1;
@@ -183,7 +201,8 @@ Header parse_header(const std::vector<std::string_view>& lines, const std::strin
       char* end = nullptr;
       std::string v(value);
       double g = std::strtod(v.c_str(), &end);
-      if (v.empty() || *end != '\0' || !(g > 0)) fail("expected ;;Gauge: a number greater than zero");
+      if (v.empty() || *end != '\0' || !(g > 0))
+        fail("expected ;;Gauge: a number greater than zero");
       h.gauge = v;
     } else if (key == "Position") {
       if (value != "Left" && value != "Center" && value != "Right" && value != "Keep")
@@ -212,20 +231,28 @@ class OpParser {
   bool parse() {
     std::string_view name = t_.word[0];
     switch (name.empty() ? ' ' : name[0]) {
-      case 'k': if (name == "knit") return stitch(OpCode::knit, "knit D N CS"); break;
-      case 't': if (name == "tuck") return stitch(OpCode::tuck, "tuck D N CS"); break;
-      case 'm': if (name == "miss") return stitch(OpCode::miss, "miss D N CS"); break;
+      case 'k':
+        if (name == "knit") return stitch(OpCode::knit, "knit D N CS");
+        break;
+      case 't':
+        if (name == "tuck") return stitch(OpCode::tuck, "tuck D N CS");
+        break;
+      case 'm':
+        if (name == "miss") return stitch(OpCode::miss, "miss D N CS");
+        break;
       case 'x':
-        if (name == "xfer") return words(3, "xfer N N2 (no carriers: split moves with yarn)") &&
-                                   needle(1, op_.a, "xfer N N2") && needle(2, op_.b, "xfer N N2") &&
-                                   set(OpCode::xfer);
+        if (name == "xfer")
+          return words(3, "xfer N N2 (no carriers: split moves with yarn)") &&
+                 needle(1, op_.a, "xfer N N2") && needle(2, op_.b, "xfer N N2") &&
+                 set(OpCode::xfer);
         if (name.starts_with("x-")) return extension(name);
         break;
       case 'd':
         if (name == "drop") return words(2, kDrop) && needle(1, op_.a, kDrop) && set(OpCode::drop);
         break;
       case 'a':
-        if (name == "amiss") return words(2, "amiss N") && needle(1, op_.a, "amiss N") && set(OpCode::amiss);
+        if (name == "amiss")
+          return words(2, "amiss N") && needle(1, op_.a, "amiss N") && set(OpCode::amiss);
         break;
       case 'r':
         if (name == "rack") return words(2, "rack R") && rack();
@@ -247,9 +274,10 @@ class OpParser {
         if (name == "pause") return words(1, "pause") && set(OpCode::pause);
         break;
     }
-    return fail(fmt::format("unknown operation '{}'; expected in, inhook, releasehook, out, outhook, "
-                            "knit, tuck, split, miss, drop, amiss, xfer, rack, stitch, pause or x-...",
-                            name));
+    return fail(
+        fmt::format("unknown operation '{}'; expected in, inhook, releasehook, out, outhook, "
+                    "knit, tuck, split, miss, drop, amiss, xfer, rack, stitch, pause or x-...",
+                    name));
   }
 
  private:
@@ -263,15 +291,21 @@ class OpParser {
     op_.code = code;
     return true;
   }
-  bool words(int n, const char* form) { return t_.count == n || fail(fmt::format("expected '{}'", form)); }
-  bool at_least(int n, const char* form) { return t_.count >= n || fail(fmt::format("expected '{}'", form)); }
+  bool words(int n, const char* form) {
+    return t_.count == n || fail(fmt::format("expected '{}'", form));
+  }
+  bool at_least(int n, const char* form) {
+    return t_.count >= n || fail(fmt::format("expected '{}'", form));
+  }
   bool needle(int i, Needle& n, const char* form) {
     return parse_needle(t_.word[i], n) ||
-           fail(fmt::format("expected '{}': '{}' is not a needle such as f12 or bs3", form, t_.word[i]));
+           fail(fmt::format("expected '{}': '{}' is not a needle such as f12 or bs3", form,
+                            t_.word[i]));
   }
   bool direction(const char* form) {
     return parse_direction(t_.word[1], op_.dir) ||
-           fail(fmt::format("expected '{}': the direction must be + or -, found '{}'", form, t_.word[1]));
+           fail(fmt::format("expected '{}': the direction must be + or -, found '{}'", form,
+                            t_.word[1]));
   }
   bool carriers(int first) { return parse_carriers(t_, first, h_, op_.carriers, error_); }
 
@@ -282,18 +316,20 @@ class OpParser {
   bool split() {
     op_.code = OpCode::split;
     const char* form = "split D N N2 CS";
-    return at_least(4, form) && direction(form) && needle(2, op_.a, form) && needle(3, op_.b, form) &&
-           carriers(4);
+    return at_least(4, form) && direction(form) && needle(2, op_.a, form) &&
+           needle(3, op_.b, form) && carriers(4);
   }
   bool yarn(OpCode code, std::string_view name) {
     op_.code = code;
     if (!carriers(1)) return false;
-    return op_.carriers != 0 || fail(fmt::format("expected '{} CS' with at least one carrier", name));
+    return op_.carriers != 0 ||
+           fail(fmt::format("expected '{} CS' with at least one carrier", name));
   }
   bool rack() {
     op_.code = OpCode::rack;
     return parse_rack(t_.word[1], op_.rack_quarters) ||
-           fail(fmt::format("expected 'rack R': '{}' is not a racking such as -2, 1 or 0.25", t_.word[1]));
+           fail(fmt::format("expected 'rack R': '{}' is not a racking such as -2, 1 or 0.25",
+                            t_.word[1]));
   }
   bool stitch_size() {
     op_.code = OpCode::stitch;

@@ -13,8 +13,12 @@
 namespace skein::knitout {
 
 enum class Bed : std::uint8_t { f, b, fs, bs };
-inline bool is_front(Bed bed) { return bed == Bed::f || bed == Bed::fs; }
-inline bool is_slider(Bed bed) { return bed == Bed::fs || bed == Bed::bs; }
+inline bool is_front(Bed bed) {
+  return bed == Bed::f || bed == Bed::fs;
+}
+inline bool is_slider(Bed bed) {
+  return bed == Bed::fs || bed == Bed::bs;
+}
 const char* bed_name(Bed bed);
 
 struct Needle {
@@ -25,10 +29,22 @@ struct Needle {
 std::string needle_name(Needle n);  // "f12", "bs3"
 
 enum class OpCode : std::uint8_t {
-  in, inhook, releasehook, out, outhook,  // yarn
-  knit, tuck, split, miss,                // with a direction and carriers
-  drop, amiss, xfer,                      // without carriers
-  rack, stitch, pause, extension,         // machine state, x-... extensions
+  in,
+  inhook,
+  releasehook,
+  out,
+  outhook,  // yarn
+  knit,
+  tuck,
+  split,
+  miss,  // with a direction and carriers
+  drop,
+  amiss,
+  xfer,  // without carriers
+  rack,
+  stitch,
+  pause,
+  extension,  // machine state, x-... extensions
 };
 const char* op_name(OpCode code);
 
@@ -37,7 +53,7 @@ using CarrierMask = std::uint32_t;  // bit i: carrier i of the ;;Carriers: heade
 struct Op {
   OpCode code = OpCode::pause;
   Direction dir = Direction::none;
-  Needle a, b;                   // b: the destination of split/xfer
+  Needle a, b;  // b: the destination of split/xfer
   CarrierMask carriers = 0;
   std::int32_t rack_quarters = 0;  // rack, in quarter needles
 };
@@ -47,9 +63,9 @@ struct Header {
   std::string machine, gauge, position, width;
   std::vector<std::string> carriers;  // ;;Carriers:, in order
   bool has_carriers = false;
-  bool numbered = false;               // the carriers are exactly 1 2 ... n (a fast lookup)
-  std::size_t carriers_line = 0;       // 1-based line of ;;Carriers: (0 if absent)
-  std::size_t first_op_line = 0;       // the first line after the header
+  bool numbered = false;          // the carriers are exactly 1 2 ... n (a fast lookup)
+  std::size_t carriers_line = 0;  // 1-based line of ;;Carriers: (0 if absent)
+  std::size_t first_op_line = 0;  // the first line after the header
 };
 
 // Splits knitout text into lines without copying; line i (1-based) is lines[i-1].

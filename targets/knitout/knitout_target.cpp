@@ -40,13 +40,15 @@ class VbedSimulator : public Simulator {
     std::string shop = knitout::shop_summary(replay, profile);
     VerifyReport report;
     if (!against) {
-      report.summary = fmt::format("{}: every operation is valid on {}\n{}\n  give --against INPUT "
-                                   "to prove the fabric",
-                                   file, profile.name, shop);
+      report.summary = fmt::format(
+          "{}: every operation is valid on {}\n{}\n  give --against INPUT "
+          "to prove the fabric",
+          file, profile.name, shop);
       return report;
     }
     if (!against->knittability.knittable)
-      throw Error(fmt::format("{} is not knittable, so no knitout of it can be proven", against->input));
+      throw Error(
+          fmt::format("{} is not knittable, so no knitout of it can be proven", against->input));
     knitout::ProofResult proof = knitout::prove_fabric(replay, text, *against);
     report.proven = proof.proven;
     report.summary = fmt::format("{}: every operation is valid on {}; {}\n{}", file, profile.name,

@@ -46,15 +46,17 @@ class ProfileReader {
   };
   void read_map(const YAML::Node& map, const std::string& where, const std::vector<Field>& fields) {
     if (!map.IsMap())
-      fail(map.Mark(), fmt::format("expected {} to be a map of fields", where.empty() ? "the profile" : where));
+      fail(map.Mark(),
+           fmt::format("expected {} to be a map of fields", where.empty() ? "the profile" : where));
     for (const auto& entry : map) {
       std::string key = entry.first.as<std::string>();
-      auto it = std::find_if(fields.begin(), fields.end(), [&](const Field& f) { return key == f.name; });
+      auto it =
+          std::find_if(fields.begin(), fields.end(), [&](const Field& f) { return key == f.name; });
       if (it == fields.end()) {
         std::string known;
         for (const Field& f : fields) known += (known.empty() ? "" : ", ") + std::string(f.name);
-        fail(entry.first.Mark(), fmt::format("unknown field '{}{}'; known fields here: {}",
-                                             prefix(where), key, known));
+        fail(entry.first.Mark(),
+             fmt::format("unknown field '{}{}'; known fields here: {}", prefix(where), key, known));
       }
       it->read(entry.second, prefix(where) + key);
     }
@@ -72,14 +74,16 @@ class ProfileReader {
     char* end = nullptr;
     double value = std::strtod(s.c_str(), &end);
     if (s.empty() || *end != '\0' || !(value >= low && value <= high))
-      fail(n.Mark(), fmt::format("field '{}' must be a number from {} to {}, found '{}'", field, low, high, s));
+      fail(n.Mark(), fmt::format("field '{}' must be a number from {} to {}, found '{}'", field,
+                                 low, high, s));
     return value;
   }
   std::uint32_t whole(const YAML::Node& n, const std::string& field, std::uint32_t low,
                       std::uint32_t high) const {
     double value = number(n, field, low, high);
     if (value != std::floor(value))
-      fail(n.Mark(), fmt::format("field '{}' must be a whole number, found '{}'", field, n.Scalar()));
+      fail(n.Mark(),
+           fmt::format("field '{}' must be a whole number, found '{}'", field, n.Scalar()));
     return static_cast<std::uint32_t>(value);
   }
   bool flag(const YAML::Node& n, const std::string& field) const {
@@ -119,6 +123,31 @@ std::vector<std::string> split_words(const std::string& line) {
   return words;
 }
 
+// Readers that store a field's value, for the field tables below.
+using Read = std::function<void(const YAML::Node&, const std::string&)>;
+Read text_to(const ProfileReader& r, std::string& out) {
+  return [&r, &out](const YAML::Node& n, const std::string& f) { out = r.text(n, f); };
+}
+Read number_to(const ProfileReader& r, double& out, double low, double high) {
+  return [&r, &out, low, high](const YAML::Node& n, const std::string& f) {
+    out = r.number(n, f, low, high);
+  };
+}
+template <typename T>
+Read whole_to(const ProfileReader& r, T& out, std::uint32_t low, std::uint32_t high) {
+  return [&r, &out, low, high](const YAML::Node& n, const std::string& f) {
+    out = static_cast<T>(r.whole(n, f, low, high));
+  };
+}
+Read flag_to(const ProfileReader& r, bool& out) {
+  return [&r, &out](const YAML::Node& n, const std::string& f) { out = r.flag(n, f); };
+}
+Read map_of(ProfileReader& r, std::vector<Field> fields) {
+  return [&r, fields = std::move(fields)](const YAML::Node& n, const std::string& where) {
+    r.read_map(n, where, fields);
+  };
+}
+
 MachineProfile parse_profile(const std::string& path, const std::string& text) {
   ProfileReader r(path, text);
   YAML::Node root;
@@ -129,80 +158,73 @@ MachineProfile parse_profile(const std::string& path, const std::string& text) {
   }
   MachineProfile p;
   p.file = path;
-  auto str = [&](std::string& out) {
-    return [&r, &out](const YAML::Node& n, const std::string& f) { out = r.text(n, f); };
+  std::string hook, first_pass, knit_empty, style;
+  auto carriers = [&](const YAML::Node& n, const std::string& f) {
+    p.carriers = split_words(r.text(n, f));
+    if (p.carriers.empty() || p.carriers.size() > 32)
+      r.fail(n.Mark(), fmt::format("field '{}' must name 1 to 32 carriers separated by spaces", f));
   };
+  auto fractions = [&](const YAML::Node& n, const std::string& f) {
+    if (!n.IsSequence())
+      r.fail(n.Mark(), fmt::format("field '{}' must be a list such as [0, 0.25]", f));
+    for (const auto& item : n) p.rack_fractions.push_back(r.number(item, f, 0, 0.75));
+  };
+  auto choice_to = [&](std::string& out, std::initializer_list<const char*> allowed) -> Read {
+    return [&r, &out, allowed](const YAML::Node& n, const std::string& f) {
+      out = r.choice(n, f, allowed);
+    };
+  };
+  // clang-format off
   r.read_map(root, "", {
-    {"name", true, str(p.name)},
-    {"description", true, str(p.description)},
-    {"machine", true, str(p.machine)},
-    {"gauge", true, [&](const YAML::Node& n, const std::string& f) { p.gauge = r.number(n, f, 1, 100); }},
-    {"needles", true, [&](const YAML::Node& n, const std::string& f) { p.needles = r.whole(n, f, 8, 100000); }},
-    {"position", true, [&](const YAML::Node& n, const std::string& f) {
-       p.position = r.choice(n, f, {"Left", "Center", "Right", "Keep"}); }},
-    {"width_header", true, [&](const YAML::Node& n, const std::string& f) { p.width_header = r.flag(n, f); }},
-    {"carriers", true, [&](const YAML::Node& n, const std::string& f) {
-       p.carriers = split_words(r.text(n, f));
-       if (p.carriers.empty() || p.carriers.size() > 32)
-         r.fail(n.Mark(), fmt::format("field '{}' must name 1 to 32 carriers separated by spaces", f));
-     }},
-    {"racking", true, [&](const YAML::Node& n, const std::string& where) {
-       r.read_map(n, where, {
-         {"max", true, [&](const YAML::Node& v, const std::string& f) {
-            p.max_rack = static_cast<std::int32_t>(r.whole(v, f, 0, 64)); }},
-         {"fractions", true, [&](const YAML::Node& v, const std::string& f) {
-            if (!v.IsSequence()) r.fail(v.Mark(), fmt::format("field '{}' must be a list such as [0, 0.25]", f));
-            for (const auto& item : v) p.rack_fractions.push_back(r.number(item, f, 0, 0.75));
-          }},
-         {"max_transfer_stretch", true, [&](const YAML::Node& v, const std::string& f) {
-            p.max_transfer_stretch = static_cast<std::int32_t>(r.whole(v, f, 0, 64)); }},
-       });
-     }},
-    {"max_loops_per_needle", true, [&](const YAML::Node& n, const std::string& f) {
-       p.max_loops_per_needle = r.whole(n, f, 1, 15); }},
-    {"sliders", true, [&](const YAML::Node& n, const std::string& f) { p.sliders = r.flag(n, f); }},
-    {"knit_empty_needle", true, [&](const YAML::Node& n, const std::string& f) {
-       p.knit_empty_needle_is_error = r.choice(n, f, {"error", "allowed"}) == "error"; }},
-    {"yarn", true, [&](const YAML::Node& n, const std::string& where) {
-       r.read_map(n, where, {
-         {"hook", true, [&](const YAML::Node& v, const std::string& f) {
-            p.hook = r.choice(v, f, {"inhook", "in"}) == "inhook" ? YarnHook::inhook : YarnHook::in; }},
-         {"first_pass", true, [&](const YAML::Node& v, const std::string& f) {
-            p.first_pass = r.choice(v, f, {"+", "-"}) == "+" ? Direction::plus : Direction::minus; }},
-         {"carrier", true, str(p.yarn_carrier)},
-         {"waste_carrier", false, str(p.waste_carrier)},
-       });
-     }},
-    {"stitch_number", false, [&](const YAML::Node& n, const std::string& f) { p.stitch_number = r.whole(n, f, 1, 255); }},
-    {"speed_number", false, [&](const YAML::Node& n, const std::string& f) { p.speed_number = r.whole(n, f, 1, 10000); }},
-    {"cast_on", true, [&](const YAML::Node& n, const std::string& where) {
-       r.read_map(n, where, {
-         {"style", true, [&](const YAML::Node& v, const std::string& f) { r.choice(v, f, {"alternating-tuck"}); }},
-         {"waste_rows", true, [&](const YAML::Node& v, const std::string& f) { p.waste_rows = r.whole(v, f, 0, 200); }},
-       });
-     }},
-    {"bind_off", true, [&](const YAML::Node& n, const std::string& where) {
-       r.read_map(n, where, {
-         {"style", true, [&](const YAML::Node& v, const std::string& f) { r.choice(v, f, {"chain"}); }},
-         {"tag_rows", true, [&](const YAML::Node& v, const std::string& f) { p.tag_rows = r.whole(v, f, 0, 50); }},
-       });
-     }},
-    {"timing", true, [&](const YAML::Node& n, const std::string& where) {
-       r.read_map(n, where, {
-         {"seconds_per_pass", true, [&](const YAML::Node& v, const std::string& f) { p.seconds_per_pass = r.number(v, f, 0, 60); }},
-         {"seconds_per_needle", true, [&](const YAML::Node& v, const std::string& f) { p.seconds_per_needle = r.number(v, f, 0, 10); }},
-         {"seconds_per_rack", true, [&](const YAML::Node& v, const std::string& f) { p.seconds_per_rack = r.number(v, f, 0, 60); }},
-       });
-     }},
+      {"name", true, text_to(r, p.name)},
+      {"description", true, text_to(r, p.description)},
+      {"machine", true, text_to(r, p.machine)},
+      {"gauge", true, number_to(r, p.gauge, 1, 100)},
+      {"needles", true, whole_to(r, p.needles, 8, 100000)},
+      {"position", true, choice_to(p.position, {"Left", "Center", "Right", "Keep"})},
+      {"width_header", true, flag_to(r, p.width_header)},
+      {"carriers", true, carriers},
+      {"racking", true, map_of(r, {
+          {"max", true, whole_to(r, p.max_rack, 0, 64)},
+          {"fractions", true, fractions},
+          {"max_transfer_stretch", true, whole_to(r, p.max_transfer_stretch, 0, 64)}})},
+      {"max_loops_per_needle", true, whole_to(r, p.max_loops_per_needle, 1, 15)},
+      {"sliders", true, flag_to(r, p.sliders)},
+      {"knit_empty_needle", true, choice_to(knit_empty, {"error", "allowed"})},
+      {"yarn", true, map_of(r, {
+          {"hook", true, choice_to(hook, {"inhook", "in"})},
+          {"first_pass", true, choice_to(first_pass, {"+", "-"})},
+          {"carrier", true, text_to(r, p.yarn_carrier)},
+          {"waste_carrier", false, text_to(r, p.waste_carrier)}})},
+      {"stitch_number", false, whole_to(r, p.stitch_number, 1, 255)},
+      {"speed_number", false, whole_to(r, p.speed_number, 1, 10000)},
+      {"cast_on", true, map_of(r, {
+          {"style", true, choice_to(style, {"alternating-tuck"})},
+          {"waste_rows", true, whole_to(r, p.waste_rows, 0, 200)}})},
+      {"bind_off", true, map_of(r, {
+          {"style", true, choice_to(style, {"chain"})},
+          {"tag_rows", true, whole_to(r, p.tag_rows, 0, 50)}})},
+      {"timing", true, map_of(r, {
+          {"seconds_per_pass", true, number_to(r, p.seconds_per_pass, 0, 60)},
+          {"seconds_per_needle", true, number_to(r, p.seconds_per_needle, 0, 10)},
+          {"seconds_per_rack", true, number_to(r, p.seconds_per_rack, 0, 60)}})},
   });
+  // clang-format on
+  p.knit_empty_needle_is_error = knit_empty == "error";
+  p.hook = hook == "inhook" ? YarnHook::inhook : YarnHook::in;
+  p.first_pass = first_pass == "+" ? Direction::plus : Direction::minus;
   auto has_carrier = [&](const std::string& c) {
     return std::find(p.carriers.begin(), p.carriers.end(), c) != p.carriers.end();
   };
   if (!has_carrier(p.yarn_carrier))
-    r.fail(root["yarn"]["carrier"].Mark(), fmt::format("field 'yarn.carrier' names carrier '{}', which is not in 'carriers'", p.yarn_carrier));
-  if (p.waste_rows > 0 && (p.waste_carrier.empty() || !has_carrier(p.waste_carrier) || p.waste_carrier == p.yarn_carrier))
+    r.fail(root["yarn"]["carrier"].Mark(),
+           fmt::format("field 'yarn.carrier' names carrier '{}', which is not in 'carriers'",
+                       p.yarn_carrier));
+  if (p.waste_rows > 0 && (p.waste_carrier.empty() || !has_carrier(p.waste_carrier) ||
+                           p.waste_carrier == p.yarn_carrier))
     r.fail(root["cast_on"]["waste_rows"].Mark(),
-           "field 'cast_on.waste_rows' needs 'yarn.waste_carrier': a carrier of 'carriers' other than 'yarn.carrier'");
+           "field 'cast_on.waste_rows' needs 'yarn.waste_carrier': a carrier of 'carriers' other "
+           "than 'yarn.carrier'");
   if (p.max_transfer_stretch > p.max_rack)
     r.fail(root["racking"]["max_transfer_stretch"].Mark(),
            "field 'racking.max_transfer_stretch' cannot exceed 'racking.max'");
@@ -210,7 +232,8 @@ MachineProfile parse_profile(const std::string& path, const std::string& text) {
     p.rack_fractions.push_back(0.0);
   for (double f : p.rack_fractions)
     if (f * 4 != std::floor(f * 4))
-      r.fail(root["racking"]["fractions"].Mark(), "field 'racking.fractions' allows quarters only (0, 0.25, 0.5, 0.75)");
+      r.fail(root["racking"]["fractions"].Mark(),
+             "field 'racking.fractions' allows quarters only (0, 0.25, 0.5, 0.75)");
   return p;
 }
 
@@ -249,9 +272,10 @@ MachineProfile load_machine_profile(const std::string& name_or_path) {
   if (name_or_path.empty()) {
     std::string names;
     for (const std::string& n : shipped_profile_names()) names += (names.empty() ? "" : ", ") + n;
-    throw UsageError(fmt::format("the knitout target needs --machine: a profile name ({}) or the "
-                                 "path of a profile .yaml file",
-                                 names.empty() ? "none found in machine_profiles/" : names));
+    throw UsageError(
+        fmt::format("the knitout target needs --machine: a profile name ({}) or the "
+                    "path of a profile .yaml file",
+                    names.empty() ? "none found in machine_profiles/" : names));
   }
   bool is_path = name_or_path.find('/') != std::string::npos || name_or_path.ends_with(".yaml");
   if (is_path) return read_machine_profile(name_or_path);
@@ -263,9 +287,10 @@ MachineProfile load_machine_profile(const std::string& name_or_path) {
   }
   std::string names;
   for (const std::string& n : shipped_profile_names()) names += (names.empty() ? "" : ", ") + n;
-  throw UsageError(fmt::format("no machine profile '{}' in machine_profiles/ (looked beside the "
-                               "current directory and the skein executable); known profiles: {}",
-                               name_or_path, names.empty() ? "none" : names));
+  throw UsageError(
+      fmt::format("no machine profile '{}' in machine_profiles/ (looked beside the "
+                  "current directory and the skein executable); known profiles: {}",
+                  name_or_path, names.empty() ? "none" : names));
 }
 
 std::vector<std::string> shipped_profile_names() {

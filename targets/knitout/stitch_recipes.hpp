@@ -10,7 +10,9 @@
 namespace skein::knitout {
 
 // Knit on the bed behind the fabric's right side (a purl seen from the right side).
-inline bool is_purl(StitchType t) { return t == StitchType::p || t == StitchType::p2tog; }
+inline bool is_purl(StitchType t) {
+  return t == StitchType::p || t == StitchType::p2tog;
+}
 
 // A decrease's taken loops in the order they land on one needle, bottom first: the last one
 // lies on top and gives the lean (k2tog and p2tog: the left loop on top, leaning right; ssk:
@@ -20,10 +22,14 @@ inline std::span<const std::uint8_t> stacking_order(StitchType t) {
                                 kCentreOnTop[] = {0, 2, 1}, kSingle[] = {0};
   switch (t) {
     case StitchType::k2tog:
-    case StitchType::p2tog: return kLeftOnTop;
-    case StitchType::ssk: return kRightOnTop;
-    case StitchType::s2kp: return kCentreOnTop;
-    default: return kSingle;
+    case StitchType::p2tog:
+      return kLeftOnTop;
+    case StitchType::ssk:
+      return kRightOnTop;
+    case StitchType::s2kp:
+      return kCentreOnTop;
+    default:
+      return kSingle;
   }
 }
 
@@ -33,9 +39,12 @@ inline std::span<const std::uint8_t> stacking_order(StitchType t) {
 inline std::uint8_t knit_slot(StitchType t, bool left_to_right) {
   switch (t) {
     case StitchType::kfb:
-    case StitchType::yo: return left_to_right ? 0 : 1;
-    case StitchType::m1l: return 1;
-    default: return 0;
+    case StitchType::yo:
+      return left_to_right ? 0 : 1;
+    case StitchType::m1l:
+      return 1;
+    default:
+      return 0;
   }
 }
 inline bool made_slot_pulled_through(StitchType t, std::uint8_t slot, bool left_to_right) {

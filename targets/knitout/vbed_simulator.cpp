@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <array>
-#include <cstring>
 #include <bit>
+#include <cstring>
 #include <limits>
 
 #include "common/error.hpp"
@@ -24,9 +24,9 @@ enum class CarrierState : std::uint8_t { out, pending, in };
 
 struct Carrier {
   CarrierState state = CarrierState::out;
-  bool hooked = false;       // held by the yarn-inserting hook
-  bool stitched = false;     // has made a stitch since it came in
-  CarrierMask in_set = 0;    // the set it came in with (first use must match it)
+  bool hooked = false;     // held by the yarn-inserting hook
+  bool stitched = false;   // has made a stitch since it came in
+  CarrierMask in_set = 0;  // the set it came in with (first use must match it)
   std::size_t in_line = 0;
   std::uint32_t piece = 0;
 };
@@ -101,35 +101,40 @@ class VirtualBed {
   }
   std::size_t next_line(std::size_t pos) const {
     const void* end = std::memchr(text_.data() + pos, '\n', text_.size() - pos);
-    return end ? static_cast<std::size_t>(static_cast<const char*>(end) - text_.data()) + 1 : text_.size() + 1;
+    return end ? static_cast<std::size_t>(static_cast<const char*>(end) - text_.data()) + 1
+               : text_.size() + 1;
   }
   std::size_t most_lines() const { return text_.size() / 8 + 16; }  // the shortest op is 'drop f1'
 
   [[noreturn]] void fail_header(std::size_t line, const std::string& why) const {
-    throw ParseError(file_, line, line && line <= lines_.size() ? std::string(lines_[line - 1]) : "", why);
+    throw ParseError(file_, line,
+                     line && line <= lines_.size() ? std::string(lines_[line - 1]) : "", why);
   }
 
   void check_header() {
     const Header& h = r_.header;
     if (!h.has_carriers)
-      fail_header(h.first_op_line - 1, fmt::format("missing the ;;Carriers: header ({} needs ';;Carriers: {}')",
-                                                   p_.name, p_.carriers_line()));
+      fail_header(h.first_op_line - 1,
+                  fmt::format("missing the ;;Carriers: header ({} needs ';;Carriers: {}')", p_.name,
+                              p_.carriers_line()));
     if (h.carriers != p_.carriers)
-      fail_header(h.carriers_line, fmt::format("{} needs ';;Carriers: {}'", p_.name, p_.carriers_line()));
+      fail_header(h.carriers_line,
+                  fmt::format("{} needs ';;Carriers: {}'", p_.name, p_.carriers_line()));
     auto header_line = [&](std::string_view key) {
       for (std::size_t i = 1; i < h.first_op_line - 1; ++i)
         if (lines_[i].starts_with(fmt::format(";;{}:", key))) return i + 1;
       return std::size_t{1};
     };
     if (!h.machine.empty() && h.machine != p_.machine)
-      fail_header(header_line("Machine"), fmt::format("the file is for machine '{}', profile {} is '{}'",
-                                                      h.machine, p_.name, p_.machine));
+      fail_header(header_line("Machine"),
+                  fmt::format("the file is for machine '{}', profile {} is '{}'", h.machine,
+                              p_.name, p_.machine));
     if (!h.gauge.empty() && std::strtod(h.gauge.c_str(), nullptr) != p_.gauge)
-      fail_header(header_line("Gauge"), fmt::format("the file is for gauge {}, {} is gauge {}", h.gauge,
-                                                    p_.name, p_.gauge));
+      fail_header(header_line("Gauge"), fmt::format("the file is for gauge {}, {} is gauge {}",
+                                                    h.gauge, p_.name, p_.gauge));
     if (!h.width.empty() && std::stoul(h.width) > p_.needles)
-      fail_header(header_line("Width"), fmt::format("the file asks for {} needles, {} has {}", h.width,
-                                                    p_.name, p_.needles));
+      fail_header(header_line("Width"), fmt::format("the file asks for {} needles, {} has {}",
+                                                    h.width, p_.name, p_.needles));
   }
 
   // ---- needles ----
@@ -137,7 +142,8 @@ class VirtualBed {
     if (is_slider(n.bed) && !p_.sliders)
       fail(fmt::format("{} is a slider, and {} has no sliders", needle_name(n), p_.name));
     if (n.index < lo_ || n.index >= hi_ || (keep_ && (n.index < 0 || n.index >= n_)))
-      fail(fmt::format("needle {} is outside the bed: {} has needles 0..{}", needle_name(n), p_.name, n_ - 1));
+      fail(fmt::format("needle {} is outside the bed: {} has needles 0..{}", needle_name(n),
+                       p_.name, n_ - 1));
     ShopStats& s = r_.stats;
     s.min_needle = std::min(s.min_needle, n.index);
     s.max_needle = std::max(s.max_needle, n.index);
@@ -149,8 +155,8 @@ class VirtualBed {
 
   void push(Stack& s, Needle n, LoopId loop) {
     if (s.size >= p_.max_loops_per_needle)
-      fail(fmt::format("{} would hold {} loops, {} allows {} per needle", needle_name(n), s.size + 1,
-                       p_.name, p_.max_loops_per_needle));
+      fail(fmt::format("{} would hold {} loops, {} allows {} per needle", needle_name(n),
+                       s.size + 1, p_.name, p_.max_loops_per_needle));
     s.loop[s.size++] = loop;
   }
 
@@ -173,11 +179,13 @@ class VirtualBed {
     });
     if (pending) {
       if (pending != op.carriers)
-        fail(fmt::format("the first use of carriers {} must use exactly the set brought in together ({})",
-                         names(op.carriers), names(pending)));
+        fail(fmt::format(
+            "the first use of carriers {} must use exactly the set brought in together ({})",
+            names(op.carriers), names(pending)));
       if (op.dir != p_.first_pass)
         fail(fmt::format("the first pass after bringing in carrier {} must go {} on {}, found {}",
-                         names(op.carriers), direction_char(p_.first_pass), p_.name, direction_char(op.dir)));
+                         names(op.carriers), direction_char(p_.first_pass), p_.name,
+                         direction_char(op.dir)));
     }
     each(op.carriers, [&](Carrier& c, std::size_t) {
       c.state = CarrierState::in;
@@ -190,9 +198,11 @@ class VirtualBed {
     if (hook && p_.hook != YarnHook::inhook)
       fail(fmt::format("{} has no yarn-inserting hook: use 'in'", p_.name));
     if (hook && hook_)
-      fail(fmt::format("the yarn-inserting hook still holds carrier {}: releasehook it first", names(hook_)));
+      fail(fmt::format("the yarn-inserting hook still holds carrier {}: releasehook it first",
+                       names(hook_)));
     each(op.carriers, [&](Carrier& c, std::size_t i) {
-      if (c.state != CarrierState::out) fail(fmt::format("carrier {} is already in", r_.header.carriers[i]));
+      if (c.state != CarrierState::out)
+        fail(fmt::format("carrier {} is already in", r_.header.carriers[i]));
       c = Carrier{CarrierState::pending, hook, false, op.carriers, line_, ++pieces_};
       ++r_.stats.yarn_pieces;
     });
@@ -200,10 +210,12 @@ class VirtualBed {
   }
 
   void release_hook(const Op& op) {
-    if (p_.hook != YarnHook::inhook) fail(fmt::format("{} has no yarn-inserting hook to release", p_.name));
+    if (p_.hook != YarnHook::inhook)
+      fail(fmt::format("{} has no yarn-inserting hook to release", p_.name));
     if (hook_ != op.carriers)
-      fail(hook_ ? fmt::format("the hook holds carrier {}, not {}", names(hook_), names(op.carriers))
-                 : fmt::format("releasehook {}, but the hook holds nothing", names(op.carriers)));
+      fail(hook_
+               ? fmt::format("the hook holds carrier {}, not {}", names(hook_), names(op.carriers))
+               : fmt::format("releasehook {}, but the hook holds nothing", names(op.carriers)));
     each(op.carriers, [&](Carrier& c, std::size_t i) {
       if (!c.stitched)
         fail(fmt::format("releasehook before carrier {} has made a stitch", r_.header.carriers[i]));
@@ -214,14 +226,18 @@ class VirtualBed {
 
   void take_out(const Op& op) {
     bool hook = op.code == OpCode::outhook;
-    if (hook && p_.hook != YarnHook::inhook) fail(fmt::format("{} has no yarn-inserting hook: use 'out'", p_.name));
+    if (hook && p_.hook != YarnHook::inhook)
+      fail(fmt::format("{} has no yarn-inserting hook: use 'out'", p_.name));
     if (hook && hook_)
-      fail(fmt::format("outhook while the hook still holds carrier {}: releasehook it first", names(hook_)));
+      fail(fmt::format("outhook while the hook still holds carrier {}: releasehook it first",
+                       names(hook_)));
     each(op.carriers, [&](Carrier& c, std::size_t i) {
       const std::string& name = r_.header.carriers[i];
       if (c.state == CarrierState::out) fail(fmt::format("carrier {} is not in", name));
-      if (!c.stitched) fail(fmt::format("carrier {} is taken out without having made a stitch", name));
-      if (c.hooked) fail(fmt::format("carrier {} is still held by the hook: releasehook {} first", name, name));
+      if (!c.stitched)
+        fail(fmt::format("carrier {} is taken out without having made a stitch", name));
+      if (c.hooked)
+        fail(fmt::format("carrier {} is still held by the hook: releasehook {} first", name, name));
       c.state = CarrierState::out;
     });
   }
@@ -230,7 +246,8 @@ class VirtualBed {
   void set_rack(std::int32_t quarters) {
     if (!p_.rack_allowed(quarters))
       fail(std::abs(quarters) > p_.max_rack * 4
-               ? fmt::format("rack {} is beyond the racking limit of {} (±{})", quarters / 4.0, p_.name, p_.max_rack)
+               ? fmt::format("rack {} is beyond the racking limit of {} (±{})", quarters / 4.0,
+                             p_.name, p_.max_rack)
                : fmt::format("rack {} has a fraction {} does not allow", quarters / 4.0, p_.name));
     if (quarters != rack_) ++r_.stats.racks;
     rack_ = quarters;
@@ -239,7 +256,8 @@ class VirtualBed {
   void check_transfer(const Op& op) {
     const char* what = op.code == OpCode::split ? "split" : "xfer";
     if (is_slider(op.a.bed) && is_slider(op.b.bed))
-      fail(fmt::format("{} {} {} moves from slider to slider", what, needle_name(op.a), needle_name(op.b)));
+      fail(fmt::format("{} {} {} moves from slider to slider", what, needle_name(op.a),
+                       needle_name(op.b)));
     if (is_front(op.a.bed) == is_front(op.b.bed))
       fail(fmt::format("{} {} {} stays on one bed: loops move only between front and back", what,
                        needle_name(op.a), needle_name(op.b)));
@@ -247,7 +265,8 @@ class VirtualBed {
     if (rack_ % 4 != 0 || front.index * 4 != back.index * 4 + rack_)
       fail(fmt::format("{} and {} are not aligned at rack {} ({} faces f{})", needle_name(op.a),
                        needle_name(op.b), rack_ / 4.0, needle_name(back),
-                       rack_ % 4 ? fmt::format("{}", back.index + rack_ / 4.0) : fmt::format("{}", back.index + rack_ / 4)));
+                       rack_ % 4 ? fmt::format("{}", back.index + rack_ / 4.0)
+                                 : fmt::format("{}", back.index + rack_ / 4)));
     if (std::abs(rack_) > p_.max_transfer_stretch * 4)
       fail(fmt::format("{} at rack {} stretches a loop {} needles, {} allows {}", what, rack_ / 4,
                        std::abs(rack_ / 4), p_.name, p_.max_transfer_stretch));
@@ -285,7 +304,8 @@ class VirtualBed {
     if (op.code == OpCode::split && is_slider(op.a.bed))
       fail(fmt::format("split cannot start from a slider ({})", needle_name(op.a)));
     if (is_slider(op.a.bed))
-      fail(fmt::format("{} on a slider ({}): sliders only hold loops moved there", op_name(op.code), needle_name(op.a)));
+      fail(fmt::format("{} on a slider ({}): sliders only hold loops moved there", op_name(op.code),
+                       needle_name(op.a)));
     if (op.code == OpCode::miss) {
       if (!op.carriers) fail("miss needs carriers (a miss without yarn does nothing)");
       use_carriers(op);
@@ -294,13 +314,15 @@ class VirtualBed {
       return;
     }
     Stack& s = at(op.a);
-    if (!op.carriers) return op.code == OpCode::knit    ? drop(op.a)
-                             : op.code == OpCode::split ? transfer(op)
-                                                        : void(at(op.a));
+    if (!op.carriers)
+      return op.code == OpCode::knit    ? drop(op.a)
+             : op.code == OpCode::split ? transfer(op)
+                                        : void(at(op.a));
     if (op.code == OpCode::split) check_transfer(op);
     if (s.size == 0 && op.code != OpCode::tuck && p_.knit_empty_needle_is_error)
-      fail(fmt::format("{} on {}, which holds no loop ({} treats knitting an empty needle as an error)",
-                       op_name(op.code), needle_name(op.a), p_.name));
+      fail(fmt::format(
+          "{} on {}, which holds no loop ({} treats knitting an empty needle as an error)",
+          op_name(op.code), needle_name(op.a), p_.name));
     use_carriers(op);
     count_pass(op, false);
     if (op.code == OpCode::tuck) {
@@ -368,24 +390,32 @@ class VirtualBed {
   void apply(const Op& op) {
     switch (op.code) {
       case OpCode::in:
-      case OpCode::inhook: return bring_in(op);
-      case OpCode::releasehook: return release_hook(op);
+      case OpCode::inhook:
+        return bring_in(op);
+      case OpCode::releasehook:
+        return release_hook(op);
       case OpCode::out:
-      case OpCode::outhook: return take_out(op);
+      case OpCode::outhook:
+        return take_out(op);
       case OpCode::knit:
       case OpCode::tuck:
       case OpCode::split:
-      case OpCode::miss: return stitch_op(op);
-      case OpCode::drop: return drop(op.a);
+      case OpCode::miss:
+        return stitch_op(op);
+      case OpCode::drop:
+        return drop(op.a);
       case OpCode::amiss:
         if (is_slider(op.a.bed)) fail(fmt::format("amiss on a slider ({})", needle_name(op.a)));
         at(op.a);
         return;
-      case OpCode::xfer: return transfer(op);
-      case OpCode::rack: return set_rack(op.rack_quarters);
+      case OpCode::xfer:
+        return transfer(op);
+      case OpCode::rack:
+        return set_rack(op.rack_quarters);
       case OpCode::stitch:
       case OpCode::pause:
-      case OpCode::extension: return;
+      case OpCode::extension:
+        return;
     }
   }
 
@@ -425,7 +455,8 @@ class VirtualBed {
 
 }  // namespace
 
-Replay replay_knitout(std::string_view text, const std::string& file, const MachineProfile& profile) {
+Replay replay_knitout(std::string_view text, const std::string& file,
+                      const MachineProfile& profile) {
   return VirtualBed(file, profile, text).run();
 }
 
@@ -441,8 +472,7 @@ std::string shop_summary(const Replay& r, const MachineProfile& p) {
       "  estimated knitting time: {}:{:02d} (min:s)",
       p.name, p.description, s.min_needle, s.max_needle, s.stitch_passes + s.transfer_passes,
       s.stitch_passes, s.transfer_passes, s.knits, s.tucks, s.splits, s.misses, s.transfers,
-      s.racks, s.loops_dropped, s.yarn_pieces, minutes,
-      static_cast<int>(s.seconds - minutes * 60));
+      s.racks, s.loops_dropped, s.yarn_pieces, minutes, static_cast<int>(s.seconds - minutes * 60));
 }
 
 }  // namespace skein::knitout

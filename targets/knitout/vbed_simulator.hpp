@@ -20,16 +20,16 @@ using LoopId = std::uint32_t;
 inline constexpr LoopId kNoLoop = 0xffffffffu;
 
 struct FabricLoop {
-  std::uint32_t first_parent = 0;  // into Fabric::parents
-  std::uint8_t parent_count = 0;   // loops it was pulled through (knit, split); 0 for tuck
-  std::uint8_t children = 0;       // loops later pulled through it (saturates at 255)
-  OpCode made_by = OpCode::knit;   // knit, tuck or split
-  bool dropped = false;            // released by a drop while nothing was pulled through it
-  bool front = true;               // made on the front bed (seen from the front: a knit)
-  Direction dir = Direction::plus; // the direction of the pass that made it
-  CarrierMask yarn = 0;            // the carriers that made it
-  std::uint32_t piece = 0;         // yarn piece (one per in/inhook of its carrier)
-  std::uint32_t line = 0;          // the knitout line that made it
+  std::uint32_t first_parent = 0;   // into Fabric::parents
+  std::uint8_t parent_count = 0;    // loops it was pulled through (knit, split); 0 for tuck
+  std::uint8_t children = 0;        // loops later pulled through it (saturates at 255)
+  OpCode made_by = OpCode::knit;    // knit, tuck or split
+  bool dropped = false;             // released by a drop while nothing was pulled through it
+  bool front = true;                // made on the front bed (seen from the front: a knit)
+  Direction dir = Direction::plus;  // the direction of the pass that made it
+  CarrierMask yarn = 0;             // the carriers that made it
+  std::uint32_t piece = 0;          // yarn piece (one per in/inhook of its carrier)
+  std::uint32_t line = 0;           // the knitout line that made it
 };
 
 struct Fabric {
@@ -48,12 +48,12 @@ struct ShopStats {
   std::uint64_t stitch_passes = 0;    // carriage passes that knit, tuck, split or miss
   std::uint64_t transfer_passes = 0;  // carriage passes that transfer or drop
   std::uint64_t knits = 0, tucks = 0, splits = 0, misses = 0, transfers = 0;
-  std::uint64_t racks = 0;            // rack changes
+  std::uint64_t racks = 0;  // rack changes
   std::uint64_t loops_dropped = 0;
   std::uint64_t yarn_pieces = 0;      // in / inhook of a carrier
   std::uint64_t needles_crossed = 0;  // summed width of the passes
   std::int32_t min_needle = 0, max_needle = 0;
-  double seconds = 0;                 // estimated knitting time
+  double seconds = 0;  // estimated knitting time
 };
 
 struct Replay {
@@ -63,7 +63,8 @@ struct Replay {
 };
 
 // Replays `text` (read from `file`) on `profile`. Throws ParseError at the first invalid line.
-Replay replay_knitout(std::string_view text, const std::string& file, const MachineProfile& profile);
+Replay replay_knitout(std::string_view text, const std::string& file,
+                      const MachineProfile& profile);
 
 // Several lines for people: passes, transfers, racks, drops, yarn pieces, time.
 std::string shop_summary(const Replay& replay, const MachineProfile& profile);
