@@ -14,6 +14,7 @@
 #include "hand/hand_target.hpp"
 #include "hand/row_text.hpp"
 #include "mesh/generate.hpp"
+#include "test_hand_plans.hpp"
 
 namespace skein {
 namespace {
@@ -38,17 +39,6 @@ VerifyReport verify(const Compilation& c, const std::string& target, const std::
 std::string failure_of(const std::string& pattern) {
   VerifyReport r = hand::verify_pattern(pattern, "p.md", nullptr);
   return r.summary.find("give --against") == std::string::npos ? r.summary : "";
-}
-
-// Make-ones need a strand on both sides: none may be the last stitch of a flat row (sheet
-// rows alternate direction, the first worked row running right to left).
-RowPlan without_edge_make_ones(RowPlan plan, Layout layout) {
-  if (layout == Layout::tube) return plan;
-  for (std::size_t r = 1; r < plan.size(); ++r) {
-    T& last = r % 2 == 0 ? plan[r].back() : plan[r].front();
-    if (last == T::m1l || last == T::m1r) last = T::kfb;
-  }
-  return plan;
 }
 
 class HandSample : public ::testing::TestWithParam<const char*> {
@@ -113,10 +103,19 @@ TEST(HandTarget, StitchGraphsWithoutRowsAreRejectedNamingTheFile) {
 }
 
 TEST(HandTarget, StitchesNotCoveredYetAreNamed) {
-  Compilation c = compile_stitch_mesh(testing::join_mesh(MismatchYarn::Kind::extra), "join");
-  ASSERT_TRUE(c.knittability.knittable) << check_report(c);
-  std::string error = emit_error(c);
-  EXPECT_NE(error.find("three-needle bind-off (3nbo)"), std::string::npos) << error;
+  using M = MismatchYarn::Kind;
+  const std::pair<StitchMesh, const char*> cases[] = {
+      {testing::join_mesh(M::extra), "three-needle bind-off (3nbo)"},
+      {meeting_sheets(Meeting::split, 6, 3, 3, M::extra, false, 1), "cast-on along a split (sco)"},
+      {short_row_sheet(8, 12, 4), "short-row end"},
+  };
+  for (const auto& [mesh, named] : cases) {
+    Compilation c = compile_stitch_mesh(mesh, "uncovered");
+    ASSERT_TRUE(c.knittability.knittable) << check_report(c);
+    std::string error = emit_error(c);
+    EXPECT_NE(error.find(named), std::string::npos) << error;
+    EXPECT_NE(error.find("which hand patterns do not cover yet"), std::string::npos) << error;
+  }
 }
 
 TEST(HandTarget, AMakeOneLastInAFlatRowHasNoStrandToLift) {
@@ -135,7 +134,8 @@ TEST(HandRandomized, ShapedSheetsAndTubesAreProven) {
     std::uint32_t width = 4 + static_cast<std::uint32_t>(rng() % 40);
     std::uint32_t rows = 1 + static_cast<std::uint32_t>(rng() % 30);
     Layout layout = trial % 2 ? Layout::tube : Layout::sheet;
-    RowPlan plan = without_edge_make_ones(random_rows(width, rows, shaping, rng()), layout);
+    RowPlan plan =
+        testing::without_edge_make_ones(random_rows(width, rows, shaping, rng()), layout);
     Compilation c = compile_stitch_mesh(build_from_rows(plan, layout), "random");
     ASSERT_TRUE(c.knittability.knittable) << check_report(c);
     for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
@@ -147,25 +147,6 @@ TEST(HandRandomized, ShapedSheetsAndTubesAreProven) {
                                  << pattern;
     }
   }
-}
-
-// A plain row, then `shapings` rows that widen or narrow each of `sections` equal wedges by
-// one stitch with `shaper` (at the end of each wedge), `plain` rows after each.
-RowPlan wedge_plan(std::uint32_t sections, std::uint32_t wedge, std::uint32_t shapings,
-                   std::uint32_t plain, T shaper) {
-  RowPlan plan = {std::vector<T>(sections * wedge, T::co), std::vector<T>(sections * wedge, T::k)};
-  for (std::uint32_t i = 0; i < shapings; ++i) {
-    std::vector<T>& row = plan.emplace_back();
-    std::uint32_t takes = info(shaper).bottom_edges, makes = info(shaper).top_edges;
-    for (std::uint32_t s = 0; s < sections; ++s) {
-      row.insert(row.end(), wedge - takes, T::k);
-      row.push_back(shaper);
-    }
-    wedge = wedge - takes + makes;
-    for (std::uint32_t k = 0; k < plain; ++k) plan.emplace_back(sections * wedge, T::k);
-  }
-  plan.emplace_back(sections * wedge, T::bo);
-  return plan;
 }
 
 // Crowns and wedge increases, flat and in the round, proven; in the round with section markers.
@@ -180,7 +161,8 @@ TEST(HandRandomized, WedgeShapingGetsSectionMarkersAndIsProven) {
     auto wedge = 3 + 2 * shapings + static_cast<std::uint32_t>(rng() % 8);  // never runs out
     auto plain = static_cast<std::uint32_t>(rng() % 3);
     Compilation c = compile_stitch_mesh(
-        build_from_rows(wedge_plan(sections, wedge, shapings, plain, shaper), layout), "wedges");
+        build_from_rows(testing::wedge_plan(sections, wedge, shapings, plain, shaper), layout),
+        "wedges");
     std::string pattern = emit(c, "hand");
     VerifyReport report = verify(c, "hand", pattern);
     ASSERT_TRUE(report.proven) << "trial " << trial << ": " << report.summary << "\n" << pattern;
@@ -243,6 +225,12 @@ TEST(HandSimulator, ProvesAHandWrittenPatternWithRepeatsAndMarkers) {
                        "Rep Rnd 2 twice more — 5 sts.\nKnit every rnd until 6 rnds in all.\n"
                        "Rnd 7: BO all sts.\nFasten off.\n"),
             "");
+  EXPECT_EQ(
+      failure_of("Cast on 6 sts.\nRow 1 (RS): *K1, p1; rep from * to end.\n"
+                 "Rows 2\u20134: *k1, p1, repeat from *.\nRow 5 (RS): K2tog, k to end (5 sts).\n"
+                 "Row 6 (WS): [P1, yo] twice, p to end — 7 sts.\nRow 7 (RS): BO all sts.\n"
+                 "Fasten off.\n"),
+      "");
 }
 
 TEST(HandSimulator, RejectsTheFirstImpossibleStepWithTheRowAndTheReason) {

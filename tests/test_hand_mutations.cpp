@@ -17,6 +17,7 @@
 #include "hand/hand_target.hpp"
 #include "hand/needle_sim.hpp"
 #include "mesh/generate.hpp"
+#include "test_hand_plans.hpp"
 
 namespace skein {
 namespace {
@@ -296,6 +297,19 @@ TEST(HandMutations, SamplesRejectEveryEditThatChangesTheFabric) {
     mutate_and_judge(sample, compile_model(sample));
 }
 
+TEST(HandMutations, SectionMarkerPatternsRejectEveryEditThatChangesTheFabric) {
+  mutate_and_judge(
+      "crown with section markers",
+      compile_stitch_mesh(
+          build_from_rows(testing::wedge_plan(6, 9, 3, 1, StitchType::k2tog), Layout::tube),
+          "crown"));
+  mutate_and_judge(
+      "flat wedges with section markers",
+      compile_stitch_mesh(
+          build_from_rows(testing::wedge_plan(3, 5, 3, 1, StitchType::yo), Layout::sheet),
+          "wedges"));
+}
+
 TEST(HandMutations, ShapedSheetsAndTubesRejectEveryEditThatChangesTheFabric) {
   std::mt19937_64 rng(11);
   for (int trial = 0; trial < 6; ++trial) {
@@ -303,11 +317,8 @@ TEST(HandMutations, ShapedSheetsAndTubesRejectEveryEditThatChangesTheFabric) {
     shaping.purl = 0.3;
     shaping.increase = shaping.decrease = 0.1;
     Layout layout = trial % 2 ? Layout::tube : Layout::sheet;
-    RowPlan plan = random_rows(10 + static_cast<std::uint32_t>(rng() % 10), 6, shaping, rng());
-    for (std::size_t r = 1; r + 1 < plan.size() && layout == Layout::sheet; ++r) {
-      StitchType& last = r % 2 == 0 ? plan[r].back() : plan[r].front();
-      if (last == StitchType::m1l || last == StitchType::m1r) last = StitchType::kfb;
-    }
+    RowPlan plan = testing::without_edge_make_ones(
+        random_rows(10 + static_cast<std::uint32_t>(rng() % 10), 6, shaping, rng()), layout);
     mutate_and_judge(fmt::format("random {} {}", layout == Layout::tube ? "tube" : "sheet", trial),
                      compile_stitch_mesh(build_from_rows(plan, layout), "random"));
   }

@@ -23,20 +23,18 @@ constexpr std::array kSupported = {T::k,   T::p,  T::co,    T::bo,  T::kfb,   T:
 
 void check_supported(const Compilation& c) {
   const KnitGraph& g = c.knit;
-  for (RowShape shape : g.row_shape) {
-    if (shape == RowShape::unknown)
-      unsupported(fmt::format(
-          "{} has no rows or rounds (the yarn of a stitch graph is one helix), so it cannot be "
-          "written as a hand pattern yet; give a stitch mesh (.obj)",
-          g.source_name));
-    if (shape == RowShape::short_row)
-      unsupported(
-          fmt::format("{} has short rows, which hand patterns do not cover yet", g.source_name));
-  }
+  if (std::count(g.row_shape.begin(), g.row_shape.end(), RowShape::unknown) > 0)
+    unsupported(fmt::format(
+        "{} has no rows or rounds (the yarn of a stitch graph is one helix), so it cannot be "
+        "written as a hand pattern yet; give a stitch mesh (.obj)",
+        g.source_name));
   for (StitchId s = 0; s < g.size(); ++s)
     if (std::find(kSupported.begin(), kSupported.end(), g.type[s]) == kSupported.end())
       unsupported(fmt::format("{} is a {} ({}), which hand patterns do not cover yet",
                               g.describe(s), info(g.type[s]).name, abbreviation(g.type[s])));
+  if (std::count(g.row_shape.begin(), g.row_shape.end(), RowShape::short_row) > 0)
+    unsupported(
+        fmt::format("{} has short rows, which hand patterns do not cover yet", g.source_name));
   for (const Loop& l : g.loops)
     if (l.kind != LoopKind::wale || l.taker == kNoStitch)
       unsupported(fmt::format(
