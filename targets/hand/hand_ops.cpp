@@ -137,9 +137,6 @@ std::optional<HandOp> hand_op_from(std::string_view word) {
 bool is_make_one(HandOp op) {
   return op >= HandOp::m1l && op <= HandOp::yo;
 }
-bool is_marker(HandOp op) {
-  return op >= HandOp::pm;
-}
 bool is_plain(HandOp op) {
   return op == HandOp::k || op == HandOp::p;
 }

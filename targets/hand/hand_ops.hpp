@@ -55,7 +55,6 @@ const HandOpInfo& info(HandOp op);
 std::optional<HandOp> hand_op_from(std::string_view word);  // case-insensitive
 
 bool is_make_one(HandOp op);  // M1L, M1R, M1PL, M1PR, yo
-bool is_marker(HandOp op);    // pm, sm, rm
 bool is_plain(HandOp op);     // k, p: written with a count ("k12")
 
 // The model stitch (as seen from the RS) that `op` makes when worked with `side` facing;

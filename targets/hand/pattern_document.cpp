@@ -66,11 +66,11 @@ class InstructionWriter {
       section_ = s;
       if (p_.sections.size() > 1)
         add(InstructionLine::Kind::heading, "",
-            fmt::format("Piece {} (yarn {})", s + 1, sec.yarn + 1), sec.first_row, sec.first_row);
-      add(InstructionLine::Kind::setup, "", setup_text(sec), sec.first_row, sec.first_row);
+            fmt::format("Piece {} (yarn {})", s + 1, sec.yarn + 1));
+      add(InstructionLine::Kind::setup, "", setup_text(sec));
       write_rows(sec.first_row, sec.end_row);
       if (sec.end_row > sec.first_row && p_.rows[sec.end_row - 1].bind_off)
-        add(InstructionLine::Kind::finish, "", "Fasten off.", sec.end_row, sec.end_row);
+        add(InstructionLine::Kind::finish, "", "Fasten off.");
     }
   }
 
@@ -128,8 +128,7 @@ class InstructionWriter {
           !knitspeak()) {
         add(InstructionLine::Kind::repeat, "",
             fmt::format("{} every {} until {} {} in all.", texts_[i], r.round ? "rnd" : "row",
-                        p_.rows[last].number, r.round ? "rnds" : "rows"),
-            i, last + 1);
+                        p_.rows[last].number, r.round ? "rnds" : "rows"));
       } else {
         for (std::uint32_t k = 0; k < period; ++k) row_line(i + k);
         if (times > 1) repeat_line(i, period, times);
@@ -145,7 +144,7 @@ class InstructionWriter {
       text += " in patt";
     else if (!r.bind_off)
       text += count_after(r.sts_before, r.sts_after);
-    add(InstructionLine::Kind::row, label(r), text + ".", i, i + 1);
+    add(InstructionLine::Kind::row, label(r), text + ".");
   }
 
   // Does the row show both knits and purls on the side facing the knitter?
@@ -164,13 +163,11 @@ class InstructionWriter {
     std::string verb = knitspeak() ? "Repeat" : "Rep";
     add(InstructionLine::Kind::repeat, "",
         fmt::format("{} {} {}{}.", verb, rows, more_times(times - 1),
-                    count_after(b.sts_after, p_.rows[last].sts_after)),
-        i + period, last + 1);
+                    count_after(b.sts_after, p_.rows[last].sts_after)));
   }
 
-  void add(InstructionLine::Kind kind, std::string label, std::string text, std::uint32_t first,
-           std::uint32_t end) {
-    out_.push_back({kind, std::move(label), std::move(text), section_, first, end});
+  void add(InstructionLine::Kind kind, std::string label, std::string text) {
+    out_.push_back({kind, std::move(label), std::move(text), section_});
   }
 
   const HandPattern& p_;

@@ -34,7 +34,6 @@ struct InstructionLine {
   std::string label;  // rows only: "Row 3 (RS)", "Rnd 5"
   std::string text;   // whole sentences, ending with a period
   std::uint32_t section = 0;
-  std::uint32_t first_row = 0, end_row = 0;  // the pattern rows it covers
 };
 
 struct FrontSection {

@@ -6,6 +6,7 @@
 #include <charconv>
 
 #include "common/error.hpp"
+#include "hand/pattern_document.hpp"
 
 namespace skein::hand {
 namespace {
@@ -402,7 +403,7 @@ class SentenceReader {
 // heading, or everything when there is no such heading (KnitSpeak rows).
 std::pair<std::size_t, std::size_t> instructions_region(
     const std::vector<std::string_view>& lines) {
-  std::string heading = std::string("## ") + "Instructions";
+  std::string heading = std::string("## ") + kInstructionsHeading;
   for (std::size_t i = 0; i < lines.size(); ++i) {
     if (!starts_with_ci(trim(lines[i]), heading)) continue;
     std::size_t end = i + 1;
