@@ -52,6 +52,19 @@ INSTANTIATE_TEST_SUITE_P(Samples, KnitoutSample,
                            return name;
                          });
 
+// The project samples (coarse mesh, labelled, generated at a gauge) knit and prove too.
+TEST(KnitoutSample, ProjectSamplesProveOnEveryProfile) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  for (const char* input : {"samples/swatch/swatch.yaml", "samples/beanie/beanie.yaml"}) {
+    Compilation c = compile_model(input);
+    for (const char* name : kProfiles) {
+      knitout::MachineProfile p = shipped_profile(name);
+      knitout::ProofResult proof = testing::replay_and_prove(testing::emit_knitout_text(c, p), c, p);
+      EXPECT_TRUE(proof.proven) << input << " on " << name << ": " << proof.summary;
+    }
+  }
+}
+
 std::string emit_error(const Compilation& c, const char* profile) {
   try {
     testing::emit_knitout_text(c, shipped_profile(profile));
