@@ -101,6 +101,16 @@ TEST(Perpendicular, ContractingMakesTheWaleSideADecrease) {
   EXPECT_EQ(c.yarns.size(), 2u);
 }
 
+TEST(Perpendicular, ABindOffBesideAContractingEdgeKnitsTwoTogetherThenBindsOff) {
+  using testing::Square;
+  Compilation c = proven(testing::grid_mesh(2, 4, {{0, 0, T::co, "boti"}, {0, 1, T::k, "bito"},
+                                                   {0, 2, T::k, "boti"}, {0, 3, T::bo, "bito"},
+                                                   {1, 2, T::co, "ibot"}, {1, 3, T::co, "ibot"}}),
+                         "contracting at the bind-off");
+  EXPECT_EQ(c.knit.type[3], T::k2tog_bo);
+  EXPECT_EQ(c.knit.loops_taken_by(3).size(), 2u);
+}
+
 TEST(Perpendicular, ExpandingIsPickedUpThroughTheEdgeAndAnOddCountLeavesATiedEnd) {
   Compilation c = proven(testing::expanding_mesh(), "expanding");
   const KnitGraph& g = c.knit;

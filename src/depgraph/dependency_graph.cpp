@@ -167,6 +167,15 @@ std::string hint_for(const KnitGraph& g, const std::vector<CycleStep>& cycle) {
   if (own_yarn)
     return "a join or split knit with one side's yarn closes this cycle: knit it with an extra "
            "yarn piece ('#~yarn A B extra') or with the other side's yarn";
+  auto across = std::find_if(cycle.begin(), cycle.end(), [](const CycleStep& s) {
+    return s.reason == DependencyReason::perpendicular_loop;
+  });
+  if (across != cycle.end())
+    return fmt::format(
+        "a perpendicular mismatched edge makes {} wait for {}, while the rest of the cycle makes "
+        "the second wait for the first: label one of the two regions from its other end (its "
+        "wale direction reversed), so the stitches across the edge wait one way only",
+        g.describe(across->waiter), g.describe(across->waited_for));
   return "every stitch in the cycle waits for the next one; change the knitting direction "
          "(edge labels) of one of these faces so that the cycle is broken";
 }

@@ -30,6 +30,7 @@ constexpr std::array kCatalogue{
   StitchTypeInfo{T::sco,   "sco",   "cast-on along a split",             1,  2,  0, 2, false, false},
   StitchTypeInfo{T::sl,    "sl",    "slip",                              1,  1,  1, 1, false, false},
   StitchTypeInfo{T::tuck,  "tuck",  "tuck",                              1,  1,  1, 1, false, false},
+  StitchTypeInfo{T::k2tog_bo, "k2tog-bo", "knit 2 together and bind off",   2,  1,  2, 0, false, false},
 };
 // clang-format on
 

@@ -31,6 +31,8 @@ enum class StitchType : std::uint8_t {
   sco,    // extruded cast-on face of a split: makes 2 loops, one to each side
   sl,     // slip: the loop passes through unworked (AutoKnit's miss)
   tuck,   // tuck: a new loop held with the old one (AutoKnit's tuck)
+  k2tog_bo,  // knit 2 together and bind off: a bind-off that also takes a loop across a
+             // contracting perpendicular edge
 };
 
 struct StitchTypeInfo {

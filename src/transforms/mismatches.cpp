@@ -129,6 +129,7 @@ class MismatchTransform {
       case StitchType::p: t = StitchType::p2tog; return;
       case StitchType::k2tog:
       case StitchType::ssk: t = StitchType::s2kp; return;
+      case StitchType::bo: t = StitchType::k2tog_bo; return;
       default:
         throw Error(fmt::format("{} treats a contracting perpendicular edge as a course edge, so "
                                 "it must become a decrease; a {} has no decrease form",

@@ -7,7 +7,8 @@
 //   split, extra yarn: a row of extruded cast-on stitches (sco) on a new yarn piece, each
 //                      making the loop both sides' stitches are pulled through;
 //   split, own yarn:   the own side's stitch becomes the cast-on (sco) that makes both loops;
-//   contracting perpendicular: the stitch treating the edge as a wale edge becomes a decrease;
+//   contracting perpendicular: the stitch treating the edge as a wale edge becomes a decrease
+//                      (a bind-off becomes k2tog-bo: knit 2 together, then bind off);
 //   expanding perpendicular:   nothing to change: the stitches treating the edge as a course
 //                      edge are pulled through the other side's edge ("pick up and knit").
 #pragma once
