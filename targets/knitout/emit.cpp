@@ -150,7 +150,7 @@ class Emitter {
   // ---- laying a course out on the needles ----
   // A tube keeps its folds where they are while the halves stay within two loops of each other,
   // so that loops cross from one bed to the other only to rebalance the tube.
-  void keep_folds(const Course& c, Footprint& f) const {
+  bool keep_folds(const Course& c, Footprint& f) const {
     Footprint kept;
     bool on_front = true;
     each_left_to_right(c, [&](StitchId s) {
@@ -162,14 +162,16 @@ class Emitter {
     kept.total = f.total;
     std::uint32_t back = f.total - kept.front;
     bool balanced = kept.front <= back + 2 && back <= kept.front + 2;
-    if (kept.split > 0 && balanced &&
-        std::max(kept.front, back) <= static_cast<std::uint32_t>(fold_ + 1))
-      f = kept;
+    if (kept.split == 0 || !balanced) return false;
+    f = kept;
+    return true;
   }
 
   void plan_course(const Course& c, bool first) {
     Footprint f = measure(c);
-    if (l_.tube && !first) keep_folds(c, f);
+    // A tube whose halves keep their folds moves no loop between the beds: its right fold may
+    // then follow the loops; while loops cross a fold it stays where it is.
+    bool fold_may_move = l_.tube && !first && keep_folds(c, f);
     std::uint32_t back = f.total - f.front;
     std::vector<std::int32_t> wants;
     std::uint32_t q = 0, index = 0;
@@ -211,7 +213,8 @@ class Emitter {
       std::nth_element(wants.begin(), mid, wants.end());
       offset = std::clamp(*mid, low, high);
     }
-    if (l_.tube) offset = fold_;
+    if (l_.tube && !fold_may_move) offset = fold_;
+    if (l_.tube) fold_ = offset;
     q = index = 0;
     each_left_to_right(c, [&](StitchId s) { place(s, offset, false); });
   }
@@ -261,9 +264,9 @@ class Emitter {
   // next stitch is knit may stay there, as no stack passes through its needle on the way.
   bool fits_one_stage(const Course& c) const {
     for (std::uint32_t i = c.begin; i < c.end; ++i) {
-      const StitchPlan& sp = plan_[l_.order[i]];
+      Place target{plan_[l_.order[i]].home, plan_[l_.order[i]].needle};
       for (std::uint32_t loop : taken(l_.order[i]))
-        if (std::abs(ring(live_[loop].home) - ring({sp.home, sp.needle})) > reach_ / pitch_)
+        if (next_stop(live_[loop].home, target, live_[loop].home.bed != target.bed) != target)
           return false;
     }
     return true;
@@ -327,45 +330,53 @@ class Emitter {
   }
 
   // Re-spaces the stacks onto the course's needles in stages: in each, every stack moves at
-  // most the transfer reach toward its needle along the fabric. Moving every stack the same
-  // clamped way keeps their order, so no two ever meet. Stacks moving along a bed pass
-  // through the facing needle; stacks crossing the tube's fold go straight over once the
-  // others have left for the facing needles.
+  // most the transfer reach toward its needle (along its bed, or along the fabric across a
+  // tube's fold). Moving every stack the same clamped way keeps their order, so no two ever
+  // meet. Stacks moving along a bed pass through the facing needle; stacks crossing the fold
+  // go straight over once the others have left for the facing needles.
   void shift_stacks(const Course& c, const std::vector<std::uint8_t>& ready) {
     struct Stack {
       StitchId stitch;
-      std::int32_t now, target;
+      Place now, target;
     };
     std::vector<Stack> stacks;
+    bool crossing = false;
     for (std::uint32_t i = c.begin; i < c.end; ++i) {
       StitchId s = l_.order[i];
       if (ready[i - c.begin]) continue;
-      stacks.push_back({s, ring(live_[taken(s)[0]].now), ring({plan_[s].home, plan_[s].needle})});
+      stacks.push_back({s, live_[taken(s)[0]].now, {plan_[s].home, plan_[s].needle}});
+      crossing |= stacks.back().now.bed != stacks.back().target.bed;
     }
-    std::int32_t step = reach_ / pitch_;
     for (bool moved = true; moved;) {
       moved = false;
-      std::vector<Move> to_transit, crossing, landing;
+      std::vector<Move> to_transit, over, landing;
       for (Stack& st : stacks) {
         if (st.now == st.target) continue;
         moved = true;
-        std::int32_t stop = std::clamp(st.target, st.now - step, st.now + step);
-        Place from = place_at(st.now), to = place_at(stop);
-        if (from.bed == to.bed) {
-          to_transit.push_back({from, facing(from)});
-          landing.push_back({facing(from), to});
+        Place stop = next_stop(st.now, st.target, crossing);
+        if (stop.bed == st.now.bed) {
+          to_transit.push_back({st.now, facing(st.now)});
+          landing.push_back({facing(st.now), stop});
         } else {
-          crossing.push_back({from, to});
+          over.push_back({st.now, stop});
         }
         st.now = stop;
       }
       emit_moves(to_transit);
-      emit_moves(crossing);
+      emit_moves(over);
       emit_moves(landing);
     }
     for (const Stack& st : stacks)
-      for (std::uint32_t loop : taken(st.stitch))
-        live_[loop].now = live_[loop].home = place_at(st.target);
+      for (std::uint32_t loop : taken(st.stitch)) live_[loop].now = live_[loop].home = st.target;
+  }
+
+  // One stage's stop toward `target`: along the bed by at most the reach, or, when some loops
+  // cross a tube's fold (which then stays put), along the fabric across the fold.
+  Place next_stop(Place now, Place target, bool crossing) const {
+    if (!crossing)
+      return {now.bed, std::clamp(target.needle, now.needle - reach_, now.needle + reach_)};
+    std::int32_t u = ring(now), step = reach_ / pitch_;
+    return place_at(std::clamp(ring(target), u - step, u + step));
   }
 
   void send_purls(const Course& c, const std::vector<std::uint8_t>& ready) {
