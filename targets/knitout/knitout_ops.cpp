@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <charconv>
 
 #include "common/error.hpp"
@@ -15,11 +16,17 @@ bool is_space(char c) {
   return c == ' ' || c == '\t' || c == '\r';
 }
 
-// Splits the code part of a line (before any ';') into at most 8 tokens.
+// Splits the code part of a line (before any ';') into at most 8 tokens. The words are left
+// uninitialised past `count`: clearing them on every line costs more than reading the line.
 struct Tokens {
-  std::string_view word[8];
+  struct Word {
+    const char* text;
+    std::size_t size;
+  };
+  std::array<Word, 8> words;
   int count = 0;
   bool too_many = false;
+  std::string_view word(int i) const { return {words[i].text, words[i].size}; }
 };
 Tokens tokenize(std::string_view line) {
   Tokens t;
@@ -33,7 +40,7 @@ Tokens tokenize(std::string_view line) {
       t.too_many = true;
       break;
     }
-    t.word[t.count++] = line.substr(start, i - start);
+    t.words[t.count++] = {line.data() + start, i - start};
     if (i < n && line[i] == ';') break;
   }
   return t;
@@ -41,6 +48,15 @@ Tokens tokenize(std::string_view line) {
 
 bool parse_int(std::string_view s, std::int32_t& value) {
   if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+  if (!s.empty() && s.size() <= 9 && s.front() != '-') {  // the common case: a few digits
+    std::int32_t v = 0;
+    for (char c : s) {
+      if (c < '0' || c > '9') return false;
+      v = v * 10 + (c - '0');
+    }
+    value = v;
+    return true;
+  }
   auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
   return ec == std::errc() && end == s.data() + s.size();
 }
@@ -106,13 +122,13 @@ bool parse_carriers(const Tokens& t, int first, const Header& h, CarrierMask& ma
   for (int i = first; i < t.count; ++i) {
     std::size_t c = 0;
     std::int32_t number = 0;
-    if (h.numbered && parse_int(t.word[i], number) && number >= 1 && t.word[i][0] != '+' &&
+    if (h.numbered && parse_int(t.word(i), number) && number >= 1 && t.word(i)[0] != '+' &&
         static_cast<std::size_t>(number) <= h.carriers.size())
       c = static_cast<std::size_t>(number - 1);
     else
-      while (c < h.carriers.size() && h.carriers[c] != t.word[i]) ++c;
+      while (c < h.carriers.size() && h.carriers[c] != t.word(i)) ++c;
     if (c == h.carriers.size()) {
-      error = fmt::format("carrier '{}' is not named in the ;;Carriers: header", t.word[i]);
+      error = fmt::format("carrier '{}' is not named in the ;;Carriers: header", t.word(i));
       return false;
     }
     mask |= CarrierMask{1} << c;
@@ -229,7 +245,7 @@ class OpParser {
       : t_(t), h_(h), op_(op), error_(error) {}
 
   bool parse() {
-    std::string_view name = t_.word[0];
+    std::string_view name = t_.word(0);
     switch (name.empty() ? ' ' : name[0]) {
       case 'k':
         if (name == "knit") return stitch(OpCode::knit, "knit D N CS");
@@ -298,14 +314,14 @@ class OpParser {
     return t_.count >= n || fail(fmt::format("expected '{}'", form));
   }
   bool needle(int i, Needle& n, const char* form) {
-    return parse_needle(t_.word[i], n) ||
+    return parse_needle(t_.word(i), n) ||
            fail(fmt::format("expected '{}': '{}' is not a needle such as f12 or bs3", form,
-                            t_.word[i]));
+                            t_.word(i)));
   }
   bool direction(const char* form) {
-    return parse_direction(t_.word[1], op_.dir) ||
+    return parse_direction(t_.word(1), op_.dir) ||
            fail(fmt::format("expected '{}': the direction must be + or -, found '{}'", form,
-                            t_.word[1]));
+                            t_.word(1)));
   }
   bool carriers(int first) { return parse_carriers(t_, first, h_, op_.carriers, error_); }
 
@@ -327,21 +343,21 @@ class OpParser {
   }
   bool rack() {
     op_.code = OpCode::rack;
-    return parse_rack(t_.word[1], op_.rack_quarters) ||
+    return parse_rack(t_.word(1), op_.rack_quarters) ||
            fail(fmt::format("expected 'rack R': '{}' is not a racking such as -2, 1 or 0.25",
-                            t_.word[1]));
+                            t_.word(1)));
   }
   bool stitch_size() {
     op_.code = OpCode::stitch;
     std::int32_t l = 0, s = 0;
-    return (t_.count == 3 && parse_int(t_.word[1], l) && parse_int(t_.word[2], s)) ||
+    return (t_.count == 3 && parse_int(t_.word(1), l) && parse_int(t_.word(2), s)) ||
            fail("expected 'stitch L T' with two whole numbers");
   }
   bool extension(std::string_view name) {
     op_.code = OpCode::extension;
     if (name != "x-stitch-number" && name != "x-speed-number") return true;
     std::int32_t v = 0;
-    return (t_.count == 2 && parse_int(t_.word[1], v) && v >= 0) ||
+    return (t_.count == 2 && parse_int(t_.word(1), v) && v >= 0) ||
            fail(fmt::format("expected '{} K' with a whole number K >= 0", name));
   }
 
