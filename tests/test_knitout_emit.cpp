@@ -12,8 +12,8 @@
 
 #include "builtin_targets.hpp"
 #include "common/error.hpp"
-#include "mesh/generate.hpp"
 #include "knitout/course_layout.hpp"
+#include "mesh/generate.hpp"
 #include "test_knitout_util.hpp"
 
 namespace skein {
@@ -59,7 +59,8 @@ TEST(KnitoutSample, ProjectSamplesProveOnEveryProfile) {
     Compilation c = compile_model(input);
     for (const char* name : kProfiles) {
       knitout::MachineProfile p = shipped_profile(name);
-      knitout::ProofResult proof = testing::replay_and_prove(testing::emit_knitout_text(c, p), c, p);
+      knitout::ProofResult proof =
+          testing::replay_and_prove(testing::emit_knitout_text(c, p), c, p);
       EXPECT_TRUE(proof.proven) << input << " on " << name << ": " << proof.summary;
     }
   }
@@ -103,11 +104,18 @@ TEST(KnitoutFit, WhatIsNotSupportedYetIsNamedWithItsStitch) {
   EXPECT_EQ(emit_error(compile_model("samples/autoknit/test-C.st"), "generic"),
             "not yet supported by the knitout target: several yarn pieces at once (2 pieces), at "
             "line 352 (k)");
+  std::string short_rows =
+      emit_error(compile_model("samples/short-row-wedge/short-row-wedge.yaml"), "generic");
+  EXPECT_TRUE(
+      short_rows.starts_with("not yet supported by the knitout target: short rows, at face "))
+      << short_rows;
 }
 
 // The knit graph does not say which way the yarn runs through a stitch; the courses do.
 TEST(KnitoutCourses, RowsAlternateOnASheetAndRoundsRunOneWayInATube) {
-  RowPlan plan = {{T::co, T::co, T::co, T::co}, {T::k, T::k2tog, T::k}, {T::kfb, T::k, T::p},
+  RowPlan plan = {{T::co, T::co, T::co, T::co},
+                  {T::k, T::k2tog, T::k},
+                  {T::kfb, T::k, T::p},
                   {T::bo, T::bo, T::bo, T::bo}};
   for (Layout layout : {Layout::sheet, Layout::tube}) {
     Compilation c = compile_stitch_mesh(build_from_rows(plan, layout), "courses");

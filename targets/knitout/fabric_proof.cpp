@@ -82,7 +82,8 @@ class Matcher {
     out += expected.size() > 1 ? "s of " : " of ";
     for (std::size_t i = 0; i < expected.size(); ++i)
       out +=
-          fmt::format("{}{} ({})", i ? ", " : "", describe_maker(expected[i]), where(expected[i]));
+          fmt::format("{}{} ({}{})", i ? ", " : "", describe_maker(expected[i]), where(expected[i]),
+                      f_.loops[expected[i]].dropped ? ", later dropped" : "");
     return out;
   }
   std::string describe_maker(LoopId x) const {

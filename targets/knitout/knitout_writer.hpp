@@ -43,7 +43,6 @@ class KnitoutWriter {
     rack(front.index - back.index);
     append("xfer {}{} {}{}\n", bed_name(from.bed), from.index, bed_name(to.bed), to.index);
   }
-  std::int32_t current_rack() const { return rack_; }
 
   void flush() {
     out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));

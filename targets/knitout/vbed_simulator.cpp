@@ -428,8 +428,7 @@ class VirtualBed {
         fail(fmt::format("carrier {} is still in at the end of the file (take it out with {})",
                          r_.header.carriers[c], p_.hook == YarnHook::inhook ? "outhook" : "out"));
     for (const auto& bed : beds_)
-      for (const Stack& s : bed)
-        for (std::uint8_t i = 0; i < s.size; ++i) r_.fabric.live_at_end.push_back(s.loop[i]);
+      for (const Stack& s : bed) r_.stats.loops_left += s.size;
     ShopStats& s = r_.stats;
     if (s.max_needle < s.min_needle) s.min_needle = s.max_needle = 0;
     s.seconds = static_cast<double>(s.stitch_passes + s.transfer_passes) * p_.seconds_per_pass +
@@ -467,12 +466,13 @@ std::string shop_summary(const Replay& r, const MachineProfile& p) {
       "  machine: {} ({}), needles {}..{} used\n"
       "  carriage passes: {} ({} knitting, {} transfer)\n"
       "  stitches: {} knit, {} tuck, {} split, {} miss\n"
-      "  transfers: {}, rack changes: {}, loops dropped: {}\n"
+      "  transfers: {}, rack changes: {}, loops dropped: {}, loops left on the needles: {}\n"
       "  yarn pieces: {}\n"
       "  estimated knitting time: {}:{:02d} (min:s)",
       p.name, p.description, s.min_needle, s.max_needle, s.stitch_passes + s.transfer_passes,
       s.stitch_passes, s.transfer_passes, s.knits, s.tucks, s.splits, s.misses, s.transfers,
-      s.racks, s.loops_dropped, s.yarn_pieces, minutes, static_cast<int>(s.seconds - minutes * 60));
+      s.racks, s.loops_dropped, s.loops_left, s.yarn_pieces, minutes,
+      static_cast<int>(s.seconds - minutes * 60));
 }
 
 }  // namespace skein::knitout

@@ -36,7 +36,6 @@ struct Fabric {
   std::vector<FabricLoop> loops;
   std::vector<LoopId> parents;
   std::vector<std::vector<LoopId>> by_carrier;  // per carrier: its loops in yarn order
-  std::vector<LoopId> live_at_end;              // loops still on needles after the last line
   std::span<const LoopId> parents_of(LoopId l) const {
     return {parents.data() + loops[l].first_parent, loops[l].parent_count};
   }
@@ -50,6 +49,7 @@ struct ShopStats {
   std::uint64_t knits = 0, tucks = 0, splits = 0, misses = 0, transfers = 0;
   std::uint64_t racks = 0;  // rack changes
   std::uint64_t loops_dropped = 0;
+  std::uint64_t loops_left = 0;       // still on the needles after the last line
   std::uint64_t yarn_pieces = 0;      // in / inhook of a carrier
   std::uint64_t needles_crossed = 0;  // summed width of the passes
   std::int32_t min_needle = 0, max_needle = 0;
