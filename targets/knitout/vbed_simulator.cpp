@@ -319,6 +319,7 @@ class VirtualBed {
              : op.code == OpCode::split ? transfer(op)
                                         : void(at(op.a));
     if (op.code == OpCode::split) check_transfer(op);
+    if (s.size == 0 && op.code != OpCode::tuck) ++r_.stats.empty_knits;
     if (s.size == 0 && op.code != OpCode::tuck && p_.knit_empty_needle_is_error)
       fail(fmt::format(
           "{} on {}, which holds no loop ({} treats knitting an empty needle as an error)",
@@ -467,12 +468,15 @@ std::string shop_summary(const Replay& r, const MachineProfile& p) {
       "  carriage passes: {} ({} knitting, {} transfer)\n"
       "  stitches: {} knit, {} tuck, {} split, {} miss\n"
       "  transfers: {}, rack changes: {}, loops dropped: {}, loops left on the needles: {}\n"
-      "  yarn pieces: {}\n"
+      "  yarn pieces: {}{}\n"
       "  estimated knitting time: {}:{:02d} (min:s)",
       p.name, p.description, s.min_needle, s.max_needle, s.stitch_passes + s.transfer_passes,
       s.stitch_passes, s.transfer_passes, s.knits, s.tucks, s.splits, s.misses, s.transfers,
-      s.racks, s.loops_dropped, s.loops_left, s.yarn_pieces, minutes,
-      static_cast<int>(s.seconds - minutes * 60));
+      s.racks, s.loops_dropped, s.loops_left, s.yarn_pieces,
+      s.empty_knits
+          ? fmt::format(", knits on empty needles: {} (allowed on {})", s.empty_knits, p.name)
+          : "",
+      minutes, static_cast<int>(s.seconds - minutes * 60));
 }
 
 }  // namespace skein::knitout

@@ -50,6 +50,7 @@ struct ShopStats {
   std::uint64_t racks = 0;  // rack changes
   std::uint64_t loops_dropped = 0;
   std::uint64_t loops_left = 0;       // still on the needles after the last line
+  std::uint64_t empty_knits = 0;      // knits and splits of empty needles (where allowed)
   std::uint64_t yarn_pieces = 0;      // in / inhook of a carrier
   std::uint64_t needles_crossed = 0;  // summed width of the passes
   std::int32_t min_needle = 0, max_needle = 0;
