@@ -144,6 +144,37 @@ bool is_fit_error(const std::string& what) {
          what.find("loops per needle") != std::string::npos;
 }
 
+// A machine that racks only two needles: re-spacing takes several stages, and a tube's
+// double decreases (4 needles apart in half gauge) are refused in words.
+TEST(KnitoutRandomized, ATightRackingLimitStagesTheTransfers) {
+  knitout::MachineProfile tight = shipped_profile("generic");
+  tight.max_rack = tight.max_transfer_stretch = 2;
+  std::mt19937_64 rng(2);
+  int proven = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    RandomShaping shaping;
+    shaping.increase = shaping.decrease = 0.08;
+    Layout layout = trial % 2 ? Layout::tube : Layout::sheet;
+    Compilation c = compile_stitch_mesh(
+        build_from_rows(random_rows(8 + static_cast<std::uint32_t>(rng() % 30), 12, shaping, rng()),
+                        layout),
+        "tight");
+    std::string text;
+    try {
+      text = testing::emit_knitout_text(c, tight);
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("a 3-to-1 decrease needs transfers across 4 needles"),
+                std::string::npos)
+          << e.what();
+      continue;
+    }
+    knitout::ProofResult proof = testing::replay_and_prove(text, c, tight);
+    EXPECT_TRUE(proof.proven) << "trial " << trial << ": " << proof.summary;
+    proven += proof.proven;
+  }
+  EXPECT_GT(proven, 25);
+}
+
 // Many generated sheets and tubes with random shaping: each compiles and proves on every
 // profile it fits, and gives a fit error on the others.
 TEST(KnitoutRandomized, ShapedSheetsAndTubesCompileAndProveOnEveryProfileTheyFit) {
