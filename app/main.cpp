@@ -34,8 +34,11 @@ std::string registry_listing(const Registry& registry) {
 Examples:
   skein check samples/hat/hat.obj
   skein compile samples/hat/hat.obj --target schedule -o hat.schedule
-  skein compile samples/swatch/rib-swatch.obj --target schedule -o swatch.schedule --verify
+  skein compile samples/rib-swatch/rib-swatch.obj --target schedule -o swatch.schedule --verify
   skein verify hat.schedule --against samples/hat/hat.obj
+  skein compile samples/hat/hat.obj --target hand -o hat.md --verify      # a printable pattern
+  skein compile samples/hat/hat.obj -t knitout -m swg091n2 -o hat.k --verify
+  skein verify hat.k -m kniterate --against samples/hat/hat.obj
   skein check samples/autoknit/test-B.st
   skein new sock --circumference 20cm --length 15cm -o mysock   # writes mysock.obj + mysock.yaml
   skein check mysock.yaml                   # a project: coarse mesh -> labeling -> stitch mesh
@@ -81,8 +84,9 @@ int run_compile(const Registry& registry, const std::string& input, const std::s
     return kNotKnittable;
   }
   write_file_atomically(output, [&](std::ostream& out) { target.emit(c, options, out); });
-  std::cout << fmt::format("wrote {} ({} target, {} stitches, {} yarn pieces)\n", output,
-                           target.name(), c.knit.size(), c.yarns.size());
+  std::cout << fmt::format("wrote {} ({} target, {} stitches, {} yarn piece{})\n", output,
+                           target.name(), c.knit.size(), c.yarns.size(),
+                           c.yarns.size() == 1 ? "" : "s");
   if (!verify) return kKnittable;
   const Simulator* simulator = registry.simulator_for(target.name());
   if (!simulator) throw UsageError(fmt::format("target '{}' has no simulator", target.name()));
