@@ -1,60 +1,15 @@
 // The skein command line as a user meets it: exit codes, messages, and no partial outputs.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <cstdlib>
-#include <filesystem>
 #include <fstream>
-#include <sstream>
 
-#include "golden.hpp"
+#include "cli_runner.hpp"
 
 namespace skein {
 namespace {
 
-namespace fs = std::filesystem;
-
-struct CliRun {
-  int exit_code;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-class Cli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("skein-cli-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-    fs::current_path(SKEIN_SOURCE_DIR);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  CliRun skein(const std::string& args) {
-    std::string command = std::string(SKEIN_BINARY) + " " + args + " >" + (dir_ / "stdout").string() +
-                          " 2>" + (dir_ / "stderr").string();
-    int status = std::system(command.c_str());
-    return {WEXITSTATUS(status), slurp(dir_ / "stdout"), slurp(dir_ / "stderr")};
-  }
-  std::string in_dir(const std::string& name) const { return (dir_ / name).string(); }
-  // Nothing but the captured stdout/stderr may be left in the folder.
-  std::vector<std::string> outputs() const {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(dir_)) {
-      std::string name = entry.path().filename().string();
-      if (name != "stdout" && name != "stderr") names.push_back(name);
-    }
-    return names;
-  }
-
-  fs::path dir_;
-};
+using testing::CliRun;
+class Cli : public testing::SkeinCliTest {};
 
 TEST_F(Cli, CheckKnittableModelExitsZero) {
   CliRun r = skein("check samples/hat/hat.obj");
@@ -84,7 +39,7 @@ TEST_F(Cli, MissingInputExitsTwo) {
 
 TEST_F(Cli, CompileWritesTheOutputAndVerifiesIt) {
   CliRun r = skein("compile samples/rib-swatch/rib-swatch.obj --target schedule -o " +
-                in_dir("swatch.schedule") + " --verify");
+                   in_dir("swatch.schedule") + " --verify");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("wrote " + in_dir("swatch.schedule")), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("proven against samples/rib-swatch/rib-swatch.obj: all 360 stitches"),
@@ -95,7 +50,7 @@ TEST_F(Cli, CompileWritesTheOutputAndVerifiesIt) {
 
 TEST_F(Cli, CompileOfAnUnknittableModelWritesNothing) {
   CliRun r = skein("compile samples/unknittable/fig13-deadlock.obj -t schedule -o " +
-                in_dir("fig13.schedule"));
+                   in_dir("fig13.schedule"));
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("nothing written to"), std::string::npos) << r.err;
   EXPECT_TRUE(outputs().empty());
@@ -110,22 +65,25 @@ TEST_F(Cli, UnknownTargetIsAUsageErrorAndWritesNothing) {
 }
 
 TEST_F(Cli, UnwritableOutputLeavesNoTemporaryFile) {
-  CliRun r = skein("compile samples/hat/hat.obj -t schedule -o " + in_dir("missing-dir/hat.schedule"));
+  CliRun r =
+      skein("compile samples/hat/hat.obj -t schedule -o " + in_dir("missing-dir/hat.schedule"));
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("cannot write"), std::string::npos) << r.err;
   EXPECT_TRUE(outputs().empty());
 }
 
 TEST_F(Cli, VerifyRejectsATamperedScheduleWithItsLine) {
-  ASSERT_EQ(skein("compile samples/rib-swatch/rib-swatch.obj -t schedule -o " + in_dir("s.schedule"))
-                .exit_code,
-            0);
-  std::string text = slurp(in_dir("s.schedule"));
+  ASSERT_EQ(
+      skein("compile samples/rib-swatch/rib-swatch.obj -t schedule -o " + in_dir("s.schedule"))
+          .exit_code,
+      0);
+  std::string text = read("s.schedule");
   std::size_t at = text.find("    21 k\n");
   ASSERT_NE(at, std::string::npos);
   text.replace(at, 9, "    21 p\n");
   std::ofstream(in_dir("s.schedule")) << text;
-  CliRun r = skein("verify " + in_dir("s.schedule") + " --against samples/rib-swatch/rib-swatch.obj");
+  CliRun r =
+      skein("verify " + in_dir("s.schedule") + " --against samples/rib-swatch/rib-swatch.obj");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("face 21 (k, row 2) is a k, not a p"), std::string::npos) << r.err;
 }
