@@ -1,6 +1,6 @@
 // skein: a knitting compiler. This file only parses the command line and calls the driver.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include <chrono>
 #include <filesystem>
@@ -29,7 +29,8 @@ std::string registry_listing(const Registry& registry) {
     out += fmt::format("  {:<12} {}\n", t->name(), t->description());
   out += "\nSimulators (skein verify, compile --verify):\n";
   for (const Simulator* s : registry.simulators())
-    out += fmt::format("  {:<16} replays --target {}: {}\n", s->name(), s->target(), s->description());
+    out +=
+        fmt::format("  {:<16} replays --target {}: {}\n", s->name(), s->target(), s->description());
   out += R"(
 Examples:
   skein check samples/hat/hat.obj
@@ -94,7 +95,8 @@ int run_compile(const Registry& registry, const std::string& input, const std::s
 }
 
 // The target whose output `file` is: --target if given, else the one whose extension it has.
-const Target& target_of(const Registry& registry, const std::string& file, const std::string& given) {
+const Target& target_of(const Registry& registry, const std::string& file,
+                        const std::string& given) {
   if (!given.empty()) return find_target(registry, given);
   std::string extension = std::filesystem::path(file).extension().string();
   for (const Target* t : registry.targets())
@@ -131,7 +133,8 @@ int main(int argc, char** argv) {
   Registry registry;
   register_builtin_targets(registry);
 
-  CLI::App app{"skein: compiles knittable stitch meshes into knitting instructions and proves them"};
+  CLI::App app{
+      "skein: compiles knittable stitch meshes into knitting instructions and proves them"};
   app.footer(registry_listing(registry));
   app.require_subcommand(1);
   bool verbose = false;
@@ -141,11 +144,14 @@ int main(int argc, char** argv) {
   TargetOptions options;
   bool verify = false;
 
-  auto* check = app.add_subcommand("check", "validate INPUT and report knittability, rows, yarn pieces");
-  check->add_option("INPUT", input, "stitch mesh (.obj) or AutoKnit stitch graph (.st)")->required();
+  auto* check =
+      app.add_subcommand("check", "validate INPUT and report knittability, rows, yarn pieces");
+  check->add_option("INPUT", input, "stitch mesh (.obj) or AutoKnit stitch graph (.st)")
+      ->required();
 
   auto* compile = app.add_subcommand("compile", "compile INPUT for a target and write OUT");
-  compile->add_option("INPUT", input, "stitch mesh (.obj) or AutoKnit stitch graph (.st)")->required();
+  compile->add_option("INPUT", input, "stitch mesh (.obj) or AutoKnit stitch graph (.st)")
+      ->required();
   compile->add_option("-t,--target", target_name, "back end (see the list below)")->required();
   compile->add_option("-o,--output", output, "file to write (never left half-written)")->required();
   compile->add_option("-m,--machine", options.machine, "machine profile name or path");
@@ -154,25 +160,29 @@ int main(int argc, char** argv) {
   auto* verify_cmd = app.add_subcommand("verify", "replay OUT in its target's simulator");
   verify_cmd->add_option("OUT", file, "a file a target wrote")->required();
   verify_cmd->add_option("--against", against, "the input it must reproduce, stitch for stitch");
-  verify_cmd->add_option("-t,--target", target_name, "the target that wrote OUT (default: by extension)");
+  verify_cmd->add_option("-t,--target", target_name,
+                         "the target that wrote OUT (default: by extension)");
   verify_cmd->add_option("-m,--machine", options.machine, "machine profile name or path");
 
   std::string shape_kind;
   std::string circumference, width, length;
   auto* new_cmd = app.add_subcommand("new", "write a parametric coarse mesh and its project file");
   new_cmd->add_option("KIND", shape_kind, "sheet, tube, hat, sock or sweater")->required();
-  new_cmd->add_option("--circumference", circumference, "tube, hat, sock or chest size (e.g. 40cm)");
+  new_cmd->add_option("--circumference", circumference,
+                      "tube, hat, sock or chest size (e.g. 40cm)");
   new_cmd->add_option("--width", width, "sheet width (e.g. 20cm)");
   new_cmd->add_option("--length", length, "length or height (e.g. 20cm)");
   new_cmd->add_option("-o,--output", output, "NAME: writes NAME.obj and NAME.yaml")->required();
 
-  auto* generate = app.add_subcommand("generate", "label a project's coarse mesh and write its stitch mesh");
+  auto* generate =
+      app.add_subcommand("generate", "label a project's coarse mesh and write its stitch mesh");
   generate->add_option("PROJECT", input, "project file (.yaml)")->required();
   generate->add_option("-o,--output", output, "the stitch mesh (.obj) to write")->required();
 
   bool coarse = false;
   auto* render = app.add_subcommand("render", "draw INPUT as an SVG picture");
-  render->add_option("INPUT", input, "stitch mesh (.obj), project (.yaml) or coarse mesh (.obj)")->required();
+  render->add_option("INPUT", input, "stitch mesh (.obj), project (.yaml) or coarse mesh (.obj)")
+      ->required();
   render->add_option("-o,--output", output, "the .svg file to write")->required();
   render->add_flag("--coarse", coarse, "for a project: draw the labelled coarse mesh");
 
@@ -188,7 +198,8 @@ int main(int argc, char** argv) {
     if (*new_cmd) return run_new(shape_kind, circumference, width, length, output);
     if (*render) return render_file(input, output, coarse), kKnittable;
     if (*generate) return write_generated_stitch_mesh(input, output), kKnittable;
-    if (*compile) return run_compile(registry, input, target_name, options, output, verify, verbose);
+    if (*compile)
+      return run_compile(registry, input, target_name, options, output, verify, verbose);
     return run_verify(registry, file, against, target_name, options, verbose);
   } catch (const Error& e) {
     std::cerr << "skein: error: " << e.what() << '\n';

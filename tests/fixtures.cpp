@@ -9,10 +9,14 @@ namespace {
 
 EdgeRole role_of(char c) {
   switch (c) {
-    case 'b': return EdgeRole::bottom;
-    case 't': return EdgeRole::top;
-    case 'i': return EdgeRole::wale_in;
-    case 'o': return EdgeRole::wale_out;
+    case 'b':
+      return EdgeRole::bottom;
+    case 't':
+      return EdgeRole::top;
+    case 'i':
+      return EdgeRole::wale_in;
+    case 'o':
+      return EdgeRole::wale_out;
   }
   throw InternalError(std::string("bad role letter ") + c);
 }
@@ -35,7 +39,8 @@ StitchMesh grid_mesh(int width, int height, const std::vector<Square>& squares,
   StitchMesh mesh = std::move(builder).build();
   for (const YarnMark& m : yarn) {
     Edge e = mesh.find_edge(at(m.x0, m.y0), at(m.x1, m.y1));
-    mesh.mismatch_yarn[e] = {m.kind, m.own_square >= 0 ? Face(static_cast<std::uint32_t>(m.own_square)) : Face()};
+    mesh.mismatch_yarn[e] = {
+        m.kind, m.own_square >= 0 ? Face(static_cast<std::uint32_t>(m.own_square)) : Face()};
   }
   return mesh;
 }
@@ -52,9 +57,9 @@ StitchMesh fig13_deadlock_mesh() {
       {0, 3, T::co, "tobi"}, {3, 3, T::co, "tobi"},
   };
   constexpr int kA3 = 7, kB0 = 8;
-  return grid_mesh(4, 4, squares,
-                   {{0, 2, 1, 2, MismatchYarn::Kind::own, kB0},
-                    {3, 2, 4, 2, MismatchYarn::Kind::own, kA3}});
+  return grid_mesh(
+      4, 4, squares,
+      {{0, 2, 1, 2, MismatchYarn::Kind::own, kB0}, {3, 2, 4, 2, MismatchYarn::Kind::own, kA3}});
 }
 
 namespace {
@@ -65,7 +70,8 @@ std::vector<YarnMark> marks_along(int line, int width, MismatchYarn::Kind yarn, 
   std::vector<YarnMark> marks;
   if (yarn == MismatchYarn::Kind::by_default) return marks;
   for (int x = 0; x < width; ++x)
-    marks.push_back({x, line, x + 1, line, yarn, yarn == MismatchYarn::Kind::own ? own_first + x * own_stride : -1});
+    marks.push_back({x, line, x + 1, line, yarn,
+                     yarn == MismatchYarn::Kind::own ? own_first + x * own_stride : -1});
   return marks;
 }
 
@@ -99,16 +105,26 @@ StitchMesh split_mesh(MismatchYarn::Kind yarn, bool own_upper) {
 // the column: their loops are consumed through the column's wale edges.
 StitchMesh contracting_mesh() {
   using T = StitchType;
-  return grid_mesh(2, 4, {{0, 0, T::co, "boti"}, {0, 1, T::k, "bito"}, {0, 2, T::k, "boti"},
-                          {0, 3, T::bo, "bito"}, {1, 1, T::co, "ibot"}, {1, 2, T::co, "ibot"}});
+  return grid_mesh(2, 4,
+                   {{0, 0, T::co, "boti"},
+                    {0, 1, T::k, "bito"},
+                    {0, 2, T::k, "boti"},
+                    {0, 3, T::bo, "bito"},
+                    {1, 1, T::co, "ibot"},
+                    {1, 2, T::co, "ibot"}});
 }
 
 // A column knit upwards (x0), and beside it three bind-off stitches whose wales point right,
 // away from the column: each is picked up through the column's edge.
 StitchMesh expanding_mesh() {
   using T = StitchType;
-  return grid_mesh(2, 3, {{0, 0, T::co, "boti"}, {0, 1, T::k, "bito"}, {0, 2, T::bo, "boti"},
-                          {1, 0, T::bo, "itob"}, {1, 1, T::bo, "itob"}, {1, 2, T::bo, "itob"}});
+  return grid_mesh(2, 3,
+                   {{0, 0, T::co, "boti"},
+                    {0, 1, T::k, "bito"},
+                    {0, 2, T::bo, "boti"},
+                    {1, 0, T::bo, "itob"},
+                    {1, 1, T::bo, "itob"},
+                    {1, 2, T::bo, "itob"}});
 }
 
 StitchMesh short_row_mesh(StitchType turn) {
@@ -129,12 +145,16 @@ StitchMesh short_row_mesh(StitchType turn) {
   };
   for (float x = 0; x < 4; ++x) face({{x, 0}, {x + 1, 0}, {x + 1, 1}, {x, 1}}, "boti", T::co);
   for (float x = 2; x < 4; ++x) face({{x, 1}, {x + 1, 1}, {x + 1, 2}, {x, 2}}, "bito", T::k);
-  if (turn == T::sr4) face({{1, 1}, {2, 1}, {2, 2}, {2, 3}}, "biot", T::sr4);
-  else face({{1, 1}, {2, 1}, {2, 2}, {2, 3}, {1.5f, 2}}, "biott", turn);
+  if (turn == T::sr4)
+    face({{1, 1}, {2, 1}, {2, 2}, {2, 3}}, "biot", T::sr4);
+  else
+    face({{1, 1}, {2, 1}, {2, 2}, {2, 3}, {1.5f, 2}}, "biott", turn);
   for (float x = 2; x < 4; ++x) face({{x, 2}, {x + 1, 2}, {x + 1, 3}, {x, 3}}, "boti", T::k);
   face({{0, 1}, {1, 1}, {1, 4}, {0, 4}}, "bito", T::k);
-  if (turn == T::sr4) face({{1, 1}, {2, 3}, {2, 4}, {1, 4}}, "bito", T::k);
-  else face({{1, 1}, {1.5f, 2}, {2, 3}, {2, 4}, {1, 4}}, "bbito", T::k2tog);
+  if (turn == T::sr4)
+    face({{1, 1}, {2, 3}, {2, 4}, {1, 4}}, "bito", T::k);
+  else
+    face({{1, 1}, {1.5f, 2}, {2, 3}, {2, 4}, {1, 4}}, "bbito", T::k2tog);
   for (float x = 2; x < 4; ++x) face({{x, 3}, {x + 1, 3}, {x + 1, 4}, {x, 4}}, "bito", T::k);
   for (float x = 0; x < 4; ++x) face({{x, 4}, {x + 1, 4}, {x + 1, 5}, {x, 5}}, "boti", T::bo);
   return std::move(builder).build();

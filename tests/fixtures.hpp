@@ -11,7 +11,7 @@
 namespace skein::testing {
 
 struct Square {
-  int x, y;           // lower-left corner
+  int x, y;  // lower-left corner
   StitchType type;
   std::string roles;  // four letters for the lower, right, upper and left edges: b t i o
 };
@@ -31,8 +31,10 @@ StitchMesh fig13_deadlock_mesh();
 
 // One small mesh per mismatched direction (paper Fig. 5), three stitches wide where it can be.
 // `yarn` applies to every mismatched edge (joins and splits); `own_upper` picks the side.
-StitchMesh join_mesh(MismatchYarn::Kind yarn = MismatchYarn::Kind::by_default, bool own_upper = false);
-StitchMesh split_mesh(MismatchYarn::Kind yarn = MismatchYarn::Kind::by_default, bool own_upper = false);
+StitchMesh join_mesh(MismatchYarn::Kind yarn = MismatchYarn::Kind::by_default,
+                     bool own_upper = false);
+StitchMesh split_mesh(MismatchYarn::Kind yarn = MismatchYarn::Kind::by_default,
+                      bool own_upper = false);
 StitchMesh contracting_mesh();
 StitchMesh expanding_mesh();
 

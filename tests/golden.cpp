@@ -30,9 +30,9 @@ void expect_golden(const std::string& relative, const std::string& actual) {
     bool more_want = static_cast<bool>(std::getline(expected, want));
     bool more_have = static_cast<bool>(std::getline(got, have));
     if (more_want && more_have && want == have) continue;
-    ADD_FAILURE() << "golden file " << relative << " differs at line " << line << "\n  expected: "
-                  << (more_want ? want : "<end of file>") << "\n  actual:   "
-                  << (more_have ? have : "<end of file>")
+    ADD_FAILURE() << "golden file " << relative << " differs at line " << line
+                  << "\n  expected: " << (more_want ? want : "<end of file>")
+                  << "\n  actual:   " << (more_have ? have : "<end of file>")
                   << "\n(rerun with SKEIN_UPDATE_GOLDEN=1 and read the diff)";
     return;
   }

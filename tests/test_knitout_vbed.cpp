@@ -84,7 +84,9 @@ TEST(VbedRules, ShopSummaryCountsWhatTheFileDoes) {
   EXPECT_GT(r.stats.seconds, 0);
   std::string summary = knitout::shop_summary(r, p);
   EXPECT_NE(summary.find("carriage passes: "), std::string::npos) << summary;
-  EXPECT_NE(summary.find("transfers: 2, rack changes: 2, loops dropped: 4, loops left on the needles: 0"), std::string::npos)
+  EXPECT_NE(
+      summary.find("transfers: 2, rack changes: 2, loops dropped: 4, loops left on the needles: 0"),
+      std::string::npos)
       << summary;
 }
 

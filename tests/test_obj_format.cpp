@@ -393,9 +393,10 @@ TEST(ObjFormat, RejectsShiftMarkOffTheMesh) {
   EXPECT_TRUE(fails_at(quad_then("#~s k boti\n#~shift 1\n"), 8,
                        "expected two vertex numbers after '#~shift', found the end of the line"));
   EXPECT_TRUE(fails_at(quad_then("#~s k boti\n#~shift 1 -2\n"), 8, "found '-2'"));
-  EXPECT_TRUE(fails_at(quad_then("#~s k boti\n#~shift 1 2 3\n"), 8,
-                       "expected a shift option (up-right, up-left, down-right or down-left) after the two "
-                       "vertex numbers, found '3'"));
+  EXPECT_TRUE(
+      fails_at(quad_then("#~s k boti\n#~shift 1 2 3\n"), 8,
+               "expected a shift option (up-right, up-left, down-right or down-left) after the two "
+               "vertex numbers, found '3'"));
 }
 
 TEST(ObjFormat, RejectsMalformedYarnChoices) {

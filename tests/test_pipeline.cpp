@@ -42,7 +42,8 @@ std::size_t count(const Schedule& s, EventKind kind, MarkerKind marker = MarkerK
 }
 
 TEST(KnitGraph, SheetIsOneYarnKnitRowByRowWithTurns) {
-  Compilation c = compile_stitch_mesh(build_from_rows(ribbed_rows(5, 3, {T::k, T::p}), Layout::sheet), "sheet");
+  Compilation c =
+      compile_stitch_mesh(build_from_rows(ribbed_rows(5, 3, {T::k, T::p}), Layout::sheet), "sheet");
   ASSERT_TRUE(c.knittability.knittable);
   EXPECT_EQ(c.yarns.size(), 1u);
   EXPECT_EQ(c.yarns.first[0], 0u);  // the leftmost cast-on stitch
@@ -58,7 +59,8 @@ TEST(KnitGraph, SheetIsOneYarnKnitRowByRowWithTurns) {
 
 // Loop slots count left to right in each stitch's own frame, on both ends of the loop.
 TEST(KnitGraph, LoopSlotsRunLeftToRightOnBothEnds) {
-  RowPlan plan = {{T::co, T::co, T::co}, {T::k, T::kfb, T::k}, {T::k2tog, T::k, T::k}, {T::bo, T::bo, T::bo}};
+  RowPlan plan = {
+      {T::co, T::co, T::co}, {T::k, T::kfb, T::k}, {T::k2tog, T::k, T::k}, {T::bo, T::bo, T::bo}};
   for (Layout layout : {Layout::sheet, Layout::tube}) {
     Compilation c = compile_stitch_mesh(build_from_rows(plan, layout), "slots");
     const KnitGraph& g = c.knit;
@@ -100,8 +102,9 @@ TEST(Knittability, RoundWithoutShiftPathIsACycleInTheRawKnitGraph) {
             std::string::npos);
   std::string report = check_report(c);
   EXPECT_NE(report.find("NOT knittable"), std::string::npos);
-  EXPECT_NE(report.find("face 2 (co, row 1) waits for face 1 (co, row 1): it comes next along the yarn"),
-            std::string::npos)
+  EXPECT_NE(
+      report.find("face 2 (co, row 1) waits for face 1 (co, row 1): it comes next along the yarn"),
+      std::string::npos)
       << report;
 }
 
@@ -156,8 +159,9 @@ TEST(Knittability, Fig13WithTheSameSidesYarnForBothGroupsIsKnittable) {
   for (Edge e : mesh.edges())
     if (mesh.kind(e) == EdgeKind::join) {
       Halfedge h = mesh.halfedge(e);
-      Face upper = mesh.row[mesh.face(h)] > mesh.row[mesh.face(mesh.twin(h))] ? mesh.face(h)
-                                                                               : mesh.face(mesh.twin(h));
+      Face upper = mesh.row[mesh.face(h)] > mesh.row[mesh.face(mesh.twin(h))]
+                       ? mesh.face(h)
+                       : mesh.face(mesh.twin(h));
       mesh.mismatch_yarn[e] = {MismatchYarn::Kind::own, upper};
     }
   Compilation c = compile_stitch_mesh(std::move(mesh), "fig13-same-side");
@@ -165,7 +169,8 @@ TEST(Knittability, Fig13WithTheSameSidesYarnForBothGroupsIsKnittable) {
 }
 
 // The schedule target's text, replayed by its own simulator.
-VerifyReport emit_and_replay(const Compilation& c, const std::function<void(std::string&)>& edit = {}) {
+VerifyReport emit_and_replay(const Compilation& c,
+                             const std::function<void(std::string&)>& edit = {}) {
   Registry registry;
   register_builtin_targets(registry);
   std::ostringstream out;
@@ -184,8 +189,8 @@ TEST(Randomized, SchedulesHoldEveryStitchOnceAfterItsDependencies) {
     std::uint32_t width = 6 + static_cast<std::uint32_t>(rng() % 30);
     std::uint32_t rows = 1 + static_cast<std::uint32_t>(rng() % 25);
     Layout layout = trial % 2 ? Layout::tube : Layout::sheet;
-    Compilation c = compile_stitch_mesh(build_from_rows(random_rows(width, rows, shaping, rng()), layout),
-                                        "random");
+    Compilation c = compile_stitch_mesh(
+        build_from_rows(random_rows(width, rows, shaping, rng()), layout), "random");
     ASSERT_TRUE(c.knittability.knittable) << check_report(c);
     ASSERT_EQ(c.yarns.size(), 1u);
     checked_order(c);
@@ -195,7 +200,8 @@ TEST(Randomized, SchedulesHoldEveryStitchOnceAfterItsDependencies) {
 }
 
 TEST(ScheduleReplay, RejectsAStitchWorkedBeforeWhatItWaitsFor) {
-  Compilation c = compile_stitch_mesh(build_from_rows(ribbed_rows(3, 2, {T::k}), Layout::sheet), "s");
+  Compilation c =
+      compile_stitch_mesh(build_from_rows(ribbed_rows(3, 2, {T::k}), Layout::sheet), "s");
   auto swap_lines = [](std::string& text) {
     std::size_t a = text.find("\n    4 k\n"), b = text.find("\n    3 co\n");
     ASSERT_NE(a, std::string::npos);
@@ -214,7 +220,8 @@ TEST(ScheduleReplay, RejectsAStitchWorkedBeforeWhatItWaitsFor) {
 }
 
 TEST(ScheduleReplay, RejectsAMissingStitch) {
-  Compilation c = compile_stitch_mesh(build_from_rows(ribbed_rows(3, 2, {T::k}), Layout::sheet), "s");
+  Compilation c =
+      compile_stitch_mesh(build_from_rows(ribbed_rows(3, 2, {T::k}), Layout::sheet), "s");
   VerifyReport report = emit_and_replay(c, [](std::string& text) {
     std::size_t at = text.rfind("    10 bo\n");  // the last stitch: row 4 runs right to left
     text.erase(at, 10);

@@ -29,8 +29,12 @@ void expect_check_report_golden(const char* input, bool knittable) {
   testing::expect_golden(replace_extension(input, ".check"), check_report(c));
 }
 
-TEST_P(KnittableSample, CheckReportMatchesGolden) { expect_check_report_golden(GetParam(), true); }
-TEST_P(UnknittableSample, CheckReportMatchesGolden) { expect_check_report_golden(GetParam(), false); }
+TEST_P(KnittableSample, CheckReportMatchesGolden) {
+  expect_check_report_golden(GetParam(), true);
+}
+TEST_P(UnknittableSample, CheckReportMatchesGolden) {
+  expect_check_report_golden(GetParam(), false);
+}
 
 TEST_P(KnittableSample, ScheduleMatchesGoldenAndIsProven) {
   Compilation c = compile_model(GetParam());
@@ -51,14 +55,14 @@ std::string sample_name(const ::testing::TestParamInfo<const char*>& param_info)
 }
 
 INSTANTIATE_TEST_SUITE_P(Samples, KnittableSample,
-                         ::testing::Values("samples/rib-swatch/rib-swatch.obj", "samples/hat/hat.obj",
-                                           "samples/autoknit/test-A.st", "samples/autoknit/test-B.st",
+                         ::testing::Values("samples/rib-swatch/rib-swatch.obj",
+                                           "samples/hat/hat.obj", "samples/autoknit/test-A.st",
+                                           "samples/autoknit/test-B.st",
                                            "samples/autoknit/test-C.st",
                                            "samples/auto-shift-path/tube.obj"),
                          sample_name);
 INSTANTIATE_TEST_SUITE_P(Samples, UnknittableSample,
-                         ::testing::Values("samples/unknittable/fig13-deadlock.obj"),
-                         sample_name);
+                         ::testing::Values("samples/unknittable/fig13-deadlock.obj"), sample_name);
 
 }  // namespace
 }  // namespace skein

@@ -48,8 +48,8 @@ TEST(StitchMesh, TubeSharesSeamEdgesAndMarksTheShiftPath) {
       EXPECT_EQ(mesh.kind(e), EdgeKind::wale);
     }
   }
-  EXPECT_EQ(marked, 5);       // one per round, cast-on and bind-off rounds included
-  EXPECT_EQ(border, 16);      // the cast-on and bind-off edges
+  EXPECT_EQ(marked, 5);   // one per round, cast-on and bind-off rounds included
+  EXPECT_EQ(border, 16);  // the cast-on and bind-off edges
   EXPECT_EQ(mesh.num_edges(), 5u * 8 + 6u * 8);
 }
 
@@ -159,7 +159,8 @@ TEST(Validate, ShortRowFaceNeedsItsWaleEdgesSideBySide) {
 
 TEST(Build, FacesRunningTheSameWayAlongAnEdgeAreRejected) {
   StitchMeshBuilder builder("flipped.obj");
-  for (int i = 0; i < 6; ++i) builder.add_vertex({static_cast<float>(i % 3), static_cast<float>(i / 3), 0});
+  for (int i = 0; i < 6; ++i)
+    builder.add_vertex({static_cast<float>(i % 3), static_cast<float>(i / 3), 0});
   EdgeRole roles[] = {EdgeRole::bottom, EdgeRole::wale_out, EdgeRole::top, EdgeRole::wale_in};
   Vertex a[] = {Vertex(0), Vertex(1), Vertex(4), Vertex(3)};
   Vertex flipped[] = {Vertex(4), Vertex(5), Vertex(2), Vertex(1)};

@@ -103,9 +103,13 @@ TEST(Perpendicular, ContractingMakesTheWaleSideADecrease) {
 
 TEST(Perpendicular, ABindOffBesideAContractingEdgeKnitsTwoTogetherThenBindsOff) {
   using testing::Square;
-  Compilation c = proven(testing::grid_mesh(2, 4, {{0, 0, T::co, "boti"}, {0, 1, T::k, "bito"},
-                                                   {0, 2, T::k, "boti"}, {0, 3, T::bo, "bito"},
-                                                   {1, 2, T::co, "ibot"}, {1, 3, T::co, "ibot"}}),
+  Compilation c = proven(testing::grid_mesh(2, 4,
+                                            {{0, 0, T::co, "boti"},
+                                             {0, 1, T::k, "bito"},
+                                             {0, 2, T::k, "boti"},
+                                             {0, 3, T::bo, "bito"},
+                                             {1, 2, T::co, "ibot"},
+                                             {1, 3, T::co, "ibot"}}),
                          "contracting at the bind-off");
   EXPECT_EQ(c.knit.type[3], T::k2tog_bo);
   EXPECT_EQ(c.knit.loops_taken_by(3).size(), 2u);
@@ -121,7 +125,8 @@ TEST(Perpendicular, ExpandingIsPickedUpThroughTheEdgeAndAnOddCountLeavesATiedEnd
     ASSERT_EQ(g.loops_taken_by(s).size(), 1u);
     EXPECT_EQ(g.loops[g.loops_taken_by(s)[0]].maker, s - 3);
   }
-  EXPECT_NE(check_report(c).find("expanding perpendicular, 3 edges between rows 1 and 4, odd: one tied end"),
+  EXPECT_NE(check_report(c).find(
+                "expanding perpendicular, 3 edges between rows 1 and 4, odd: one tied end"),
             std::string::npos)
       << check_report(c);
 }
@@ -134,7 +139,8 @@ TEST(YarnChoice, OneGroupAskingForTwoYarnsIsRejected) {
     compile_stitch_mesh(std::move(mesh), "conflict");
     FAIL() << "expected a MeshError";
   } catch (const MeshError& e) {
-    EXPECT_NE(std::string(e.what()).find("belong to one joining mismatch group but ask for different yarns"),
+    EXPECT_NE(std::string(e.what()).find(
+                  "belong to one joining mismatch group but ask for different yarns"),
               std::string::npos)
         << e.what();
   }
@@ -255,15 +261,16 @@ TEST(ShortRows, PairTurnsAtAShortRowFaceOnOneYarn) {
     const KnitGraph& g = c.knit;
     EXPECT_EQ(c.yarns.size(), 1u);
     // Rows: cast-on, first short row (ending at the turn face), second short row, full row, bo.
-    EXPECT_EQ(g.row_shape, (std::vector<RowShape>{RowShape::open, RowShape::short_row,
-                                                  RowShape::short_row, RowShape::open,
-                                                  RowShape::open}))
+    EXPECT_EQ(g.row_shape,
+              (std::vector<RowShape>{RowShape::open, RowShape::short_row, RowShape::short_row,
+                                     RowShape::open, RowShape::open}))
         << abbreviation(turn);
     EXPECT_EQ(g.yarn_link[6], YarnLink::turn);
     std::vector<StitchId> order;
     for (const Event& e : c.schedule.events)
       if (e.kind == EventKind::stitch) order.push_back(e.stitch);
-    EXPECT_EQ(order, (std::vector<StitchId>{0, 1, 2, 3, 5, 4, 6, 7, 8, 12, 11, 10, 9, 13, 14, 15, 16}))
+    EXPECT_EQ(order,
+              (std::vector<StitchId>{0, 1, 2, 3, 5, 4, 6, 7, 8, 12, 11, 10, 9, 13, 14, 15, 16}))
         << abbreviation(turn);
     // The short-row face consumes the loop of the stitch below it and feeds the full row.
     ASSERT_EQ(g.loops_taken_by(6).size(), 1u);
@@ -315,8 +322,10 @@ TEST(Randomized, JoinedAndSplitSheetsScheduleAndProveWithEveryYarnOption) {
     auto yarn = static_cast<Kind>(rng() % 3);
     bool own_lower = rng() % 2;
     std::uint32_t width = 1 + static_cast<std::uint32_t>(rng() % 10);
-    std::uint32_t lower = 2 + static_cast<std::uint32_t>(rng() % 5), upper = 2 + static_cast<std::uint32_t>(rng() % 5);
-    Compilation c = proven(meeting_sheets(meeting, width, lower, upper, yarn, own_lower, rng()), "meeting");
+    std::uint32_t lower = 2 + static_cast<std::uint32_t>(rng() % 5),
+                  upper = 2 + static_cast<std::uint32_t>(rng() % 5);
+    Compilation c =
+        proven(meeting_sheets(meeting, width, lower, upper, yarn, own_lower, rng()), "meeting");
     bool extra = yarn != Kind::own;
     EXPECT_EQ(c.yarns.size(), extra ? 3u : 2u);
     EXPECT_EQ(c.knit.size(), width * (lower + upper) + (extra ? width : 0));

@@ -8,7 +8,8 @@ namespace skein {
 
 // Writes `path` through a temporary file beside it that is renamed into place only when
 // `write` returns normally: an error never leaves a partial output file. Throws IoError.
-void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write);
+void write_file_atomically(const std::string& path,
+                           const std::function<void(std::ostream&)>& write);
 
 // The whole file as a string; throws IoError naming the file when it cannot be read.
 std::string read_file(const std::string& path);

@@ -4,8 +4,7 @@
 
 namespace skein {
 
-ParseError::ParseError(std::string file, std::size_t line, std::string quoted,
-                       std::string expected)
+ParseError::ParseError(std::string file, std::size_t line, std::string quoted, std::string expected)
     : Error(fmt::format("{}:{}: {}\n  {:>5} | {}", file, line, expected, line, quoted)),
       file_(std::move(file)),
       line_(line),
@@ -13,9 +12,8 @@ ParseError::ParseError(std::string file, std::size_t line, std::string quoted,
 
 void assertion_failed(const char* condition, const char* file, int line,
                       const std::string& message) {
-  throw InternalError(
-      fmt::format("internal error at {}:{}: {} ({}); please report this", file, line, message,
-                  condition));
+  throw InternalError(fmt::format("internal error at {}:{}: {} ({}); please report this", file,
+                                  line, message, condition));
 }
 
 }  // namespace skein

@@ -58,7 +58,7 @@ class InternalError : public std::logic_error {
 
 }  // namespace skein
 
-#define SKEIN_ASSERT(condition, message)                                   \
-  do {                                                                     \
+#define SKEIN_ASSERT(condition, message)                                                    \
+  do {                                                                                      \
     if (!(condition)) ::skein::assertion_failed(#condition, __FILE__, __LINE__, (message)); \
   } while (false)

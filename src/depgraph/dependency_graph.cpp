@@ -17,10 +17,14 @@ using ArcList = std::vector<std::pair<Vertex, Vertex>>;
 
 DependencyReason reason_for(LoopKind kind) {
   switch (kind) {
-    case LoopKind::wale: return DependencyReason::loop;
-    case LoopKind::perpendicular: return DependencyReason::perpendicular_loop;
-    case LoopKind::joined: return DependencyReason::joined_loop;
-    case LoopKind::split: return DependencyReason::split_loop;
+    case LoopKind::wale:
+      return DependencyReason::loop;
+    case LoopKind::perpendicular:
+      return DependencyReason::perpendicular_loop;
+    case LoopKind::joined:
+      return DependencyReason::joined_loop;
+    case LoopKind::split:
+      return DependencyReason::split_loop;
   }
   return DependencyReason::loop;
 }
@@ -150,8 +154,9 @@ bool is_special_deadlock(const KnitGraph& g, const std::vector<CycleStep>& cycle
 }
 
 std::string hint_for(const KnitGraph& g, const std::vector<CycleStep>& cycle) {
-  bool only_yarn = std::all_of(cycle.begin(), cycle.end(),
-                               [](const CycleStep& s) { return s.reason == DependencyReason::yarn; });
+  bool only_yarn = std::all_of(cycle.begin(), cycle.end(), [](const CycleStep& s) {
+    return s.reason == DependencyReason::yarn;
+  });
   bool own_yarn = std::any_of(cycle.begin(), cycle.end(),
                               [](const CycleStep& s) { return crosses_join_or_split(s.reason); });
   if (only_yarn)

@@ -17,7 +17,8 @@ namespace skein {
 namespace {
 
 bool ends_with(const std::string& s, std::string_view suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return s.size() >= suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 // Runs one stage and reports its duration.
@@ -39,11 +40,12 @@ auto timed(const StageObserver& observe, const char* stage, F&& run) {
 Compilation compile_model(const std::string& input, const StageObserver& observe) {
   if (ends_with(input, ".st"))
     return compile_knit_graph(
-        timed(observe, "read stitch graph", [&] { return read_autoknit_st(input); }), input, observe);
+        timed(observe, "read stitch graph", [&] { return read_autoknit_st(input); }), input,
+        observe);
   if (is_project_file(input))
-    return compile_stitch_mesh(
-        timed(observe, "label and generate", [&] { return build_project(read_project(input)).mesh; }),
-        input, observe);
+    return compile_stitch_mesh(timed(observe, "label and generate",
+                                     [&] { return build_project(read_project(input)).mesh; }),
+                               input, observe);
   return compile_stitch_mesh(
       timed(observe, "read stitch mesh", [&] { return read_stitch_mesh(input); }), input, observe);
 }
@@ -51,8 +53,7 @@ Compilation compile_model(const std::string& input, const StageObserver& observe
 Compilation compile_stitch_mesh(StitchMesh mesh, const std::string& name,
                                 const StageObserver& observe) {
   timed(observe, "validate", [&] { validate(mesh); });
-  ShiftPathSummary paths =
-      timed(observe, "shift-paths", [&] { return place_shift_paths(mesh); });
+  ShiftPathSummary paths = timed(observe, "shift-paths", [&] { return place_shift_paths(mesh); });
   KnitGraph graph = timed(observe, "knit graph", [&] { return build_knit_graph(mesh, name); });
   timed(observe, "mismatches", [&] { make_mismatches_knittable(graph); });
   Compilation c = compile_knit_graph(std::move(graph), name, observe);
@@ -83,7 +84,8 @@ std::string stitch_counts(const KnitGraph& g) {
   std::map<std::string_view, std::uint32_t> counts;
   for (StitchType t : g.type) ++counts[abbreviation(t)];
   std::string out;
-  for (const auto& [name, n] : counts) out += fmt::format("{}{} {}", out.empty() ? "" : ", ", name, n);
+  for (const auto& [name, n] : counts)
+    out += fmt::format("{}{} {}", out.empty() ? "" : ", ", name, n);
   return out;
 }
 
@@ -93,7 +95,8 @@ std::string row_counts(const KnitGraph& g) {
   std::string out = fmt::format("{}", g.row_shape.size());
   if (shapes[static_cast<int>(RowShape::unknown)] == g.row_shape.size())
     return out + " (a stitch graph has no explicit rows; counted by loop depth)";
-  return out + fmt::format(" (closed {}, open {}, short {})", shapes[static_cast<int>(RowShape::closed)],
+  return out + fmt::format(" (closed {}, open {}, short {})",
+                           shapes[static_cast<int>(RowShape::closed)],
                            shapes[static_cast<int>(RowShape::open)],
                            shapes[static_cast<int>(RowShape::short_row)]);
 }
@@ -103,8 +106,9 @@ void append_yarn_pieces(const Compilation& c, std::string& out) {
   out += fmt::format("  yarn pieces: {}\n", y.size());
   constexpr std::uint32_t kListed = 20;
   for (std::uint32_t p = 0; p < y.size() && p < kListed; ++p)
-    out += fmt::format("    yarn {}: {} stitch{}, {} {}\n", p + 1, y.length[p], y.length[p] == 1 ? "" : "es",
-                       y.ring[p] ? "closes on itself at" : "starts at", c.knit.describe(y.first[p]));
+    out += fmt::format(
+        "    yarn {}: {} stitch{}, {} {}\n", p + 1, y.length[p], y.length[p] == 1 ? "" : "es",
+        y.ring[p] ? "closes on itself at" : "starts at", c.knit.describe(y.first[p]));
   if (y.size() > kListed) out += fmt::format("    ... and {} more\n", y.size() - kListed);
 }
 
@@ -114,8 +118,9 @@ void append_mismatch_groups(const KnitGraph& g, std::string& out) {
     const MismatchGroup& grp = g.groups[i];
     std::string yarn;
     if (grp.kind == MismatchKind::join || grp.kind == MismatchKind::split)
-      yarn = grp.yarn == MismatchYarnUse::extra ? ", extra yarn"
-                                                : fmt::format(", yarn of row {}", g.row[grp.own_side] + 1);
+      yarn = grp.yarn == MismatchYarnUse::extra
+                 ? ", extra yarn"
+                 : fmt::format(", yarn of row {}", g.row[grp.own_side] + 1);
     if (grp.kind == MismatchKind::expanding && grp.edges % 2 == 1) yarn = ", odd: one tied end";
     out += fmt::format("    group {}: {}, {} edge{} between rows {} and {}{}\n", i + 1,
                        mismatch_kind_name(grp.kind), grp.edges, grp.edges == 1 ? "" : "s",
@@ -127,22 +132,21 @@ void append_mismatch_groups(const KnitGraph& g, std::string& out) {
 
 std::string check_report(const Compilation& c) {
   const KnitGraph& g = c.knit;
-  std::string out = fmt::format("{}: {}\n", c.input,
-                                c.knittability.knittable ? "knittable" : "NOT knittable");
+  std::string out =
+      fmt::format("{}: {}\n", c.input, c.knittability.knittable ? "knittable" : "NOT knittable");
   out += fmt::format("  stitches: {} ({})\n", g.size(), stitch_counts(g));
   out += fmt::format("  rows: {}\n", row_counts(g));
   if (c.mesh)
-    out += fmt::format("  shift-paths: {} ({} placed by skein{})\n", c.shift_paths.paths,
-                       c.shift_paths.placed,
-                       c.shift_paths.reversed_rows
-                           ? fmt::format(", {} rounds turned by their shift option",
-                                         c.shift_paths.reversed_rows)
-                           : "");
+    out += fmt::format(
+        "  shift-paths: {} ({} placed by skein{})\n", c.shift_paths.paths, c.shift_paths.placed,
+        c.shift_paths.reversed_rows
+            ? fmt::format(", {} rounds turned by their shift option", c.shift_paths.reversed_rows)
+            : "");
   append_yarn_pieces(c, out);
   append_mismatch_groups(g, out);
   if (c.knittability.knittable) {
-    out += fmt::format("  schedule: {} stitches, {} holds\n", c.schedule.stitches,
-                       c.schedule.holds);
+    out +=
+        fmt::format("  schedule: {} stitches, {} holds\n", c.schedule.stitches, c.schedule.holds);
     return out;
   }
   const auto& cycle = c.knittability.cycle;

@@ -10,7 +10,9 @@
 namespace skein {
 namespace {
 
-bool is_short_row_face(StitchType t) { return info(t).wales_adjacent; }
+bool is_short_row_face(StitchType t) {
+  return info(t).wales_adjacent;
+}
 
 // True when the yarn leaving through `out` goes straight on into the next stitch of its row.
 bool continues_row(const StitchMesh& m, Halfedge out) {
@@ -21,8 +23,8 @@ bool continues_row(const StitchMesh& m, Halfedge out) {
 // True when the yarn comes into `in` from somewhere other than the previous stitch of a row.
 bool row_starts_at(const StitchMesh& m, Halfedge in) {
   Halfedge t = m.twin(in);
-  return m.role[in] == EdgeRole::wale_in && !(t.valid() && m.role[t] == EdgeRole::wale_out &&
-                                              !m.shift_path[m.edge(in)]);
+  return m.role[in] == EdgeRole::wale_in &&
+         !(t.valid() && m.role[t] == EdgeRole::wale_out && !m.shift_path[m.edge(in)]);
 }
 
 // Where a row that ends at `out` continues: the first stitch of the next row whose yarn
@@ -153,8 +155,10 @@ std::vector<std::uint32_t> group_mismatches(const StitchMesh& m, std::uint32_t& 
         EdgeKind k = m.kind(e);
         if (!is_mismatch(k)) continue;
         auto& root = first[static_cast<int>(k)];
-        if (root == kNone) root = e.index();
-        else parent[find(e.index())] = find(root);
+        if (root == kNone)
+          root = e.index();
+        else
+          parent[find(e.index())] = find(root);
       }
   }
   std::vector<std::uint32_t> group(m.num_edges(), kNone);
@@ -171,10 +175,14 @@ std::vector<std::uint32_t> group_mismatches(const StitchMesh& m, std::uint32_t& 
 
 MismatchKind mismatch_kind(EdgeKind k) {
   switch (k) {
-    case EdgeKind::join: return MismatchKind::join;
-    case EdgeKind::split: return MismatchKind::split;
-    case EdgeKind::contracting_perpendicular: return MismatchKind::contracting;
-    default: return MismatchKind::expanding;
+    case EdgeKind::join:
+      return MismatchKind::join;
+    case EdgeKind::split:
+      return MismatchKind::split;
+    case EdgeKind::contracting_perpendicular:
+      return MismatchKind::contracting;
+    default:
+      return MismatchKind::expanding;
   }
 }
 
@@ -182,13 +190,15 @@ MismatchKind mismatch_kind(EdgeKind k) {
 void apply_yarn_choice(const StitchMesh& m, Edge e, MismatchGroup& group, Edge& chosen_by) {
   const MismatchYarn& y = m.mismatch_yarn[e];
   if (y.kind == MismatchYarn::Kind::by_default) return;
-  MismatchYarnUse use = y.kind == MismatchYarn::Kind::own ? MismatchYarnUse::own : MismatchYarnUse::extra;
+  MismatchYarnUse use =
+      y.kind == MismatchYarn::Kind::own ? MismatchYarnUse::own : MismatchYarnUse::extra;
   StitchId side = use == MismatchYarnUse::own ? y.side.index() : kNoStitch;
   if (chosen_by.valid() && (group.yarn != use || (use == MismatchYarnUse::own &&
                                                   m.row[Face(group.own_side)] != m.row[y.side])))
-    throw MeshError(fmt::format("{} and {} belong to one {} group but ask for different yarns; "
-                                "expected one choice per group",
-                                describe(m, chosen_by), describe(m, e), edge_kind_name(m.kind(e))));
+    throw MeshError(
+        fmt::format("{} and {} belong to one {} group but ask for different yarns; "
+                    "expected one choice per group",
+                    describe(m, chosen_by), describe(m, e), edge_kind_name(m.kind(e))));
   group.yarn = use;
   group.own_side = side;
   chosen_by = e;
@@ -197,7 +207,8 @@ void apply_yarn_choice(const StitchMesh& m, Edge e, MismatchGroup& group, Edge& 
 // Records every mismatched edge with the loops that meet on it, grouped (paper §3.2). Groups
 // without a yarn choice default to an extra yarn piece, so separate groups on one row never
 // deadlock (§4.1) unless a user asks for it.
-void record_mismatches(const StitchMesh& m, KnitGraph& g, const std::vector<std::uint32_t>& loop_at) {
+void record_mismatches(const StitchMesh& m, KnitGraph& g,
+                       const std::vector<std::uint32_t>& loop_at) {
   std::uint32_t count = 0;
   std::vector<std::uint32_t> group = group_mismatches(m, count);
   g.groups.assign(count, MismatchGroup{});
@@ -212,7 +223,8 @@ void record_mismatches(const StitchMesh& m, KnitGraph& g, const std::vector<std:
       grp.rows[0] = std::min(m.row[m.face(h)], m.row[m.face(t)]),
       grp.rows[1] = std::max(m.row[m.face(h)], m.row[m.face(t)]);
     apply_yarn_choice(m, e, grp, chosen_by[group[e.index()]]);
-    MismatchEdge me{group[e.index()], {loop_at[h.index()], loop_at[t.index()]},
+    MismatchEdge me{group[e.index()],
+                    {loop_at[h.index()], loop_at[t.index()]},
                     {m.tail(h).index(), m.head(h).index()}};
     if (me.loop[0] == kNoGroup) std::swap(me.loop[0], me.loop[1]);
     g.mismatch_edges.push_back(me);
@@ -233,7 +245,7 @@ void flag_stitches(const StitchMesh& m, KnitGraph& g) {
 
 void shape_rows(const StitchMesh& m, KnitGraph& g) {
   for (RowKind kind : row_kinds(m))
-    g.row_shape.push_back(kind == RowKind::closed    ? RowShape::closed
+    g.row_shape.push_back(kind == RowKind::closed      ? RowShape::closed
                           : kind == RowKind::short_row ? RowShape::short_row
                                                        : RowShape::open);
 }

@@ -10,8 +10,10 @@ namespace skein {
 
 const char* explain(DependencyReason reason) {
   switch (reason) {
-    case DependencyReason::yarn: return "it comes next along the yarn";
-    case DependencyReason::loop: return "it consumes its loop";
+    case DependencyReason::yarn:
+      return "it comes next along the yarn";
+    case DependencyReason::loop:
+      return "it consumes its loop";
     case DependencyReason::perpendicular_loop:
       return "it consumes its loop across a perpendicular mismatched edge";
     case DependencyReason::joined_loop:
@@ -24,20 +26,28 @@ const char* explain(DependencyReason reason) {
 
 const char* mismatch_kind_name(MismatchKind kind) {
   switch (kind) {
-    case MismatchKind::join: return "joining";
-    case MismatchKind::split: return "splitting";
-    case MismatchKind::contracting: return "contracting perpendicular";
-    case MismatchKind::expanding: return "expanding perpendicular";
+    case MismatchKind::join:
+      return "joining";
+    case MismatchKind::split:
+      return "splitting";
+    case MismatchKind::contracting:
+      return "contracting perpendicular";
+    case MismatchKind::expanding:
+      return "expanding perpendicular";
   }
   return "?";
 }
 
 const char* row_shape_name(RowShape shape) {
   switch (shape) {
-    case RowShape::open: return "open";
-    case RowShape::closed: return "closed";
-    case RowShape::short_row: return "short";
-    case RowShape::unknown: return "unknown";
+    case RowShape::open:
+      return "open";
+    case RowShape::closed:
+      return "closed";
+    case RowShape::short_row:
+      return "short";
+    case RowShape::unknown:
+      return "unknown";
   }
   return "?";
 }
@@ -93,8 +103,8 @@ std::string KnitGraph::describe(StitchId s) const {
 void check_consistency(const KnitGraph& g) {
   const std::uint32_t n = g.size();
   SKEIN_ASSERT(g.row.size() == n && g.source.size() == n && g.yarn_next.size() == n &&
-                   g.yarn_link.size() == n && g.flags.size() == n && g.taken_first.size() == n + 1 &&
-                   g.made_first.size() == n + 1,
+                   g.yarn_link.size() == n && g.flags.size() == n &&
+                   g.taken_first.size() == n + 1 && g.made_first.size() == n + 1,
                "per-stitch arrays have one entry per stitch");
   std::vector<std::uint8_t> has_prev(n, 0);
   for (StitchId s = 0; s < n; ++s) {
@@ -103,8 +113,8 @@ void check_consistency(const KnitGraph& g) {
                  "a yarn link exactly where there is a next stitch");
     if (next == kNoStitch) continue;
     SKEIN_ASSERT(next < n, "yarn_next in range");
-    SKEIN_ASSERT(!has_prev[next], fmt::format("{} follows two stitches along the yarn",
-                                              g.describe(next)));
+    SKEIN_ASSERT(!has_prev[next],
+                 fmt::format("{} follows two stitches along the yarn", g.describe(next)));
     has_prev[next] = 1;
   }
   // Every loop is made by one stitch and consumed by one (the transforms gave joins and
@@ -121,8 +131,9 @@ void check_consistency(const KnitGraph& g) {
     if (l.taker != kNoStitch) ++took[l.taker];
   }
   for (StitchId s = 0; s < n; ++s) {
-    SKEIN_ASSERT(made[s] <= info(g.type[s]).loops_out,
-                 fmt::format("{} makes at most {} loops", g.describe(s), info(g.type[s]).loops_out));
+    SKEIN_ASSERT(
+        made[s] <= info(g.type[s]).loops_out,
+        fmt::format("{} makes at most {} loops", g.describe(s), info(g.type[s]).loops_out));
     SKEIN_ASSERT(took[s] == info(g.type[s]).loops_in,
                  fmt::format("{} consumes {} loops", g.describe(s), info(g.type[s]).loops_in));
     SKEIN_ASSERT(g.loops_taken_by(s).size() >= static_cast<std::size_t>(took[s]),

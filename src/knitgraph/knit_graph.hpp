@@ -42,7 +42,6 @@ struct Loop {
   std::uint8_t taker_slot = 0;
 };
 
-
 // Why one stitch waits for another (paper §4.1); says which arrow of a cycle is which.
 enum class DependencyReason : std::uint8_t {
   yarn,                // the previous stitch along the yarn

@@ -10,10 +10,10 @@
 namespace skein {
 
 struct YarnPieces {
-  std::vector<StitchId> first;           // per piece, in order of first stitch id
-  std::vector<std::uint32_t> length;     // stitches per piece
-  std::vector<std::uint8_t> ring;        // 1 when the yarn closes on itself (no start)
-  std::vector<std::uint32_t> piece_of;   // per stitch
+  std::vector<StitchId> first;          // per piece, in order of first stitch id
+  std::vector<std::uint32_t> length;    // stitches per piece
+  std::vector<std::uint8_t> ring;       // 1 when the yarn closes on itself (no start)
+  std::vector<std::uint32_t> piece_of;  // per stitch
   std::uint32_t size() const { return static_cast<std::uint32_t>(first.size()); }
 };
 

@@ -4,9 +4,9 @@
 
 #include <cmath>
 #include <map>
-#include <string_view>
 #include <numbers>
 #include <random>
+#include <string_view>
 
 #include "common/error.hpp"
 
@@ -24,7 +24,8 @@ std::vector<Vertex> add_ring(StitchMeshBuilder& builder, std::uint32_t loops, st
   } else {
     float radius = static_cast<float>(loops) / (2 * std::numbers::pi_v<float>);
     for (std::uint32_t i = 0; i < loops; ++i) {
-      float angle = -2 * std::numbers::pi_v<float> * static_cast<float>(i) / static_cast<float>(loops);
+      float angle =
+          -2 * std::numbers::pi_v<float> * static_cast<float>(i) / static_cast<float>(loops);
       ring.push_back(builder.add_vertex({radius * std::cos(angle), y, radius * std::sin(angle)}));
     }
     ring.push_back(ring.front());  // closed: index `loops` wraps to 0
@@ -89,7 +90,8 @@ StitchMesh build_from_rows(const RowPlan& plan, Layout layout) {
   return mesh;
 }
 
-RowPlan ribbed_rows(std::uint32_t width, std::uint32_t rows, const std::vector<StitchType>& repeat) {
+RowPlan ribbed_rows(std::uint32_t width, std::uint32_t rows,
+                    const std::vector<StitchType>& repeat) {
   RowPlan plan;
   plan.emplace_back(width, StitchType::co);
   for (std::uint32_t r = 0; r < rows; ++r) {
@@ -156,10 +158,14 @@ namespace {
 
 EdgeRole role_from_letter(char c) {
   switch (c) {
-    case 'b': return EdgeRole::bottom;
-    case 't': return EdgeRole::top;
-    case 'i': return EdgeRole::wale_in;
-    default: return EdgeRole::wale_out;
+    case 'b':
+      return EdgeRole::bottom;
+    case 't':
+      return EdgeRole::top;
+    case 'i':
+      return EdgeRole::wale_in;
+    default:
+      return EdgeRole::wale_out;
   }
 }
 
@@ -205,7 +211,9 @@ float centre_height(const StitchMesh& mesh, Face f) {
   return sum / static_cast<float>(mesh.degree(f));
 }
 
-StitchType knit_or_purl(std::mt19937_64& rng) { return rng() % 3 ? StitchType::k : StitchType::p; }
+StitchType knit_or_purl(std::mt19937_64& rng) {
+  return rng() % 3 ? StitchType::k : StitchType::p;
+}
 
 void full_row(CornerBuilder& b, std::uint32_t width, float y, bool wale_up, bool left_to_right,
               StitchType type, std::mt19937_64& rng) {
@@ -219,23 +227,26 @@ void full_row(CornerBuilder& b, std::uint32_t width, float y, bool wale_up, bool
 void short_row_pair(CornerBuilder& b, std::uint32_t width, std::uint32_t c, float y0, bool sr5,
                     std::mt19937_64& rng) {
   float fc = static_cast<float>(c);
-  for (std::uint32_t x = c + 1; x < width; ++x) b.square(static_cast<float>(x), y0, "bito", knit_or_purl(rng));
+  for (std::uint32_t x = c + 1; x < width; ++x)
+    b.square(static_cast<float>(x), y0, "bito", knit_or_purl(rng));
   if (sr5)
-    b.face({{fc, y0}, {fc + 1, y0}, {fc + 1, y0 + 1}, {fc + 1, y0 + 2}, {fc + 0.5f, y0 + 1}}, "biott",
-           StitchType::sr5);
+    b.face({{fc, y0}, {fc + 1, y0}, {fc + 1, y0 + 1}, {fc + 1, y0 + 2}, {fc + 0.5f, y0 + 1}},
+           "biott", StitchType::sr5);
   else
     b.face({{fc, y0}, {fc + 1, y0}, {fc + 1, y0 + 1}, {fc + 1, y0 + 2}}, "biot", StitchType::sr4);
-  for (std::uint32_t x = c + 1; x < width; ++x) b.square(static_cast<float>(x), y0 + 1, "boti", knit_or_purl(rng));
+  for (std::uint32_t x = c + 1; x < width; ++x)
+    b.square(static_cast<float>(x), y0 + 1, "boti", knit_or_purl(rng));
   for (std::uint32_t x = 0; x < c; ++x) {
     float fx = static_cast<float>(x);
     b.face({{fx, y0}, {fx + 1, y0}, {fx + 1, y0 + 3}, {fx, y0 + 3}}, "bito", knit_or_purl(rng));
   }
   if (sr5)
-    b.face({{fc, y0}, {fc + 0.5f, y0 + 1}, {fc + 1, y0 + 2}, {fc + 1, y0 + 3}, {fc, y0 + 3}}, "bbito",
-           StitchType::k2tog);
+    b.face({{fc, y0}, {fc + 0.5f, y0 + 1}, {fc + 1, y0 + 2}, {fc + 1, y0 + 3}, {fc, y0 + 3}},
+           "bbito", StitchType::k2tog);
   else
     b.face({{fc, y0}, {fc + 1, y0 + 2}, {fc + 1, y0 + 3}, {fc, y0 + 3}}, "bito", knit_or_purl(rng));
-  for (std::uint32_t x = c + 1; x < width; ++x) b.square(static_cast<float>(x), y0 + 2, "bito", knit_or_purl(rng));
+  for (std::uint32_t x = c + 1; x < width; ++x)
+    b.square(static_cast<float>(x), y0 + 2, "bito", knit_or_purl(rng));
 }
 
 }  // namespace
@@ -249,7 +260,8 @@ StitchMesh short_row_sheet(std::uint32_t width, std::uint32_t rows, std::uint64_
   bool next_left_to_right = false;  // rows alternate, starting back from the cast-on's end
   for (std::uint32_t r = 0; r < rows; ++r) {
     if (!next_left_to_right && rng() % 3 == 0) {  // starts at the right edge: a pair fits
-      short_row_pair(b, width, 1 + static_cast<std::uint32_t>(rng() % (width - 2)), y, rng() % 2, rng);
+      short_row_pair(b, width, 1 + static_cast<std::uint32_t>(rng() % (width - 2)), y, rng() % 2,
+                     rng);
       y += 3;
       next_left_to_right = true;  // the pair's full row ran right to left
       continue;
@@ -274,7 +286,8 @@ StitchMesh meeting_sheets(Meeting meeting, std::uint32_t width, std::uint32_t lo
     float line = static_cast<float>(lower_rows);
     for (std::uint32_t r = 0; r < rows; ++r) {
       std::uint32_t from_line = join ? rows - 1 - r : r;
-      float y = lower ? line - 1 - static_cast<float>(from_line) : line + static_cast<float>(from_line);
+      float y =
+          lower ? line - 1 - static_cast<float>(from_line) : line + static_cast<float>(from_line);
       bool wale_up = lower == join;
       StitchType type = join ? (r == 0 ? StitchType::co : StitchType::k)
                              : (r + 1 == rows ? StitchType::bo : StitchType::k);

@@ -30,9 +30,9 @@ RowPlan ribbed_rows(std::uint32_t width, std::uint32_t rows, const std::vector<S
 RowPlan hat_rows(std::uint32_t circumference, std::uint32_t body_rounds, std::uint32_t sections);
 
 struct RandomShaping {
-  double purl = 0.2;      // share of plain stitches that are purls
-  double increase = 0.05; // chance per stitch of an increase
-  double decrease = 0.05; // chance per stitch of a decrease (s2kp one time in four)
+  double purl = 0.2;       // share of plain stitches that are purls
+  double increase = 0.05;  // chance per stitch of an increase
+  double decrease = 0.05;  // chance per stitch of a decrease (s2kp one time in four)
   std::uint32_t min_width = 4;
   std::uint32_t max_width = 64;
 };

@@ -40,7 +40,10 @@ class HandleRange {
    public:
     constexpr explicit iterator(std::uint32_t i) : i_(i) {}
     constexpr H operator*() const { return H(i_); }
-    constexpr iterator& operator++() { ++i_; return *this; }
+    constexpr iterator& operator++() {
+      ++i_;
+      return *this;
+    }
     constexpr bool operator==(const iterator&) const = default;
 
    private:

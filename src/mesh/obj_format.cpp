@@ -94,7 +94,7 @@ class Line {
 struct EdgeMark {
   Line line;
   Vertex a, b;
-  std::optional<MismatchYarn> yarn;  // empty on a '#~shift' line
+  std::optional<MismatchYarn> yarn;   // empty on a '#~shift' line
   ShiftOption shift = kShiftUpRight;  // on a '#~shift' line
   std::string_view directive() const { return yarn ? "#~yarn" : "#~shift"; }
 };
@@ -306,8 +306,10 @@ void Parser::parse_edge_mark(Line& line, std::string_view directive) {
   Vertex a = parse_vertex_number(line, directive);
   Vertex b = parse_vertex_number(line, directive);
   EdgeMark mark{line, a, b, std::nullopt};
-  if (directive == "#~yarn") mark.yarn = parse_yarn_choice(line);
-  else mark.shift = parse_shift_option(line);
+  if (directive == "#~yarn")
+    mark.yarn = parse_yarn_choice(line);
+  else
+    mark.shift = parse_shift_option(line);
   expect_end(line, mark.yarn ? "the yarn choice" : "the shift option");
   edge_marks_.push_back(mark);
 }

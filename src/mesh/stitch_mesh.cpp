@@ -12,35 +12,52 @@ namespace skein {
 
 char role_letter(EdgeRole r) {
   switch (r) {
-    case EdgeRole::bottom: return 'b';
-    case EdgeRole::top: return 't';
-    case EdgeRole::wale_in: return 'i';
-    case EdgeRole::wale_out: return 'o';
+    case EdgeRole::bottom:
+      return 'b';
+    case EdgeRole::top:
+      return 't';
+    case EdgeRole::wale_in:
+      return 'i';
+    case EdgeRole::wale_out:
+      return 'o';
   }
   return '?';
 }
 
 const char* edge_kind_name(EdgeKind kind) {
   switch (kind) {
-    case EdgeKind::border: return "border";
-    case EdgeKind::course: return "course";
-    case EdgeKind::wale: return "wale";
-    case EdgeKind::join: return "joining mismatch";
-    case EdgeKind::split: return "splitting mismatch";
-    case EdgeKind::contracting_perpendicular: return "contracting perpendicular mismatch";
-    case EdgeKind::expanding_perpendicular: return "expanding perpendicular mismatch";
-    case EdgeKind::conflicting_wale: return "conflicting wale edge";
+    case EdgeKind::border:
+      return "border";
+    case EdgeKind::course:
+      return "course";
+    case EdgeKind::wale:
+      return "wale";
+    case EdgeKind::join:
+      return "joining mismatch";
+    case EdgeKind::split:
+      return "splitting mismatch";
+    case EdgeKind::contracting_perpendicular:
+      return "contracting perpendicular mismatch";
+    case EdgeKind::expanding_perpendicular:
+      return "expanding perpendicular mismatch";
+    case EdgeKind::conflicting_wale:
+      return "conflicting wale edge";
   }
   return "?";
 }
 
 const char* shift_option_name(ShiftOption option) {
   switch (option) {
-    case kNotShifted: return "none";
-    case kShiftUpRight: return "up-right";
-    case kShiftUpLeft: return "up-left";
-    case kShiftDownRight: return "down-right";
-    case kShiftDownLeft: return "down-left";
+    case kNotShifted:
+      return "none";
+    case kShiftUpRight:
+      return "up-right";
+    case kShiftUpLeft:
+      return "up-left";
+    case kShiftDownRight:
+      return "down-right";
+    case kShiftDownLeft:
+      return "down-left";
   }
   return "?";
 }
@@ -225,9 +242,7 @@ namespace {
 // Union-find over faces, with path halving.
 struct Components {
   std::vector<std::uint32_t> parent;
-  explicit Components(std::uint32_t n) : parent(n) {
-    std::iota(parent.begin(), parent.end(), 0u);
-  }
+  explicit Components(std::uint32_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
   std::uint32_t find(std::uint32_t x) {
     while (parent[x] != x) x = parent[x] = parent[parent[x]];
     return x;
@@ -318,8 +333,8 @@ std::vector<RowKind> row_kinds(const StitchMesh& mesh) {
   std::vector<RowKind> kinds(rows, RowKind::closed);
   for (Face f : mesh.faces()) {
     Halfedge t = mesh.twin(mesh.wale_out(f));
-    bool ring_link = t.valid() && mesh.role[t] == EdgeRole::wale_in &&
-                     mesh.row[mesh.face(t)] == mesh.row[f];
+    bool ring_link =
+        t.valid() && mesh.role[t] == EdgeRole::wale_in && mesh.row[mesh.face(t)] == mesh.row[f];
     if (!ring_link && kinds[mesh.row[f]] == RowKind::closed) kinds[mesh.row[f]] = RowKind::open;
   }
   // Both rows meeting in a short-row face are short: the one that turns there and the next.
@@ -369,20 +384,29 @@ void validate_face(const StitchMesh& mesh, Face f) {
   int bottoms = 0, tops = 0, ins = 0, outs = 0;
   for (Halfedge h : mesh.halfedges(f)) {
     switch (mesh.role[h]) {
-      case EdgeRole::bottom: ++bottoms; break;
-      case EdgeRole::top: ++tops; break;
-      case EdgeRole::wale_in: ++ins; break;
-      case EdgeRole::wale_out: ++outs; break;
+      case EdgeRole::bottom:
+        ++bottoms;
+        break;
+      case EdgeRole::top:
+        ++tops;
+        break;
+      case EdgeRole::wale_in:
+        ++ins;
+        break;
+      case EdgeRole::wale_out:
+        ++outs;
+        break;
     }
   }
   auto fail = [&](const std::string& what) {
-    throw MeshError(fmt::format("{} with edges '{}': {}", describe(mesh, f),
-                                role_string(mesh, f), what));
+    throw MeshError(
+        fmt::format("{} with edges '{}': {}", describe(mesh, f), role_string(mesh, f), what));
   };
   if (ins != 1 || outs != 1)
-    fail(fmt::format("expected exactly one wale edge where the yarn enters (i) and one where it "
-                     "leaves (o), found {} and {}",
-                     ins, outs));
+    fail(
+        fmt::format("expected exactly one wale edge where the yarn enters (i) and one where it "
+                    "leaves (o), found {} and {}",
+                    ins, outs));
   bool tops_ok = t.variable_course_edges ? tops >= t.top_edges : tops == t.top_edges;
   if (bottoms != t.bottom_edges || !tops_ok)
     fail(fmt::format("a {} has {} bottom and {}{} top course edges, found {} and {}", t.name,
@@ -402,32 +426,33 @@ void validate_border(const StitchMesh& mesh, Halfedge h) {
   const StitchTypeInfo& t = info(mesh.stitch[f]);
   EdgeRole r = mesh.role[h];
   auto fail = [&](const std::string& what) {
-    throw MeshError(
-        fmt::format("{}: {} on the border: {}", describe(mesh, f), describe(mesh, mesh.edge(h)),
-                    what));
+    throw MeshError(fmt::format("{}: {} on the border: {}", describe(mesh, f),
+                                describe(mesh, mesh.edge(h)), what));
   };
   if (r == EdgeRole::bottom && t.loops_in > 0)
-    fail(fmt::format("a {} consumes a loop, but no stitch below makes one; expected a cast-on "
-                     "(co) or a neighbour below",
-                     t.name));
+    fail(
+        fmt::format("a {} consumes a loop, but no stitch below makes one; expected a cast-on "
+                    "(co) or a neighbour below",
+                    t.name));
   if (r == EdgeRole::top && t.loops_out > 0)
-    fail(fmt::format("the loop this {} makes is never consumed or bound off; expected a "
-                     "bind-off (bo) or a neighbour above",
-                     t.name));
+    fail(
+        fmt::format("the loop this {} makes is never consumed or bound off; expected a "
+                    "bind-off (bo) or a neighbour above",
+                    t.name));
 }
 
 void validate_interior(const StitchMesh& mesh, Edge e) {
   Halfedge h = mesh.halfedge(e), t = mesh.twin(h);
   auto fail = [&](const std::string& what) {
     throw MeshError(fmt::format("{} between {} and {}: {}", describe(mesh, e),
-                                describe(mesh, mesh.face(h)), describe(mesh, mesh.face(t)),
-                                what));
+                                describe(mesh, mesh.face(h)), describe(mesh, mesh.face(t)), what));
   };
   EdgeKind k = mesh.kind(e);
   if (k == EdgeKind::conflicting_wale)
-    fail(fmt::format("both faces' yarn {} here; expected the yarn to leave one face and enter "
-                     "the other (course directions disagree)",
-                     mesh.role[h] == EdgeRole::wale_out ? "leaves" : "enters"));
+    fail(
+        fmt::format("both faces' yarn {} here; expected the yarn to leave one face and enter "
+                    "the other (course directions disagree)",
+                    mesh.role[h] == EdgeRole::wale_out ? "leaves" : "enters"));
   for (Halfedge side : {h, t}) {
     const StitchTypeInfo& ti = info(mesh.stitch[mesh.face(side)]);
     if (mesh.role[side] == EdgeRole::bottom && ti.loops_in == 0)
@@ -455,13 +480,15 @@ void validate(const StitchMesh& mesh) {
   for (Edge e : mesh.edges()) {
     if (mesh.is_border(e)) {
       if (mesh.shift_path[e])
-        throw MeshError(fmt::format("{}: a shift-path edge must join two stitches of a closed "
-                                    "row, but this edge is on the border",
-                                    describe(mesh, e)));
+        throw MeshError(
+            fmt::format("{}: a shift-path edge must join two stitches of a closed "
+                        "row, but this edge is on the border",
+                        describe(mesh, e)));
       if (mesh.mismatch_yarn[e].kind != MismatchYarn::Kind::by_default)
-        throw MeshError(fmt::format("{}: a yarn choice applies to joining or splitting edges "
-                                    "only, but this edge is on the border",
-                                    describe(mesh, e)));
+        throw MeshError(
+            fmt::format("{}: a yarn choice applies to joining or splitting edges "
+                        "only, but this edge is on the border",
+                        describe(mesh, e)));
       validate_border(mesh, mesh.halfedge(e));
     } else {
       validate_interior(mesh, e);

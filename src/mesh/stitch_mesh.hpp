@@ -29,25 +29,29 @@ enum class EdgeRole : std::uint8_t {
   wale_in,   // wale edge where the face's yarn enters (course direction starts here)
   wale_out,  // wale edge where the face's yarn leaves
 };
-inline bool is_course(EdgeRole r) { return r == EdgeRole::bottom || r == EdgeRole::top; }
-inline bool is_wale(EdgeRole r) { return !is_course(r); }
+inline bool is_course(EdgeRole r) {
+  return r == EdgeRole::bottom || r == EdgeRole::top;
+}
+inline bool is_wale(EdgeRole r) {
+  return !is_course(r);
+}
 char role_letter(EdgeRole r);  // b, t, i, o: the letters of the file format
 
 // How the two faces of an interior edge relate (paper §3.2, Fig. 5).
 enum class EdgeKind : std::uint8_t {
-  border,                    // one face only
-  course,                    // top of one face, bottom of the other: a loop passes
-  wale,                      // yarn leaves one face and enters the other
-  join,                      // both faces' wale directions point at it (three-needle bind-off)
-  split,                     // both point away from it (cast-on along it)
-  contracting_perpendicular, // top course edge of one face, wale edge of the other
-  expanding_perpendicular,   // bottom course edge of one face, wale edge of the other
-  conflicting_wale,          // yarn leaves (or enters) both faces here: invalid
+  border,                     // one face only
+  course,                     // top of one face, bottom of the other: a loop passes
+  wale,                       // yarn leaves one face and enters the other
+  join,                       // both faces' wale directions point at it (three-needle bind-off)
+  split,                      // both point away from it (cast-on along it)
+  contracting_perpendicular,  // top course edge of one face, wale edge of the other
+  expanding_perpendicular,    // bottom course edge of one face, wale edge of the other
+  conflicting_wale,           // yarn leaves (or enters) both faces here: invalid
 };
 const char* edge_kind_name(EdgeKind kind);
 inline bool is_mismatch(EdgeKind k) {
-  return k == EdgeKind::join || k == EdgeKind::split ||
-         k == EdgeKind::contracting_perpendicular || k == EdgeKind::expanding_perpendicular;
+  return k == EdgeKind::join || k == EdgeKind::split || k == EdgeKind::contracting_perpendicular ||
+         k == EdgeKind::expanding_perpendicular;
 }
 
 // Fig. 3's four shift operations on a shift-path edge: which side of the path slides, and

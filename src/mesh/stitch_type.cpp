@@ -49,7 +49,9 @@ const StitchTypeInfo& info(StitchType type) {
   return kCatalogue[index];
 }
 
-std::span<const StitchTypeInfo> stitch_catalogue() { return kCatalogue; }
+std::span<const StitchTypeInfo> stitch_catalogue() {
+  return kCatalogue;
+}
 
 std::optional<StitchType> stitch_type_from_abbreviation(std::string_view abbreviation) {
   for (const auto& entry : kCatalogue)

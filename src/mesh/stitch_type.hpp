@@ -12,25 +12,25 @@
 namespace skein {
 
 enum class StitchType : std::uint8_t {
-  k,      // knit
-  p,      // purl
-  co,     // cast-on: bottom course edge is the border, makes one loop
-  bo,     // bind-off: consumes one loop, top course edge is the border
-  kfb,    // knit front and back: 1 loop in, 2 out
-  m1l,    // make 1 left: 1 in, 2 out (the new loop lifted from the bar)
-  m1r,    // make 1 right
-  yo,     // knit then yarn over: 1 in, 2 out
-  k2tog,  // knit 2 together: 2 in, 1 out (right-leaning)
-  ssk,    // slip, slip, knit: 2 in, 1 out (left-leaning)
-  p2tog,  // purl 2 together
-  s2kp,   // centred double decrease: 3 in, 1 out
-  sr4,    // short-row face with four edges (Fig. 10a): wale edges side by side
-  sr5,    // short-row face with five edges (Fig. 10b): an extra loop at the turn
-  srn,    // short-row face with more than five edges (Fig. 10c): extra segments collapse
-  tnbo,   // extruded three-needle bind-off face of a join: 2 in, bound off
-  sco,    // extruded cast-on face of a split: makes 2 loops, one to each side
-  sl,     // slip: the loop passes through unworked (AutoKnit's miss)
-  tuck,   // tuck: a new loop held with the old one (AutoKnit's tuck)
+  k,         // knit
+  p,         // purl
+  co,        // cast-on: bottom course edge is the border, makes one loop
+  bo,        // bind-off: consumes one loop, top course edge is the border
+  kfb,       // knit front and back: 1 loop in, 2 out
+  m1l,       // make 1 left: 1 in, 2 out (the new loop lifted from the bar)
+  m1r,       // make 1 right
+  yo,        // knit then yarn over: 1 in, 2 out
+  k2tog,     // knit 2 together: 2 in, 1 out (right-leaning)
+  ssk,       // slip, slip, knit: 2 in, 1 out (left-leaning)
+  p2tog,     // purl 2 together
+  s2kp,      // centred double decrease: 3 in, 1 out
+  sr4,       // short-row face with four edges (Fig. 10a): wale edges side by side
+  sr5,       // short-row face with five edges (Fig. 10b): an extra loop at the turn
+  srn,       // short-row face with more than five edges (Fig. 10c): extra segments collapse
+  tnbo,      // extruded three-needle bind-off face of a join: 2 in, bound off
+  sco,       // extruded cast-on face of a split: makes 2 loops, one to each side
+  sl,        // slip: the loop passes through unworked (AutoKnit's miss)
+  tuck,      // tuck: a new loop held with the old one (AutoKnit's tuck)
   k2tog_bo,  // knit 2 together and bind off: a bind-off that also takes a loop across a
              // contracting perpendicular edge
 };
@@ -50,6 +50,8 @@ struct StitchTypeInfo {
 const StitchTypeInfo& info(StitchType type);
 std::span<const StitchTypeInfo> stitch_catalogue();
 std::optional<StitchType> stitch_type_from_abbreviation(std::string_view abbreviation);
-inline std::string_view abbreviation(StitchType type) { return info(type).abbreviation; }
+inline std::string_view abbreviation(StitchType type) {
+  return info(type).abbreviation;
+}
 
 }  // namespace skein

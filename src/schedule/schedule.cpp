@@ -8,12 +8,18 @@ namespace skein {
 
 const char* marker_name(MarkerKind kind) {
   switch (kind) {
-    case MarkerKind::none: return "none";
-    case MarkerKind::beginning_of_round: return "bor";
-    case MarkerKind::mismatch_begin: return "mismatch-begin";
-    case MarkerKind::mismatch_end: return "mismatch-end";
-    case MarkerKind::short_row_begin: return "short-row-begin";
-    case MarkerKind::short_row_end: return "short-row-end";
+    case MarkerKind::none:
+      return "none";
+    case MarkerKind::beginning_of_round:
+      return "bor";
+    case MarkerKind::mismatch_begin:
+      return "mismatch-begin";
+    case MarkerKind::mismatch_end:
+      return "mismatch-end";
+    case MarkerKind::short_row_begin:
+      return "short-row-begin";
+    case MarkerKind::short_row_end:
+      return "short-row-end";
   }
   return "?";
 }
@@ -40,8 +46,10 @@ class PieceStack {
     in_[p] = 1;
   }
   void remove(std::uint32_t p) {
-    if (above_[p] != kNone) below_[above_[p]] = below_[p];
-    else top_ = below_[p];
+    if (above_[p] != kNone)
+      below_[above_[p]] = below_[p];
+    else
+      top_ = below_[p];
     if (below_[p] != kNone) above_[below_[p]] = above_[p];
     in_[p] = 0;
   }
@@ -59,8 +67,14 @@ class PieceStack {
 class Scheduler {
  public:
   Scheduler(const KnitGraph& g, const DependencyGraph& deps, const YarnPieces& pieces)
-      : g_(g), deps_(deps), pieces_(pieces), waiting_(g.size()), at_(pieces.size()),
-        started_(pieces.size(), 0), done_(g.size(), 0), stack_(pieces.size()) {
+      : g_(g),
+        deps_(deps),
+        pieces_(pieces),
+        waiting_(g.size()),
+        at_(pieces.size()),
+        started_(pieces.size(), 0),
+        done_(g.size(), 0),
+        stack_(pieces.size()) {
     for (StitchId s = 0; s < g.size(); ++s)
       waiting_[s] = static_cast<std::uint32_t>(in_degree(s, deps));
     for (std::uint32_t p = pieces.size(); p-- > 0;) {

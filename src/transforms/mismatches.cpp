@@ -29,7 +29,8 @@ std::vector<std::uint32_t> yarn_order(const KnitGraph& g) {
 
 class MismatchTransform {
  public:
-  explicit MismatchTransform(KnitGraph& g) : g_(g), order_(yarn_order(g)), removed_(g.loops.size(), 0) {}
+  explicit MismatchTransform(KnitGraph& g)
+      : g_(g), order_(yarn_order(g)), removed_(g.loops.size(), 0) {}
 
   void run() && {
     g_.first_extruded = g_.size();
@@ -83,10 +84,13 @@ class MismatchTransform {
       g_.extruded_at.push_back(e);
       for (std::uint8_t side = 0; side < 2; ++side) {
         Loop& l = g_.loops[g_.mismatch_edges[e].loop[side]];
-        if (type == StitchType::tnbo) l.taker = t, l.taker_slot = side;
-        else l.maker = t, l.maker_slot = side;
+        if (type == StitchType::tnbo)
+          l.taker = t, l.taker_slot = side;
+        else
+          l.maker = t, l.maker_slot = side;
       }
-      if (previous != kNoStitch) g_.yarn_next[previous] = t, g_.yarn_link[previous] = YarnLink::course;
+      if (previous != kNoStitch)
+        g_.yarn_next[previous] = t, g_.yarn_link[previous] = YarnLink::course;
       previous = t;
     }
   }
@@ -117,23 +121,33 @@ class MismatchTransform {
 
   void require_plain(StitchId s, const char* what) const {
     if (g_.type[s] != StitchType::k && g_.type[s] != StitchType::p)
-      throw Error(fmt::format("{} cannot {}: only plain knit or purl stitches can; knit this "
-                              "group with an extra yarn piece instead",
-                              g_.describe(s), what));
+      throw Error(
+          fmt::format("{} cannot {}: only plain knit or purl stitches can; knit this "
+                      "group with an extra yarn piece instead",
+                      g_.describe(s), what));
   }
 
   void become_decrease(StitchId s) {
     StitchType& t = g_.type[s];
     switch (t) {
-      case StitchType::k: t = StitchType::k2tog; return;
-      case StitchType::p: t = StitchType::p2tog; return;
+      case StitchType::k:
+        t = StitchType::k2tog;
+        return;
+      case StitchType::p:
+        t = StitchType::p2tog;
+        return;
       case StitchType::k2tog:
-      case StitchType::ssk: t = StitchType::s2kp; return;
-      case StitchType::bo: t = StitchType::k2tog_bo; return;
+      case StitchType::ssk:
+        t = StitchType::s2kp;
+        return;
+      case StitchType::bo:
+        t = StitchType::k2tog_bo;
+        return;
       default:
-        throw Error(fmt::format("{} treats a contracting perpendicular edge as a course edge, so "
-                                "it must become a decrease; a {} has no decrease form",
-                                g_.describe(s), info(t).name));
+        throw Error(
+            fmt::format("{} treats a contracting perpendicular edge as a course edge, so "
+                        "it must become a decrease; a {} has no decrease form",
+                        g_.describe(s), info(t).name));
     }
   }
 
@@ -155,6 +169,8 @@ class MismatchTransform {
 
 }  // namespace
 
-void make_mismatches_knittable(KnitGraph& graph) { MismatchTransform(graph).run(); }
+void make_mismatches_knittable(KnitGraph& graph) {
+  MismatchTransform(graph).run();
+}
 
 }  // namespace skein

@@ -19,7 +19,9 @@ bool is_course_link(const StitchMesh& m, Halfedge h) {
 class ShiftPaths {
  public:
   explicit ShiftPaths(StitchMesh& m)
-      : m_(m), kinds_(row_kinds(m)), path_edge_(kinds_.size(), Edge()),
+      : m_(m),
+        kinds_(row_kinds(m)),
+        path_edge_(kinds_.size(), Edge()),
         reversed_(kinds_.size(), 0) {}
 
   ShiftPathSummary run() && {
@@ -37,14 +39,16 @@ class ShiftPaths {
       if (!m_.shift_path[e]) continue;
       std::uint32_t row = m_.row[m_.face(m_.halfedge(e))];
       if (kinds_[row] == RowKind::open)
-        throw MeshError(fmt::format("{} is marked as a shift-path, but row {} is an open row: open "
-                                    "rows need no shift-path (the work turns at the border); "
-                                    "expected the mark on a round or a short row between rounds",
-                                    describe(m_, e), row + 1));
+        throw MeshError(
+            fmt::format("{} is marked as a shift-path, but row {} is an open row: open "
+                        "rows need no shift-path (the work turns at the border); "
+                        "expected the mark on a round or a short row between rounds",
+                        describe(m_, e), row + 1));
       if (path_edge_[row].valid())
-        throw MeshError(fmt::format("row {} is cut by two shift-path edges, {} and {}; expected "
-                                    "one per round",
-                                    row + 1, describe(m_, path_edge_[row]), describe(m_, e)));
+        throw MeshError(
+            fmt::format("row {} is cut by two shift-path edges, {} and {}; expected "
+                        "one per round",
+                        row + 1, describe(m_, path_edge_[row]), describe(m_, e)));
       path_edge_[row] = e;
     }
   }
@@ -98,7 +102,8 @@ class ShiftPaths {
     if (!v.valid()) return {};
     for (Halfedge out : m_.outgoing(v))
       for (Halfedge c : {out, m_.prev(out)}) {
-        if (!is_course_link(m_, c) || m_.edge(c) == e || kinds_[m_.row[m_.face(c)]] != RowKind::closed)
+        if (!is_course_link(m_, c) || m_.edge(c) == e ||
+            kinds_[m_.row[m_.face(c)]] != RowKind::closed)
           continue;
         if ((up ? m_.wale_bottom(c) : m_.wale_top(c)) == v) return m_.edge(c);
       }
@@ -132,8 +137,10 @@ class ShiftPaths {
 
   void swap_wale_roles(Face f) {
     for (Halfedge h : m_.halfedges(f)) {
-      if (m_.role[h] == EdgeRole::wale_in) m_.role[h] = EdgeRole::wale_out;
-      else if (m_.role[h] == EdgeRole::wale_out) m_.role[h] = EdgeRole::wale_in;
+      if (m_.role[h] == EdgeRole::wale_in)
+        m_.role[h] = EdgeRole::wale_out;
+      else if (m_.role[h] == EdgeRole::wale_out)
+        m_.role[h] = EdgeRole::wale_in;
     }
   }
 
@@ -146,6 +153,8 @@ class ShiftPaths {
 
 }  // namespace
 
-ShiftPathSummary place_shift_paths(StitchMesh& mesh) { return ShiftPaths(mesh).run(); }
+ShiftPathSummary place_shift_paths(StitchMesh& mesh) {
+  return ShiftPaths(mesh).run();
+}
 
 }  // namespace skein

@@ -12,9 +12,9 @@
 namespace skein {
 
 struct ShiftPathSummary {
-  std::uint32_t paths = 0;             // separate paths (chains of marked edges)
-  std::uint32_t placed = 0;            // of those, placed by skein
-  std::uint32_t reversed_rows = 0;     // rows whose course direction the shift option turned
+  std::uint32_t paths = 0;          // separate paths (chains of marked edges)
+  std::uint32_t placed = 0;         // of those, placed by skein
+  std::uint32_t reversed_rows = 0;  // rows whose course direction the shift option turned
 };
 
 // Throws MeshError naming the edge when a mark sits on an open row or a closed row has two.

@@ -17,17 +17,22 @@ constexpr std::string_view kMagic = ";!skein-schedule 1";
 
 std::string event_line(const KnitGraph& g, const Event& e) {
   switch (e.kind) {
-    case EventKind::yarn_start: return fmt::format("yarn {} start", e.yarn + 1);
-    case EventKind::yarn_end: return fmt::format("yarn {} end", e.yarn + 1);
+    case EventKind::yarn_start:
+      return fmt::format("yarn {} start", e.yarn + 1);
+    case EventKind::yarn_end:
+      return fmt::format("yarn {} end", e.yarn + 1);
     case EventKind::row_start:
       return fmt::format("  row {} ({})", g.row[e.stitch] + 1,
                          row_shape_name(g.row_shape[g.row[e.stitch]]));
-    case EventKind::turn: return "  turn";
-    case EventKind::marker: return fmt::format("  marker {}", marker_name(e.marker));
+    case EventKind::turn:
+      return "  turn";
+    case EventKind::marker:
+      return fmt::format("  marker {}", marker_name(e.marker));
     case EventKind::hold:
       return fmt::format("yarn {} hold at {}: waits for {}", e.yarn + 1, e.stitch + 1,
                          e.waits_for + 1);
-    case EventKind::resume: return fmt::format("yarn {} resume at {}", e.yarn + 1, e.stitch + 1);
+    case EventKind::resume:
+      return fmt::format("yarn {} resume at {}", e.yarn + 1, e.stitch + 1);
     case EventKind::stitch:
       return fmt::format("    {} {}", e.stitch + 1, abbreviation(g.type[e.stitch]));
   }
@@ -65,8 +70,7 @@ class ScheduleTarget : public Target {
 // Replays a schedule text: each stitch line works one stitch of the current yarn.
 class ScheduleReplay {
  public:
-  ScheduleReplay(const std::string& file, const Compilation* against)
-      : file_(file), c_(against) {
+  ScheduleReplay(const std::string& file, const Compilation* against) : file_(file), c_(against) {
     if (c_) {
       done_.assign(c_->knit.size(), 0);
       last_.assign(c_->yarns.size(), kNoStitch);
@@ -106,8 +110,9 @@ class ScheduleReplay {
     std::uint32_t number = 0;
     auto [end, ec] = std::from_chars(line.data(), line.data() + line.size(), number);
     if (ec != std::errc() || number == 0 || end == line.data() + line.size() || *end != ' ')
-      fail(line_no, raw, "expected a stitch line '<number> <stitch>', a 'yarn', 'row', 'turn' or "
-                         "'marker' line");
+      fail(line_no, raw,
+           "expected a stitch line '<number> <stitch>', a 'yarn', 'row', 'turn' or "
+           "'marker' line");
     replay_stitch(line_no, raw, number - 1, trim(std::string_view(end, line.data() + line.size())));
   }
 
@@ -128,24 +133,27 @@ class ScheduleReplay {
     if (!active_) fail(line_no, raw, "a stitch is worked while no yarn is started or resumed");
     if (!c_) return;
     const KnitGraph& g = c_->knit;
-    if (s >= g.size())
-      fail(line_no, raw, fmt::format("the model has {} stitches", g.size()));
+    if (s >= g.size()) fail(line_no, raw, fmt::format("the model has {} stitches", g.size()));
     if (abbr != abbreviation(g.type[s]))
-      fail(line_no, raw, fmt::format("{} is a {}, not a {}", g.describe(s), abbreviation(g.type[s]), abbr));
+      fail(line_no, raw,
+           fmt::format("{} is a {}, not a {}", g.describe(s), abbreviation(g.type[s]), abbr));
     if (done_[s]) fail(line_no, raw, fmt::format("{} is worked a second time", g.describe(s)));
     for (auto e : boost::make_iterator_range(in_edges(s, c_->deps))) {
       StitchId before = static_cast<StitchId>(source(e, c_->deps));
       if (!done_[before])
-        fail(line_no, raw, fmt::format("{} is worked before {}, which it waits for: {}",
-                                       g.describe(s), g.describe(before), explain(c_->deps[e].reason)));
+        fail(line_no, raw,
+             fmt::format("{} is worked before {}, which it waits for: {}", g.describe(s),
+                         g.describe(before), explain(c_->deps[e].reason)));
     }
     if (c_->yarns.piece_of[s] != yarn_)
-      fail(line_no, raw, fmt::format("{} belongs to yarn {}, not yarn {}", g.describe(s),
-                                     c_->yarns.piece_of[s] + 1, yarn_ + 1));
+      fail(line_no, raw,
+           fmt::format("{} belongs to yarn {}, not yarn {}", g.describe(s),
+                       c_->yarns.piece_of[s] + 1, yarn_ + 1));
     StitchId previous = last_[yarn_];
     bool follows = previous == kNoStitch ? c_->yarns.first[yarn_] == s : g.yarn_next[previous] == s;
     if (!follows)
-      fail(line_no, raw, fmt::format("{} does not come next along yarn {}", g.describe(s), yarn_ + 1));
+      fail(line_no, raw,
+           fmt::format("{} does not come next along yarn {}", g.describe(s), yarn_ + 1));
     done_[s] = 1;
     last_[yarn_] = s;
   }
@@ -189,7 +197,8 @@ class ScheduleSimulator : public Simulator {
   VerifyReport verify(const std::string& text, const std::string& file, const Compilation* against,
                       const TargetOptions&) const override {
     if (against && !against->knittability.knittable)
-      throw Error(fmt::format("{} is not knittable, so no schedule of it can be proven", against->input));
+      throw Error(
+          fmt::format("{} is not knittable, so no schedule of it can be proven", against->input));
     return ScheduleReplay(file, against).run(text);
   }
 };
