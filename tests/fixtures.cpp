@@ -5,24 +5,6 @@
 #include "common/error.hpp"
 
 namespace skein::testing {
-namespace {
-
-EdgeRole role_of(char c) {
-  switch (c) {
-    case 'b':
-      return EdgeRole::bottom;
-    case 't':
-      return EdgeRole::top;
-    case 'i':
-      return EdgeRole::wale_in;
-    case 'o':
-      return EdgeRole::wale_out;
-  }
-  throw InternalError(std::string("bad role letter ") + c);
-}
-
-}  // namespace
-
 StitchMesh grid_mesh(int width, int height, const std::vector<Square>& squares,
                      const std::vector<YarnMark>& yarn) {
   StitchMeshBuilder builder("<grid>");
@@ -33,7 +15,7 @@ StitchMesh grid_mesh(int width, int height, const std::vector<Square>& squares,
   for (const Square& s : squares) {
     Vertex corners[] = {at(s.x, s.y), at(s.x + 1, s.y), at(s.x + 1, s.y + 1), at(s.x, s.y + 1)};
     EdgeRole roles[4];
-    for (int i = 0; i < 4; ++i) roles[i] = role_of(s.roles.at(i));
+    for (int i = 0; i < 4; ++i) roles[i] = role_from_letter(s.roles.at(i)).value();
     builder.add_face(corners, roles, s.type);
   }
   StitchMesh mesh = std::move(builder).build();
@@ -140,7 +122,7 @@ StitchMesh short_row_mesh(StitchType turn) {
     std::vector<Vertex> vs;
     std::vector<EdgeRole> rs;
     for (auto [x, y] : corners) vs.push_back(v(x, y));
-    for (char c : roles) rs.push_back(role_of(c));
+    for (char c : roles) rs.push_back(role_from_letter(c).value());
     builder.add_face(vs, rs, type);
   };
   for (float x = 0; x < 4; ++x) face({{x, 0}, {x + 1, 0}, {x + 1, 1}, {x, 1}}, "boti", T::co);

@@ -156,19 +156,6 @@ RowPlan random_rows(std::uint32_t width, std::uint32_t rows, const RandomShaping
 
 namespace {
 
-EdgeRole role_from_letter(char c) {
-  switch (c) {
-    case 'b':
-      return EdgeRole::bottom;
-    case 't':
-      return EdgeRole::top;
-    case 'i':
-      return EdgeRole::wale_in;
-    default:
-      return EdgeRole::wale_out;
-  }
-}
-
 // Builds faces from corner coordinates, sharing a vertex wherever coordinates repeat.
 class CornerBuilder {
  public:
@@ -178,7 +165,7 @@ class CornerBuilder {
     vertices_.clear();
     roles_.clear();
     for (auto [x, y] : corners) vertices_.push_back(vertex(x, y));
-    for (char c : roles) roles_.push_back(role_from_letter(c));
+    for (char c : roles) roles_.push_back(role_from_letter(c).value());
     builder_.add_face(vertices_, roles_, type);
   }
   // A unit square with its lower-left corner at (x, y); roles lower, right, upper, left.

@@ -44,21 +44,6 @@ std::errc parse_number(std::string_view word, T& value) {
   return error;
 }
 
-std::optional<EdgeRole> role_from_letter(char letter) {
-  switch (letter) {
-    case 'b':
-      return EdgeRole::bottom;
-    case 't':
-      return EdgeRole::top;
-    case 'i':
-      return EdgeRole::wale_in;
-    case 'o':
-      return EdgeRole::wale_out;
-    default:
-      return std::nullopt;
-  }
-}
-
 std::string stitch_type_list() {
   std::string list;
   for (const StitchTypeInfo& entry : stitch_catalogue())

@@ -24,6 +24,12 @@ char role_letter(EdgeRole r) {
   return '?';
 }
 
+std::optional<EdgeRole> role_from_letter(char letter) {
+  for (EdgeRole r : {EdgeRole::bottom, EdgeRole::top, EdgeRole::wale_in, EdgeRole::wale_out})
+    if (role_letter(r) == letter) return r;
+  return std::nullopt;
+}
+
 const char* edge_kind_name(EdgeKind kind) {
   switch (kind) {
     case EdgeKind::border:

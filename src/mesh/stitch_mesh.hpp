@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -36,6 +37,7 @@ inline bool is_wale(EdgeRole r) {
   return !is_course(r);
 }
 char role_letter(EdgeRole r);  // b, t, i, o: the letters of the file format
+std::optional<EdgeRole> role_from_letter(char letter);  // empty for any other letter
 
 // How the two faces of an interior edge relate (paper §3.2, Fig. 5).
 enum class EdgeKind : std::uint8_t {
