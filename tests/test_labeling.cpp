@@ -4,8 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <random>
+#include <set>
 
 #include "driver/pipeline.hpp"
 #include "labeling/labeling.hpp"
@@ -59,6 +61,51 @@ CoarseMesh cylinder(std::uint32_t sides, const std::vector<double>& radii, doubl
       faces.push_back({r * sides + j, r * sides + k, (r + 1) * sides + k, (r + 1) * sides + j});
     }
   return build_coarse_mesh("<cylinder>", v, faces);
+}
+
+// Square bars of unit cubes (the paper's Figs. 18 and 19): the cube faces no other cube
+// covers, outwards; a face towards a cell in `open_ends` is left out (an open end of a bar).
+// `starts` gets, per open end, the edge from its first corner to its second.
+struct Cell {
+  int x, y, z;
+  auto operator<=>(const Cell&) const = default;
+};
+CoarseMesh cube_bars(const std::vector<Cell>& cubes, const std::vector<Cell>& open_ends,
+                     std::vector<CoarseEdgeRef>* starts = nullptr) {
+  std::set<Cell> filled(cubes.begin(), cubes.end()), open(open_ends.begin(), open_ends.end());
+  std::map<Cell, std::uint32_t> index;
+  std::vector<Vec3> v;
+  auto vertex = [&](Cell c) {
+    auto [it, added] = index.try_emplace(c, static_cast<std::uint32_t>(v.size()));
+    if (added) v.push_back({float(c.x), float(c.y), float(c.z)});
+    return it->second;
+  };
+  Faces faces;
+  for (Cell c : cubes)
+    for (int axis = 0; axis < 3; ++axis)
+      for (int sign : {1, -1}) {
+        int p[3] = {c.x, c.y, c.z};
+        p[axis] += sign;
+        Cell beyond{p[0], p[1], p[2]};
+        if (filled.count(beyond)) continue;
+        // Corners counter-clockwise seen from outside: along the next two axes in turn.
+        int b = (axis + 1) % 3, d = (axis + 2) % 3;
+        std::vector<std::uint32_t> face;
+        for (auto [db, dd] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
+          int q[3] = {c.x, c.y, c.z};
+          q[axis] += sign > 0;
+          q[b] += db;
+          q[d] += dd;
+          face.push_back(vertex({q[0], q[1], q[2]}));
+        }
+        if (sign < 0) std::reverse(face.begin(), face.end());
+        if (!open.count(beyond)) {
+          faces.push_back(face);
+        } else if (starts) {
+          starts->push_back({face[1], face[0], 0});  // the border runs against the missing face
+        }
+      }
+  return build_coarse_mesh("<bars>", v, faces);
 }
 
 std::string labeling_error(const CoarseMesh& mesh, const Project& project) {
@@ -280,6 +327,33 @@ TEST(Generation, ShiftPathsFollowTheProjectOrContinueFromBelow) {
   EXPECT_EQ(marked, g.segments[m.find_halfedge(CoarseVertex(2), CoarseVertex(6)).index()] * 2);
   p.shift_paths = {{{0, 1, 9}, 1}};  // a course edge: no round starts there
   EXPECT_THROW(generate_stitch_mesh(m, label_coarse_mesh(m, p), p), Error);
+}
+
+// Three bars crossing in one cube (Fig. 19), knit from the ends of -x, +x and -y towards it: -y
+// joins both x arms, +y splits from both z arms, and each incoming tube's path goes on into an
+// outgoing tube of its own: 3 yarns, and one extra per join or split (the paper's 7), or
+// none when each is worked with a side's own yarn (the paper's 3).
+TEST(Generation, TubesMeetingAtAJunctionEachGoOnIntoTheirOwnTube) {
+  std::vector<Cell> cubes{{0, 0, 0}}, ends;
+  for (int axis = 0; axis < 3; ++axis)
+    for (int sign : {-1, 1}) {
+      for (int k = 1; k <= 2; ++k) {
+        int p[3] = {0, 0, 0};
+        p[axis] = sign * k;
+        cubes.push_back({p[0], p[1], p[2]});
+      }
+      int p[3] = {0, 0, 0};
+      p[axis] = sign * 3;
+      ends.push_back({p[0], p[1], p[2]});
+    }
+  std::vector<CoarseEdgeRef> end_edges;
+  CoarseMesh m = cube_bars(cubes, ends, &end_edges);  // ends: -x, +x, -y, +y, -z, +z
+  Project p = project_with_stitch(0.25, 0.25);
+  for (std::size_t e : {0, 1, 2}) p.start.push_back({StartSeed::Kind::edge, end_edges[e]});
+  p.default_yarn = YarnHandling::extra;
+  expect_generated_knittable(m, p, 3 + 4);
+  p.default_yarn = YarnHandling::own;
+  expect_generated_knittable(m, p, 3);
 }
 
 TEST(Generation, SkeinNewShapesAreKnittableAtSeveralSizes) {

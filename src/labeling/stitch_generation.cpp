@@ -10,6 +10,7 @@
 
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "labeling/shift_path_plan.hpp"
 #include "mesh/obj_format.hpp"
 
 namespace skein {
@@ -247,10 +248,13 @@ class Generator {
         wanted_starts_.push_back(m_.head(side(row.front(), CoarseRole::left)));
       rows.emplace_back(std::move(row), closed);
     }
+    std::vector<Ring> rings;
+    for (const auto& [row, closed] : rows)
+      if (closed) rings.push_back(ring_of(row));
+    std::vector<RingPath> paths = plan_shift_paths(m_, L_, rings, p_.shift_option);
     for (const auto& [row, closed] : rows) {
       if (closed) {
-        ++closed_rows_;
-        plan_closed_row(row);
+        plan_closed_row(row, paths[closed_rows_++]);
       } else {
         ++open_rows_;
         plan_open_row(row);
@@ -323,46 +327,32 @@ class Generator {
     store(segs);
   }
 
-  // Where a ring's shift-path runs and with which shift option (Fig. 3).
-  struct PathChoice {
-    std::size_t face;     // the path runs up this face's left side
-    std::uint8_t option;  // the stitch mesh's ShiftOption
-    bool continued;       // the path of a ring below goes on here
-  };
-
-  // The shift-path runs up a side edge where no short rows turn: a project mark, else where
-  // the path of a ring below arrives, else the first such edge (a new path, new yarn).
-  PathChoice choose_path(const std::vector<CoarseFace>& faces) {
-    std::optional<PathChoice> marked, continued, first;
+  // A ring of faces as the path planner sees it: where a path may start, and the project's
+  // mark (the last one naming a side of the ring).
+  Ring ring_of(const std::vector<CoarseFace>& faces) {
+    Ring ring{faces, std::vector<std::uint8_t>(faces.size(), 0), std::nullopt};
     for (std::size_t i = 0; i < faces.size(); ++i) {
       CoarseFace f = faces[i], before = faces[(i + faces.size() - 1) % faces.size()];
       bool turns_here =
           (L_.short_row[f.index()] && L_.wide_side[f.index()] == CoarseRole::left) ||
           (L_.short_row[before.index()] && L_.wide_side[before.index()] == CoarseRole::right);
       if (turns_here) continue;
+      ring.can_start[i] = 1;
       CoarseHalfedge h = side(f, CoarseRole::left);
       for (std::size_t k = 0; k < p_.shift_paths.size(); ++k)
         if (m_.canonical(find_project_edge(m_, p_, p_.shift_paths[k].edge)) == m_.canonical(h)) {
           used_shift_marks_.insert(k);
-          marked = PathChoice{i, p_.shift_paths[k].option, false};
+          ring.mark = {i, p_.shift_paths[k].option};
         }
-      for (auto [top, option] : chain_tops_)
-        if (top == m_.head(h) && !continued) continued = PathChoice{i, option, true};
-      if (!first) first = PathChoice{i, p_.shift_option, false};
     }
-    if (!first)
+    if (std::find(ring.can_start.begin(), ring.can_start.end(), 1) == ring.can_start.end())
       fail(faces.front(),
            "every side of this ring of faces has short rows turning at it, so no "
            "shift-path can run through it");
-    if (marked) {
-      marked->continued = continued && continued->face == marked->face;
-      return *marked;
-    }
-    return continued ? *continued : *first;
+    return ring;
   }
 
-  void plan_closed_row(const std::vector<CoarseFace>& faces) {
-    PathChoice path = choose_path(faces);
+  void plan_closed_row(const std::vector<CoarseFace>& faces, const RingPath& path) {
     if (!path.continued) ++chains_;
     std::vector<CoarseFace> rotated(faces.begin() + static_cast<std::ptrdiff_t>(path.face),
                                     faces.end());
@@ -370,7 +360,6 @@ class Generator {
                    faces.begin() + static_cast<std::ptrdiff_t>(path.face));
     CoarseHalfedge shift = side(rotated.front(), CoarseRole::left);
     shift_edges_.push_back({shift, path.option});
-    chain_tops_.push_back({m_.tail(shift), path.option});
     std::vector<Segment> segs = cut(rotated, shift);
     walk_yarn(segs, rotated, true, true);
     store(segs);
@@ -723,8 +712,7 @@ class Generator {
   std::vector<std::vector<Token>> tokens_;            // per short-row face
   std::vector<CoarseVertex> yarn_ends_;               // top corners where open rows stopped
   std::vector<CoarseVertex> wanted_starts_;           // bottom corners where open rows must start
-  std::vector<std::pair<CoarseVertex, std::uint8_t>> chain_tops_;     // where paths arrive
-  std::vector<std::pair<CoarseHalfedge, std::uint8_t>> shift_edges_;  // and their options
+  std::vector<std::pair<CoarseHalfedge, std::uint8_t>> shift_edges_;  // paths and their options
   std::set<std::size_t> used_shift_marks_;  // project shift_paths entries placed
   std::vector<std::uint32_t> origin_;
   std::vector<Vec3> positions_;

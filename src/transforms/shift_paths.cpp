@@ -78,13 +78,12 @@ class ShiftPaths {
         mark(e, option);
   }
 
-  // A path starts at every marked edge whose round below does not continue into it.
+  // A path starts at every marked edge that no round below ends its own path at (where tubes
+  // meet, several rounds end at one corner; the path goes on from the one that is marked).
   void count_paths() {
-    for (Edge e : path_edge_) {
-      if (!e.valid()) continue;
-      Edge below = next_on_path(e, /*up=*/false);
-      if (!below.valid() || path_edge_[row_of(below)] != below) ++summary_.paths;
-    }
+    auto is_path_edge = [&](Edge c) { return path_edge_[row_of(c)] == c; };
+    for (Edge e : path_edge_)
+      if (e.valid() && !next_on_path(e, /*up=*/false, is_path_edge).valid()) ++summary_.paths;
   }
 
   void mark(Edge e, ShiftOption option) {
@@ -95,8 +94,10 @@ class ShiftPaths {
   std::uint32_t row_of(Edge e) const { return m_.row[m_.face(m_.halfedge(e))]; }
 
   // The wale edge of another round that continues the path from e's top end (up) or bottom
-  // end (down); invalid where the path cannot go on (a decrease or increase spans that corner).
-  Edge next_on_path(Edge e, bool up) const {
+  // end (down), the first that `accept` takes; invalid where the path cannot go on (a
+  // decrease or increase spans that corner).
+  template <class Accept>
+  Edge next_on_path(Edge e, bool up, Accept accept) const {
     Halfedge h = m_.halfedge(e);
     Vertex v = up ? m_.wale_top(h) : m_.wale_bottom(h);
     if (!v.valid()) return {};
@@ -105,9 +106,12 @@ class ShiftPaths {
         if (!is_course_link(m_, c) || m_.edge(c) == e ||
             kinds_[m_.row[m_.face(c)]] != RowKind::closed)
           continue;
-        if ((up ? m_.wale_bottom(c) : m_.wale_top(c)) == v) return m_.edge(c);
+        if ((up ? m_.wale_bottom(c) : m_.wale_top(c)) == v && accept(m_.edge(c))) return m_.edge(c);
       }
     return {};
+  }
+  Edge next_on_path(Edge e, bool up) const {
+    return next_on_path(e, up, [](Edge) { return true; });
   }
 
   // Each path's option says which way its rounds run; the rows of a path whose labelled
