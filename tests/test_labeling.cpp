@@ -222,6 +222,25 @@ TEST(Labeling, RowsStopAtMarkedMismatchEdges) {
       << e;
 }
 
+TEST(Labeling, MarkedTopsAreNotHandedOn) {
+  // A 2x2 sheet knit up from the bottom, with a second start on the left edge of the upper
+  // left face; the mark on that face's bottom keeps the row below from handing it on, so it
+  // is knit sideways from its own start: perpendicular mismatches with both faces beside it.
+  std::mt19937 rng(4);
+  CoarseMesh m = grid(2, 2, rng);
+  Project p = project_with_stitch(1, 1);
+  p.start = {{StartSeed::Kind::lowest, {}}, {StartSeed::Kind::edge, {6, 3, 5}}};
+  p.mismatch_edges.push_back({3, 4, 6});
+  Labeling l = label_coarse_mesh(m, p);
+  CoarseFace upper_left(2);
+  EXPECT_EQ(m.describe(l.find(m, upper_left, CoarseRole::bottom)), "edge 7-4");
+  EXPECT_TRUE(is_side(l[m.find_halfedge(CoarseVertex(3), CoarseVertex(4))]));
+  EXPECT_EQ(l[m.find_halfedge(CoarseVertex(4), CoarseVertex(3))], CoarseRole::top);
+  EXPECT_EQ(l[m.find_halfedge(CoarseVertex(4), CoarseVertex(7))], CoarseRole::top);
+  EXPECT_TRUE(is_side(l[m.find_halfedge(CoarseVertex(7), CoarseVertex(4))]));
+  expect_generated_knittable(m, p, 1);  // the sideways rows start where the yarn stopped
+}
+
 TEST(Labeling, PolygonsAndUnlabelledTrianglesAreExplained) {
   std::vector<Vec3> v{{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1.5f, 0}, {0, 1, 0}, {1, 3, 0}};
   Faces faces{{0, 1, 2, 3, 4}};

@@ -115,6 +115,20 @@ TEST(Perpendicular, ABindOffBesideAContractingEdgeKnitsTwoTogetherThenBindsOff) 
   EXPECT_EQ(c.knit.loops_taken_by(3).size(), 2u);
 }
 
+TEST(Perpendicular, ACastOnBesideAContractingEdgeKnitsTheLoopBesideIt) {
+  // Column 1 runs sideways (wales to the left): its tops are column 0's wale edges. The
+  // cast-on at the foot of column 0 takes the loop beside it, so it becomes a knit stitch.
+  Compilation c = proven(testing::grid_mesh(2, 2,
+                                            {{0, 0, T::co, "boti"},
+                                             {0, 1, T::bo, "bito"},
+                                             {1, 0, T::co, "ibot"},
+                                             {1, 1, T::co, "ibot"}}),
+                         "contracting at the cast-on");
+  EXPECT_EQ(c.knit.type[0], T::k);
+  EXPECT_EQ(c.knit.loops_taken_by(0).size(), 1u);
+  EXPECT_EQ(c.knit.type[1], T::k2tog_bo);
+}
+
 TEST(Perpendicular, ExpandingIsPickedUpThroughTheEdgeAndAnOddCountLeavesATiedEnd) {
   Compilation c = proven(testing::expanding_mesh(), "expanding");
   const KnitGraph& g = c.knit;

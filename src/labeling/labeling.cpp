@@ -136,10 +136,7 @@ class Labeler {
     std::vector<CoarseFace> row{f};
     walk(m_.next(bottom), true, row);
     walk(m_.prev(bottom), false, row);
-    for (CoarseFace g : row) {
-      CoarseHalfedge top = L_.find(m_, g, CoarseRole::top);
-      if (!m_.is_border(top)) seeds_.emplace_back(m_.twin(top));
-    }
+    for (CoarseFace g : row) seed_above(g);
   }
 
   // `bottom` is the halfedge of its face that a labelled row below (or a start) hands it.
@@ -157,9 +154,11 @@ class Labeler {
     }
   }
 
+  // A marked top is not handed on either: the face beyond is labelled from another side, so
+  // the mark becomes the perpendicular mismatch it asks for.
   void seed_above(CoarseFace f) {
     CoarseHalfedge top = L_.find(m_, f, CoarseRole::top);
-    if (!m_.is_border(top)) seeds_.emplace_back(m_.twin(top));
+    if (!m_.is_border(top) && !L_.row_break[top.index()]) seeds_.emplace_back(m_.twin(top));
   }
 
   void drain() {

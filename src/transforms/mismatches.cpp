@@ -143,6 +143,9 @@ class MismatchTransform {
       case StitchType::bo:
         t = StitchType::k2tog_bo;
         return;
+      case StitchType::co:  // it has no loop of its own to knit: it knits the one beside it
+        t = StitchType::k;
+        return;
       default:
         throw Error(
             fmt::format("{} treats a contracting perpendicular edge as a course edge, so "

@@ -8,7 +8,8 @@
 //                      making the loop both sides' stitches are pulled through;
 //   split, own yarn:   the own side's stitch becomes the cast-on (sco) that makes both loops;
 //   contracting perpendicular: the stitch treating the edge as a wale edge becomes a decrease
-//                      (a bind-off becomes k2tog-bo: knit 2 together, then bind off);
+//                      (a bind-off becomes k2tog-bo: knit 2 together, then bind off; a
+//                      cast-on becomes a knit stitch: it knits the loop beside it);
 //   expanding perpendicular:   nothing to change: the stitches treating the edge as a course
 //                      edge are pulled through the other side's edge ("pick up and knit").
 #pragma once
