@@ -375,6 +375,30 @@ TEST(Generation, TubesMeetingAtAJunctionEachGoOnIntoTheirOwnTube) {
   expect_generated_knittable(m, p, 3);
 }
 
+// Two bars crossing in a plane (Fig. 18), knit from the ends of -y and -x: the centre
+// cube's flat faces are open rows between the tubes (marks make their sides perpendicular
+// mismatches), one knit on from each incoming tube and on into an outgoing one: 2 yarns, and
+// one extra each for the join and the split (the paper's 4).
+TEST(Generation, OpenRowsBetweenTubesCarryTheYarnOn) {
+  std::vector<Cell> cubes{{0, 0, 0},  {-1, 0, 0}, {-2, 0, 0}, {1, 0, 0}, {2, 0, 0},
+                          {0, -1, 0}, {0, -2, 0}, {0, 1, 0},  {0, 2, 0}};
+  std::vector<CoarseEdgeRef> end_edges;
+  CoarseMesh m = cube_bars(cubes, {{-3, 0, 0}, {3, 0, 0}, {0, -3, 0}, {0, 3, 0}}, &end_edges);
+  auto at = [&](float x, float y, float z) {
+    auto v = std::find_if(m.position.begin(), m.position.end(),
+                          [&](Vec3 p) { return p.x == x && p.y == y && p.z == z; });
+    return static_cast<std::uint32_t>(v - m.position.begin());
+  };
+  Project p = project_with_stitch(0.25, 0.25);
+  p.start = {{StartSeed::Kind::edge, end_edges[2]}, {StartSeed::Kind::edge, end_edges[0]}};
+  p.mismatch_edges = {{at(0, 0, 1), at(0, 1, 1), 0},  // the front face: rows from -y
+                      {at(1, 0, 1), at(1, 1, 1), 0},
+                      {at(0, 0, 0), at(1, 0, 0), 0},  // the back face: rows from -x
+                      {at(0, 1, 0), at(1, 1, 0), 0}};
+  p.default_yarn = YarnHandling::extra;
+  expect_generated_knittable(m, p, 2 + 2);
+}
+
 TEST(Generation, SkeinNewShapesAreKnittableAtSeveralSizes) {
   // Sheets, tubes, hats and socks (short rows inside rounds) on one yarn; sweaters on three
   // (body and sleeves, as the paper's).

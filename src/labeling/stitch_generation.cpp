@@ -10,7 +10,7 @@
 
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
-#include "labeling/shift_path_plan.hpp"
+#include "labeling/yarn_plan.hpp"
 #include "mesh/obj_format.hpp"
 
 namespace skein {
@@ -248,16 +248,16 @@ class Generator {
         wanted_starts_.push_back(m_.head(side(row.front(), CoarseRole::left)));
       rows.emplace_back(std::move(row), closed);
     }
-    std::vector<Ring> rings;
-    for (const auto& [row, closed] : rows)
-      if (closed) rings.push_back(ring_of(row));
-    std::vector<RingPath> paths = plan_shift_paths(m_, L_, rings, p_.shift_option);
-    for (const auto& [row, closed] : rows) {
-      if (closed) {
-        plan_closed_row(row, paths[closed_rows_++]);
+    std::vector<PlannedRow> planned;
+    for (const auto& [row, closed] : rows) planned.push_back(closed ? ring(row) : open_row(row));
+    std::vector<RowEntry> entries = plan_row_entries(m_, L_, planned, p_.shift_option);
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      if (rows[k].second) {
+        ++closed_rows_;
+        plan_closed_row(rows[k].first, entries[k]);
       } else {
         ++open_rows_;
-        plan_open_row(row);
+        plan_open_row(rows[k].first, entries[k]);
       }
     }
     for (std::size_t k = 0; k < p_.shift_paths.size(); ++k)
@@ -291,16 +291,18 @@ class Generator {
     return segs;
   }
 
-  void plan_open_row(const std::vector<CoarseFace>& faces) {
+  // An open row as the yarn planner sees it: where the yarn can enter it and where it then
+  // stops; with no yarn arriving, it stops where a row above must start, so one yarn goes on.
+  PlannedRow open_row(const std::vector<CoarseFace>& faces) {
     std::vector<Segment> segs = cut(faces, side(faces.front(), CoarseRole::left));
     CoarseHalfedge left = side(faces.front(), CoarseRole::left),
                    right = side(faces.back(), CoarseRole::right);
-    // Enter where the yarn of a row below stopped, at an end with rows to knit.
     bool can_left = segs.front().rows > 0, can_right = segs.back().rows > 0;
-    bool from_left = can_left;
-    auto among = [](const std::vector<CoarseVertex>& list, CoarseVertex v) {
-      return std::count(list.begin(), list.end(), v) > 0;
-    };
+    if (!can_left && !can_right)
+      fail(faces.front(), fmt::format("this row of faces ({} to {}) is closed at both ends by "
+                                      "short-row triangles, so no row can start; give one end a "
+                                      "row passing through it (a short-row quad)",
+                                      faces.front().index() + 1, faces.back().index() + 1));
     // Where this row stops when it enters at the left (or right) end (nowhere if it cannot).
     auto stops_at = [&](bool left_end) {
       std::vector<Segment> trial = segs;
@@ -310,27 +312,31 @@ class Generator {
         return CoarseVertex();
       }
     };
-    if (can_left && can_right) {
-      if (among(yarn_ends_, m_.tail(right)) && !among(yarn_ends_, m_.head(left))) from_left = false;
-      // Else, free to choose: stop where a row above must start, so one yarn goes on.
-      if (!among(yarn_ends_, m_.tail(right)) && !among(yarn_ends_, m_.head(left)))
-        from_left =
-            among(wanted_starts_, stops_at(true)) || !among(wanted_starts_, stops_at(false));
-    }
-    if (!can_left && !can_right)
-      fail(faces.front(), fmt::format("this row of faces ({} to {}) is closed at both ends by "
-                                      "short-row triangles, so no row can start; give one end a "
-                                      "row passing through it (a short-row quad)",
-                                      faces.front().index() + 1, faces.back().index() + 1));
-    bool ended_left = walk_yarn(segs, faces, false, from_left);
-    yarn_ends_.push_back(ended_left ? m_.tail(left) : m_.head(right));  // ends have rows: sides
+    PlannedRow row;
+    row.faces = faces;
+    row.default_left = can_left;
+    if (can_left) row.enter[0] = m_.head(left), row.stop[0] = stops_at(true);
+    if (can_right) row.enter[1] = m_.tail(right), row.stop[1] = stops_at(false);
+    auto wanted = [&](CoarseVertex v) {
+      return std::count(wanted_starts_.begin(), wanted_starts_.end(), v) > 0;
+    };
+    if (can_left && can_right) row.default_left = wanted(row.stop[0]) || !wanted(row.stop[1]);
+    return row;
+  }
+
+  void plan_open_row(const std::vector<CoarseFace>& faces, const RowEntry& entry) {
+    std::vector<Segment> segs = cut(faces, side(faces.front(), CoarseRole::left));
+    walk_yarn(segs, faces, false, entry.from_left);
     store(segs);
   }
 
-  // A ring of faces as the path planner sees it: where a path may start, and the project's
+  // A ring of faces as the yarn planner sees it: where a path may start, and the project's
   // mark (the last one naming a side of the ring).
-  Ring ring_of(const std::vector<CoarseFace>& faces) {
-    Ring ring{faces, std::vector<std::uint8_t>(faces.size(), 0), std::nullopt};
+  PlannedRow ring(const std::vector<CoarseFace>& faces) {
+    PlannedRow ring;
+    ring.faces = faces;
+    ring.closed = true;
+    ring.can_start.assign(faces.size(), 0);
     for (std::size_t i = 0; i < faces.size(); ++i) {
       CoarseFace f = faces[i], before = faces[(i + faces.size() - 1) % faces.size()];
       bool turns_here =
@@ -352,7 +358,7 @@ class Generator {
     return ring;
   }
 
-  void plan_closed_row(const std::vector<CoarseFace>& faces, const RingPath& path) {
+  void plan_closed_row(const std::vector<CoarseFace>& faces, const RowEntry& path) {
     if (!path.continued) ++chains_;
     std::vector<CoarseFace> rotated(faces.begin() + static_cast<std::ptrdiff_t>(path.face),
                                     faces.end());
@@ -710,7 +716,6 @@ class Generator {
   std::vector<std::uint32_t> edge_first_;  // per canonical halfedge: first interior vertex
   std::vector<std::vector<std::uint8_t>> rightward_;  // per quad: direction of each row
   std::vector<std::vector<Token>> tokens_;            // per short-row face
-  std::vector<CoarseVertex> yarn_ends_;               // top corners where open rows stopped
   std::vector<CoarseVertex> wanted_starts_;           // bottom corners where open rows must start
   std::vector<std::pair<CoarseHalfedge, std::uint8_t>> shift_edges_;  // paths and their options
   std::set<std::size_t> used_shift_marks_;  // project shift_paths entries placed
