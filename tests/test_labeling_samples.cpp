@@ -61,10 +61,10 @@ std::string sample_name(const ::testing::TestParamInfo<const char*>& param_info)
       "samples/short-row-wedge/short-row-wedge.yaml", "samples/three-bars/three-bars.yaml",   \
       "samples/three-bars-own/three-bars-own.yaml", "samples/sock/sock.yaml",                 \
       "samples/two-bars/two-bars.yaml", "samples/letter-h/letter-h.yaml",                     \
-      "samples/letter-i/letter-i.yaml"
+      "samples/letter-i/letter-i.yaml", "samples/letter-r/letter-r.yaml"
 // Built to the paper's mismatch structures; what `skein check` says about them today is kept,
 // errors included (docs/labeling.md, "Samples").
-#define SKEIN_PENDING_SAMPLES "samples/letter-r/letter-r.yaml", "samples/teapot/teapot.yaml"
+#define SKEIN_PENDING_SAMPLES "samples/teapot/teapot.yaml"
 
 INSTANTIATE_TEST_SUITE_P(Label, LabelingSample,
                          ::testing::Values(SKEIN_KNITTABLE_SAMPLES, SKEIN_PENDING_SAMPLES),

@@ -153,17 +153,19 @@ class YarnPlanner {
   }
 
   // Row r goes on from a chain whose yarn stops (or may stop) where r can start: a fixed top
-  // before a free chain, and of each the one the fewest later rows could take instead.
+  // before a free chain; of each, the one the fewest later rows could take instead, then the
+  // entry after which r stops where the later row with the fewest ways in can start.
   bool go_on_from_below(std::uint32_t r, std::optional<std::uint8_t> option) {
     std::vector<Entry> entries = entry_points(r);
     for (bool free : {false, true}) {
       std::optional<std::pair<std::size_t, std::uint32_t>> best;  // (entry, chain)
-      std::size_t best_rivals = 0;
+      std::pair<std::size_t, std::size_t> best_cost;  // (rivals, ways into the row served)
       for (std::size_t k = 0; k < entries.size(); ++k) {
         std::uint32_t c = free ? free_chain_at(entries[k].first) : fixed_chain_at(entries[k].first);
         if (c == kNone) continue;
-        std::size_t rivals = later_rows_entering_at(corners_of(c), r);
-        if (!best || rivals < best_rivals) best = {k, c}, best_rivals = rivals;
+        std::pair<std::size_t, std::size_t> cost{later_rows_entering_at(corners_of(c), r),
+                                                 row_served(r, entries[k].second)};
+        if (!best || cost < best_cost) best = {k, c}, best_cost = cost;
       }
       if (!best) continue;
       auto [corner, choice] = entries[best->first];
@@ -173,6 +175,18 @@ class YarnPlanner {
       return true;
     }
     return false;
+  }
+
+  // Where row r stops when entered at its choice: the fewest ways into a later row that can
+  // start there (none: the most there are).
+  std::size_t row_served(std::uint32_t r, std::size_t choice) const {
+    const PlannedRow& row = rows_[r];
+    CoarseVertex stop = row.closed ? top_left(row.faces[choice]) : row.stop[choice];
+    std::size_t fewest = ~std::size_t{0};
+    if (!stop.valid()) return fewest;
+    for (std::uint32_t r2 : rows_entering_at_[stop.index()])
+      if (position_[r2] > position_[r]) fewest = std::min(fewest, entry_points(r2).size());
+    return fewest;
   }
 
   std::uint32_t fixed_chain_at(CoarseVertex v) const {
