@@ -11,8 +11,9 @@
 //   where pairs of short rows turn (sr4/sr5 faces, paper §3.3): turning where the wide side
 //   needs rows, spread evenly between the passing rows; rows knit in the round never cross
 //   the shift-path backwards.
-// - Closed coarse rows get a shift-path along a coarse side edge, continued from the tube
-//   below where possible, so one tube is one chain (paper §3.1).
+// - Closed coarse rows get a shift-path along a coarse side edge, open rows an end to enter
+//   at, chained so that the yarn stopping at the top of a row goes on into one row above
+//   (yarn_plan.hpp): one chain, one yarn (paper §3.1, §4.2).
 #pragma once
 
 #include <cstdint>
