@@ -78,8 +78,9 @@ class ShiftPaths {
         mark(e, option);
   }
 
-  // A path starts at every marked edge that no round below ends its own path at (where tubes
-  // meet, several rounds end at one corner; the path goes on from the one that is marked).
+  // A path starts at every marked edge that no row below ends its own path at (where tubes
+  // meet, several rounds end at one corner; the path goes on from the one that is marked; in
+  // a ring with short rows, the path goes on through the rows that cross it).
   void count_paths() {
     auto is_path_edge = [&](Edge c) { return path_edge_[row_of(c)] == c; };
     for (Edge e : path_edge_)
@@ -93,9 +94,9 @@ class ShiftPaths {
 
   std::uint32_t row_of(Edge e) const { return m_.row[m_.face(m_.halfedge(e))]; }
 
-  // The wale edge of another round that continues the path from e's top end (up) or bottom
-  // end (down), the first that `accept` takes; invalid where the path cannot go on (a
-  // decrease or increase spans that corner).
+  // The wale edge of another round or short row that continues the path from e's top end
+  // (up) or bottom end (down), the first that `accept` takes; invalid where the path cannot
+  // go on (a decrease or increase spans that corner).
   template <class Accept>
   Edge next_on_path(Edge e, bool up, Accept accept) const {
     Halfedge h = m_.halfedge(e);
@@ -104,14 +105,14 @@ class ShiftPaths {
     for (Halfedge out : m_.outgoing(v))
       for (Halfedge c : {out, m_.prev(out)}) {
         if (!is_course_link(m_, c) || m_.edge(c) == e ||
-            kinds_[m_.row[m_.face(c)]] != RowKind::closed)
+            kinds_[m_.row[m_.face(c)]] == RowKind::open)
           continue;
         if ((up ? m_.wale_bottom(c) : m_.wale_top(c)) == v && accept(m_.edge(c))) return m_.edge(c);
       }
     return {};
   }
-  Edge next_on_path(Edge e, bool up) const {
-    return next_on_path(e, up, [](Edge) { return true; });
+  Edge next_on_path(Edge e, bool up) const {  // through rounds only
+    return next_on_path(e, up, [&](Edge c) { return kinds_[row_of(c)] == RowKind::closed; });
   }
 
   // Each path's option says which way its rounds run; the rows of a path whose labelled
