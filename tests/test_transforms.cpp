@@ -8,6 +8,10 @@
 #include "builtin_targets.hpp"
 #include "common/error.hpp"
 #include "fixtures.hpp"
+#include "labeling/labeling.hpp"
+#include "labeling/project.hpp"
+#include "labeling/shapes.hpp"
+#include "labeling/stitch_generation.hpp"
 #include "mesh/generate.hpp"
 
 namespace skein {
@@ -278,6 +282,22 @@ TEST(ShortRows, PairTurnsAtAShortRowFaceOnOneYarn) {
     EXPECT_EQ(g.loops_made_by(6).size(), turn == StitchType::sr4 ? 1u : 2u);
     EXPECT_NE(check_report(c).find("rows: 5 (closed 0, open 3, short 2)"), std::string::npos)
         << check_report(c);
+  }
+}
+
+// A heel round stops, turns twice and comes back to where it began: its short rows close on
+// themselves, so without a mark they would be a ring of yarn with no end. Socks generated with
+// their marks erased must get a path through the heel from skein, still on one yarn (§3.3).
+TEST(ShortRows, HeelRingsInATubeAreJoinedToTheHelixWithoutMarks) {
+  for (double size : {12.0, 19.0, 27.0, 41.0}) {
+    SCOPED_TRACE(size);
+    Shape s = make_shape("sock", {size, size * 0.8, size * 0.7}, "sock");
+    Project p = parse_project(s.project, "sock.yaml");
+    StitchMesh mesh = generate_stitch_mesh(s.mesh, label_coarse_mesh(s.mesh, p), p).mesh;
+    for (Edge e : mesh.edges()) mesh.shift_path[e] = kNotShifted;
+    Compilation c = proven(std::move(mesh), "sock without marks");
+    EXPECT_EQ(c.yarns.size(), 1u) << check_report(c);
+    EXPECT_GT(std::count(c.knit.row_shape.begin(), c.knit.row_shape.end(), RowShape::short_row), 0);
   }
 }
 

@@ -22,10 +22,12 @@ class ShiftPaths {
       : m_(m),
         kinds_(row_kinds(m)),
         path_edge_(kinds_.size(), Edge()),
+        ring_of_row_(kinds_.size(), kNoRing),
         reversed_(kinds_.size(), 0) {}
 
   ShiftPathSummary run() && {
     check_marks();
+    find_short_row_rings();
     extend_given_paths();
     place_missing_paths();
     count_paths();
@@ -53,6 +55,40 @@ class ShiftPaths {
     }
   }
 
+  // Short rows between rounds can close on themselves (a heel round that turns twice and comes
+  // back to where it began): such a ring of rows needs one cut, like a round, or its yarn has
+  // no end. Each face lies on one yarn chain or ring, so every face is walked once.
+  void find_short_row_rings() {
+    std::vector<std::uint8_t> seen(m_.num_faces(), 0);
+    std::vector<std::uint32_t> rows;
+    for (Face f : m_.faces()) {
+      if (kinds_[m_.row[f]] != RowKind::short_row || seen[f.index()]) continue;
+      rows.clear();
+      Face g = f;
+      do {
+        seen[g.index()] = 1;
+        if (rows.empty() || rows.back() != m_.row[g]) rows.push_back(m_.row[g]);
+        g = next_along_yarn(g);
+      } while (g.valid() && g != f && !seen[g.index()]);
+      if (g == f) add_ring(rows);
+    }
+  }
+
+  // The next stitch of g's row, across a marked edge too; invalid at a border.
+  Face next_along_yarn(Face g) const {
+    Halfedge t = m_.twin(m_.wale_out(g));
+    return t.valid() && m_.role[t] == EdgeRole::wale_in ? m_.face(t) : Face();
+  }
+
+  void add_ring(const std::vector<std::uint32_t>& rows) {
+    auto ring = static_cast<std::uint32_t>(ring_cut_.size());
+    ring_cut_.push_back(0);
+    for (std::uint32_t row : rows) {
+      ring_of_row_[row] = ring;
+      if (path_edge_[row].valid()) ring_cut_[ring] = 1;
+    }
+  }
+
   // One marked edge identifies a whole path: follow it up and down through unmarked rounds.
   void extend_given_paths() {
     std::vector<Edge> given;
@@ -63,7 +99,7 @@ class ShiftPaths {
 
   void place_missing_paths() {
     for (Face f : m_.faces()) {  // faces in order: lowest unmarked round first
-      if (kinds_[m_.row[f]] != RowKind::closed || path_edge_[m_.row[f]].valid()) continue;
+      if (!needs_path(m_.row[f]) || is_cut(m_.row[f])) continue;
       Edge start = m_.edge(m_.wale_in(f));
       mark(start, kShiftUpRight);
       trace(start, kShiftUpRight);
@@ -73,7 +109,7 @@ class ShiftPaths {
 
   void trace(Edge start, ShiftOption option) {
     for (bool up : {true, false})
-      for (Edge e = next_on_path(start, up); e.valid() && !path_edge_[row_of(e)].valid();
+      for (Edge e = next_on_path(start, up); e.valid() && !is_cut(row_of(e));
            e = next_on_path(e, up))
         mark(e, option);
   }
@@ -90,6 +126,16 @@ class ShiftPaths {
   void mark(Edge e, ShiftOption option) {
     m_.shift_path[e] = option;
     path_edge_[row_of(e)] = e;
+    if (in_ring(row_of(e))) ring_cut_[ring_of_row_[row_of(e)]] = 1;
+  }
+
+  bool in_ring(std::uint32_t row) const { return ring_of_row_[row] != kNoRing; }
+  bool needs_path(std::uint32_t row) const {
+    return kinds_[row] == RowKind::closed || in_ring(row);
+  }
+  // A round is cut by its own path edge; a ring of short rows by one edge on any of its rows.
+  bool is_cut(std::uint32_t row) const {
+    return path_edge_[row].valid() || (in_ring(row) && ring_cut_[ring_of_row_[row]]);
   }
 
   std::uint32_t row_of(Edge e) const { return m_.row[m_.face(m_.halfedge(e))]; }
@@ -102,20 +148,19 @@ class ShiftPaths {
     if (!v.valid()) return {};
     for (Halfedge out : m_.outgoing(v))
       for (Halfedge c : {out, m_.prev(out)}) {
-        if (!is_course_link(m_, c) || m_.edge(c) == e ||
-            kinds_[m_.row[m_.face(c)]] != RowKind::closed)
-          continue;
+        if (!is_course_link(m_, c) || m_.edge(c) == e || !needs_path(m_.row[m_.face(c)])) continue;
         if ((up ? m_.wale_bottom(c) : m_.wale_top(c)) == v) return m_.edge(c);
       }
     return {};
   }
 
   // Each path's option says which way its rounds run; the rows of a path whose labelled
-  // direction disagrees are turned, all of a path's rows alike.
+  // direction disagrees are turned, all of a path's rows alike. A ring of short rows keeps its
+  // directions: its turns fix them.
   void apply_options() {
     for (std::uint32_t row = 0; row < kinds_.size(); ++row) {
       Edge e = path_edge_[row];
-      if (!e.valid()) continue;
+      if (!e.valid() || in_ring(row)) continue;
       auto option = static_cast<ShiftOption>(m_.shift_path[e]);
       if (runs_left_to_right(option) != labelled_left_to_right(e)) reverse(row);
     }
@@ -146,7 +191,10 @@ class ShiftPaths {
 
   StitchMesh& m_;
   std::vector<RowKind> kinds_;
-  std::vector<Edge> path_edge_;  // per row: the shift-path edge that cuts it
+  static constexpr std::uint32_t kNoRing = ~std::uint32_t{0};
+  std::vector<Edge> path_edge_;             // per row: the shift-path edge that cuts it
+  std::vector<std::uint32_t> ring_of_row_;  // per short row: the ring of short rows it is on
+  std::vector<std::uint8_t> ring_cut_;      // per ring: cut by a path edge yet
   std::vector<std::uint8_t> reversed_;
   ShiftPathSummary summary_;
 };
