@@ -253,6 +253,22 @@ TEST(ShiftPath, TwoMarksOnOneRoundAreRejected) {
   }
 }
 
+// An edited mesh: the second round's mark moved one stitch over, away from where the path
+// coming up from the first round goes on.
+TEST(ShiftPath, AMarkThatBreaksAPathIsRejected) {
+  StitchMesh mesh = tube_marked_at(ribbed_rows(6, 3, {T::k}), {0});
+  mesh.shift_path[mesh.edge(mesh.wale_out(Face(8)))] = kShiftUpRight;  // row 2, not on the path
+  try {
+    compile_stitch_mesh(std::move(mesh), "moved");
+    FAIL() << "expected a MeshError";
+  } catch (const MeshError& e) {
+    EXPECT_NE(std::string(e.what()).find(
+                  "is marked as the shift-path of row 2, but the path coming up from row 1"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace skein
 

@@ -28,6 +28,7 @@ class ShiftPaths {
   ShiftPathSummary run() && {
     check_marks();
     find_short_row_rings();
+    check_given_paths_chain();
     extend_given_paths();
     place_missing_paths();
     count_paths();
@@ -89,6 +90,29 @@ class ShiftPaths {
     }
   }
 
+  // Where a path coming up could go on into the next round, a mark elsewhere on that round with
+  // no path below it breaks the helix for no reason: an edited mesh whose marks were not moved.
+  void check_given_paths_chain() const {
+    for (Edge e : path_edge_) {
+      if (!e.valid()) continue;
+      Edge up = next_on_path(e, /*up=*/true);
+      if (!up.valid()) continue;
+      Edge there = path_edge_[row_of(up)];
+      if (!there.valid() || there == up || has_path_below(there)) continue;
+      throw MeshError(fmt::format(
+          "{} is marked as the shift-path of row {}, but the path coming up from row {} ({}) "
+          "goes on at {}; expected the marks of a path to chain, one per round, each starting "
+          "where the one below ends (move the mark to {}, or remove it and let skein place it)",
+          describe(m_, there), row_of(there) + 1, row_of(e) + 1, describe(m_, e), describe(m_, up),
+          describe(m_, up)));
+    }
+  }
+
+  bool has_path_below(Edge e) const {
+    Edge below = next_on_path(e, /*up=*/false);
+    return below.valid() && path_edge_[row_of(below)] == below;
+  }
+
   // One marked edge identifies a whole path: follow it up and down through unmarked rounds.
   void extend_given_paths() {
     std::vector<Edge> given;
@@ -116,11 +140,8 @@ class ShiftPaths {
 
   // A path starts at every marked edge whose round below does not continue into it.
   void count_paths() {
-    for (Edge e : path_edge_) {
-      if (!e.valid()) continue;
-      Edge below = next_on_path(e, /*up=*/false);
-      if (!below.valid() || path_edge_[row_of(below)] != below) ++summary_.paths;
-    }
+    for (Edge e : path_edge_)
+      if (e.valid() && !has_path_below(e)) ++summary_.paths;
   }
 
   void mark(Edge e, ShiftOption option) {
