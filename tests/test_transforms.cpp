@@ -33,6 +33,16 @@ Compilation proven(StitchMesh mesh, const std::string& name) {
   return c;
 }
 
+// Compiling `mesh` must fail with a MeshError whose message contains `expected`.
+void expect_mesh_error(StitchMesh mesh, const std::string& name, const std::string& expected) {
+  try {
+    compile_stitch_mesh(std::move(mesh), name);
+    FAIL() << "expected a MeshError";
+  } catch (const MeshError& e) {
+    EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+  }
+}
+
 std::size_t count_type(const KnitGraph& g, StitchType t) {
   return static_cast<std::size_t>(std::count(g.type.begin(), g.type.end(), t));
 }
@@ -139,15 +149,8 @@ TEST(YarnChoice, OneGroupAskingForTwoYarnsIsRejected) {
   StitchMesh mesh = testing::join_mesh(Kind::extra);
   Halfedge h = mesh.halfedge(mesh.find_edge(Vertex(9), Vertex(10)));
   mesh.mismatch_yarn[mesh.edge(h)] = {Kind::own, mesh.face(h)};
-  try {
-    compile_stitch_mesh(std::move(mesh), "conflict");
-    FAIL() << "expected a MeshError";
-  } catch (const MeshError& e) {
-    EXPECT_NE(std::string(e.what()).find(
-                  "belong to one joining mismatch group but ask for different yarns"),
-              std::string::npos)
-        << e.what();
-  }
+  expect_mesh_error(std::move(mesh), "conflict",
+                    "belong to one joining mismatch group but ask for different yarns");
 }
 
 }  // namespace
@@ -231,26 +234,13 @@ TEST(ShiftPath, OptionsThatRunTheOtherWayTurnTheRounds) {
 TEST(ShiftPath, MarkOnAnOpenRowIsRejected) {
   StitchMesh mesh = build_from_rows(ribbed_rows(4, 2, {T::k}), Layout::sheet);
   mesh.shift_path[mesh.edge(mesh.wale_out(Face(5)))] = kShiftUpRight;  // inside row 2
-  try {
-    compile_stitch_mesh(std::move(mesh), "open");
-    FAIL() << "expected a MeshError";
-  } catch (const MeshError& e) {
-    EXPECT_NE(std::string(e.what()).find("is marked as a shift-path, but row 2 is an open row"),
-              std::string::npos)
-        << e.what();
-  }
+  expect_mesh_error(std::move(mesh), "open", "is marked as a shift-path, but row 2 is an open row");
 }
 
 TEST(ShiftPath, TwoMarksOnOneRoundAreRejected) {
   StitchMesh mesh = tube_marked_at(ribbed_rows(6, 2, {T::k}), {1});
   mesh.shift_path[mesh.edge(mesh.wale_out(Face(8)))] = kShiftUpRight;
-  try {
-    compile_stitch_mesh(std::move(mesh), "two");
-    FAIL() << "expected a MeshError";
-  } catch (const MeshError& e) {
-    EXPECT_NE(std::string(e.what()).find("row 2 is cut by two shift-path edges"), std::string::npos)
-        << e.what();
-  }
+  expect_mesh_error(std::move(mesh), "two", "row 2 is cut by two shift-path edges");
 }
 
 // An edited mesh: the second round's mark moved one stitch over, away from where the path
@@ -258,15 +248,8 @@ TEST(ShiftPath, TwoMarksOnOneRoundAreRejected) {
 TEST(ShiftPath, AMarkThatBreaksAPathIsRejected) {
   StitchMesh mesh = tube_marked_at(ribbed_rows(6, 3, {T::k}), {0});
   mesh.shift_path[mesh.edge(mesh.wale_out(Face(8)))] = kShiftUpRight;  // row 2, not on the path
-  try {
-    compile_stitch_mesh(std::move(mesh), "moved");
-    FAIL() << "expected a MeshError";
-  } catch (const MeshError& e) {
-    EXPECT_NE(std::string(e.what()).find(
-                  "is marked as the shift-path of row 2, but the path coming up from row 1"),
-              std::string::npos)
-        << e.what();
-  }
+  expect_mesh_error(std::move(mesh), "moved",
+                    "is marked as the shift-path of row 2, but the path coming up from row 1");
 }
 
 }  // namespace
