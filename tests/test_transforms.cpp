@@ -259,7 +259,7 @@ namespace skein {
 namespace {
 
 TEST(ShortRows, PairTurnsAtAShortRowFaceOnOneYarn) {
-  for (StitchType turn : {StitchType::sr4, StitchType::sr5}) {
+  for (StitchType turn : {StitchType::sr4, StitchType::sr5, StitchType::srn}) {
     Compilation c = proven(testing::short_row_mesh(turn), "short rows");
     const KnitGraph& g = c.knit;
     EXPECT_EQ(c.yarns.size(), 1u);
@@ -278,7 +278,10 @@ TEST(ShortRows, PairTurnsAtAShortRowFaceOnOneYarn) {
     // The short-row face consumes the loop of the stitch below it and feeds the full row.
     ASSERT_EQ(g.loops_taken_by(6).size(), 1u);
     EXPECT_EQ(g.loops[g.loops_taken_by(6)[0]].maker, 1u);
-    EXPECT_EQ(g.loops_made_by(6).size(), turn == StitchType::sr4 ? 1u : 2u);
+    // One loop per top edge: sr5 and srn make more stitches at the turn (no hole).
+    EXPECT_EQ(g.loops_made_by(6).size(), turn == StitchType::sr4   ? 1u
+                                         : turn == StitchType::sr5 ? 2u
+                                                                   : 3u);
     EXPECT_NE(check_report(c).find("rows: 5 (closed 0, open 3, short 2)"), std::string::npos)
         << check_report(c);
   }
