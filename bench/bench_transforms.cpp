@@ -6,6 +6,10 @@
 #include <map>
 
 #include "knitgraph/from_mesh.hpp"
+#include "labeling/labeling.hpp"
+#include "labeling/project.hpp"
+#include "labeling/shapes.hpp"
+#include "labeling/stitch_generation.hpp"
 #include "mesh/generate.hpp"
 #include "transforms/mismatches.hpp"
 #include "transforms/shift_paths.hpp"
@@ -13,17 +17,28 @@
 namespace skein {
 namespace {
 
-enum class Model { tube, short_rows, joined, split };
+enum class Model { tube, sock, short_rows, joined, split };
 
-// Roughly `stitches` stitches: a square tube without shift-path marks, a square short-row sheet,
-// or two square sheets meeting on a join or split line of extra-yarn 3nbo or cast-ons.
+// A `skein new sock` scaled to roughly `stitches` stitches (4,606 at 20 cm by 15 cm).
+StitchMesh sock(std::uint32_t stitches) {
+  double scale = std::sqrt(stitches / 4606.0);
+  Shape s = make_shape("sock", {20 * scale, 0, 15 * scale}, "sock");
+  Project p = parse_project(s.project, "sock.yaml");
+  return generate_stitch_mesh(s.mesh, label_coarse_mesh(s.mesh, p), p).mesh;
+}
+
+// Roughly `stitches` stitches: a square tube or a sock (its heel rounds are rings of short
+// rows) without shift-path marks, a square short-row sheet, or two square sheets meeting on a
+// join or split line of extra-yarn 3nbo or cast-ons.
 const StitchMesh& model(Model kind, std::uint32_t stitches) {
   static std::map<std::pair<Model, std::uint32_t>, StitchMesh> cache;
   auto [it, added] = cache.try_emplace({kind, stitches});
   if (added) {
     auto side = static_cast<std::uint32_t>(std::sqrt(static_cast<double>(stitches)));
-    if (kind == Model::tube) {
-      it->second = build_from_rows(ribbed_rows(side, side, {StitchType::k}), Layout::tube);
+    if (kind == Model::tube || kind == Model::sock) {
+      it->second = kind == Model::sock
+                       ? sock(stitches)
+                       : build_from_rows(ribbed_rows(side, side, {StitchType::k}), Layout::tube);
       for (Edge e : it->second.edges()) it->second.shift_path[e] = kNotShifted;  // placed anew
     } else if (kind == Model::short_rows) {
       it->second = short_row_sheet(side, side * 2 / 3, 1);
@@ -64,6 +79,7 @@ void sizes(benchmark::internal::Benchmark* b) {
 }
 
 BENCHMARK_CAPTURE(BM_TransformShiftPaths, tube, Model::tube)->Apply(sizes);
+BENCHMARK_CAPTURE(BM_TransformShiftPaths, sock, Model::sock)->Apply(sizes);
 BENCHMARK_CAPTURE(BM_TransformMismatches, short_rows, Model::short_rows)->Apply(sizes);
 BENCHMARK_CAPTURE(BM_TransformMismatches, joined, Model::joined)->Apply(sizes);
 BENCHMARK_CAPTURE(BM_TransformMismatches, split, Model::split)->Apply(sizes);

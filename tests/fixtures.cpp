@@ -127,16 +127,34 @@ StitchMesh short_row_mesh(StitchType turn) {
   };
   for (float x = 0; x < 4; ++x) face({{x, 0}, {x + 1, 0}, {x + 1, 1}, {x, 1}}, "boti", T::co);
   for (float x = 2; x < 4; ++x) face({{x, 1}, {x + 1, 1}, {x + 1, 2}, {x, 2}}, "bito", T::k);
+  // The turn's top run: one edge (sr4), two (sr5) or three (srn, Fig. 10c) up the diagonal.
+  constexpr float third = 1.0f / 3;
   if (turn == T::sr4)
     face({{1, 1}, {2, 1}, {2, 2}, {2, 3}}, "biot", T::sr4);
-  else
+  else if (turn == T::sr5)
     face({{1, 1}, {2, 1}, {2, 2}, {2, 3}, {1.5f, 2}}, "biott", turn);
+  else
+    face({{1, 1},
+          {2, 1},
+          {2, 2},
+          {2, 3},
+          {1 + 2 * third, 1 + 4 * third},
+          {1 + third, 1 + 2 * third}},
+         "biottt", turn);
   for (float x = 2; x < 4; ++x) face({{x, 2}, {x + 1, 2}, {x + 1, 3}, {x, 3}}, "boti", T::k);
   face({{0, 1}, {1, 1}, {1, 4}, {0, 4}}, "bito", T::k);
   if (turn == T::sr4)
     face({{1, 1}, {2, 3}, {2, 4}, {1, 4}}, "bito", T::k);
-  else
+  else if (turn == T::sr5)
     face({{1, 1}, {1.5f, 2}, {2, 3}, {2, 4}, {1, 4}}, "bbito", T::k2tog);
+  else
+    face({{1, 1},
+          {1 + third, 1 + 2 * third},
+          {1 + 2 * third, 1 + 4 * third},
+          {2, 3},
+          {2, 4},
+          {1, 4}},
+         "bbbito", T::s2kp);
   for (float x = 2; x < 4; ++x) face({{x, 3}, {x + 1, 3}, {x + 1, 4}, {x, 4}}, "bito", T::k);
   for (float x = 0; x < 4; ++x) face({{x, 4}, {x + 1, 4}, {x + 1, 5}, {x, 5}}, "boti", T::bo);
   return std::move(builder).build();

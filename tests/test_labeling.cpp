@@ -412,17 +412,6 @@ TEST(Generation, SkeinNewShapesAreKnittableAtSeveralSizes) {
     }
 }
 
-TEST(Generation, AShortRowHeelDoesNotCutTheShiftPath) {
-  // The heel's rounds turn in short rows; the path goes on through the rows that cross it, so
-  // `skein check` counts one path for the sock's one yarn.
-  Shape s = make_shape("sock", {}, "sock");
-  Project p = parse_project(s.project, "sock.yaml");
-  GeneratedStitchMesh g = generate_stitch_mesh(s.mesh, label_coarse_mesh(s.mesh, p), p);
-  Compilation c = compile_stitch_mesh(std::move(g.mesh), "sock");
-  EXPECT_EQ(c.shift_paths.paths, 1u);
-  EXPECT_EQ(c.yarns.size(), 1u);
-}
-
 TEST(Generation, EveryShapeOfSkeinNewGeneratesAValidStitchMesh) {
   for (const std::string& kind : shape_kinds()) {
     SCOPED_TRACE(kind);

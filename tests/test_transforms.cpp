@@ -8,6 +8,10 @@
 #include "builtin_targets.hpp"
 #include "common/error.hpp"
 #include "fixtures.hpp"
+#include "labeling/labeling.hpp"
+#include "labeling/project.hpp"
+#include "labeling/shapes.hpp"
+#include "labeling/stitch_generation.hpp"
 #include "mesh/generate.hpp"
 
 namespace skein {
@@ -27,6 +31,16 @@ Compilation proven(StitchMesh mesh, const std::string& name) {
   VerifyReport report = registry.simulator_for("schedule")->verify(out.str(), name, &c, {});
   EXPECT_TRUE(report.proven) << report.summary;
   return c;
+}
+
+// Compiling `mesh` must fail with a MeshError whose message contains `expected`.
+void expect_mesh_error(StitchMesh mesh, const std::string& name, const std::string& expected) {
+  try {
+    compile_stitch_mesh(std::move(mesh), name);
+    FAIL() << "expected a MeshError";
+  } catch (const MeshError& e) {
+    EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+  }
 }
 
 std::size_t count_type(const KnitGraph& g, StitchType t) {
@@ -149,15 +163,8 @@ TEST(YarnChoice, OneGroupAskingForTwoYarnsIsRejected) {
   StitchMesh mesh = testing::join_mesh(Kind::extra);
   Halfedge h = mesh.halfedge(mesh.find_edge(Vertex(9), Vertex(10)));
   mesh.mismatch_yarn[mesh.edge(h)] = {Kind::own, mesh.face(h)};
-  try {
-    compile_stitch_mesh(std::move(mesh), "conflict");
-    FAIL() << "expected a MeshError";
-  } catch (const MeshError& e) {
-    EXPECT_NE(std::string(e.what()).find(
-                  "belong to one joining mismatch group but ask for different yarns"),
-              std::string::npos)
-        << e.what();
-  }
+  expect_mesh_error(std::move(mesh), "conflict",
+                    "belong to one joining mismatch group but ask for different yarns");
 }
 
 }  // namespace
@@ -241,26 +248,22 @@ TEST(ShiftPath, OptionsThatRunTheOtherWayTurnTheRounds) {
 TEST(ShiftPath, MarkOnAnOpenRowIsRejected) {
   StitchMesh mesh = build_from_rows(ribbed_rows(4, 2, {T::k}), Layout::sheet);
   mesh.shift_path[mesh.edge(mesh.wale_out(Face(5)))] = kShiftUpRight;  // inside row 2
-  try {
-    compile_stitch_mesh(std::move(mesh), "open");
-    FAIL() << "expected a MeshError";
-  } catch (const MeshError& e) {
-    EXPECT_NE(std::string(e.what()).find("is marked as a shift-path, but row 2 is an open row"),
-              std::string::npos)
-        << e.what();
-  }
+  expect_mesh_error(std::move(mesh), "open", "is marked as a shift-path, but row 2 is an open row");
 }
 
 TEST(ShiftPath, TwoMarksOnOneRoundAreRejected) {
   StitchMesh mesh = tube_marked_at(ribbed_rows(6, 2, {T::k}), {1});
   mesh.shift_path[mesh.edge(mesh.wale_out(Face(8)))] = kShiftUpRight;
-  try {
-    compile_stitch_mesh(std::move(mesh), "two");
-    FAIL() << "expected a MeshError";
-  } catch (const MeshError& e) {
-    EXPECT_NE(std::string(e.what()).find("row 2 is cut by two shift-path edges"), std::string::npos)
-        << e.what();
-  }
+  expect_mesh_error(std::move(mesh), "two", "row 2 is cut by two shift-path edges");
+}
+
+// An edited mesh: the second round's mark moved one stitch over, away from where the path
+// coming up from the first round goes on.
+TEST(ShiftPath, AMarkThatBreaksAPathIsRejected) {
+  StitchMesh mesh = tube_marked_at(ribbed_rows(6, 3, {T::k}), {0});
+  mesh.shift_path[mesh.edge(mesh.wale_out(Face(8)))] = kShiftUpRight;  // row 2, not on the path
+  expect_mesh_error(std::move(mesh), "moved",
+                    "is marked as the shift-path of row 2, but the path coming up from row 1");
 }
 
 }  // namespace
@@ -270,7 +273,7 @@ namespace skein {
 namespace {
 
 TEST(ShortRows, PairTurnsAtAShortRowFaceOnOneYarn) {
-  for (StitchType turn : {StitchType::sr4, StitchType::sr5}) {
+  for (StitchType turn : {StitchType::sr4, StitchType::sr5, StitchType::srn}) {
     Compilation c = proven(testing::short_row_mesh(turn), "short rows");
     const KnitGraph& g = c.knit;
     EXPECT_EQ(c.yarns.size(), 1u);
@@ -289,9 +292,28 @@ TEST(ShortRows, PairTurnsAtAShortRowFaceOnOneYarn) {
     // The short-row face consumes the loop of the stitch below it and feeds the full row.
     ASSERT_EQ(g.loops_taken_by(6).size(), 1u);
     EXPECT_EQ(g.loops[g.loops_taken_by(6)[0]].maker, 1u);
-    EXPECT_EQ(g.loops_made_by(6).size(), turn == StitchType::sr4 ? 1u : 2u);
+    // One loop per top edge: sr5 and srn make more stitches at the turn (no hole).
+    EXPECT_EQ(g.loops_made_by(6).size(), turn == StitchType::sr4   ? 1u
+                                         : turn == StitchType::sr5 ? 2u
+                                                                   : 3u);
     EXPECT_NE(check_report(c).find("rows: 5 (closed 0, open 3, short 2)"), std::string::npos)
         << check_report(c);
+  }
+}
+
+// A heel round stops, turns twice and comes back to where it began: its short rows close on
+// themselves, so without a mark they would be a ring of yarn with no end. Socks generated with
+// their marks erased must get a path through the heel from skein, still on one yarn (§3.3).
+TEST(ShortRows, HeelRingsInATubeAreJoinedToTheHelixWithoutMarks) {
+  for (double size : {12.0, 19.0, 27.0, 41.0}) {
+    SCOPED_TRACE(size);
+    Shape s = make_shape("sock", {size, size * 0.8, size * 0.7}, "sock");
+    Project p = parse_project(s.project, "sock.yaml");
+    StitchMesh mesh = generate_stitch_mesh(s.mesh, label_coarse_mesh(s.mesh, p), p).mesh;
+    for (Edge e : mesh.edges()) mesh.shift_path[e] = kNotShifted;
+    Compilation c = proven(std::move(mesh), "sock without marks");
+    EXPECT_EQ(c.yarns.size(), 1u) << check_report(c);
+    EXPECT_GT(std::count(c.knit.row_shape.begin(), c.knit.row_shape.end(), RowShape::short_row), 0);
   }
 }
 

@@ -22,10 +22,13 @@ class ShiftPaths {
       : m_(m),
         kinds_(row_kinds(m)),
         path_edge_(kinds_.size(), Edge()),
+        ring_of_row_(kinds_.size(), kNoRing),
         reversed_(kinds_.size(), 0) {}
 
   ShiftPathSummary run() && {
     check_marks();
+    find_short_row_rings();
+    check_given_paths_chain();
     extend_given_paths();
     place_missing_paths();
     count_paths();
@@ -53,6 +56,84 @@ class ShiftPaths {
     }
   }
 
+  // Short rows between rounds can close on themselves (a heel round that turns twice and comes
+  // back to where it began): such a ring of rows needs one cut, like a round, or its yarn has
+  // no end. Each face lies on one yarn chain or ring, so every face is walked once.
+  void find_short_row_rings() {
+    std::vector<std::uint8_t> seen(m_.num_faces(), 0);
+    std::vector<std::uint32_t> rows;
+    for (Face f : m_.faces()) {
+      if (kinds_[m_.row[f]] != RowKind::short_row || seen[f.index()]) continue;
+      rows.clear();
+      Face g = f;
+      do {
+        seen[g.index()] = 1;
+        if (rows.empty() || rows.back() != m_.row[g]) rows.push_back(m_.row[g]);
+        g = next_along_yarn(g);
+      } while (g.valid() && g != f && !seen[g.index()]);
+      if (g == f) add_ring(rows);
+    }
+  }
+
+  // The next stitch of g's row, across a marked edge too; invalid at a border.
+  Face next_along_yarn(Face g) const {
+    Halfedge t = m_.twin(m_.wale_out(g));
+    return t.valid() && m_.role[t] == EdgeRole::wale_in ? m_.face(t) : Face();
+  }
+
+  void add_ring(const std::vector<std::uint32_t>& rows) {
+    auto ring = static_cast<std::uint32_t>(ring_cut_.size());
+    ring_cut_.push_back(0);
+    for (std::uint32_t row : rows) {
+      ring_of_row_[row] = ring;
+      if (path_edge_[row].valid()) ring_cut_[ring] = 1;
+    }
+  }
+
+  // Where a path coming up could go on into the next round, a mark elsewhere on that round with
+  // no yarn arriving at it breaks the helix for no reason: an edited mesh whose marks were not
+  // moved. (Where tubes meet, a path may end in a row of open rows, and a round be started by
+  // the yarn of another: both are chained by yarn that stops and starts at a corner.)
+  void check_given_paths_chain() const {
+    for (Edge e : path_edge_) {
+      if (!e.valid()) continue;
+      Edge up = next_on_path(e, /*up=*/true);
+      if (!up.valid()) continue;
+      Edge there = path_edge_[row_of(up)];
+      if (!there.valid() || there == up || has_path_below(there) ||
+          open_row_ends_at(m_.wale_bottom(m_.halfedge(there))) ||
+          open_row_starts_at(m_.wale_top(m_.halfedge(e))))
+        continue;
+      throw MeshError(fmt::format(
+          "{} is marked as the shift-path of row {}, but the path coming up from row {} ({}) "
+          "goes on at {}; expected the marks of a path to chain, one per round, each starting "
+          "where the one below ends (move the mark to {}, or remove it and let skein place it)",
+          describe(m_, there), row_of(there) + 1, row_of(e) + 1, describe(m_, e), describe(m_, up),
+          describe(m_, up)));
+    }
+  }
+
+  // Does an open row's yarn stop (start) at v: a stitch whose yarn leaves (enters) there without
+  // going on to (coming from) a stitch of its row?
+  bool open_row_ends_at(Vertex v) const { return open_row_turns_at(v, EdgeRole::wale_out); }
+  bool open_row_starts_at(Vertex v) const { return open_row_turns_at(v, EdgeRole::wale_in); }
+  bool open_row_turns_at(Vertex v, EdgeRole role) const {
+    if (!v.valid()) return false;
+    for (Halfedge out : m_.outgoing(v))
+      for (Halfedge c : {out, m_.prev(out)}) {
+        if (m_.role[c] != role || kinds_[m_.row[m_.face(c)]] != RowKind::open) continue;
+        Vertex end = role == EdgeRole::wale_out ? m_.wale_top(c) : m_.wale_bottom(c);
+        if (end == v && !is_course_link(m_, c)) return true;
+      }
+    return false;
+  }
+
+  // Where tubes meet, several rounds end at one corner: the path goes on from the marked one.
+  bool has_path_below(Edge e) const {
+    return next_on_path(e, /*up=*/false, [&](Edge c) { return path_edge_[row_of(c)] == c; })
+        .valid();
+  }
+
   // One marked edge identifies a whole path: follow it up and down through unmarked rounds.
   void extend_given_paths() {
     std::vector<Edge> given;
@@ -63,7 +144,7 @@ class ShiftPaths {
 
   void place_missing_paths() {
     for (Face f : m_.faces()) {  // faces in order: lowest unmarked round first
-      if (kinds_[m_.row[f]] != RowKind::closed || path_edge_[m_.row[f]].valid()) continue;
+      if (!needs_path(m_.row[f]) || is_cut(m_.row[f])) continue;
       Edge start = m_.edge(m_.wale_in(f));
       mark(start, kShiftUpRight);
       trace(start, kShiftUpRight);
@@ -73,30 +154,37 @@ class ShiftPaths {
 
   void trace(Edge start, ShiftOption option) {
     for (bool up : {true, false})
-      for (Edge e = next_on_path(start, up); e.valid() && !path_edge_[row_of(e)].valid();
+      for (Edge e = next_on_path(start, up); e.valid() && !is_cut(row_of(e));
            e = next_on_path(e, up))
         mark(e, option);
   }
 
-  // A path starts at every marked edge that no row below ends its own path at (where tubes
-  // meet, several rounds end at one corner; the path goes on from the one that is marked; in
-  // a ring with short rows, the path goes on through the rows that cross it).
+  // A path starts at every marked edge whose round below does not continue into it.
   void count_paths() {
-    auto is_path_edge = [&](Edge c) { return path_edge_[row_of(c)] == c; };
     for (Edge e : path_edge_)
-      if (e.valid() && !next_on_path(e, /*up=*/false, is_path_edge).valid()) ++summary_.paths;
+      if (e.valid() && !has_path_below(e)) ++summary_.paths;
   }
 
   void mark(Edge e, ShiftOption option) {
     m_.shift_path[e] = option;
     path_edge_[row_of(e)] = e;
+    if (in_ring(row_of(e))) ring_cut_[ring_of_row_[row_of(e)]] = 1;
+  }
+
+  bool in_ring(std::uint32_t row) const { return ring_of_row_[row] != kNoRing; }
+  bool needs_path(std::uint32_t row) const {
+    return kinds_[row] == RowKind::closed || in_ring(row);
+  }
+  // A round is cut by its own path edge; a ring of short rows by one edge on any of its rows.
+  bool is_cut(std::uint32_t row) const {
+    return path_edge_[row].valid() || (in_ring(row) && ring_cut_[ring_of_row_[row]]);
   }
 
   std::uint32_t row_of(Edge e) const { return m_.row[m_.face(m_.halfedge(e))]; }
 
-  // The wale edge of another round or short row that continues the path from e's top end
-  // (up) or bottom end (down), the first that `accept` takes; invalid where the path cannot
-  // go on (a decrease or increase spans that corner).
+  // The wale edge of another round that continues the path from e's top end (up) or bottom
+  // end (down), the first that `accept` takes; invalid where the path cannot go on (a
+  // decrease or increase spans that corner).
   template <class Accept>
   Edge next_on_path(Edge e, bool up, Accept accept) const {
     Halfedge h = m_.halfedge(e);
@@ -104,23 +192,22 @@ class ShiftPaths {
     if (!v.valid()) return {};
     for (Halfedge out : m_.outgoing(v))
       for (Halfedge c : {out, m_.prev(out)}) {
-        if (!is_course_link(m_, c) || m_.edge(c) == e ||
-            kinds_[m_.row[m_.face(c)]] == RowKind::open)
-          continue;
+        if (!is_course_link(m_, c) || m_.edge(c) == e || !needs_path(m_.row[m_.face(c)])) continue;
         if ((up ? m_.wale_bottom(c) : m_.wale_top(c)) == v && accept(m_.edge(c))) return m_.edge(c);
       }
     return {};
   }
-  Edge next_on_path(Edge e, bool up) const {  // through rounds only
-    return next_on_path(e, up, [&](Edge c) { return kinds_[row_of(c)] == RowKind::closed; });
+  Edge next_on_path(Edge e, bool up) const {
+    return next_on_path(e, up, [](Edge) { return true; });
   }
 
   // Each path's option says which way its rounds run; the rows of a path whose labelled
-  // direction disagrees are turned, all of a path's rows alike.
+  // direction disagrees are turned, all of a path's rows alike. A ring of short rows keeps its
+  // directions: its turns fix them.
   void apply_options() {
     for (std::uint32_t row = 0; row < kinds_.size(); ++row) {
       Edge e = path_edge_[row];
-      if (!e.valid()) continue;
+      if (!e.valid() || in_ring(row)) continue;
       auto option = static_cast<ShiftOption>(m_.shift_path[e]);
       if (runs_left_to_right(option) != labelled_left_to_right(e)) reverse(row);
     }
@@ -151,7 +238,10 @@ class ShiftPaths {
 
   StitchMesh& m_;
   std::vector<RowKind> kinds_;
-  std::vector<Edge> path_edge_;  // per row: the shift-path edge that cuts it
+  static constexpr std::uint32_t kNoRing = ~std::uint32_t{0};
+  std::vector<Edge> path_edge_;             // per row: the shift-path edge that cuts it
+  std::vector<std::uint32_t> ring_of_row_;  // per short row: the ring of short rows it is on
+  std::vector<std::uint8_t> ring_cut_;      // per ring: cut by a path edge yet
   std::vector<std::uint8_t> reversed_;
   ShiftPathSummary summary_;
 };

@@ -2,7 +2,8 @@
 // tube so the rounds become one helix. Marks given in the mesh are checked; closed rows left
 // without one get a path placed automatically, traced up and down from one wale edge as a user's
 // single click would, repeated until every closed row is covered (a path that starts inside an
-// increase or ends inside a decrease leaves rows for another path, Fig. 3f).
+// increase or ends inside a decrease leaves rows for another path, Fig. 3f). Short rows between
+// rounds whose yarn closes into a ring (a heel) are cut like rounds, by a path through them.
 #pragma once
 
 #include <cstdint>
