@@ -3,6 +3,7 @@
 // knittable (randomized grids and cylinders of varying radius, compiled and scheduled).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -397,6 +398,40 @@ TEST(Generation, OpenRowsBetweenTubesCarryTheYarnOn) {
                       {at(0, 1, 0), at(1, 1, 0), 0}};
   p.default_yarn = YarnHandling::extra;
   expect_generated_knittable(m, p, 2 + 2);
+}
+
+// The letter H of unit cubes (the H sample at a third of its size, without short rows): leg
+// ends knit towards the bar, the bar split off the left legs; the left junction's outer walls
+// are open rows between the lower leg's yarn and the bar's first round, and the right
+// junction's take the bar's yarn round to its join with both right legs. 4 + 1 + 1 yarns.
+TEST(Generation, LegsAndABarMeetInOpenRowsOfTheirJunctions) {
+  std::vector<Cell> cubes{{1, 2, 0}};
+  for (int x : {0, 2})
+    for (int y = 0; y < 5; ++y) cubes.push_back({x, y, 0});
+  std::vector<CoarseEdgeRef> end_edges;
+  CoarseMesh m = cube_bars(cubes, {{0, -1, 0}, {0, 5, 0}, {2, -1, 0}, {2, 5, 0}}, &end_edges);
+  auto at = [&](int x, int y, int z) {
+    auto v = std::find_if(m.position.begin(), m.position.end(), [&](Vec3 p) {
+      return p.x == float(x) && p.y == float(y) && p.z == float(z);
+    });
+    return static_cast<std::uint32_t>(v - m.position.begin());
+  };
+  auto edge = [&](std::array<int, 3> a, std::array<int, 3> b) {
+    return CoarseEdgeRef{at(a[0], a[1], a[2]), at(b[0], b[1], b[2]), 0};
+  };
+  Project p = project_with_stitch(0.25, 0.25);
+  for (const CoarseEdgeRef& e : end_edges) p.start.push_back({StartSeed::Kind::edge, e});
+  p.start.push_back({StartSeed::Kind::edge, edge({1, 2, 1}, {1, 3, 1})});  // the bar's split
+  for (int y : {2, 3})  // the junctions' outer walls end where the legs meet them
+    for (int x : {0, 3}) {
+      int inner = x == 0 ? 1 : 2;
+      p.mismatch_edges.push_back(edge({x, y, 0}, {x, y, 1}));
+      p.mismatch_edges.push_back(edge({x, y, 0}, {inner, y, 0}));
+      p.mismatch_edges.push_back(edge({x, y, 1}, {inner, y, 1}));
+    }
+  p.mismatch_edges.push_back(edge({2, 2, 1}, {2, 3, 1}));  // the bar goes round the right walls
+  p.default_yarn = YarnHandling::extra;
+  expect_generated_knittable(m, p, 4 + 2);
 }
 
 TEST(Generation, SkeinNewShapesAreKnittableAtSeveralSizes) {
