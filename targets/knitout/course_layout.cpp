@@ -26,6 +26,7 @@ bool has_machine_recipe(StitchType t) {
     case StitchType::ssk:
     case StitchType::p2tog:
     case StitchType::s2kp:
+    case StitchType::sr4:
       return true;
     default:
       return false;
@@ -39,7 +40,6 @@ void check_stitches(const KnitGraph& g) {
           g, fmt::format("the {} stitch ({})", info(g.type[s]).name, abbreviation(g.type[s])), s);
     RowShape shape = g.row_shape[g.row[s]];
     if (shape == RowShape::unknown) unsupported(g, "a stitch graph without rows (.st import)", s);
-    if (shape == RowShape::short_row) unsupported(g, "short rows", s);
   }
   for (const Loop& l : g.loops) {
     StitchId at = l.taker != kNoStitch ? l.taker : l.maker;
@@ -48,16 +48,21 @@ void check_stitches(const KnitGraph& g) {
   }
 }
 
+// A course ends where the yarn turns or crosses a shift-path. A row with short rows inside
+// (a heel's) is knit in several courses; a course never spans two rows of a sheet or tube.
 std::vector<Course> split_into_courses(const KnitGraph& g, const std::vector<StitchId>& order) {
   std::vector<Course> courses;
-  std::vector<std::uint8_t> seen(g.row_shape.size(), 0);
   for (std::uint32_t i = 0; i < order.size(); ++i) {
-    std::uint32_t row = g.row[order[i]];
-    if (courses.empty() || courses.back().row != row) {
-      if (seen[row]) unsupported(g, "a row knit in several pieces", order[i]);
-      seen[row] = 1;
-      courses.push_back({row, i, i, true});
+    StitchId s = order[i];
+    bool starts = courses.empty() || g.yarn_link[order[i - 1]] == YarnLink::turn ||
+                  g.yarn_link[order[i - 1]] == YarnLink::shift;
+    if (starts) {
+      courses.emplace_back();
+      courses.back().row = g.row[s];
+      courses.back().begin = i;
     }
+    if (!starts && g.row[s] != courses.back().row)
+      unsupported(g, "a row that ends without a turn or a shift-path", s);
     courses.back().end = i + 1;
   }
   return courses;
@@ -80,15 +85,10 @@ void check_borders(const KnitGraph& g, const CourseLayout& l) {
                           : "a bind-off stitch below the last row",
                   s);
   }
-  for (std::size_t c = 1; c < l.courses.size(); ++c) {
-    StitchId end = l.order[l.courses[c].begin - 1];
-    YarnLink link = g.yarn_link[end];
-    if (link != (l.tube ? YarnLink::shift : YarnLink::turn))
-      unsupported(g,
-                  l.tube ? "a round that does not continue the helix across a shift-path"
-                         : "a row that does not start with a turn",
-                  l.order[l.courses[c].begin]);
-  }
+  if (l.tube) return;
+  for (std::size_t c = 1; c < l.courses.size(); ++c)
+    if (g.yarn_link[l.order[l.courses[c].begin - 1]] != YarnLink::turn)
+      unsupported(g, "a row that does not start with a turn", l.order[l.courses[c].begin]);
 }
 
 template <typename F>
@@ -99,26 +99,100 @@ void each_left_to_right(const CourseLayout& l, const Course& c, F f) {
     for (std::uint32_t i = c.end; i-- > c.begin;) f(l.order[i]);
 }
 
-// Gives each course a direction, starting with `first`; returns the index of the first course
-// that does not consume the loops of the one below left to right, or 0 when all do.
-std::size_t assign_directions(const KnitGraph& g, CourseLayout& l, bool first,
-                              std::vector<std::uint32_t>& position) {
-  l.courses[0].left_to_right = first;
-  for (std::size_t c = 1; c < l.courses.size(); ++c) {
-    const Course& below = l.courses[c - 1];
-    l.courses[c].left_to_right = l.tube ? below.left_to_right : !below.left_to_right;
-    std::uint32_t p = 0;
-    each_left_to_right(l, below, [&](StitchId s) {
-      for (std::uint32_t loop : g.loops_made_by(s)) position[loop] = p++;
-    });
-    std::uint32_t expect = 0;
+// The loops on the needles, left to right along the fabric (a ring on a tube), as each course
+// takes a run of them and leaves its own loops in their place.
+class LiveLoops {
+ public:
+  explicit LiveLoops(const KnitGraph& g, bool ring) : g_(g), ring_(ring) {
+    position_.assign(g.loops.size(), 0);
+  }
+  std::size_t size() const { return live_.size(); }
+
+  // Where the loops `c` takes start among the live loops, if they are a run of them in order.
+  bool find_run(const CourseLayout& l, const Course& c, std::size_t& start, std::size_t& count) {
+    count = 0;
     bool in_order = true;
-    each_left_to_right(l, l.courses[c], [&](StitchId s) {
-      for (std::uint32_t loop : g.loops_taken_by(s)) in_order &= position[loop] == expect++;
+    each_left_to_right(l, c, [&](StitchId s) {
+      for (std::uint32_t loop : g_.loops_taken_by(s)) {
+        if (count == 0) start = position_[loop];
+        std::size_t expect = start + count++;
+        in_order &= expect < live_.size() || ring_;
+        in_order &= in_order && live_[expect % live_.size()] == loop;
+      }
     });
-    if (!in_order) return c;
+    return in_order && count > 0;
+  }
+
+  // Puts the loops `c` makes in place of the run; returns the loop waiting just beyond the
+  // course's last stitch along the yarn (kNoWrap at a sheet's edge or when nothing waits).
+  std::uint32_t replace_run(const CourseLayout& l, const Course& c, std::size_t start,
+                            std::size_t count) {
+    std::vector<std::uint32_t> next;
+    next.reserve(live_.size() + 2 * (c.end - c.begin));
+    std::size_t n = live_.size();
+    if (!ring_) next.assign(live_.begin(), live_.begin() + static_cast<std::ptrdiff_t>(start));
+    std::size_t made_begin = next.size();
+    each_left_to_right(l, c, [&](StitchId s) {
+      for (std::uint32_t loop : g_.loops_made_by(s)) next.push_back(loop);
+    });
+    std::size_t made_end = next.size();
+    // A ring restarts at the course's first loop; a row keeps what lies beyond it.
+    std::size_t rest = ring_ ? n - count : n - start - count;
+    for (std::size_t i = 0; i < rest; ++i) next.push_back(live_[(start + count + i) % n]);
+    live_.swap(next);
+    for (std::size_t i = 0; i < live_.size(); ++i) position_[live_[i]] = i;
+    if (count == n || made_end == made_begin) return kNoWrap;
+    std::size_t m = live_.size();
+    if (c.left_to_right) return made_end < m || ring_ ? live_[made_end % m] : kNoWrap;
+    return made_begin > 0 || ring_ ? live_[(made_begin + m - 1) % m] : kNoWrap;
+  }
+
+  void start(const CourseLayout& l, const Course& c) {
+    live_.clear();
+    each_left_to_right(l, c, [&](StitchId s) {
+      for (std::uint32_t loop : g_.loops_made_by(s)) live_.push_back(loop);
+    });
+    for (std::size_t i = 0; i < live_.size(); ++i) position_[live_[i]] = i;
+  }
+
+ private:
+  const KnitGraph& g_;
+  bool ring_;
+  std::vector<std::uint32_t> live_, position_;
+};
+
+// Gives each course a direction, starting with `first`: a turn reverses it, a shift-path keeps
+// it. Returns the index of the first course whose stitches do not take a run of the loops on
+// the needles in order, or 0 when all do; marks short rows and the loops their turns wrap.
+std::size_t assign_directions(const KnitGraph& g, CourseLayout& l, bool first) {
+  LiveLoops live(g, l.tube);
+  l.courses[0].left_to_right = first;
+  live.start(l, l.courses[0]);
+  for (std::size_t c = 1; c < l.courses.size(); ++c) {
+    Course& course = l.courses[c];
+    bool turned = g.yarn_link[l.order[course.begin - 1]] == YarnLink::turn;
+    course.left_to_right = l.courses[c - 1].left_to_right != turned;
+    std::size_t start = 0, count = 0;
+    if (!live.find_run(l, course, start, count)) return c;
+    course.partial = count < live.size();
+    std::uint32_t beyond = live.replace_run(l, course, start, count);
+    bool turns_next =
+        c + 1 < l.courses.size() && g.yarn_link[l.order[course.end - 1]] == YarnLink::turn;
+    course.wrap = course.partial && turns_next ? beyond : kNoWrap;
   }
   return 0;
+}
+
+// A short row is knit where its loops wait, so its stitches neither add nor remove loops.
+void check_short_rows(const KnitGraph& g, const CourseLayout& l) {
+  for (const Course& c : l.courses) {
+    if (!c.partial) continue;
+    for (std::uint32_t i = c.begin; i < c.end; ++i) {
+      const StitchTypeInfo& t = info(g.type[l.order[i]]);
+      if (t.loops_in != t.loops_out)
+        unsupported(g, "an increase, decrease or bind-off in a short row", l.order[i]);
+    }
+  }
 }
 
 }  // namespace
@@ -137,16 +211,18 @@ CourseLayout lay_out_courses(const Compilation& c) {
     if (e.kind == EventKind::stitch) l.order.push_back(e.stitch);
   l.courses = split_into_courses(g, l.order);
   l.tube = g.row_shape[l.courses.front().row] == RowShape::closed;
-  for (const Course& course : l.courses)
-    if ((g.row_shape[course.row] == RowShape::closed) != l.tube)
+  for (const Course& course : l.courses) {
+    RowShape shape = g.row_shape[course.row];
+    if (shape != RowShape::short_row && (shape == RowShape::closed) != l.tube)
       unsupported(g, "a mix of open rows and closed rounds", l.order[course.begin]);
+  }
   if (l.courses.size() < 2) unsupported(g, "a piece with fewer than two rows", l.order.front());
   check_borders(g, l);
-  std::vector<std::uint32_t> position(g.loops.size(), 0);
-  std::size_t bad = assign_directions(g, l, true, position);
-  if (bad && assign_directions(g, l, false, position))
+  std::size_t bad = assign_directions(g, l, true);
+  if (bad && assign_directions(g, l, false))
     unsupported(g, "a row whose stitches do not take the loops below in order",
                 l.order[l.courses[bad].begin]);
+  check_short_rows(g, l);
   l.left_to_right.assign(g.size(), 1);
   for (const Course& course : l.courses)
     for (std::uint32_t i = course.begin; i < course.end; ++i)

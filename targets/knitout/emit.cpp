@@ -78,10 +78,12 @@ class Emitter {
       const Course& course = l_.courses[i];
       plan_course(course, false);
       transition(course);
-      if (i + 1 == l_.courses.size())
+      if (i + 1 == l_.courses.size()) {
         bind_off(course);
-      else
+      } else {
         knit_course(course);
+        wrap_turn(course);
+      }
     }
   }
 
@@ -130,8 +132,14 @@ class Emitter {
       throw Error(fmt::format("{} needs {} needles{} (row {}, from {}), {} has {}", c_.input,
                               widest, l_.tube ? " in half gauge" : "", at_course->row + 1,
                               g_.describe(l_.order[at_course->begin]), p_.name, p_.needles));
+    std::vector<std::uint32_t> wraps = wraps_per_stitch();
     for (StitchId s = 0; s < g_.size(); ++s) {
       std::uint32_t in = info(g_.type[s]).loops_in;
+      if (in + wraps[s] > p_.max_loops_per_needle && wraps[s] > 0)
+        throw Error(fmt::format(
+            "short-row turns wrap {} {} time{}: its needle would hold {} loops, {} allows {}",
+            g_.describe(s), wraps[s], wraps[s] == 1 ? "" : "s", in + wraps[s], p_.name,
+            p_.max_loops_per_needle));
       if (in > p_.max_loops_per_needle)
         throw Error(
             fmt::format("a {}-to-1 decrease exceeds the {} loop{} per needle {} allows, at {}", in,
@@ -145,6 +153,14 @@ class Emitter {
     if (reach_ < pitch_)
       throw Error(fmt::format("{} allows no sideways transfer (racking.max_transfer_stretch {})",
                               p_.name, p_.max_transfer_stretch));
+  }
+
+  // How many short-row turns wrap each stitch's loop (their tucks are knit with it).
+  std::vector<std::uint32_t> wraps_per_stitch() const {
+    std::vector<std::uint32_t> wraps(g_.size(), 0);
+    for (const Course& c : l_.courses)
+      if (c.wrap != kNoWrap) ++wraps[g_.loops[c.wrap].taker];
+    return wraps;
   }
 
   // ---- laying a course out on the needles ----
@@ -167,7 +183,30 @@ class Emitter {
     return true;
   }
 
+  // Where a stitch knits and which way its pass goes, once its home bed and needle are known.
+  void aim(StitchId s, StitchPlan& sp, bool on_back) const {
+    sp.step = on_back ? -pitch_ : pitch_;
+    sp.knit = is_purl(g_.type[s]) ? other(sp.home) : sp.home;
+    bool rightward = (sp.step > 0) == l_.left_to_right[s];
+    sp.travel = rightward ? Direction::plus : Direction::minus;
+  }
+
+  // A short row takes one loop per stitch and leaves one: each stitch knits where its loop
+  // waits, so the loops beside the short row stay where they are.
+  void plan_in_place(const Course& c) {
+    for (std::uint32_t i = c.begin; i < c.end; ++i) {
+      StitchId s = l_.order[i];
+      StitchPlan& sp = plan_[s];
+      const Place& h = live_[taken(s)[0]].home;
+      sp.home = h.bed;
+      sp.needle = h.needle;
+      sp.knit_slot = 0;
+      aim(s, sp, l_.tube && h.bed == Bed::b);
+    }
+  }
+
   void plan_course(const Course& c, bool first) {
+    if (c.partial) return plan_in_place(c);
     Footprint f = measure(c);
     // A tube whose halves keep their folds moves no loop between the beds: its right fold may
     // then follow the loops; while loops cross a fold it stays where it is.
@@ -182,16 +221,13 @@ class Emitter {
       std::uint32_t qk = q + sp.knit_slot;
       bool on_back = l_.tube && index >= f.split;
       sp.home = on_back ? Bed::b : Bed::f;
-      sp.step = on_back ? -pitch_ : pitch_;
       // A sheet counts from its left end; a tube from its right fold, where the two beds meet.
       std::int32_t rank = static_cast<std::int32_t>(!l_.tube  ? qk
                                                     : on_back ? qk - f.front
                                                               : f.front - 1 - qk);
       std::int32_t sign = l_.tube ? -1 : 1;
       sp.needle = l_.tube ? 2 * (offset - rank) + (on_back ? 1 : 0) : offset + rank;
-      sp.knit = is_purl(g_.type[s]) ? other(sp.home) : sp.home;
-      bool rightward = (sp.step > 0) == ltr;
-      sp.travel = rightward ? Direction::plus : Direction::minus;
+      aim(s, sp, on_back);
       if (record && !g_.loops_taken_by(s).empty()) {
         std::uint32_t bottom = g_.loops_taken_by(s)[stacking_order(g_.type[s])[0]];
         const Place& h = live_[bottom].home;
@@ -227,9 +263,12 @@ class Emitter {
     if (p_.width_header) w_.line(fmt::format(";;Width: {}", p_.needles));
     w_.line(fmt::format(";;Carriers: {}", p_.carriers_line()));
     w_.line(fmt::format(";;Position: {}", p_.position));
-    w_.line(fmt::format(";!source: {} ({} stitches, {} {}), knit by skein for {}", c_.input,
-                        g_.size(), l_.courses.size(),
-                        l_.tube ? "rounds: a tube in half gauge" : "rows: a sheet", p_.name));
+    auto partial = static_cast<std::size_t>(std::count_if(
+        l_.courses.begin(), l_.courses.end(), [](const Course& c) { return c.partial; }));
+    w_.line(fmt::format(";!source: {} ({} stitches, {} {}{}: {}), knit by skein for {}", c_.input,
+                        g_.size(), l_.courses.size() - partial, l_.tube ? "rounds" : "rows",
+                        partial ? fmt::format(" and {} short rows", partial) : "",
+                        l_.tube ? "a tube in half gauge" : "a sheet", p_.name));
     if (p_.stitch_number) w_.line(fmt::format("x-stitch-number {}", p_.stitch_number));
     if (p_.speed_number) w_.line(fmt::format("x-speed-number {}", p_.speed_number));
   }
@@ -427,9 +466,19 @@ class Emitter {
   }
 
   void knit_course(const Course& c) {
-    source(c, "knit");
+    source(c, c.partial ? "knit (short row)" : "knit");
     w_.rack(0);
     for (std::uint32_t i = c.begin; i < c.end; ++i) knit_stitch(l_.order[i]);
+  }
+
+  // Before turning beside a waiting loop, the yarn tucks over its needle, going on the way it
+  // went: the waiting stitch is later knit through the tuck too, which closes the turn's hole.
+  void wrap_turn(const Course& c) {
+    if (c.wrap == kNoWrap) return;
+    const LoopPlace& waiting = live_[c.wrap];
+    bool on_back = l_.tube && waiting.home.bed == Bed::b;
+    bool rightward = !on_back == c.left_to_right;
+    w_.tuck(rightward ? Direction::plus : Direction::minus, at(waiting.now), carrier_);
   }
 
   // ---- cast-on and bind-off ----

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <unordered_map>
 
 #include "knitout/course_layout.hpp"
 #include "knitout/stitch_recipes.hpp"
@@ -21,6 +22,9 @@ class Matcher {
       : f_(r.fabric), r_(r), text_(text), c_(c), g_(c.knit), l_(l) {
     loop_of_.assign(g_.loops.size(), kNoLoop);
     stamp_.assign(f_.loops.size(), 0);
+    wrap_after_.assign(g_.size(), kNoWrap);
+    for (const Course& course : l_.courses)
+      if (course.wrap != kNoWrap) wrap_after_[l_.order[course.end - 1]] = course.wrap;
   }
 
   // Tries the stitches against carrier `carrier`'s loops from index `start` on; on failure
@@ -33,9 +37,10 @@ class Matcher {
     std::size_t pos = start;
     LoopId previous_bo = kNoLoop;
     reached = 0;
+    wraps_.clear();
     for (StitchId s : l_.order) {
       StitchType t = g_.type[s];
-      std::uint32_t n = fabric_loops(t);
+      std::uint32_t n = fabric_loops(t) + (wrap_after_[s] != kNoWrap);
       if (pos + n > yarn.size()) {
         why = fmt::format("the yarn of carrier {} ends before {}", r_.header.carriers[carrier],
                           g_.describe(s));
@@ -51,15 +56,45 @@ class Matcher {
         }
       }
       if (!stitch_matches(s, t, &yarn[pos], previous_bo, why)) return false;
+      if (wrap_after_[s] != kNoWrap && !wrap_matches(s, yarn[pos + n - 1], why)) return false;
       for (std::uint32_t i = 0; i < n; ++i) stamp_[yarn[pos + i]] = try_;
       previous_bo = t == StitchType::bo ? yarn[pos] : kNoLoop;
       pos += n;
       ++reached;
     }
-    return children_match(why);
+    return children_match(why) && wraps_taken(why);
   }
 
  private:
+  // A short row's turn: a tuck (a loop through nothing) that the stitch taking the waiting
+  // loop later knits through as well.
+  bool wrap_matches(StitchId s, LoopId x, std::string& why) {
+    const FabricLoop& fl = f_.loops[x];
+    if (fl.made_by != OpCode::tuck || fl.parent_count != 0) {
+      why = fmt::format("the turn after {} leaves a hole: {} is not a tuck over the waiting loop",
+                        g_.describe(s), where(x));
+      return false;
+    }
+    wraps_.emplace(g_.loops[wrap_after_[s]].taker, x);
+    return true;
+  }
+  bool is_wrap(StitchId s, LoopId x) const {
+    auto [first, last] = wraps_.equal_range(s);
+    return std::any_of(first, last, [x](const auto& w) { return w.second == x; });
+  }
+  // Each turn's tuck is pulled through by the stitch that takes the loop it wraps.
+  bool wraps_taken(std::string& why) const {
+    for (const auto& [taker, x] : wraps_) {
+      std::uint8_t want = g_.type[taker] == StitchType::kfb ? 2 : 1;
+      if (f_.loops[x].children != want) {
+        why = fmt::format("the turn's tuck {} is pulled through {} times, expected {} (by {})",
+                          where(x), f_.loops[x].children, want, g_.describe(taker));
+        return false;
+      }
+    }
+    return true;
+  }
+
   std::string where(LoopId x) const {
     if (lines_.empty()) lines_ = split_lines(text_);  // only ever needed for a message
     std::uint32_t line = f_.loops[x].line;
@@ -110,6 +145,8 @@ class Matcher {
     auto made = g_.loops_made_by(s);
     std::vector<LoopId> through;
     for (std::uint32_t loop : taken) through.push_back(loop_of_[loop]);
+    auto [wrap, wraps_end] = wraps_.equal_range(s);
+    for (; wrap != wraps_end; ++wrap) through.push_back(wrap->second);
     if (t == StitchType::co) {
       for (LoopId parent : f_.parents_of(loops[0]))
         if (stamp_[parent] == try_) {
@@ -133,11 +170,13 @@ class Matcher {
       if (!parents_are(loops[0], through, s, why)) return false;
       if (taken.size() > 1) {
         auto parents = f_.parents_of(loops[0]);
+        auto on_top = std::find_if(parents.rbegin(), parents.rend(),
+                                   [&](LoopId x) { return !is_wrap(s, x); });
         LoopId top = loop_of_[taken[stacking_order(t).back()]];
-        if (parents.back() != top) {
+        if (*on_top != top) {
           why = fmt::format(
               "{} leans the wrong way: {} has the loop of {} on top, expected that of {}",
-              g_.describe(s), where(loops[0]), describe_maker(parents.back()), describe_maker(top));
+              g_.describe(s), where(loops[0]), describe_maker(*on_top), describe_maker(top));
           return false;
         }
       }
@@ -198,8 +237,10 @@ class Matcher {
   const Compilation& c_;
   const KnitGraph& g_;
   const CourseLayout& l_;
-  std::vector<LoopId> loop_of_;       // per knit graph loop: its fabric loop
-  std::vector<std::uint32_t> stamp_;  // per fabric loop: the try that matched it
+  std::vector<LoopId> loop_of_;                      // per knit graph loop: its fabric loop
+  std::vector<std::uint32_t> stamp_;                 // per fabric loop: the try that matched it
+  std::vector<std::uint32_t> wrap_after_;            // per stitch: the loop its course's turn wraps
+  std::unordered_multimap<StitchId, LoopId> wraps_;  // per stitch: the turn tucks it knits
   std::uint32_t try_ = 0;
   int sign_ = 0;  // the first stitch's direction relative to its frame
 };
@@ -210,6 +251,7 @@ ProofResult prove_fabric(const Replay& r, std::string_view text, const Compilati
   CourseLayout l = lay_out_courses(c);
   std::size_t needed = 0;
   for (StitchId s = 0; s < c.knit.size(); ++s) needed += fabric_loops(c.knit.type[s]);
+  for (const Course& course : l.courses) needed += course.wrap != kNoWrap;
   Matcher m(r, text, c, l);
   ProofResult result;
   std::size_t best = 0;
