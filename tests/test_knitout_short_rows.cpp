@@ -6,10 +6,8 @@
 #include <fmt/format.h>
 
 #include <filesystem>
-#include <iostream>
 #include <random>
 
-#include "common/error.hpp"
 #include "fixtures.hpp"
 #include "knitout/course_layout.hpp"
 #include "mesh/generate.hpp"
@@ -22,15 +20,6 @@ using T = StitchType;
 using testing::shipped_profile;
 
 const char* const kProfiles[] = {"swg091n2", "kniterate", "generic"};
-
-std::string emit_error(const Compilation& c, const char* profile) {
-  try {
-    testing::emit_knitout_text(c, shipped_profile(profile));
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "no error";
-}
 
 // The fixture: four stitches; a short row knits three and turns at an sr4, the next row comes
 // back, and a full row takes every loop, the first stitch's cast-on loop included.
@@ -52,14 +41,30 @@ TEST(KnitoutShortRows, TheCoursesTakeARunOfTheWaitingLoopsAndTheTurnWrapsTheNext
 }
 
 TEST(KnitoutShortRows, TheFixtureKnitsAndProvesOnEveryProfileWithATuckAtTheTurn) {
-  Compilation c = compile_stitch_mesh(testing::short_row_mesh(T::sr4), "short rows");
-  for (const char* name : kProfiles) {
-    knitout::MachineProfile p = shipped_profile(name);
-    std::string text = testing::emit_knitout_text(c, p);
-    EXPECT_NE(text.find(";!source: row 2 knit (short row)"), std::string::npos) << name;
-    knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
-    EXPECT_TRUE(proof.proven) << name << ": " << proof.summary;
+  for (StitchType turn : {T::sr4, T::sr5}) {
+    Compilation c = compile_stitch_mesh(testing::short_row_mesh(turn), "short rows");
+    for (const char* name : kProfiles) {
+      knitout::MachineProfile p = shipped_profile(name);
+      std::string text = testing::emit_knitout_text(c, p);
+      EXPECT_NE(text.find(";!source: row 2 knit (short row)"), std::string::npos) << name;
+      knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
+      EXPECT_TRUE(proof.proven) << abbreviation(turn) << " on " << name << ": " << proof.summary;
+    }
   }
+}
+
+// An sr5 makes the turn's loop itself: a tuck on the facing needle on the way back, which
+// the k2tog above takes on top of the sr5's knit loop (its lean). No other wrap is made.
+TEST(KnitoutShortRows, AFiveEdgedTurnTucksTheFacingNeedleOnTheWayBack) {
+  Compilation c = compile_stitch_mesh(testing::short_row_mesh(T::sr5), "short rows");
+  knitout::CourseLayout l = knitout::lay_out_courses(c);
+  for (const knitout::Course& course : l.courses) EXPECT_EQ(course.wrap, knitout::kNoWrap);
+  std::string text = testing::emit_knitout_text(c, shipped_profile("generic"));
+  std::size_t row2 = text.find(";!source: row 2 knit (short row)");
+  std::size_t row3 = text.find(";!source: row 3", row2);
+  EXPECT_EQ(text.substr(row2, row3 - row2),
+            ";!source: row 2 knit (short row): faces 6..7 (right to left)\n"
+            "knit - f501 1\nknit - f500 1\nknit - f499 1\ntuck + b499 1\n");
 }
 
 // Without the tuck the rows still knit, but the proof names the hole.
@@ -76,18 +81,11 @@ TEST(KnitoutShortRows, ATurnWithoutItsTuckIsNotProven) {
   EXPECT_NE(proof.summary.find("leaves a hole"), std::string::npos) << proof.summary;
 }
 
-TEST(KnitoutShortRows, TheFiveEdgedTurnIsRefusedByName) {
-  Compilation c = compile_stitch_mesh(testing::short_row_mesh(T::sr5), "short rows");
-  EXPECT_EQ(emit_error(c, "generic"),
-            "not yet supported by the knitout target: the short-row end (5 edges) stitch (sr5), at "
-            "face 7 (sr5, row 2)");
-}
-
 // Random sheets with pairs of short rows (sr4 or sr5 turns) and random knits and purls: each
-// proves on every profile, or names the sr5 turn it cannot knit yet.
-TEST(KnitoutRandomized, ShortRowSheetsProveOnEveryProfileOrNameTheirTurn) {
+// proves on every profile.
+TEST(KnitoutRandomized, ShortRowSheetsProveOnEveryProfile) {
   std::mt19937_64 rng(77);
-  int proven = 0, refused = 0;
+  int proven = 0;
   for (int trial = 0; trial < 60; ++trial) {
     std::uint32_t width = 3 + static_cast<std::uint32_t>(rng() % 30);
     std::uint32_t rows = 1 + static_cast<std::uint32_t>(rng() % 15);
@@ -95,24 +93,13 @@ TEST(KnitoutRandomized, ShortRowSheetsProveOnEveryProfileOrNameTheirTurn) {
     ASSERT_TRUE(c.knittability.knittable);
     for (const char* name : kProfiles) {
       knitout::MachineProfile p = shipped_profile(name);
-      std::string text;
-      try {
-        text = testing::emit_knitout_text(c, p);
-      } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("(sr5)"), std::string::npos)
-            << "trial " << trial << " on " << name << ": " << e.what();
-        ++refused;
-        continue;
-      }
+      std::string text = testing::emit_knitout_text(c, p);
       knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
       EXPECT_TRUE(proof.proven) << "trial " << trial << " on " << name << ": " << proof.summary;
       proven += proof.proven;
     }
   }
-  std::cout << "knitout short rows randomized: " << proven << " proven, " << refused
-            << " refused (sr5 turns)\n";
-  EXPECT_GT(proven, 30);
-  EXPECT_GT(refused, 0);
+  EXPECT_EQ(proven, 180);
 }
 
 }  // namespace

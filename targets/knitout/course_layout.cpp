@@ -27,6 +27,7 @@ bool has_machine_recipe(StitchType t) {
     case StitchType::p2tog:
     case StitchType::s2kp:
     case StitchType::sr4:
+    case StitchType::sr5:
       return true;
     default:
       return false;
@@ -178,19 +179,25 @@ std::size_t assign_directions(const KnitGraph& g, CourseLayout& l, bool first) {
     std::uint32_t beyond = live.replace_run(l, course, start, count);
     bool turns_next =
         c + 1 < l.courses.size() && g.yarn_link[l.order[course.end - 1]] == YarnLink::turn;
-    course.wrap = course.partial && turns_next ? beyond : kNoWrap;
+    // An sr5 makes the turn's loop itself.
+    bool own_turn_loop = g.type[l.order[course.end - 1]] == StitchType::sr5;
+    course.wrap = course.partial && turns_next && !own_turn_loop ? beyond : kNoWrap;
   }
   return 0;
 }
 
-// A short row is knit where its loops wait, so its stitches neither add nor remove loops.
+// A short row is knit where its loops wait, so its stitches neither add nor remove loops; an
+// sr5's turn loop waits on the facing needle until one decrease knits it with the sr5's loop.
 void check_short_rows(const KnitGraph& g, const CourseLayout& l) {
   for (const Course& c : l.courses) {
-    if (!c.partial) continue;
     for (std::uint32_t i = c.begin; i < c.end; ++i) {
-      const StitchTypeInfo& t = info(g.type[l.order[i]]);
-      if (t.loops_in != t.loops_out)
-        unsupported(g, "an increase, decrease or bind-off in a short row", l.order[i]);
+      StitchId s = l.order[i];
+      const StitchTypeInfo& t = info(g.type[s]);
+      if (c.partial && t.loops_in != t.loops_out && t.type != StitchType::sr5)
+        unsupported(g, "an increase, decrease or bind-off in a short row", s);
+      auto made = g.loops_made_by(s);
+      if (t.type == StitchType::sr5 && g.loops[made[0]].taker != g.loops[made[1]].taker)
+        unsupported(g, "an sr5 whose two loops are not knit together by the stitch above", s);
     }
   }
 }

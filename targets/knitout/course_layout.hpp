@@ -37,9 +37,4 @@ struct CourseLayout {
 // graphs without rows, stitch types without a machine recipe).
 CourseLayout lay_out_courses(const Compilation& compilation);
 
-// Made loops of a stitch in the order its yarn makes them, as slots (left to right in its frame).
-inline std::uint8_t slot_along_yarn(bool left_to_right, std::uint8_t i, std::uint8_t count) {
-  return left_to_right ? i : static_cast<std::uint8_t>(count - 1 - i);
-}
-
 }  // namespace skein::knitout

@@ -200,7 +200,7 @@ class Emitter {
       const Place& h = live_[taken(s)[0]].home;
       sp.home = h.bed;
       sp.needle = h.needle;
-      sp.knit_slot = 0;
+      sp.knit_slot = knit_slot(g_.type[s], l_.left_to_right[s]);
       aim(s, sp, l_.tube && h.bed == Bed::b);
     }
   }
@@ -446,6 +446,14 @@ class Emitter {
       return;
     }
     std::uint32_t extra = 1u - sp.knit_slot;
+    if (t == StitchType::sr5) {  // the turn's loop: a tuck on the facing needle on the way back
+      Place turn = facing({sp.knit, sp.needle});
+      w_.knit(sp.travel, n, carrier_);
+      w_.tuck(opposite(sp.travel), at(turn), carrier_);
+      made(s, sp.knit_slot, {sp.knit, sp.needle});
+      live_[g_.loops_made_by(s)[extra]] = {turn, turn};  // it waits there for its decrease
+      return;
+    }
     Place extra_home = sp.home_of(extra);
     if (t ==
         StitchType::kfb) {  // split: the old loop waits on the facing needle, then is knit there

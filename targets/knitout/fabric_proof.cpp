@@ -56,7 +56,8 @@ class Matcher {
         }
       }
       if (!stitch_matches(s, t, &yarn[pos], previous_bo, why)) return false;
-      if (wrap_after_[s] != kNoWrap && !wrap_matches(s, yarn[pos + n - 1], why)) return false;
+      if (wrap_after_[s] != kNoWrap && !wrap_matches(s, yarn[pos], yarn[pos + n - 1], why))
+        return false;
       for (std::uint32_t i = 0; i < n; ++i) stamp_[yarn[pos + i]] = try_;
       previous_bo = t == StitchType::bo ? yarn[pos] : kNoLoop;
       pos += n;
@@ -67,12 +68,18 @@ class Matcher {
 
  private:
   // A short row's turn: a tuck (a loop through nothing) that the stitch taking the waiting
-  // loop later knits through as well.
-  bool wrap_matches(StitchId s, LoopId x, std::string& why) {
+  // loop later knits through as well; on a sheet, made on the way the row went (`last` is the
+  // turning stitch's loop). A tube's tuck may be over the fold, going the other way.
+  bool wrap_matches(StitchId s, LoopId last, LoopId x, std::string& why) {
     const FabricLoop& fl = f_.loops[x];
     if (fl.made_by != OpCode::tuck || fl.parent_count != 0) {
       why = fmt::format("the turn after {} leaves a hole: {} is not a tuck over the waiting loop",
                         g_.describe(s), where(x));
+      return false;
+    }
+    if (!l_.tube && fl.dir != f_.loops[last].dir) {
+      why = fmt::format("the turn after {} goes back before its tuck: {} goes {}", g_.describe(s),
+                        where(x), direction_char(fl.dir));
       return false;
     }
     wraps_.emplace(g_.loops[wrap_after_[s]].taker, x);
@@ -160,7 +167,7 @@ class Matcher {
     } else if (made.size() == 2) {
       bool ltr = l_.left_to_right[s];
       for (std::uint8_t i = 0; i < 2; ++i) {
-        std::uint8_t slot = slot_along_yarn(ltr, i, 2);
+        std::uint8_t slot = made_slot_along_yarn(t, ltr, i, 2);
         if (!parents_are(loops[i],
                          made_slot_pulled_through(t, slot, ltr) ? through : std::vector<LoopId>{},
                          s, why))
@@ -189,8 +196,8 @@ class Matcher {
     if (!travels_along_course(s, t, loops, std::max<std::size_t>(made.size(), 1), why))
       return false;
     for (std::size_t i = 0; i < made.size(); ++i)
-      loop_of_[made[slot_along_yarn(l_.left_to_right[s], static_cast<std::uint8_t>(i),
-                                    static_cast<std::uint8_t>(made.size()))]] = loops[i];
+      loop_of_[made[made_slot_along_yarn(t, l_.left_to_right[s], static_cast<std::uint8_t>(i),
+                                         static_cast<std::uint8_t>(made.size()))]] = loops[i];
     return true;
   }
 
@@ -198,12 +205,15 @@ class Matcher {
   // matched: on a sheet, rows alternate; in a tube the back half runs against the front half
   // (a stitch's half is the bed it is made on, the other for a purl). A loop made against
   // its course leaves a float where the carrier turns back.
+  // An sr5's second loop is made on the way back, after the turn.
   bool travels_along_course(StitchId s, StitchType t, const LoopId* loops, std::size_t n,
                             std::string& why) {
     bool back_half = l_.tube && f_.loops[loops[0]].front == is_purl(t);
     for (std::size_t i = 0; i < n; ++i) {
       const FabricLoop& fl = f_.loops[loops[i]];
-      int sign = (l_.left_to_right[s] ? 1 : -1) * (back_half ? -1 : 1) * static_cast<int>(fl.dir);
+      bool turned = t == StitchType::sr5 && i == 1;
+      int sign = (l_.left_to_right[s] != turned ? 1 : -1) * (back_half ? -1 : 1) *
+                 static_cast<int>(fl.dir);
       if (sign_ == 0) sign_ = sign;
       if (sign != sign_) {
         why = fmt::format("{} is knit against the direction of its row: {} goes {}", g_.describe(s),
