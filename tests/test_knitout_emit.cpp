@@ -105,9 +105,62 @@ TEST(KnitoutFit, WhatIsNotSupportedYetIsNamedWithItsStitch) {
   EXPECT_EQ(emit_error(compile_model("samples/autoknit/test-B.st"), "generic"),
             "not yet supported by the knitout target: a stitch graph without rows (.st import), at "
             "line 1 (co)");
-  EXPECT_EQ(emit_error(compile_model("samples/autoknit/test-C.st"), "generic"),
-            "not yet supported by the knitout target: several yarn pieces at once (2 pieces), at "
-            "line 352 (k)");
+  EXPECT_EQ(emit_error(compile_model("samples/sweater/sweater.yaml"), "generic"),
+            "not yet supported by the knitout target: pieces joined on the bed (yarn 1 takes loops "
+            "made by yarn 2, as a sweater's yoke takes its sleeves), at face 37649 (k, row 373)");
+}
+
+// Two knit graphs side by side in one model: two yarn pieces that share no loop.
+KnitGraph side_by_side(KnitGraph a, const KnitGraph& b) {
+  StitchId shift = a.size();
+  auto rows = static_cast<std::uint32_t>(a.row_shape.size());
+  for (StitchId s = 0; s < b.size(); ++s) {
+    a.add_stitch(b.type[s], b.row[s] + rows, b.source[s] + shift, b.flags[s]);
+    a.yarn_next.back() = b.yarn_next[s] == kNoStitch ? kNoStitch : b.yarn_next[s] + shift;
+    a.yarn_link.back() = b.yarn_link[s];
+  }
+  a.row_shape.insert(a.row_shape.end(), b.row_shape.begin(), b.row_shape.end());
+  for (Loop l : b.loops) {
+    l.maker += shift;
+    l.taker += shift;
+    a.loops.push_back(l);
+  }
+  a.index_loops();
+  return a;
+}
+
+// Several yarn pieces that share no loop are knit one after another, each on its own carrier
+// from cast-on to bind-off (carried in, and out at its end), and each is proven.
+TEST(KnitoutPieces, SeparatePiecesAreKnitOneAfterAnotherOnTheirOwnCarriers) {
+  RowPlan sheet = {{T::co, T::co, T::co, T::co}, {T::k, T::p, T::k2tog}, {T::bo, T::bo, T::bo}};
+  KnitGraph tube = compile_stitch_mesh(build_from_rows(hat_rows(24, 3, 4), Layout::tube), "t").knit;
+  KnitGraph flat = compile_stitch_mesh(build_from_rows(sheet, Layout::sheet), "s").knit;
+  Compilation c = compile_knit_graph(side_by_side(tube, flat), "pieces");
+  ASSERT_EQ(c.yarns.size(), 2u);
+  for (const char* name : kProfiles) {
+    knitout::MachineProfile p = shipped_profile(name);
+    std::string text = testing::emit_knitout_text(c, p);
+    EXPECT_NE(text.find("(226 stitches, 2 yarn pieces knit one after another)"), std::string::npos);
+    knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
+    EXPECT_TRUE(proof.proven) << name << ": " << proof.summary;
+    auto second = std::find_if(p.carriers.begin(), p.carriers.end(), [&](const std::string& n) {
+      return n != p.yarn_carrier && n != p.waste_carrier;
+    });
+    EXPECT_NE(
+        text.find(fmt::format(";!source: yarn piece 2 (carrier {}): 3 rows: a sheet", *second)),
+        std::string::npos)
+        << name;
+  }
+}
+
+TEST(KnitoutPieces, MorePiecesThanCarriersAreRefusedInWords) {
+  RowPlan sheet = {{T::co, T::co}, {T::bo, T::bo}};
+  KnitGraph one = compile_stitch_mesh(build_from_rows(sheet, Layout::sheet), "s").knit;
+  KnitGraph many = one;
+  for (int i = 0; i < 6; ++i) many = side_by_side(many, one);
+  EXPECT_EQ(emit_error(compile_knit_graph(many, "seven.st"), "kniterate"),
+            "seven.st has 7 yarn pieces, one carrier each, and kniterate has only 5 carriers for "
+            "them besides the waste yarn's");
 }
 
 // The knit graph does not say which way the yarn runs through a stitch; the courses do.
@@ -118,7 +171,7 @@ TEST(KnitoutCourses, RowsAlternateOnASheetAndRoundsRunOneWayInATube) {
                   {T::bo, T::bo, T::bo, T::bo}};
   for (Layout layout : {Layout::sheet, Layout::tube}) {
     Compilation c = compile_stitch_mesh(build_from_rows(plan, layout), "courses");
-    knitout::CourseLayout l = knitout::lay_out_courses(c);
+    knitout::CourseLayout l = knitout::lay_out_pieces(c).front();
     ASSERT_EQ(l.courses.size(), 4u);
     EXPECT_EQ(l.tube, layout == Layout::tube);
     for (std::size_t i = 0; i < l.courses.size(); ++i)

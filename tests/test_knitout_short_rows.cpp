@@ -25,7 +25,7 @@ const char* const kProfiles[] = {"swg091n2", "kniterate", "generic"};
 // back, and a full row takes every loop, the first stitch's cast-on loop included.
 TEST(KnitoutShortRows, TheCoursesTakeARunOfTheWaitingLoopsAndTheTurnWrapsTheNextOne) {
   Compilation c = compile_stitch_mesh(testing::short_row_mesh(T::sr4), "short rows");
-  knitout::CourseLayout l = knitout::lay_out_courses(c);
+  knitout::CourseLayout l = knitout::lay_out_pieces(c).front();
   ASSERT_EQ(l.courses.size(), 5u);
   std::vector<bool> partial, wrapped;
   for (const knitout::Course& course : l.courses) {
@@ -57,7 +57,7 @@ TEST(KnitoutShortRows, TheFixtureKnitsAndProvesOnEveryProfileWithATuckAtTheTurn)
 // the k2tog above takes on top of the sr5's knit loop (its lean). No other wrap is made.
 TEST(KnitoutShortRows, AFiveEdgedTurnTucksTheFacingNeedleOnTheWayBack) {
   Compilation c = compile_stitch_mesh(testing::short_row_mesh(T::sr5), "short rows");
-  knitout::CourseLayout l = knitout::lay_out_courses(c);
+  knitout::CourseLayout l = knitout::lay_out_pieces(c).front();
   for (const knitout::Course& course : l.courses) EXPECT_EQ(course.wrap, knitout::kNoWrap);
   std::string text = testing::emit_knitout_text(c, shipped_profile("generic"));
   std::size_t row2 = text.find(";!source: row 2 knit (short row)");

@@ -202,20 +202,23 @@ void check_short_rows(const KnitGraph& g, const CourseLayout& l) {
   }
 }
 
-}  // namespace
+// Several yarn pieces are knit one after another, each from cast-on to bind-off; a piece that
+// takes loops of another would have to wait for it on the bed.
+void check_pieces_apart(const KnitGraph& g, const YarnPieces& yarns) {
+  for (const Loop& l : g.loops) {
+    std::uint32_t maker = yarns.piece_of[l.maker], taker = yarns.piece_of[l.taker];
+    if (maker != taker)
+      unsupported(g,
+                  fmt::format("pieces joined on the bed (yarn {} takes loops made by yarn {}, as "
+                              "a sweater's yoke takes its sleeves)",
+                              taker + 1, maker + 1),
+                  l.taker);
+  }
+}
 
-CourseLayout lay_out_courses(const Compilation& c) {
-  const KnitGraph& g = c.knit;
-  if (g.size() == 0) throw Error("the model has no stitches: nothing to knit");
-  if (c.yarns.size() != 1)
-    unsupported(g, fmt::format("several yarn pieces at once ({} pieces)", c.yarns.size()),
-                c.yarns.first[1]);
-  if (c.yarns.ring[0]) unsupported(g, "a yarn that closes on itself", c.yarns.first[0]);
-  check_stitches(g);
+CourseLayout lay_out_piece(const KnitGraph& g, std::vector<StitchId> order) {
   CourseLayout l;
-  l.order.reserve(g.size());
-  for (const Event& e : c.schedule.events)
-    if (e.kind == EventKind::stitch) l.order.push_back(e.stitch);
+  l.order = std::move(order);
   l.courses = split_into_courses(g, l.order);
   l.tube = g.row_shape[l.courses.front().row] == RowShape::closed;
   for (const Course& course : l.courses) {
@@ -235,6 +238,30 @@ CourseLayout lay_out_courses(const Compilation& c) {
     for (std::uint32_t i = course.begin; i < course.end; ++i)
       l.left_to_right[l.order[i]] = course.left_to_right;
   return l;
+}
+
+}  // namespace
+
+std::vector<CourseLayout> lay_out_pieces(const Compilation& c) {
+  const KnitGraph& g = c.knit;
+  if (g.size() == 0) throw Error("the model has no stitches: nothing to knit");
+  check_stitches(g);
+  check_pieces_apart(g, c.yarns);
+  // Each piece's stitches in schedule order; the pieces in the order the schedule starts them.
+  std::vector<std::vector<StitchId>> orders(c.yarns.size());
+  std::vector<std::uint32_t> sequence;
+  for (const Event& e : c.schedule.events) {
+    if (e.kind != EventKind::stitch) continue;
+    std::uint32_t piece = c.yarns.piece_of[e.stitch];
+    if (orders[piece].empty()) sequence.push_back(piece);
+    orders[piece].push_back(e.stitch);
+  }
+  std::vector<CourseLayout> layouts;
+  for (std::uint32_t piece : sequence) {
+    if (c.yarns.ring[piece]) unsupported(g, "a yarn that closes on itself", c.yarns.first[piece]);
+    layouts.push_back(lay_out_piece(g, std::move(orders[piece])));
+  }
+  return layouts;
 }
 
 }  // namespace skein::knitout

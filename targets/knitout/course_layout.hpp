@@ -27,14 +27,15 @@ struct Course {
 
 struct CourseLayout {
   bool tube = false;            // closed rounds (a helix) rather than open rows
-  std::vector<StitchId> order;  // every stitch, in yarn order
+  std::vector<StitchId> order;  // the piece's stitches, in yarn order
   std::vector<Course> courses;
-  std::vector<std::uint8_t> left_to_right;  // per stitch
+  std::vector<std::uint8_t> left_to_right;  // per stitch of the model (the piece's are set)
 };
 
-// Throws Error "not yet supported by the knitout target: <what>, at <stitch>" for inputs the
-// target does not handle yet (shaping in a short row, mismatches, several yarn pieces, stitch
-// graphs without rows, stitch types without a machine recipe).
-CourseLayout lay_out_courses(const Compilation& compilation);
+// One layout per yarn piece, in the order the schedule knits them (each piece is knit on its
+// own, cast-on to bind-off). Throws Error "not yet supported by the knitout target: <what>, at
+// <stitch>" for inputs the target does not handle yet (pieces joined on the bed, shaping in a
+// short row, mismatches, stitch graphs without rows, stitch types without a machine recipe).
+std::vector<CourseLayout> lay_out_pieces(const Compilation& compilation);
 
 }  // namespace skein::knitout

@@ -59,18 +59,18 @@ std::uint32_t footprint(StitchType t) {
 
 class Emitter {
  public:
-  Emitter(const Compilation& c, const MachineProfile& p, std::ostream& out)
-      : c_(c), g_(c.knit), p_(p), l_(lay_out_courses(c)), w_(out) {
+  // Checks that the piece fits the profile (throws Error in the user's words otherwise).
+  Emitter(const Compilation& c, const MachineProfile& p, const CourseLayout& l, KnitoutWriter& w,
+          std::string carrier)
+      : c_(c), g_(c.knit), p_(p), l_(l), w_(w), carrier_(std::move(carrier)) {
     pitch_ = l_.tube ? 2 : 1;
     reach_ = p_.max_transfer_stretch / pitch_ * pitch_;
     plan_.resize(g_.size());
     live_.resize(g_.loops.size());
-    carrier_ = p_.yarn_carrier;
+    check_fit();
   }
 
   void run() {
-    check_fit();
-    header();
     const Course& first = l_.courses.front();
     plan_course(first, true);
     cast_on(first);
@@ -256,23 +256,6 @@ class Emitter {
   }
 
   // ---- output helpers ----
-  void header() {
-    w_.line(";!knitout-2");
-    w_.line(fmt::format(";;Machine: {}", p_.machine));
-    w_.line(fmt::format(";;Gauge: {}", p_.gauge));
-    if (p_.width_header) w_.line(fmt::format(";;Width: {}", p_.needles));
-    w_.line(fmt::format(";;Carriers: {}", p_.carriers_line()));
-    w_.line(fmt::format(";;Position: {}", p_.position));
-    auto partial = static_cast<std::size_t>(std::count_if(
-        l_.courses.begin(), l_.courses.end(), [](const Course& c) { return c.partial; }));
-    w_.line(fmt::format(";!source: {} ({} stitches, {} {}{}: {}), knit by skein for {}", c_.input,
-                        g_.size(), l_.courses.size() - partial, l_.tube ? "rounds" : "rows",
-                        partial ? fmt::format(" and {} short rows", partial) : "",
-                        l_.tube ? "a tube in half gauge" : "a sheet", p_.name));
-    if (p_.stitch_number) w_.line(fmt::format("x-stitch-number {}", p_.stitch_number));
-    if (p_.speed_number) w_.line(fmt::format("x-speed-number {}", p_.speed_number));
-  }
-
   void source(const Course& c, const char* what) {
     StitchId a = l_.order[c.begin], b = l_.order[c.end - 1];
     w_.note(fmt::format(";!source: row {} {}: {}s {}..{} ({})", c.row + 1, what, g_.element,
@@ -592,8 +575,8 @@ class Emitter {
   const Compilation& c_;
   const KnitGraph& g_;
   const MachineProfile& p_;
-  CourseLayout l_;
-  KnitoutWriter w_;
+  const CourseLayout& l_;
+  KnitoutWriter& w_;
   std::int32_t pitch_ = 1, reach_ = 1;
   std::int32_t fold_ = 0;         // a tube's right fold: front f2R faces back b2R+1 beside it
   std::vector<StitchPlan> plan_;  // per stitch, for the course being knit
@@ -601,10 +584,65 @@ class Emitter {
   std::string carrier_;
 };
 
+// "46 rows: a sheet", "107 rounds and 20 short rows: a tube in half gauge".
+std::string describe(const CourseLayout& l) {
+  auto partial = static_cast<std::size_t>(
+      std::count_if(l.courses.begin(), l.courses.end(), [](const Course& c) { return c.partial; }));
+  return fmt::format("{} {}{}: {}", l.courses.size() - partial, l.tube ? "rounds" : "rows",
+                     partial ? fmt::format(" and {} short rows", partial) : "",
+                     l.tube ? "a tube in half gauge" : "a sheet");
+}
+
+void write_header(KnitoutWriter& w, const Compilation& c, const MachineProfile& p,
+                  const std::vector<CourseLayout>& pieces) {
+  w.line(";!knitout-2");
+  w.line(fmt::format(";;Machine: {}", p.machine));
+  w.line(fmt::format(";;Gauge: {}", p.gauge));
+  if (p.width_header) w.line(fmt::format(";;Width: {}", p.needles));
+  w.line(fmt::format(";;Carriers: {}", p.carriers_line()));
+  w.line(fmt::format(";;Position: {}", p.position));
+  std::string what = pieces.size() == 1
+                         ? describe(pieces[0])
+                         : fmt::format("{} yarn pieces knit one after another", pieces.size());
+  w.line(fmt::format(";!source: {} ({} stitches, {}), knit by skein for {}", c.input, c.knit.size(),
+                     what, p.name));
+  if (p.stitch_number) w.line(fmt::format("x-stitch-number {}", p.stitch_number));
+  if (p.speed_number) w.line(fmt::format("x-speed-number {}", p.speed_number));
+}
+
+// One carrier per yarn piece: the profile's yarn carrier, then the others in the header's
+// order, never the waste yarn's.
+std::vector<std::string> piece_carriers(const Compilation& c, const MachineProfile& p,
+                                        std::size_t pieces) {
+  std::vector<std::string> carriers{p.yarn_carrier};
+  for (const std::string& name : p.carriers)
+    if (carriers.size() < pieces && name != p.yarn_carrier && name != p.waste_carrier)
+      carriers.push_back(name);
+  if (carriers.size() < pieces)
+    throw Error(
+        fmt::format("{} has {} yarn pieces, one carrier each, and {} has only {} carriers "
+                    "for them besides the waste yarn's",
+                    c.input, pieces, p.name, carriers.size()));
+  return carriers;
+}
+
 }  // namespace
 
 void emit_knitout(const Compilation& c, const MachineProfile& p, std::ostream& out) {
-  Emitter(c, p, out).run();
+  std::vector<CourseLayout> pieces = lay_out_pieces(c);
+  std::vector<std::string> carriers = piece_carriers(c, p, pieces.size());
+  KnitoutWriter w(out);
+  std::vector<Emitter> emitters;
+  emitters.reserve(pieces.size());
+  for (std::size_t i = 0; i < pieces.size(); ++i)
+    emitters.emplace_back(c, p, pieces[i], w, carriers[i]);
+  write_header(w, c, p, pieces);
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    if (pieces.size() > 1)
+      w.line(fmt::format(";!source: yarn piece {} (carrier {}): {}", i + 1, carriers[i],
+                         describe(pieces[i])));
+    emitters[i].run();
+  }
 }
 
 }  // namespace skein::knitout

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <limits>
 #include <unordered_map>
 
 #include "knitout/course_layout.hpp"
@@ -226,17 +227,18 @@ class Matcher {
 
   // Every loop of the input is pulled through as often as its taker needs (kfb twice).
   bool children_match(std::string& why) const {
-    for (std::uint32_t loop = 0; loop < g_.loops.size(); ++loop) {
-      const Loop& l = g_.loops[loop];
-      std::uint32_t want = g_.type[l.taker] == StitchType::kfb ? 2 : 1;
-      LoopId x = loop_of_[loop];
-      if (f_.loops[x].children != want) {
-        why = fmt::format("the loop {} makes for {} is pulled through {} time{}, expected {}",
-                          where(x), g_.describe(l.maker), f_.loops[x].children,
-                          f_.loops[x].children == 1 ? "" : "s", want);
-        return false;
+    for (StitchId s : l_.order)
+      for (std::uint32_t loop : g_.loops_made_by(s)) {
+        const Loop& l = g_.loops[loop];
+        std::uint32_t want = g_.type[l.taker] == StitchType::kfb ? 2 : 1;
+        LoopId x = loop_of_[loop];
+        if (f_.loops[x].children != want) {
+          why = fmt::format("the loop {} makes for {} is pulled through {} time{}, expected {}",
+                            where(x), g_.describe(l.maker), f_.loops[x].children,
+                            f_.loops[x].children == 1 ? "" : "s", want);
+          return false;
+        }
       }
-    }
     return true;
   }
 
@@ -255,45 +257,80 @@ class Matcher {
   int sign_ = 0;  // the first stitch's direction relative to its frame
 };
 
-}  // namespace
+// Where one piece was found: along which carrier, after how many border loops.
+struct PieceMatch {
+  bool found = false;
+  std::size_t carrier = 0, start = 0, needed = 0;
+  std::string why;  // when not found: the first difference of the closest try
+};
 
-ProofResult prove_fabric(const Replay& r, std::string_view text, const Compilation& c) {
-  CourseLayout l = lay_out_courses(c);
-  std::size_t needed = 0;
-  for (StitchId s = 0; s < c.knit.size(); ++s) needed += fabric_loops(c.knit.type[s]);
-  for (const Course& course : l.courses) needed += course.wrap != kNoWrap;
+// Looks for the piece along every carrier's yarn, in a yarn piece no other piece matched.
+PieceMatch find_piece(const Replay& r, std::string_view text, const Compilation& c,
+                      const CourseLayout& l, std::vector<std::uint32_t>& used) {
+  PieceMatch match;
+  for (StitchId s : l.order) match.needed += fabric_loops(c.knit.type[s]);
+  for (const Course& course : l.courses) match.needed += course.wrap != kNoWrap;
   Matcher m(r, text, c, l);
-  ProofResult result;
   std::size_t best = 0;
-  std::string best_why;
   for (std::size_t carrier = 0; carrier < r.fabric.by_carrier.size(); ++carrier) {
     const auto& yarn = r.fabric.by_carrier[carrier];
-    for (std::size_t start = 0; start + needed <= yarn.size(); ++start) {
+    for (std::size_t start = 0; start + match.needed <= yarn.size(); ++start) {
+      std::uint32_t piece = r.fabric.loops[yarn[start]].piece;
+      if (std::find(used.begin(), used.end(), piece) != used.end()) continue;
       std::string why;
       std::size_t reached = 0;
       if (m.match(carrier, start, why, reached)) {
-        result.proven = true;
-        result.first_line = r.fabric.loops[yarn[start]].line;
-        result.last_line = r.fabric.loops[yarn[start + needed - 1]].line;
-        result.summary = fmt::format(
-            "proven against {}: all {} stitches are there, knit with carrier {} in yarn order "
-            "after a border of {} loops, each pulled through the right loops{}",
-            c.input, c.knit.size(), r.header.carriers[carrier], start,
-            l.tube ? "" : " on the right bed");
-        return result;
+        used.push_back(piece);
+        match.found = true;
+        match.carrier = carrier;
+        match.start = start;
+        return match;
       }
-      if (reached >= best) best = reached, best_why = why;
+      if (reached >= best) best = reached, match.why = why;
     }
   }
-  if (best_why.empty()) {
+  if (match.why.empty()) {
     std::size_t most = 0;
     for (const auto& yarn : r.fabric.by_carrier) most = std::max(most, yarn.size());
-    best_why = fmt::format(
+    match.why = fmt::format(
         "no carrier makes enough loops: the input needs {} (one per stitch, two "
         "per increase), the busiest carrier makes {}",
-        needed, most);
+        match.needed, most);
   }
-  result.summary = fmt::format("NOT proven against {}: {}", c.input, best_why);
+  return match;
+}
+
+}  // namespace
+
+ProofResult prove_fabric(const Replay& r, std::string_view text, const Compilation& c) {
+  std::vector<CourseLayout> pieces = lay_out_pieces(c);
+  ProofResult result;
+  result.first_line = std::numeric_limits<std::size_t>::max();
+  std::vector<std::uint32_t> used;
+  std::vector<std::string> where;
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    std::string piece = pieces.size() > 1 ? fmt::format("yarn piece {}: ", i + 1) : "";
+    PieceMatch m = find_piece(r, text, c, pieces[i], used);
+    if (!m.found) {
+      result.summary = fmt::format("NOT proven against {}: {}{}", c.input, piece, m.why);
+      return result;
+    }
+    const auto& yarn = r.fabric.by_carrier[m.carrier];
+    result.first_line =
+        std::min<std::size_t>(result.first_line, r.fabric.loops[yarn[m.start]].line);
+    result.last_line =
+        std::max<std::size_t>(result.last_line, r.fabric.loops[yarn[m.start + m.needed - 1]].line);
+    where.push_back(fmt::format("{}carrier {} in yarn order after a border of {} loops",
+                                pieces.size() > 1 ? fmt::format("piece {} with ", i + 1) : "with ",
+                                r.header.carriers[m.carrier], m.start));
+  }
+  bool sheets =
+      std::none_of(pieces.begin(), pieces.end(), [](const CourseLayout& l) { return l.tube; });
+  result.proven = true;
+  result.summary = fmt::format(
+      "proven against {}: all {} stitches are there, knit {}, each pulled through the right "
+      "loops{}",
+      c.input, c.knit.size(), fmt::join(where, "; "), sheets ? " on the right bed" : "");
   return result;
 }
 
