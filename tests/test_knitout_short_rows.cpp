@@ -8,8 +8,10 @@
 #include <filesystem>
 #include <random>
 
+#include "common/error.hpp"
 #include "fixtures.hpp"
 #include "knitout/course_layout.hpp"
+#include "labeling/shapes.hpp"
 #include "mesh/generate.hpp"
 #include "test_knitout_util.hpp"
 
@@ -100,6 +102,41 @@ TEST(KnitoutRandomized, ShortRowSheetsProveOnEveryProfile) {
     }
   }
   EXPECT_EQ(proven, 180);
+}
+
+// Socks of random sizes from `skein new sock` (tubes with a short-row heel and a shaped toe):
+// each proves on every profile it fits and is refused for its width on the others.
+TEST(KnitoutRandomized, SocksOfRandomSizesProveOnEveryProfileTheyFit) {
+  std::mt19937_64 rng(19);
+  std::string dir = ::testing::TempDir();
+  int proven = 0, too_wide = 0;
+  for (int trial = 0; trial < 10; ++trial) {
+    ShapeSize size;
+    size.circumference = 12 + static_cast<double>(rng() % 130);
+    size.length = 6 + static_cast<double>(rng() % 12);
+    std::string name = fmt::format("sock{}", trial);
+    std::string project = write_shape(make_shape("sock", size, name), dir + "/" + name);
+    Compilation c = compile_model(project);
+    ASSERT_TRUE(c.knittability.knittable) << project;
+    for (const char* profile : kProfiles) {
+      knitout::MachineProfile p = shipped_profile(profile);
+      std::string text;
+      try {
+        text = testing::emit_knitout_text(c, p);
+      } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find(" needles in half gauge"), std::string::npos)
+            << name << " on " << profile << ": " << e.what();
+        ++too_wide;
+        continue;
+      }
+      knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
+      EXPECT_TRUE(proof.proven) << name << " (" << size.circumference << " cm) on " << profile
+                                << ": " << proof.summary;
+      proven += proof.proven;
+    }
+  }
+  EXPECT_GT(proven, 12);
+  EXPECT_GT(too_wide, 0);
 }
 
 }  // namespace
