@@ -13,6 +13,7 @@
 #include "builtin_targets.hpp"
 #include "common/error.hpp"
 #include "knitout/course_layout.hpp"
+#include "mesh/autoknit_st.hpp"
 #include "mesh/generate.hpp"
 #include "test_knitout_util.hpp"
 
@@ -102,12 +103,66 @@ TEST(KnitoutFit, ADoubleDecreaseNeedsThreeLoopsPerNeedle) {
 
 TEST(KnitoutFit, WhatIsNotSupportedYetIsNamedWithItsStitch) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  EXPECT_EQ(emit_error(compile_model("samples/autoknit/test-A.st"), "generic"),
+            "not yet supported by the knitout target: the tuck stitch (tuck), at line 59 (tuck)");
   EXPECT_EQ(emit_error(compile_model("samples/autoknit/test-B.st"), "generic"),
-            "not yet supported by the knitout target: a stitch graph without rows (.st import), at "
-            "line 1 (co)");
+            "not yet supported by the knitout target: a bind-off stitch below the last row, at "
+            "line 152 (bo)");
+  EXPECT_EQ(emit_error(compile_model("samples/autoknit/test-C.st"), "generic"),
+            "not yet supported by the knitout target: pieces joined on the bed (yarn 2 takes loops "
+            "made by yarn 1, as a sweater's yoke takes its sleeves), at line 352 (k)");
   EXPECT_EQ(emit_error(compile_model("samples/sweater/sweater.yaml"), "generic"),
             "not yet supported by the knitout target: pieces joined on the bed (yarn 1 takes loops "
             "made by yarn 2, as a sweater's yoke takes its sleeves), at face 37649 (k, row 373)");
+}
+
+// A stitch graph in AutoKnit's format: one yarn as a helix of rounds, each taking the loops of
+// the round below in order (letters: s cast-on, k knit, i increase, d decrease, e bind-off).
+std::string helix_st(const std::vector<std::string>& rounds) {
+  struct Line {
+    char letter;
+    int in[2] = {-1, -1}, out[2] = {-1, -1};
+  };
+  std::vector<Line> lines;
+  std::vector<std::pair<int, int>> below, made;  // (stitch, out slot) of the loops in order
+  for (const std::string& round : rounds) {
+    std::size_t next = 0;
+    for (char letter : round) {
+      int s = static_cast<int>(lines.size());
+      lines.push_back({letter});
+      int takes = letter == 's' ? 0 : letter == 'd' ? 2 : 1;
+      int makes = letter == 'e' ? 0 : letter == 'i' ? 2 : 1;
+      for (int i = 0; i < takes; ++i) {
+        auto [maker, slot] = below.at(next++);
+        lines[s].in[i] = maker;
+        lines[static_cast<std::size_t>(maker)].out[slot] = s;
+      }
+      for (int i = 0; i < makes; ++i) made.emplace_back(s, i);
+    }
+    below.swap(made);
+    made.clear();
+  }
+  std::string text;
+  for (const Line& l : lines)
+    text +=
+        fmt::format("0 {} a {} {} {} {} 0 0 0\n", l.letter, l.in[0], l.in[1], l.out[0], l.out[1]);
+  return text;
+}
+
+// A stitch graph (.st) has no rows: its helix is cut into rounds where a stitch takes a loop of
+// the round being knit, and knit as a tube.
+TEST(KnitoutStitchGraph, AHelixOfRoundsKnitsAsATubeAndProvesOnEveryProfile) {
+  std::string text = helix_st(
+      {"ssssssssss", "kkkkikkkkk", "kkkkkkkkkkk", "kdkkkkkkkk", "kkkkkkkkkk", "eeeeeeeeee"});
+  Compilation c = compile_knit_graph(parse_autoknit_st(text, "helix.st"), "helix.st");
+  for (const char* name : kProfiles) {
+    knitout::MachineProfile p = shipped_profile(name);
+    knitout::ProofResult proof = testing::replay_and_prove(testing::emit_knitout_text(c, p), c, p);
+    EXPECT_TRUE(proof.proven) << name << ": " << proof.summary;
+  }
+  knitout::CourseLayout l = knitout::lay_out_pieces(c).front();
+  EXPECT_TRUE(l.tube);
+  EXPECT_EQ(l.courses.size(), 6u);
 }
 
 // Two knit graphs side by side in one model: two yarn pieces that share no loop.

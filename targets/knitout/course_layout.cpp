@@ -39,8 +39,6 @@ void check_stitches(const KnitGraph& g) {
     if (!has_machine_recipe(g.type[s]))
       unsupported(
           g, fmt::format("the {} stitch ({})", info(g.type[s]).name, abbreviation(g.type[s])), s);
-    RowShape shape = g.row_shape[g.row[s]];
-    if (shape == RowShape::unknown) unsupported(g, "a stitch graph without rows (.st import)", s);
   }
   for (const Loop& l : g.loops) {
     StitchId at = l.taker != kNoStitch ? l.taker : l.maker;
@@ -50,20 +48,31 @@ void check_stitches(const KnitGraph& g) {
 }
 
 // A course ends where the yarn turns or crosses a shift-path. A row with short rows inside
-// (a heel's) is knit in several courses; a course never spans two rows of a sheet or tube.
+// (a heel's) is knit in several courses; a course never spans two rows of a sheet or tube. A
+// stitch graph (.st) has no rows: its yarn is a helix whose next round starts where a stitch
+// takes a loop of the round being knit.
 std::vector<Course> split_into_courses(const KnitGraph& g, const std::vector<StitchId>& order) {
   std::vector<Course> courses;
+  std::vector<std::uint32_t> course_of(g.size(), 0);  // 1-based, for the helix
+  auto takes_from_this_course = [&](StitchId s) {
+    for (std::uint32_t loop : g.loops_taken_by(s))
+      if (course_of[g.loops[loop].maker] == courses.size()) return true;
+    return false;
+  };
   for (std::uint32_t i = 0; i < order.size(); ++i) {
     StitchId s = order[i];
+    bool helix = g.row_shape[g.row[s]] == RowShape::unknown;
     bool starts = courses.empty() || g.yarn_link[order[i - 1]] == YarnLink::turn ||
-                  g.yarn_link[order[i - 1]] == YarnLink::shift;
+                  g.yarn_link[order[i - 1]] == YarnLink::shift ||
+                  (helix && takes_from_this_course(s));
     if (starts) {
       courses.emplace_back();
       courses.back().row = g.row[s];
       courses.back().begin = i;
     }
-    if (!starts && g.row[s] != courses.back().row)
+    if (!starts && !helix && g.row[s] != courses.back().row)
       unsupported(g, "a row that ends without a turn or a shift-path", s);
+    course_of[s] = static_cast<std::uint32_t>(courses.size());
     courses.back().end = i + 1;
   }
   return courses;
@@ -220,17 +229,22 @@ CourseLayout lay_out_piece(const KnitGraph& g, std::vector<StitchId> order) {
   CourseLayout l;
   l.order = std::move(order);
   l.courses = split_into_courses(g, l.order);
-  l.tube = g.row_shape[l.courses.front().row] == RowShape::closed;
+  // A stitch graph's helix is a tube (its rows are unknown).
+  bool helix = g.row_shape[l.courses.front().row] == RowShape::unknown;
+  l.tube = helix || g.row_shape[l.courses.front().row] == RowShape::closed;
   for (const Course& course : l.courses) {
     RowShape shape = g.row_shape[course.row];
-    if (shape != RowShape::short_row && (shape == RowShape::closed) != l.tube)
+    if (!helix && shape != RowShape::short_row && (shape == RowShape::closed) != l.tube)
       unsupported(g, "a mix of open rows and closed rounds", l.order[course.begin]);
   }
   if (l.courses.size() < 2) unsupported(g, "a piece with fewer than two rows", l.order.front());
   check_borders(g, l);
   std::size_t bad = assign_directions(g, l, true);
   if (bad && assign_directions(g, l, false))
-    unsupported(g, "a row whose stitches do not take the loops below in order",
+    unsupported(g,
+                helix ? "a stitch graph whose yarn is not one helix of rounds (it turns: rows "
+                        "knit back and forth or short rows)"
+                      : "a row whose stitches do not take the loops below in order",
                 l.order[l.courses[bad].begin]);
   check_short_rows(g, l);
   l.left_to_right.assign(g.size(), 1);

@@ -35,7 +35,7 @@ struct CourseLayout {
 // One layout per yarn piece, in the order the schedule knits them (each piece is knit on its
 // own, cast-on to bind-off). Throws Error "not yet supported by the knitout target: <what>, at
 // <stitch>" for inputs the target does not handle yet (pieces joined on the bed, shaping in a
-// short row, mismatches, stitch graphs without rows, stitch types without a machine recipe).
+// short row, mismatches, stitch graphs that turn, stitch types without a machine recipe).
 std::vector<CourseLayout> lay_out_pieces(const Compilation& compilation);
 
 }  // namespace skein::knitout
