@@ -23,15 +23,21 @@ namespace {
 
 using T = StitchType;
 
-enum class KnitoutCase { hat_tube, ribbed_sheet, shaped_tube };
+enum class KnitoutCase { hat_tube, ribbed_sheet, shaped_tube, short_row_sheet };
 
-// About a million stitches each, about 1000 a row.
+// About a million stitches each, about 1000 a row (the short-row sheet: pairs of short rows
+// turning at random stitches, about one row in three).
 const Compilation& model(KnitoutCase c) {
   static std::map<KnitoutCase, std::unique_ptr<Compilation>> cache;
   auto& slot = cache[c];
   if (slot) return *slot;
   RandomShaping shaping{
       .purl = 0.3, .increase = 0.03, .decrease = 0.03, .min_width = 900, .max_width = 1100};
+  if (c == KnitoutCase::short_row_sheet) {
+    slot = std::make_unique<Compilation>(
+        compile_stitch_mesh(short_row_sheet(1000, 800, 2026), "bench"));
+    return *slot;
+  }
   RowPlan plan = c == KnitoutCase::hat_tube       ? hat_rows(1000, 990, 8)
                  : c == KnitoutCase::ribbed_sheet ? ribbed_rows(1000, 998, {T::k, T::k, T::p, T::p})
                                                   : random_rows(1000, 1000, shaping, 2026);
@@ -94,7 +100,7 @@ void BM_KnitoutVerify(benchmark::State& state) {
   state.counters["stitches"] = c.knit.size();
 }
 
-#define KNITOUT_CASES ->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(3)
+#define KNITOUT_CASES ->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Unit(benchmark::kMillisecond)->Iterations(3)
 BENCHMARK(BM_KnitoutEmit) KNITOUT_CASES;
 BENCHMARK(BM_KnitoutReplay) KNITOUT_CASES;
 BENCHMARK(BM_KnitoutVerify) KNITOUT_CASES;

@@ -267,7 +267,10 @@ std::vector<CourseLayout> lay_out_pieces(const Compilation& c) {
   for (const Event& e : c.schedule.events) {
     if (e.kind != EventKind::stitch) continue;
     std::uint32_t piece = c.yarns.piece_of[e.stitch];
-    if (orders[piece].empty()) sequence.push_back(piece);
+    if (orders[piece].empty()) {
+      sequence.push_back(piece);
+      orders[piece].reserve(c.yarns.length[piece]);
+    }
     orders[piece].push_back(e.stitch);
   }
   std::vector<CourseLayout> layouts;
