@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iostream>
 #include <random>
 
 #include "common/error.hpp"
@@ -137,6 +139,46 @@ TEST(KnitoutRandomized, SocksOfRandomSizesProveOnEveryProfileTheyFit) {
   }
   EXPECT_GT(proven, 12);
   EXPECT_GT(too_wide, 0);
+}
+
+// The short-row wedge (a sheet with increases) and the sock (a tube with a heel and a toe) at
+// random gauges, turning at sr4 or sr5 faces: each proves on every profile it fits. An sr5's
+// turn loop is knit together with its own by a decrease in the next short row, in place.
+TEST(KnitoutRandomized, ShortRowProjectsAtRandomGaugesProveOnEveryProfileTheyFit) {
+  std::mt19937_64 rng(31);
+  std::string dir = ::testing::TempDir();
+  int proven = 0, too_wide = 0;
+  for (int trial = 0; trial < 12; ++trial) {
+    bool sock = trial % 2;
+    std::string sample = sock ? "sock" : "short-row-wedge";
+    std::string project = fmt::format("{}/random-{}.yaml", dir, trial);
+    std::ofstream(project) << fmt::format(
+        "mesh: {}/samples/{}/{}.obj\ngauge: {{stitches: {}, rows: {}}}\n{}short_rows:\n  "
+        "method: {}\n{}",
+        SKEIN_SOURCE_DIR, sample, sample, 12 + rng() % 30, 16 + rng() % 30,
+        sock ? "patterns: {cuff: k2p2}\n" : "", rng() % 2 ? "sr5" : "sr4",
+        sock ? "  faces: [34, 39]\n" : "");
+    Compilation c = compile_model(project);
+    ASSERT_TRUE(c.knittability.knittable) << project;
+    for (const char* profile : kProfiles) {
+      knitout::MachineProfile p = shipped_profile(profile);
+      std::string text;
+      try {
+        text = testing::emit_knitout_text(c, p);
+      } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find(" needles"), std::string::npos)
+            << project << " on " << profile << ": " << e.what();
+        ++too_wide;
+        continue;
+      }
+      knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
+      EXPECT_TRUE(proof.proven) << project << " on " << profile << ": " << proof.summary;
+      proven += proof.proven;
+    }
+  }
+  std::cout << "knitout short-row projects: " << proven << " proven, " << too_wide
+            << " too wide\n";
+  EXPECT_GT(proven, 30);
 }
 
 }  // namespace

@@ -195,17 +195,27 @@ std::size_t assign_directions(const KnitGraph& g, CourseLayout& l, bool first) {
   return 0;
 }
 
-// A short row is knit where its loops wait, so its stitches neither add nor remove loops; an
+// Whether a stitch can be knit where its loops wait: it takes one loop and leaves one, or it is
+// an sr5 (its turn loop waits on the facing needle), or it knits an sr5's two loops together.
+bool knits_in_place(const KnitGraph& g, StitchId s) {
+  const StitchTypeInfo& t = info(g.type[s]);
+  auto taken = g.loops_taken_by(s);
+  if (t.type == StitchType::sr5 || (taken.size() == 1 && t.loops_out == 1)) return true;
+  if (taken.size() != 2 || t.loops_out != 1) return false;
+  StitchId maker = g.loops[taken[0]].maker;
+  return g.loops[taken[1]].maker == maker && g.type[maker] == StitchType::sr5;
+}
+
+// A short row is knit where its loops wait, so its stitches neither add nor remove needles; an
 // sr5's turn loop waits on the facing needle until one decrease knits it with the sr5's loop.
 void check_short_rows(const KnitGraph& g, const CourseLayout& l) {
   for (const Course& c : l.courses) {
     for (std::uint32_t i = c.begin; i < c.end; ++i) {
       StitchId s = l.order[i];
-      const StitchTypeInfo& t = info(g.type[s]);
-      if (c.partial && t.loops_in != t.loops_out && t.type != StitchType::sr5)
+      if (c.partial && !knits_in_place(g, s))
         unsupported(g, "an increase, decrease or bind-off in a short row", s);
       auto made = g.loops_made_by(s);
-      if (t.type == StitchType::sr5 && g.loops[made[0]].taker != g.loops[made[1]].taker)
+      if (g.type[s] == StitchType::sr5 && g.loops[made[0]].taker != g.loops[made[1]].taker)
         unsupported(g, "an sr5 whose two loops are not knit together by the stitch above", s);
     }
   }

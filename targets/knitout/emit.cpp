@@ -191,13 +191,26 @@ class Emitter {
     sp.travel = rightward ? Direction::plus : Direction::minus;
   }
 
-  // A short row takes one loop per stitch and leaves one: each stitch knits where its loop
-  // waits, so the loops beside the short row stay where they are.
+  // The taken loop that rests where the fabric's loops rest: not an sr5's turn loop, which
+  // waits on the facing needle.
+  std::uint32_t resting_loop(StitchId s) const {
+    for (std::uint32_t loop : taken(s)) {
+      StitchId maker = g_.loops[loop].maker;
+      bool turn_loop =
+          g_.type[maker] == StitchType::sr5 &&
+          g_.loops[loop].maker_slot != knit_slot(StitchType::sr5, l_.left_to_right[maker]);
+      if (!turn_loop) return loop;
+    }
+    return taken(s)[0];
+  }
+
+  // A short row takes the loops of one needle per stitch and leaves one: each stitch knits
+  // where its loop waits, so the loops beside the short row stay where they are.
   void plan_in_place(const Course& c) {
     for (std::uint32_t i = c.begin; i < c.end; ++i) {
       StitchId s = l_.order[i];
       StitchPlan& sp = plan_[s];
-      const Place& h = live_[taken(s)[0]].home;
+      const Place& h = live_[resting_loop(s)].home;
       sp.home = h.bed;
       sp.needle = h.needle;
       sp.knit_slot = knit_slot(g_.type[s], l_.left_to_right[s]);
@@ -395,6 +408,7 @@ class Emitter {
   // One stage's stop toward `target`: along the bed by at most the reach, or, when some loops
   // cross a tube's fold (which then stays put), along the fabric across the fold.
   Place next_stop(Place now, Place target, bool crossing) const {
+    if (now == facing(target)) return target;  // an sr5's stack, gathered on its turn loop
     if (!crossing)
       return {now.bed, std::clamp(target.needle, now.needle - reach_, now.needle + reach_)};
     std::int32_t u = ring(now), step = reach_ / pitch_;
