@@ -199,7 +199,7 @@ TEST(KnitoutPieces, SeparatePiecesAreKnitOneAfterAnotherOnTheirOwnCarriers) {
     knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
     EXPECT_TRUE(proof.proven) << name << ": " << proof.summary;
     auto second = std::find_if(p.carriers.begin(), p.carriers.end(), [&](const std::string& n) {
-      return n != p.yarn_carrier && n != p.waste_carrier;
+      return n != p.yarn_carrier && n != p.waste_carrier && n != p.draw_carrier;
     });
     EXPECT_NE(
         text.find(fmt::format(";!source: yarn piece 2 (carrier {}): 3 rows: a sheet", *second)),
@@ -214,8 +214,8 @@ TEST(KnitoutPieces, MorePiecesThanCarriersAreRefusedInWords) {
   KnitGraph many = one;
   for (int i = 0; i < 6; ++i) many = side_by_side(many, one);
   EXPECT_EQ(emit_error(compile_knit_graph(many, "seven.st"), "kniterate"),
-            "seven.st has 7 yarn pieces, one carrier each, and kniterate has only 5 carriers for "
-            "them besides the waste yarn's");
+            "seven.st has 7 yarn pieces, one carrier each, and kniterate has only 4 carriers for "
+            "them besides the waste yarn's and the draw thread's");
 }
 
 // The knit graph does not say which way the yarn runs through a stitch; the courses do.

@@ -535,6 +535,7 @@ class Emitter {
       for (std::uint32_t row = 0; row < p_.waste_rows * (l_.tube ? 2 : 1); ++row, d = opposite(d))
         knit_pass(c, d, p_.waste_carrier);
       yarn_out(p_.waste_carrier);
+      if (!p_.draw_carrier.empty()) draw_thread(c);
       yarn_in(carrier_);
     } else {
       w_.line(";!source: cast-on border: alternating tucks");
@@ -554,6 +555,18 @@ class Emitter {
       return;
     }
     knit_course(c);
+  }
+
+  // One row (a round on a tube) of the draw thread over the waste loops: pulling it out later
+  // frees the piece from the waste section.
+  void draw_thread(const Course& c) {
+    w_.line(fmt::format(";!source: draw thread (carrier {})", p_.draw_carrier));
+    yarn_in(p_.draw_carrier);
+    Direction d = p_.first_pass;
+    for (int pass = 0; pass < (l_.tube ? 2 : 1); ++pass, d = opposite(d))
+      knit_pass(c, d, p_.draw_carrier);
+    release(p_.draw_carrier);
+    yarn_out(p_.draw_carrier);
   }
 
   // Chain bind-off: knit a loop, move it onto the next stitch's needle, knit both, and so on;
@@ -625,18 +638,23 @@ void write_header(KnitoutWriter& w, const Compilation& c, const MachineProfile& 
 }
 
 // One carrier per yarn piece: the profile's yarn carrier, then the others in the header's
-// order, never the waste yarn's.
+// order, never the waste yarn's or the draw thread's.
 std::vector<std::string> piece_carriers(const Compilation& c, const MachineProfile& p,
                                         std::size_t pieces) {
   std::vector<std::string> carriers{p.yarn_carrier};
   for (const std::string& name : p.carriers)
-    if (carriers.size() < pieces && name != p.yarn_carrier && name != p.waste_carrier)
+    if (carriers.size() < pieces && name != p.yarn_carrier && name != p.waste_carrier &&
+        name != p.draw_carrier)
       carriers.push_back(name);
   if (carriers.size() < pieces)
     throw Error(
         fmt::format("{} has {} yarn pieces, one carrier each, and {} has only {} carriers "
-                    "for them besides the waste yarn's",
-                    c.input, pieces, p.name, carriers.size()));
+                    "for them{}",
+                    c.input, pieces, p.name, carriers.size(),
+                    p.waste_carrier.empty()  ? ""
+                    : p.draw_carrier.empty() ? " besides the waste yarn's"
+                                             : " besides the waste yarn's and the draw "
+                                               "thread's"));
   return carriers;
 }
 
