@@ -501,13 +501,18 @@ class Emitter {
   }
 
   // Alternating tucks over the cast-on needles (two passes per bed), starting in the profile's
-  // first direction; returns the direction of the next pass.
+  // first direction; returns the direction of the next pass. Each bed's first pass tucks the
+  // first needle it meets, so a yarn-inserting hook beside the first stitch is beyond them all.
   Direction tuck_border(const Course& c, const std::string& carrier) {
     Direction d = p_.first_pass;
-    for (int pass = 0; pass < (l_.tube ? 4 : 2); ++pass, d = opposite(d)) {
-      std::int32_t parity = l_.tube ? pass / 2 : pass;
-      for (const Needle& n : pass_needles(c, d))
-        if ((l_.tube ? n.index / 2 : n.index) % 2 == parity) w_.tuck(d, n, carrier);
+    std::int32_t beds = l_.tube ? 2 : 1, start[2] = {0, 0};
+    for (std::int32_t pass = 0; pass < 2 * beds; ++pass, d = opposite(d)) {
+      std::vector<Needle> needles = pass_needles(c, d);
+      if (needles.empty()) continue;
+      std::int32_t& first = start[pass % beds];
+      if (pass < beds) first = needles.front().index;
+      for (const Needle& n : needles)
+        if (std::abs(n.index - first) / pitch_ % 2 == pass / beds) w_.tuck(d, n, carrier);
     }
     return d;
   }
