@@ -142,13 +142,14 @@ TEST(KnitoutRandomized, SocksOfRandomSizesProveOnEveryProfileTheyFit) {
 }
 
 // The short-row wedge (a sheet with increases) and the sock (a tube with a heel and a toe) at
-// random gauges, turning at sr4 or sr5 faces: each proves on every profile it fits. An sr5's
+// random gauges, turning at sr4 or sr5 faces: each proves on every profile it fits (or is
+// refused for its width, or for two wraps on one needle of the Kniterate). An sr5's
 // turn loop is knit together with its own by a decrease in the next short row, in place.
 TEST(KnitoutRandomized, ShortRowProjectsAtRandomGaugesProveOnEveryProfileTheyFit) {
   std::mt19937_64 rng(31);
   std::string dir = ::testing::TempDir();
-  int proven = 0, too_wide = 0;
-  for (int trial = 0; trial < 12; ++trial) {
+  int proven = 0, refused = 0;
+  for (int trial = 0; trial < 40; ++trial) {
     bool sock = trial % 2;
     std::string sample = sock ? "sock" : "short-row-wedge";
     std::string project = fmt::format("{}/random-{}.yaml", dir, trial);
@@ -165,10 +166,12 @@ TEST(KnitoutRandomized, ShortRowProjectsAtRandomGaugesProveOnEveryProfileTheyFit
       std::string text;
       try {
         text = testing::emit_knitout_text(c, p);
-      } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find(" needles"), std::string::npos)
-            << project << " on " << profile << ": " << e.what();
-        ++too_wide;
+      } catch (const Error& e) {  // too wide, or two turns wrapping one loop on the Kniterate
+        std::string what = e.what();
+        EXPECT_TRUE(what.find(" needles") != std::string::npos ||
+                    what.find("would hold 3 loops, kniterate allows 2") != std::string::npos)
+            << project << " on " << profile << ": " << what;
+        ++refused;
         continue;
       }
       knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
@@ -176,9 +179,8 @@ TEST(KnitoutRandomized, ShortRowProjectsAtRandomGaugesProveOnEveryProfileTheyFit
       proven += proof.proven;
     }
   }
-  std::cout << "knitout short-row projects: " << proven << " proven, " << too_wide
-            << " too wide\n";
-  EXPECT_GT(proven, 30);
+  std::cout << "knitout short-row projects: " << proven << " proven, " << refused << " refused\n";
+  EXPECT_GT(proven, 100);
 }
 
 }  // namespace
