@@ -219,6 +219,9 @@ TEST(KnitoutMutation, EveryEditThatChangesTheFabricOrBreaksARuleIsRejected) {
       testing::shipped_profile("swg091n2"), 150, tally);
   run_mutants("short-row sheet on kniterate", sheet_with_both_turns(),
               testing::shipped_profile("kniterate"), 150, tally);
+  run_mutants("sock (short-row heel in a tube) on swg091n2",
+              compile_model("samples/sock/sock.yaml"), testing::shipped_profile("swg091n2"), 150,
+              tally);
   int rejected = 0, undetectable = 0;
   std::cout << "knitout mutants: " << tally.total << "\n";
   for (const auto& [verdict, count] : tally.outcome) {

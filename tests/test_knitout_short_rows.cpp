@@ -44,6 +44,38 @@ TEST(KnitoutShortRows, TheCoursesTakeARunOfTheWaitingLoopsAndTheTurnWrapsTheNext
   EXPECT_EQ(c.knit.type[c.knit.loops[turning.wrap].maker], T::co);
 }
 
+// Every wrap of the sock's heel matters: without it, or made going back, the file is not the
+// sock (or breaks a rule).
+TEST(KnitoutShortRows, EachWrapOfTheSockHeelIsCheckedByTheProof) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  Compilation c = compile_model("samples/sock/sock.yaml");
+  knitout::MachineProfile p = shipped_profile("swg091n2");
+  std::string text = testing::emit_knitout_text(c, p);
+  auto rejected = [&](const std::string& edited) {
+    try {
+      return !testing::replay_and_prove(edited, c, p).proven;
+    } catch (const ParseError&) {
+      return true;
+    }
+  };
+  int wraps = 0;
+  for (std::size_t at = text.find("\ntuck "); at != std::string::npos;
+       at = text.find("\ntuck ", at + 1)) {
+    std::size_t begin = at + 1, end = text.find('\n', begin) + 1;
+    std::size_t heading = text.rfind(";!source:", begin);  // the section the tuck is in
+    if (text.substr(heading, text.find('\n', heading) - heading).find("(short row)") ==
+        std::string::npos)
+      continue;
+    ++wraps;
+    std::string dropped = text, flipped = text;
+    dropped.erase(begin, end - begin);
+    flipped[begin + 5] = flipped[begin + 5] == '+' ? '-' : '+';
+    EXPECT_TRUE(rejected(dropped)) << text.substr(begin, end - begin);
+    EXPECT_TRUE(rejected(flipped)) << text.substr(begin, end - begin);
+  }
+  EXPECT_EQ(wraps, 14);  // one per sr4 turn
+}
+
 TEST(KnitoutShortRows, TheFixtureKnitsAndProvesOnEveryProfileWithATuckAtTheTurn) {
   for (StitchType turn : {T::sr4, T::sr5}) {
     Compilation c = compile_stitch_mesh(testing::short_row_mesh(turn), "short rows");

@@ -69,8 +69,8 @@ class Matcher {
 
  private:
   // A short row's turn: a tuck (a loop through nothing) that the stitch taking the waiting
-  // loop later knits through as well; on a sheet, made on the way the row went (`last` is the
-  // turning stitch's loop). A tube's tuck may be over the fold, going the other way.
+  // loop later knits through as well, made going on the way the row went (`last` is the
+  // turning stitch's loop); in a tube, the other way when the waiting loop lies over the fold.
   bool wrap_matches(StitchId s, LoopId last, LoopId x, std::string& why) {
     const FabricLoop& fl = f_.loops[x];
     if (fl.made_by != OpCode::tuck || fl.parent_count != 0) {
@@ -78,14 +78,21 @@ class Matcher {
                         g_.describe(s), where(x));
       return false;
     }
-    if (!l_.tube && fl.dir != f_.loops[last].dir) {
+    std::uint32_t waiting = wrap_after_[s];
+    bool over_fold = l_.tube && front_half(loop_of_[waiting], g_.type[g_.loops[waiting].maker]) !=
+                                    front_half(last, g_.type[s]);
+    Direction on = over_fold ? opposite(f_.loops[last].dir) : f_.loops[last].dir;
+    if (fl.dir != on) {
       why = fmt::format("the turn after {} goes back before its tuck: {} goes {}", g_.describe(s),
                         where(x), direction_char(fl.dir));
       return false;
     }
-    wraps_.emplace(g_.loops[wrap_after_[s]].taker, x);
+    wraps_.emplace(g_.loops[waiting].taker, x);
     return true;
   }
+  // Whether a loop made by a stitch of type `t` belongs to a tube's front half (a purl's loop
+  // is made on the bed facing its half).
+  bool front_half(LoopId x, StitchType t) const { return f_.loops[x].front != is_purl(t); }
   bool is_wrap(StitchId s, LoopId x) const {
     auto [first, last] = wraps_.equal_range(s);
     return std::any_of(first, last, [x](const auto& w) { return w.second == x; });
