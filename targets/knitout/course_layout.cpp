@@ -109,66 +109,90 @@ void each_left_to_right(const CourseLayout& l, const Course& c, F f) {
     for (std::uint32_t i = c.end; i-- > c.begin;) f(l.order[i]);
 }
 
-// The loops on the needles, left to right along the fabric (a ring on a tube), as each course
-// takes a run of them and leaves its own loops in their place.
+// A run of loops on the needles, left to right.
+struct Run {
+  std::uint32_t first = kNoWrap, last = kNoWrap, count = 0;
+};
+
+// The loops on the needles, left to right along the fabric (a ring on a tube), as a linked
+// list: each course takes a run of them and leaves its own loops in their place, in time linear
+// in the loops it takes and makes.
 class LiveLoops {
  public:
-  explicit LiveLoops(const KnitGraph& g, bool ring) : g_(g), ring_(ring) {
-    position_.assign(g.loops.size(), 0);
-  }
-  std::size_t size() const { return live_.size(); }
+  LiveLoops(const KnitGraph& g, bool ring)
+      : g_(g),
+        ring_(ring),
+        next_(g.loops.size(), kNoWrap),
+        prev_(g.loops.size(), kNoWrap),
+        live_(g.loops.size(), 0) {}
+  std::size_t size() const { return size_; }
 
-  // Where the loops `c` takes start among the live loops, if they are a run of them in order.
-  bool find_run(const CourseLayout& l, const Course& c, std::size_t& start, std::size_t& count) {
-    count = 0;
+  void start(const CourseLayout& l, const Course& c) { link_made(l, c, kNoWrap, kNoWrap); }
+
+  // Whether the loops `c` takes, left to right, are live and follow each other; gives the
+  // run's ends and length.
+  bool find_run(const CourseLayout& l, const Course& c, Run& run) const {
+    run = Run{};
     bool in_order = true;
     each_left_to_right(l, c, [&](StitchId s) {
       for (std::uint32_t loop : g_.loops_taken_by(s)) {
-        if (count == 0) start = position_[loop];
-        std::size_t expect = start + count++;
-        in_order &= expect < live_.size() || ring_;
-        in_order &= in_order && live_[expect % live_.size()] == loop;
+        in_order &= live_[loop] && (run.count == 0 || next_[run.last] == loop);
+        if (run.count++ == 0) run.first = loop;
+        run.last = loop;
       }
     });
-    return in_order && count > 0;
+    return in_order && run.count > 0 && run.count <= size_;
   }
 
   // Puts the loops `c` makes in place of the run; returns the loop waiting just beyond the
   // course's last stitch along the yarn (kNoWrap at a sheet's edge or when nothing waits).
-  std::uint32_t replace_run(const CourseLayout& l, const Course& c, std::size_t start,
-                            std::size_t count) {
-    std::vector<std::uint32_t> next;
-    next.reserve(live_.size() + 2 * (c.end - c.begin));
-    std::size_t n = live_.size();
-    if (!ring_) next.assign(live_.begin(), live_.begin() + static_cast<std::ptrdiff_t>(start));
-    std::size_t made_begin = next.size();
-    each_left_to_right(l, c, [&](StitchId s) {
-      for (std::uint32_t loop : g_.loops_made_by(s)) next.push_back(loop);
-    });
-    std::size_t made_end = next.size();
-    // A ring restarts at the course's first loop; a row keeps what lies beyond it.
-    std::size_t rest = ring_ ? n - count : n - start - count;
-    for (std::size_t i = 0; i < rest; ++i) next.push_back(live_[(start + count + i) % n]);
-    live_.swap(next);
-    for (std::size_t i = 0; i < live_.size(); ++i) position_[live_[i]] = i;
-    if (count == n || made_end == made_begin) return kNoWrap;
-    std::size_t m = live_.size();
-    if (c.left_to_right) return made_end < m || ring_ ? live_[made_end % m] : kNoWrap;
-    return made_begin > 0 || ring_ ? live_[(made_begin + m - 1) % m] : kNoWrap;
-  }
-
-  void start(const CourseLayout& l, const Course& c) {
-    live_.clear();
-    each_left_to_right(l, c, [&](StitchId s) {
-      for (std::uint32_t loop : g_.loops_made_by(s)) live_.push_back(loop);
-    });
-    for (std::size_t i = 0; i < live_.size(); ++i) position_[live_[i]] = i;
+  std::uint32_t replace_run(const CourseLayout& l, const Course& c, const Run& run) {
+    bool whole = run.count == size_;
+    std::uint32_t before = whole ? kNoWrap : prev_[run.first];
+    std::uint32_t after = whole ? kNoWrap : next_[run.last];
+    for (std::uint32_t loop = run.first, n = 0; n < run.count; ++n, loop = next_[loop])
+      live_[loop] = 0;
+    size_ -= run.count;
+    auto [first, last] = link_made(l, c, before, after);
+    if (first == kNoWrap) {  // nothing made (a bind-off): the neighbours close up
+      if (before != kNoWrap) next_[before] = after;
+      if (after != kNoWrap) prev_[after] = before;
+      return kNoWrap;
+    }
+    return c.left_to_right ? after : before;
   }
 
  private:
+  // Links the loops `c` makes, left to right, between `before` and `after` (a ring closes on
+  // itself when both are absent); returns the first and last.
+  std::pair<std::uint32_t, std::uint32_t> link_made(const CourseLayout& l, const Course& c,
+                                                    std::uint32_t before, std::uint32_t after) {
+    std::uint32_t first = kNoWrap, last = before;
+    each_left_to_right(l, c, [&](StitchId s) {
+      for (std::uint32_t loop : g_.loops_made_by(s)) {
+        live_[loop] = 1;
+        ++size_;
+        prev_[loop] = last;
+        if (last != kNoWrap) next_[last] = loop;
+        if (first == kNoWrap) first = loop;
+        last = loop;
+      }
+    });
+    if (first == kNoWrap) return {kNoWrap, kNoWrap};
+    next_[last] = after;
+    if (after != kNoWrap) prev_[after] = last;
+    if (ring_ && before == kNoWrap && after == kNoWrap) {
+      next_[last] = first;
+      prev_[first] = last;
+    }
+    return {first, last};
+  }
+
   const KnitGraph& g_;
   bool ring_;
-  std::vector<std::uint32_t> live_, position_;
+  std::vector<std::uint32_t> next_, prev_;  // per loop, along the fabric (kNoWrap: an edge)
+  std::vector<std::uint8_t> live_;          // per loop: on the needles now
+  std::size_t size_ = 0;
 };
 
 // Gives each course a direction, starting with `first`: a turn reverses it, a shift-path keeps
@@ -182,10 +206,10 @@ std::size_t assign_directions(const KnitGraph& g, CourseLayout& l, bool first) {
     Course& course = l.courses[c];
     bool turned = g.yarn_link[l.order[course.begin - 1]] == YarnLink::turn;
     course.left_to_right = l.courses[c - 1].left_to_right != turned;
-    std::size_t start = 0, count = 0;
-    if (!live.find_run(l, course, start, count)) return c;
-    course.partial = count < live.size();
-    std::uint32_t beyond = live.replace_run(l, course, start, count);
+    Run run;
+    if (!live.find_run(l, course, run)) return c;
+    course.partial = run.count < live.size();
+    std::uint32_t beyond = live.replace_run(l, course, run);
     bool turns_next =
         c + 1 < l.courses.size() && g.yarn_link[l.order[course.end - 1]] == YarnLink::turn;
     // An sr5 makes the turn's loop itself.
