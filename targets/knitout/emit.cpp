@@ -669,16 +669,12 @@ void emit_knitout(const Compilation& c, const MachineProfile& p, std::ostream& o
   std::vector<CourseLayout> pieces = lay_out_pieces(c);
   std::vector<std::string> carriers = piece_carriers(c, p, pieces.size());
   KnitoutWriter w(out);
-  std::vector<Emitter> emitters;
-  emitters.reserve(pieces.size());
-  for (std::size_t i = 0; i < pieces.size(); ++i)
-    emitters.emplace_back(c, p, pieces[i], w, carriers[i]);
   write_header(w, c, p, pieces);
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     if (pieces.size() > 1)
       w.line(fmt::format(";!source: yarn piece {} (carrier {}): {}", i + 1, carriers[i],
                          describe(pieces[i])));
-    emitters[i].run();
+    Emitter(c, p, pieces[i], w, carriers[i]).run();  // one piece's state at a time
   }
 }
 
