@@ -104,7 +104,8 @@ TEST(KnitoutFit, ADoubleDecreaseNeedsThreeLoopsPerNeedle) {
 TEST(KnitoutFit, WhatIsNotSupportedYetIsNamedWithItsStitch) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
   EXPECT_EQ(emit_error(compile_model("samples/autoknit/test-A.st"), "generic"),
-            "not yet supported by the knitout target: the tuck stitch (tuck), at line 59 (tuck)");
+            "not yet supported by the knitout target: a bind-off stitch below the last row, at "
+            "line 427 (bo)");
   EXPECT_EQ(emit_error(compile_model("samples/autoknit/test-B.st"), "generic"),
             "not yet supported by the knitout target: a bind-off stitch below the last row, at "
             "line 152 (bo)");
@@ -163,6 +164,34 @@ TEST(KnitoutStitchGraph, AHelixOfRoundsKnitsAsATubeAndProvesOnEveryProfile) {
   knitout::CourseLayout l = knitout::lay_out_pieces(c).front();
   EXPECT_TRUE(l.tube);
   EXPECT_EQ(l.courses.size(), 6u);
+}
+
+// Tucks and slips keep the loop below on the needle: a tuck adds its loop over it, a slip
+// leaves it; the stitch above knits them together (a kfb twice, a decrease with its partner).
+TEST(KnitoutTucksAndSlips, KeepTheLoopBelowForTheStitchAboveOnEveryProfile) {
+  RowPlan plan = {{T::co, T::co, T::co, T::co, T::co, T::co},
+                  {T::k, T::tuck, T::sl, T::p, T::tuck, T::k},
+                  {T::sl, T::k, T::k, T::tuck, T::kfb, T::k},
+                  {T::k, T::k, T::p, T::k, T::k, T::k, T::k},
+                  {T::bo, T::bo, T::bo, T::bo, T::bo, T::bo, T::bo}};
+  for (Layout layout : {Layout::sheet, Layout::tube}) {
+    Compilation c = compile_stitch_mesh(build_from_rows(plan, layout), "tucks");
+    for (const char* name : kProfiles) {
+      knitout::MachineProfile p = shipped_profile(name);
+      std::string text = testing::emit_knitout_text(c, p);
+      knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
+      EXPECT_TRUE(proof.proven) << name << ": " << proof.summary;
+    }
+  }
+}
+
+TEST(KnitoutTucksAndSlips, ADecreaseOverATuckCountsTheLoopsItGathers) {
+  RowPlan plan = {{T::co, T::co, T::co}, {T::k, T::tuck, T::k}, {T::k, T::k2tog}, {T::bo, T::bo}};
+  Compilation c = compile_stitch_mesh(build_from_rows(plan, Layout::sheet), "tuck.obj");
+  EXPECT_EQ(emit_error(c, "kniterate"),
+            "face 8 (k2tog, row 3) would gather 3 loops on one needle (with tucked loops, "
+            "short-row wraps or the bind-off chain), kniterate allows 2");
+  EXPECT_EQ(emit_error(c, "generic"), "no error");
 }
 
 // Two knit graphs side by side in one model: two yarn pieces that share no loop.
@@ -327,6 +356,39 @@ TEST(KnitoutRandomized, ShapedSheetsAndTubesCompileAndProveOnEveryProfileTheyFit
             << too_wide << " too wide, " << refused - too_wide << " decreases too deep)\n";
   EXPECT_GT(proven, 420);
   EXPECT_GT(refused, 0);
+}
+
+// Random shaped sheets and tubes with some knits made tucks or slips (never two in a column, so
+// no wale is only tucks): each proves on every profile, or is refused for a needle too full.
+TEST(KnitoutRandomized, TucksAndSlipsInShapedSheetsAndTubesProveOrAreRefusedInWords) {
+  std::mt19937_64 rng(12);
+  int proven = 0, refused = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    RowPlan plan = random_rows(6 + static_cast<std::uint32_t>(rng() % 20),
+                               2 + static_cast<std::uint32_t>(rng() % 10), RandomShaping{}, rng());
+    for (std::size_t r = 1; r + 1 < plan.size(); r += 2)
+      for (StitchType& t : plan[r])
+        if (t == T::k && rng() % 4 == 0) t = rng() % 2 ? T::tuck : T::sl;
+    Layout layout = trial % 2 ? Layout::tube : Layout::sheet;
+    Compilation c = compile_stitch_mesh(build_from_rows(plan, layout), "tucks");
+    for (const char* name : kProfiles) {
+      knitout::MachineProfile p = shipped_profile(name);
+      std::string text;
+      try {
+        text = testing::emit_knitout_text(c, p);
+      } catch (const Error& e) {
+        std::string what = e.what();
+        EXPECT_TRUE(is_fit_error(what) || what.find("would gather") != std::string::npos)
+            << "trial " << trial << " on " << name << ": " << what;
+        ++refused;
+        continue;
+      }
+      knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
+      EXPECT_TRUE(proof.proven) << "trial " << trial << " on " << name << ": " << proof.summary;
+      proven += proof.proven;
+    }
+  }
+  EXPECT_GT(proven, 80);
 }
 
 }  // namespace

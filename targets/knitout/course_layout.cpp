@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "common/error.hpp"
+#include "knitout/stitch_recipes.hpp"
 
 namespace skein::knitout {
 namespace {
@@ -28,6 +29,8 @@ bool has_machine_recipe(StitchType t) {
     case StitchType::s2kp:
     case StitchType::sr4:
     case StitchType::sr5:
+    case StitchType::tuck:
+    case StitchType::sl:
       return true;
     default:
       return false;
@@ -212,9 +215,11 @@ std::size_t assign_directions(const KnitGraph& g, CourseLayout& l, bool first) {
     std::uint32_t beyond = live.replace_run(l, course, run);
     bool turns_next =
         c + 1 < l.courses.size() && g.yarn_link[l.order[course.end - 1]] == YarnLink::turn;
-    // An sr5 makes the turn's loop itself.
+    // An sr5 makes the turn's loop itself; a loop that a tuck or slip takes next is left
+    // unwrapped (the stitch above those takes the needle's loops).
     bool own_turn_loop = g.type[l.order[course.end - 1]] == StitchType::sr5;
-    course.wrap = course.partial && turns_next && !own_turn_loop ? beyond : kNoWrap;
+    bool wrappable = beyond != kNoWrap && !keeps_loop_below(g.type[g.loops[beyond].taker]);
+    course.wrap = course.partial && turns_next && !own_turn_loop && wrappable ? beyond : kNoWrap;
   }
   return 0;
 }

@@ -132,14 +132,17 @@ class Emitter {
       throw Error(fmt::format("{} needs {} needles{} (row {}, from {}), {} has {}", c_.input,
                               widest, l_.tube ? " in half gauge" : "", at_course->row + 1,
                               g_.describe(l_.order[at_course->begin]), p_.name, p_.needles));
-    std::vector<std::uint32_t> wraps = wraps_per_stitch();
-    for (StitchId s = 0; s < g_.size(); ++s) {
-      std::uint32_t in = info(g_.type[s]).loops_in;
-      if (in + wraps[s] > p_.max_loops_per_needle && wraps[s] > 0)
+    std::vector<std::uint32_t> wraps = wraps_per_stitch(), held = held_loops();
+    for (StitchId s : l_.order) {
+      // A bind-off's needle also receives the chain's loop.
+      std::uint32_t in = info(g_.type[s]).loops_in,
+                    gathered = wraps[s] + (g_.type[s] == StitchType::bo ? 1 : 0);
+      for (std::uint32_t loop : taken(s)) gathered += held[loop];
+      if (gathered > p_.max_loops_per_needle && gathered > in)
         throw Error(fmt::format(
-            "short-row turns wrap {} {} time{}: its needle would hold {} loops, {} allows {}",
-            g_.describe(s), wraps[s], wraps[s] == 1 ? "" : "s", in + wraps[s], p_.name,
-            p_.max_loops_per_needle));
+            "{} would gather {} loops on one needle (with tucked loops, short-row wraps or the "
+            "bind-off chain), {} allows {}",
+            g_.describe(s), gathered, p_.name, p_.max_loops_per_needle));
       if (in > p_.max_loops_per_needle)
         throw Error(
             fmt::format("a {}-to-1 decrease exceeds the {} loop{} per needle {} allows, at {}", in,
@@ -153,6 +156,16 @@ class Emitter {
     if (reach_ < pitch_)
       throw Error(fmt::format("{} allows no sideways transfer (racking.max_transfer_stretch {})",
                               p_.name, p_.max_transfer_stretch));
+  }
+
+  // How many loops a needle holds for each knit graph loop: a tuck keeps the loops it takes
+  // under its own, a slip passes them on.
+  std::vector<std::uint32_t> held_loops() const {
+    std::vector<std::uint32_t> held(g_.loops.size(), 1);
+    for (StitchId s : l_.order)
+      if (keeps_loop_below(g_.type[s]))
+        held[g_.loops_made_by(s)[0]] = held[taken(s)[0]] + (g_.type[s] == StitchType::tuck ? 1 : 0);
+    return held;
   }
 
   // How many short-row turns wrap each stitch's loop (their tucks are knit with it).
@@ -437,6 +450,11 @@ class Emitter {
     const StitchPlan& sp = plan_[s];
     Needle n{sp.knit, sp.needle};
     StitchType t = g_.type[s];
+    if (keeps_loop_below(t)) {  // the needle keeps its loops: a tuck adds one, a slip nothing
+      if (t == StitchType::tuck) w_.tuck(sp.travel, n, carrier_);
+      made(s, 0, {sp.knit, sp.needle});
+      return;
+    }
     if (info(t).loops_out < 2) {
       w_.knit(sp.travel, n, carrier_);
       made(s, 0, {sp.knit, sp.needle});

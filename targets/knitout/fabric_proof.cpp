@@ -12,9 +12,9 @@
 namespace skein::knitout {
 namespace {
 
-// Fabric loops a stitch makes along its yarn (a bind-off's chain loop included).
+// Fabric loops a stitch makes along its yarn (a bind-off's chain loop included; a slip none).
 std::uint32_t fabric_loops(StitchType t) {
-  return std::max<std::uint32_t>(info(t).loops_out, 1);
+  return t == StitchType::sl ? 0 : std::max<std::uint32_t>(info(t).loops_out, 1);
 }
 
 class Matcher {
@@ -22,6 +22,7 @@ class Matcher {
   Matcher(const Replay& r, std::string_view text, const Compilation& c, const CourseLayout& l)
       : f_(r.fabric), r_(r), text_(text), c_(c), g_(c.knit), l_(l) {
     loop_of_.assign(g_.loops.size(), kNoLoop);
+    kept_.assign(g_.loops.size(), kNoKept);
     stamp_.assign(f_.loops.size(), 0);
     wrap_after_.assign(g_.size(), kNoWrap);
     for (const Course& course : l_.courses)
@@ -158,8 +159,10 @@ class Matcher {
                       std::string& why) {
     auto taken = g_.loops_taken_by(s);
     auto made = g_.loops_made_by(s);
+    if (keeps_loop_below(t)) return kept_below(s, t, loops, why);
     std::vector<LoopId> through;
-    for (std::uint32_t loop : taken) through.push_back(loop_of_[loop]);
+    for (std::uint32_t loop : taken)
+      for (std::uint32_t l = loop; l != kNoKept; l = kept_[l]) through.push_back(loop_of_[l]);
     auto [wrap, wraps_end] = wraps_.equal_range(s);
     for (; wrap != wraps_end; ++wrap) through.push_back(wrap->second);
     if (t == StitchType::co) {
@@ -232,12 +235,40 @@ class Matcher {
     return true;
   }
 
-  // Every loop of the input is pulled through as often as its taker needs (kfb twice).
+  // A tuck: a loop through nothing, over the loop it takes, which stays on the needle for the
+  // stitch above (kept_); a slip makes no loop: its loop is the one it takes.
+  bool kept_below(StitchId s, StitchType t, const LoopId* loops, std::string& why) {
+    std::uint32_t below = g_.loops_taken_by(s)[0], made = g_.loops_made_by(s)[0];
+    if (t == StitchType::sl) {
+      loop_of_[made] = loop_of_[below];
+      kept_[made] = kept_[below];
+      return true;
+    }
+    if (f_.loops[loops[0]].made_by != OpCode::tuck) {
+      why = fmt::format("{} is not there: {} is not a tuck", g_.describe(s), where(loops[0]));
+      return false;
+    }
+    if (!parents_are(loops[0], {}, s, why) || !travels_along_course(s, t, loops, 1, why))
+      return false;
+    loop_of_[made] = loops[0];
+    kept_[made] = below;
+    return true;
+  }
+
+  // How often a loop is pulled through: once, twice for a kfb; a tuck or slip above passes it
+  // on to the stitch that takes their loop.
+  std::uint32_t pulls(std::uint32_t loop) const {
+    StitchId taker = g_.loops[loop].taker;
+    if (keeps_loop_below(g_.type[taker])) return pulls(g_.loops_made_by(taker)[0]);
+    return g_.type[taker] == StitchType::kfb ? 2 : 1;
+  }
+
+  // Every loop of the input is pulled through as often as its taker needs.
   bool children_match(std::string& why) const {
     for (StitchId s : l_.order)
       for (std::uint32_t loop : g_.loops_made_by(s)) {
         const Loop& l = g_.loops[loop];
-        std::uint32_t want = g_.type[l.taker] == StitchType::kfb ? 2 : 1;
+        std::uint32_t want = pulls(loop);
         LoopId x = loop_of_[loop];
         if (f_.loops[x].children != want) {
           why = fmt::format("the loop {} makes for {} is pulled through {} time{}, expected {}",
@@ -257,6 +288,8 @@ class Matcher {
   const KnitGraph& g_;
   const CourseLayout& l_;
   std::vector<LoopId> loop_of_;                      // per knit graph loop: its fabric loop
+  static constexpr std::uint32_t kNoKept = 0xffffffffu;
+  std::vector<std::uint32_t> kept_;  // per knit graph loop: the loop a tuck kept under it
   std::vector<std::uint32_t> stamp_;                 // per fabric loop: the try that matched it
   std::vector<std::uint32_t> wrap_after_;            // per stitch: the loop its course's turn wraps
   std::unordered_multimap<StitchId, LoopId> wraps_;  // per stitch: the turn tucks it knits

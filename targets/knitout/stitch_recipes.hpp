@@ -9,6 +9,12 @@
 
 namespace skein::knitout {
 
+// Stitches that do not knit their loop off: a tuck adds its loop to the needle over the loop it
+// takes, a slip leaves the needle as it is; the stitch above takes the needle's loops together.
+inline bool keeps_loop_below(StitchType t) {
+  return t == StitchType::tuck || t == StitchType::sl;
+}
+
 // Knit on the bed behind the fabric's right side (a purl seen from the right side).
 inline bool is_purl(StitchType t) {
   return t == StitchType::p || t == StitchType::p2tog;
