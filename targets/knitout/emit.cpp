@@ -117,8 +117,16 @@ class Emitter {
     return l_.tube ? 2 * std::max(f.front, f.total - f.front) : f.total;
   }
 
-  // Checks that the model fits the profile, and centres a tube's widest course on the bed.
+  // Checks that the piece fits the profile, and centres a tube's widest course on the bed.
   void check_fit() {
+    check_width();
+    check_needle_loads();
+    if (reach_ < pitch_)
+      throw Error(fmt::format("{} allows no sideways transfer (racking.max_transfer_stretch {})",
+                              p_.name, p_.max_transfer_stretch));
+  }
+
+  void check_width() {
     std::uint32_t widest = 0;
     const Course* at_course = nullptr;
     for (const Course& c : l_.courses) {
@@ -132,6 +140,10 @@ class Emitter {
       throw Error(fmt::format("{} needs {} needles{} (row {}, from {}), {} has {}", c_.input,
                               widest, l_.tube ? " in half gauge" : "", at_course->row + 1,
                               g_.describe(l_.order[at_course->begin]), p_.name, p_.needles));
+  }
+
+  // The loops each stitch gathers on one needle, and the transfers a double decrease needs.
+  void check_needle_loads() const {
     std::vector<std::uint32_t> wraps = wraps_per_stitch(), held = held_loops();
     for (StitchId s : l_.order) {
       // A bind-off's needle also receives the chain's loop.
@@ -153,9 +165,6 @@ class Emitter {
             fmt::format("a 3-to-1 decrease needs transfers across {} needles, {} allows {}, at {}",
                         2 * pitch_, p_.name, p_.max_transfer_stretch, g_.describe(s)));
     }
-    if (reach_ < pitch_)
-      throw Error(fmt::format("{} allows no sideways transfer (racking.max_transfer_stretch {})",
-                              p_.name, p_.max_transfer_stretch));
   }
 
   // How many loops a needle holds for each knit graph loop: a tuck keeps the loops it takes
