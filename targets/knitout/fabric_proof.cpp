@@ -155,16 +155,35 @@ class Matcher {
     return false;
   }
 
+  // The fabric loops a stitch must be pulled through: the loops it takes, with the loops tucks
+  // kept under them, and the tucks of the short-row turns that wrapped them.
+  std::vector<LoopId> through_of(StitchId s) const {
+    std::vector<LoopId> through;
+    for (std::uint32_t loop : g_.loops_taken_by(s))
+      for (std::uint32_t l = loop; l != kNoKept; l = kept_[l]) through.push_back(loop_of_[l]);
+    auto [wrap, wraps_end] = wraps_.equal_range(s);
+    for (; wrap != wraps_end; ++wrap) through.push_back(wrap->second);
+    return through;
+  }
+
+  // A decrease's top loop (the last pulled through, wraps aside) is the one its lean puts there.
+  bool leans_right(StitchId s, StitchType t, LoopId x, std::string& why) const {
+    auto parents = f_.parents_of(x);
+    auto on_top =
+        std::find_if(parents.rbegin(), parents.rend(), [&](LoopId p) { return !is_wrap(s, p); });
+    LoopId top = loop_of_[g_.loops_taken_by(s)[stacking_order(t).back()]];
+    if (*on_top == top) return true;
+    why = fmt::format("{} leans the wrong way: {} has the loop of {} on top, expected that of {}",
+                      g_.describe(s), where(x), describe_maker(*on_top), describe_maker(top));
+    return false;
+  }
+
   bool stitch_matches(StitchId s, StitchType t, const LoopId* loops, LoopId previous_bo,
                       std::string& why) {
     auto taken = g_.loops_taken_by(s);
     auto made = g_.loops_made_by(s);
     if (keeps_loop_below(t)) return kept_below(s, t, loops, why);
-    std::vector<LoopId> through;
-    for (std::uint32_t loop : taken)
-      for (std::uint32_t l = loop; l != kNoKept; l = kept_[l]) through.push_back(loop_of_[l]);
-    auto [wrap, wraps_end] = wraps_.equal_range(s);
-    for (; wrap != wraps_end; ++wrap) through.push_back(wrap->second);
+    std::vector<LoopId> through = through_of(s);
     if (t == StitchType::co) {
       for (LoopId parent : f_.parents_of(loops[0]))
         if (stamp_[parent] == try_) {
@@ -184,20 +203,9 @@ class Matcher {
                          s, why))
           return false;
       }
-    } else {
-      if (!parents_are(loops[0], through, s, why)) return false;
-      if (taken.size() > 1) {
-        auto parents = f_.parents_of(loops[0]);
-        auto on_top = std::find_if(parents.rbegin(), parents.rend(),
-                                   [&](LoopId x) { return !is_wrap(s, x); });
-        LoopId top = loop_of_[taken[stacking_order(t).back()]];
-        if (*on_top != top) {
-          why = fmt::format(
-              "{} leans the wrong way: {} has the loop of {} on top, expected that of {}",
-              g_.describe(s), where(loops[0]), describe_maker(*on_top), describe_maker(top));
-          return false;
-        }
-      }
+    } else if (!parents_are(loops[0], through, s, why) ||
+               (taken.size() > 1 && !leans_right(s, t, loops[0], why))) {
+      return false;
     }
     if (!l_.tube && !made.empty() && f_.loops[loops[0]].front == is_purl(t)) {
       why = fmt::format("{} is a {} but {} knits it on the {} bed", g_.describe(s), info(t).name,
@@ -287,11 +295,11 @@ class Matcher {
   const Compilation& c_;
   const KnitGraph& g_;
   const CourseLayout& l_;
-  std::vector<LoopId> loop_of_;                      // per knit graph loop: its fabric loop
+  std::vector<LoopId> loop_of_;  // per knit graph loop: its fabric loop
   static constexpr std::uint32_t kNoKept = 0xffffffffu;
-  std::vector<std::uint32_t> kept_;  // per knit graph loop: the loop a tuck kept under it
-  std::vector<std::uint32_t> stamp_;                 // per fabric loop: the try that matched it
-  std::vector<std::uint32_t> wrap_after_;            // per stitch: the loop its course's turn wraps
+  std::vector<std::uint32_t> kept_;        // per knit graph loop: the loop a tuck kept under it
+  std::vector<std::uint32_t> stamp_;       // per fabric loop: the try that matched it
+  std::vector<std::uint32_t> wrap_after_;  // per stitch: the loop its course's turn wraps
   std::unordered_multimap<StitchId, LoopId> wraps_;  // per stitch: the turn tucks it knits
   std::uint32_t try_ = 0;
   int sign_ = 0;  // the first stitch's direction relative to its frame
