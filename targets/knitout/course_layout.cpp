@@ -50,10 +50,15 @@ void check_stitches(const KnitGraph& g) {
   }
 }
 
+// Whether the helix's bind-off starts at order[i] (wherever in its round: a course of its own).
+bool binds_off_from(const KnitGraph& g, const std::vector<StitchId>& order, std::uint32_t i) {
+  return i > 0 && g.type[order[i]] == StitchType::bo && g.type[order[i - 1]] != StitchType::bo;
+}
+
 // A course ends where the yarn turns or crosses a shift-path. A row with short rows inside
 // (a heel's) is knit in several courses; a course never spans two rows of a sheet or tube. A
 // stitch graph (.st) has no rows: its yarn is a helix whose next round starts where a stitch
-// takes a loop of the round being knit.
+// takes a loop of the round being knit, or where its bind-off starts.
 std::vector<Course> split_into_courses(const KnitGraph& g, const std::vector<StitchId>& order) {
   std::vector<Course> courses;
   std::vector<std::uint32_t> course_of(g.size(), 0);  // 1-based, for the helix
@@ -67,7 +72,7 @@ std::vector<Course> split_into_courses(const KnitGraph& g, const std::vector<Sti
     bool helix = g.row_shape[g.row[s]] == RowShape::unknown;
     bool starts = courses.empty() || g.yarn_link[order[i - 1]] == YarnLink::turn ||
                   g.yarn_link[order[i - 1]] == YarnLink::shift ||
-                  (helix && takes_from_this_course(s));
+                  (helix && (takes_from_this_course(s) || binds_off_from(g, order, i)));
     if (starts) {
       courses.emplace_back();
       courses.back().row = g.row[s];
@@ -130,7 +135,12 @@ class LiveLoops {
         live_(g.loops.size(), 0) {}
   std::size_t size() const { return size_; }
 
-  void start(const CourseLayout& l, const Course& c) { link_made(l, c, kNoWrap, kNoWrap); }
+  void start(const CourseLayout& l, const Course& c) {
+    start_ = link_made(l, c, kNoWrap, kNoWrap).first;
+  }
+  // The first loop of the last full round (or of what replaced it in place): where a round
+  // that does not drift starts.
+  std::uint32_t round_start() const { return start_; }
 
   // Whether the loops `c` takes, left to right, are live and follow each other; gives the
   // run's ends and length.
@@ -153,10 +163,15 @@ class LiveLoops {
     bool whole = run.count == size_;
     std::uint32_t before = whole ? kNoWrap : prev_[run.first];
     std::uint32_t after = whole ? kNoWrap : next_[run.last];
-    for (std::uint32_t loop = run.first, n = 0; n < run.count; ++n, loop = next_[loop])
+    std::uint32_t start_at = whole ? 0 : kNoWrap;  // where the round's start lies in the run
+    for (std::uint32_t loop = run.first, n = 0; n < run.count; ++n, loop = next_[loop]) {
       live_[loop] = 0;
+      if (loop == start_) start_at = n;
+    }
     size_ -= run.count;
+    std::size_t before_size = size_;
     auto [first, last] = link_made(l, c, before, after);
+    if (start_at != kNoWrap) move_start(first, start_at, size_ - before_size == run.count);
     if (first == kNoWrap) {  // nothing made (a bind-off): the neighbours close up
       if (before != kNoWrap) next_[before] = after;
       if (after != kNoWrap) prev_[after] = before;
@@ -166,6 +181,13 @@ class LiveLoops {
   }
 
  private:
+  // The round's start moves to the loop made at its place (the first made when the course
+  // makes another number of loops than it takes).
+  void move_start(std::uint32_t first, std::uint32_t at, bool same_count) {
+    start_ = first;
+    for (std::uint32_t n = 0; same_count && n < at; ++n) start_ = next_[start_];
+  }
+
   // Links the loops `c` makes, left to right, between `before` and `after` (a ring closes on
   // itself when both are absent); returns the first and last.
   std::pair<std::uint32_t, std::uint32_t> link_made(const CourseLayout& l, const Course& c,
@@ -196,6 +218,7 @@ class LiveLoops {
   std::vector<std::uint32_t> next_, prev_;  // per loop, along the fabric (kNoWrap: an edge)
   std::vector<std::uint8_t> live_;          // per loop: on the needles now
   std::size_t size_ = 0;
+  std::uint32_t start_ = kNoWrap;
 };
 
 // Gives each course a direction, starting with `first`: a turn reverses it, a shift-path keeps
@@ -212,6 +235,7 @@ std::size_t assign_directions(const KnitGraph& g, CourseLayout& l, bool first) {
     Run run;
     if (!live.find_run(l, course, run)) return c;
     course.partial = run.count < live.size();
+    course.rotated = l.tube && !course.partial && run.first != live.round_start();
     std::uint32_t beyond = live.replace_run(l, course, run);
     bool turns_next =
         c + 1 < l.courses.size() && g.yarn_link[l.order[course.end - 1]] == YarnLink::turn;
@@ -286,6 +310,10 @@ CourseLayout lay_out_piece(const KnitGraph& g, std::vector<StitchId> order) {
                       : "a row whose stitches do not take the loops below in order",
                 l.order[l.courses[bad].begin]);
   check_short_rows(g, l);
+  for (const Course& course : l.courses)  // a bind-off is knit where its loops wait
+    if (course.rotated && g.type[l.order[course.begin]] != StitchType::bo)
+      unsupported(g, "a round that starts elsewhere than the round below it (its start drifts)",
+                  l.order[course.begin]);
   l.left_to_right.assign(g.size(), 1);
   for (const Course& course : l.courses)
     for (std::uint32_t i = course.begin; i < course.end; ++i)

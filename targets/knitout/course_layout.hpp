@@ -20,6 +20,7 @@ struct Course {
   std::uint32_t begin = 0, end = 0;  // its stitches: CourseLayout::order[begin, end)
   bool left_to_right = true;         // the yarn runs left to right in its stitches' frames
   bool partial = false;              // a short row: loops beside it wait on their needles
+  bool rotated = false;              // a tube's round that starts elsewhere than the round below it
   // Where a short row turns beside a waiting loop, the yarn tucks over that loop's needle so
   // the turn leaves no hole; the tuck is knit with the loop. The loop (knit graph index).
   std::uint32_t wrap = kNoWrap;

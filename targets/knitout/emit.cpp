@@ -241,7 +241,8 @@ class Emitter {
   }
 
   void plan_course(const Course& c, bool first) {
-    if (c.partial) return plan_in_place(c);
+    // A bind-off, like a short row, is knit where its loops wait (wherever its round starts).
+    if (c.partial || g_.type[l_.order[c.begin]] == StitchType::bo) return plan_in_place(c);
     Footprint f = measure(c);
     // A tube whose halves keep their folds moves no loop between the beds: its right fold may
     // then follow the loops; while loops cross a fold it stays where it is.
