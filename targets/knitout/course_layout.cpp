@@ -221,11 +221,30 @@ class LiveLoops {
   std::uint32_t start_ = kNoWrap;
 };
 
+// The wrap of a short row's turn after `turning`: over the waiting loop `beyond`; or, when
+// another turn already wrapped it, over the turning stitch's own loop on the way back (so no
+// needle gathers two wraps). An sr5 makes the turn's loop itself; a loop that a tuck or slip
+// takes next is left unwrapped (the stitch above those takes the needle's loops).
+bool wrappable(const KnitGraph& g, std::uint32_t loop) {
+  return loop != kNoWrap && !keeps_loop_below(g.type[g.loops[loop].taker]);
+}
+void choose_wrap(const KnitGraph& g, StitchId turning, std::uint32_t beyond, Course& course,
+                 std::vector<std::uint8_t>& wrapped) {
+  if (g.type[turning] == StitchType::sr5 || !wrappable(g, beyond)) return;
+  auto own = g.loops_made_by(turning);
+  course.wrap_back = wrapped[beyond] != 0;
+  course.wrap = !course.wrap_back                         ? beyond
+                : own.size() == 1 && wrappable(g, own[0]) ? own[0]
+                                                          : kNoWrap;
+  if (course.wrap != kNoWrap) wrapped[course.wrap] = 1;
+}
+
 // Gives each course a direction, starting with `first`: a turn reverses it, a shift-path keeps
 // it. Returns the index of the first course whose stitches do not take a run of the loops on
 // the needles in order, or 0 when all do; marks short rows and the loops their turns wrap.
 std::size_t assign_directions(const KnitGraph& g, CourseLayout& l, bool first) {
   LiveLoops live(g, l.tube);
+  std::vector<std::uint8_t> wrapped(g.loops.size(), 0);
   l.courses[0].left_to_right = first;
   live.start(l, l.courses[0]);
   for (std::size_t c = 1; c < l.courses.size(); ++c) {
@@ -239,11 +258,8 @@ std::size_t assign_directions(const KnitGraph& g, CourseLayout& l, bool first) {
     std::uint32_t beyond = live.replace_run(l, course, run);
     bool turns_next =
         c + 1 < l.courses.size() && g.yarn_link[l.order[course.end - 1]] == YarnLink::turn;
-    // An sr5 makes the turn's loop itself; a loop that a tuck or slip takes next is left
-    // unwrapped (the stitch above those takes the needle's loops).
-    bool own_turn_loop = g.type[l.order[course.end - 1]] == StitchType::sr5;
-    bool wrappable = beyond != kNoWrap && !keeps_loop_below(g.type[g.loops[beyond].taker]);
-    course.wrap = course.partial && turns_next && !own_turn_loop && wrappable ? beyond : kNoWrap;
+    if (course.partial && turns_next)
+      choose_wrap(g, l.order[course.end - 1], beyond, course, wrapped);
   }
   return 0;
 }

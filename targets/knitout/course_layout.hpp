@@ -22,8 +22,10 @@ struct Course {
   bool partial = false;              // a short row: loops beside it wait on their needles
   bool rotated = false;              // a tube's round that starts elsewhere than the round below it
   // Where a short row turns beside a waiting loop, the yarn tucks over that loop's needle so
-  // the turn leaves no hole; the tuck is knit with the loop. The loop (knit graph index).
+  // the turn leaves no hole; the tuck is knit with the loop. The loop (knit graph index); when
+  // another turn wrapped it already, the turning stitch's own loop instead (wrap_back).
   std::uint32_t wrap = kNoWrap;
+  bool wrap_back = false;  // the wrap is over the turning stitch's own loop, made going back
 };
 
 struct CourseLayout {

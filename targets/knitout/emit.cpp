@@ -506,11 +506,12 @@ class Emitter {
 
   // Before turning beside a waiting loop, the yarn tucks over its needle, going on the way it
   // went: the waiting stitch is later knit through the tuck too, which closes the turn's hole.
+  // A wrap over the turning stitch's own loop is made on the way back.
   void wrap_turn(const Course& c) {
     if (c.wrap == kNoWrap) return;
     const LoopPlace& waiting = live_[c.wrap];
     bool on_back = l_.tube && waiting.home.bed == Bed::b;
-    bool rightward = !on_back == c.left_to_right;
+    bool rightward = (!on_back == c.left_to_right) != c.wrap_back;
     w_.tuck(rightward ? Direction::plus : Direction::minus, at(waiting.now), carrier_);
   }
 

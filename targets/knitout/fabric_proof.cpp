@@ -25,8 +25,12 @@ class Matcher {
     kept_.assign(g_.loops.size(), kNoKept);
     stamp_.assign(f_.loops.size(), 0);
     wrap_after_.assign(g_.size(), kNoWrap);
-    for (const Course& course : l_.courses)
-      if (course.wrap != kNoWrap) wrap_after_[l_.order[course.end - 1]] = course.wrap;
+    wrap_back_.assign(g_.size(), 0);
+    for (const Course& course : l_.courses) {
+      if (course.wrap == kNoWrap) continue;
+      wrap_after_[l_.order[course.end - 1]] = course.wrap;
+      wrap_back_[l_.order[course.end - 1]] = course.wrap_back;
+    }
   }
 
   // Tries the stitches against carrier `carrier`'s loops from index `start` on; on failure
@@ -82,7 +86,8 @@ class Matcher {
     std::uint32_t waiting = wrap_after_[s];
     bool over_fold = l_.tube && front_half(loop_of_[waiting], g_.type[g_.loops[waiting].maker]) !=
                                     front_half(last, g_.type[s]);
-    Direction on = over_fold ? opposite(f_.loops[last].dir) : f_.loops[last].dir;
+    bool back = over_fold != wrap_back_[s];
+    Direction on = back ? opposite(f_.loops[last].dir) : f_.loops[last].dir;
     if (fl.dir != on) {
       why = fmt::format("the turn after {} goes back before its tuck: {} goes {}", g_.describe(s),
                         where(x), direction_char(fl.dir));
@@ -300,6 +305,7 @@ class Matcher {
   std::vector<std::uint32_t> kept_;        // per knit graph loop: the loop a tuck kept under it
   std::vector<std::uint32_t> stamp_;       // per fabric loop: the try that matched it
   std::vector<std::uint32_t> wrap_after_;  // per stitch: the loop its course's turn wraps
+  std::vector<std::uint8_t> wrap_back_;    // per stitch: ... its own loop, going back
   std::unordered_multimap<StitchId, LoopId> wraps_;  // per stitch: the turn tucks it knits
   std::uint32_t try_ = 0;
   int sign_ = 0;  // the first stitch's direction relative to its frame
