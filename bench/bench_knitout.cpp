@@ -6,6 +6,7 @@
 //   skein_bench --benchmark_filter=Knitout
 #include <benchmark/benchmark.h>
 
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -16,6 +17,7 @@
 #include "knitout/fabric_proof.hpp"
 #include "knitout/machine_profile.hpp"
 #include "knitout/vbed_simulator.hpp"
+#include "labeling/shapes.hpp"
 #include "mesh/generate.hpp"
 
 namespace skein {
@@ -23,15 +25,32 @@ namespace {
 
 using T = StitchType;
 
-enum class KnitoutCase { hat_tube, ribbed_sheet, shaped_tube };
+enum class KnitoutCase { hat_tube, ribbed_sheet, shaped_tube, short_row_sheet, sock };
 
-// About a million stitches each, about 1000 a row.
+// About a million stitches each, about 1000 a row (the short-row sheet: pairs of short rows
+// turning at random stitches, about one row in three; the sock: a tube of 704 stitches round
+// with a short-row heel and a shaped toe).
 const Compilation& model(KnitoutCase c) {
   static std::map<KnitoutCase, std::unique_ptr<Compilation>> cache;
   auto& slot = cache[c];
   if (slot) return *slot;
   RandomShaping shaping{
       .purl = 0.3, .increase = 0.03, .decrease = 0.03, .min_width = 900, .max_width = 1100};
+  if (c == KnitoutCase::sock) {  // `skein new sock`, 330 cm round: 1.18M stitches
+    ShapeSize size;
+    size.circumference = 330;
+    size.length = 200;
+    std::string name = "skein-bench-sock";
+    std::string project = write_shape(make_shape("sock", size, name),
+                                      (std::filesystem::temp_directory_path() / name).string());
+    slot = std::make_unique<Compilation>(compile_model(project));
+    return *slot;
+  }
+  if (c == KnitoutCase::short_row_sheet) {
+    slot = std::make_unique<Compilation>(
+        compile_stitch_mesh(short_row_sheet(1000, 800, 2026), "bench"));
+    return *slot;
+  }
   RowPlan plan = c == KnitoutCase::hat_tube       ? hat_rows(1000, 990, 8)
                  : c == KnitoutCase::ribbed_sheet ? ribbed_rows(1000, 998, {T::k, T::k, T::p, T::p})
                                                   : random_rows(1000, 1000, shaping, 2026);
@@ -94,7 +113,8 @@ void BM_KnitoutVerify(benchmark::State& state) {
   state.counters["stitches"] = c.knit.size();
 }
 
-#define KNITOUT_CASES ->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(3)
+#define KNITOUT_CASES \
+  ->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Arg(4)->Unit(benchmark::kMillisecond)->Iterations(3)
 BENCHMARK(BM_KnitoutEmit) KNITOUT_CASES;
 BENCHMARK(BM_KnitoutReplay) KNITOUT_CASES;
 BENCHMARK(BM_KnitoutVerify) KNITOUT_CASES;

@@ -31,6 +31,23 @@ TEST_F(KnitoutCli, CompilesVerifiesAndProvesTheHat) {
   EXPECT_EQ(proven.exit_code, 0) << proven.out << proven.err;
 }
 
+// The sock's short-row heel on the Kniterate, and the sweater refused in words (exit 2, no file).
+TEST_F(KnitoutCli, TheSockIsProvenAndTheSweaterRefused) {
+  std::string k = (dir_ / "sock.k").string();
+  testing::CliRun sock =
+      skein("compile samples/sock/sock.yaml -t knitout -m kniterate -o " + k + " --verify");
+  EXPECT_EQ(sock.exit_code, 0) << sock.err;
+  EXPECT_NE(sock.out.find("proven against samples/sock/sock.yaml: all 4606 stitches are there"),
+            std::string::npos)
+      << sock.out;
+  std::string sweater_k = (dir_ / "sweater.k").string();
+  testing::CliRun sweater =
+      skein("compile samples/sweater/sweater.yaml -t knitout -m swg091n2 -o " + sweater_k);
+  EXPECT_EQ(sweater.exit_code, 2);
+  EXPECT_NE(sweater.err.find("pieces joined on the bed"), std::string::npos) << sweater.err;
+  EXPECT_FALSE(fs::exists(sweater_k));
+}
+
 TEST_F(KnitoutCli, ABadProfileOrFileExitsTwoAndWritesNothing) {
   std::string k = (dir_ / "swatch.k").string();
   testing::CliRun unknown =

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -13,6 +14,7 @@
 #include "builtin_targets.hpp"
 #include "common/error.hpp"
 #include "knitout/course_layout.hpp"
+#include "mesh/autoknit_st.hpp"
 #include "mesh/generate.hpp"
 #include "test_knitout_util.hpp"
 
@@ -29,23 +31,26 @@ class KnitoutSample : public ::testing::TestWithParam<std::tuple<const char*, co
   void SetUp() override { std::filesystem::current_path(SKEIN_SOURCE_DIR); }
 };
 
-// samples/<name>/<name>.<profile>.k: read op by op before accepting a change.
+// samples/<name>/<name>.<profile>.k beside the input: read op by op before accepting a change.
 TEST_P(KnitoutSample, MatchesGoldenAndIsProven) {
   auto [sample, profile_name] = GetParam();
-  std::string input = fmt::format("samples/{}/{}.obj", sample, sample);
-  Compilation c = compile_model(input);
+  std::filesystem::path input = fmt::format("samples/{}", sample);
+  Compilation c = compile_model(input.string());
   knitout::MachineProfile p = shipped_profile(profile_name);
   std::string text = testing::emit_knitout_text(c, p);
-  testing::expect_golden(fmt::format("samples/{}/{}.{}.k", sample, sample, profile_name), text);
+  testing::expect_golden(input.replace_extension(fmt::format("{}.k", profile_name)).string(), text);
   knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
   EXPECT_TRUE(proof.proven) << proof.summary;
 }
 
 INSTANTIATE_TEST_SUITE_P(Samples, KnitoutSample,
-                         ::testing::Combine(::testing::Values("rib-swatch", "hat"),
+                         ::testing::Combine(::testing::Values("rib-swatch/rib-swatch.obj",
+                                                              "hat/hat.obj", "swatch/swatch.yaml",
+                                                              "sock/sock.yaml"),
                                             ::testing::ValuesIn(kProfiles)),
                          [](const auto& param_info) {
-                           std::string name = std::string(std::get<0>(param_info.param)) + "_" +
+                           std::string sample = std::get<0>(param_info.param);
+                           std::string name = sample.substr(0, sample.find('/')) + "_" +
                                               std::get<1>(param_info.param);
                            for (char& ch : name)
                              if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
@@ -55,7 +60,8 @@ INSTANTIATE_TEST_SUITE_P(Samples, KnitoutSample,
 // The project samples (coarse mesh, labelled, generated at a gauge) knit and prove too.
 TEST(KnitoutSample, ProjectSamplesProveOnEveryProfile) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
-  for (const char* input : {"samples/swatch/swatch.yaml", "samples/beanie/beanie.yaml"}) {
+  for (const char* input :
+       {"samples/beanie/beanie.yaml", "samples/short-row-wedge/short-row-wedge.yaml"}) {
     Compilation c = compile_model(input);
     for (const char* name : kProfiles) {
       knitout::MachineProfile p = shipped_profile(name);
@@ -98,17 +104,163 @@ TEST(KnitoutFit, ADoubleDecreaseNeedsThreeLoopsPerNeedle) {
 
 TEST(KnitoutFit, WhatIsNotSupportedYetIsNamedWithItsStitch) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  EXPECT_EQ(emit_error(compile_model("samples/autoknit/test-A.st"), "generic"),
+            "not yet supported by the knitout target: a stitch graph whose yarn is not one helix "
+            "of rounds (it turns: rows knit back and forth or short rows), at line 60 (sl)");
   EXPECT_EQ(emit_error(compile_model("samples/autoknit/test-B.st"), "generic"),
-            "not yet supported by the knitout target: a stitch graph without rows (.st import), at "
-            "line 1 (co)");
+            "not yet supported by the knitout target: a bind-off stitch below the last row, at "
+            "line 152 (bo)");
   EXPECT_EQ(emit_error(compile_model("samples/autoknit/test-C.st"), "generic"),
-            "not yet supported by the knitout target: several yarn pieces at once (2 pieces), at "
-            "line 352 (k)");
-  std::string short_rows =
-      emit_error(compile_model("samples/short-row-wedge/short-row-wedge.yaml"), "generic");
-  EXPECT_TRUE(
-      short_rows.starts_with("not yet supported by the knitout target: short rows, at face "))
-      << short_rows;
+            "not yet supported by the knitout target: pieces joined on the bed (yarn 2 takes loops "
+            "made by yarn 1, as a sweater's yoke takes its sleeves), at line 352 (k)");
+  EXPECT_EQ(emit_error(compile_model("samples/sweater/sweater.yaml"), "generic"),
+            "not yet supported by the knitout target: pieces joined on the bed (yarn 1 takes loops "
+            "made by yarn 2, as a sweater's yoke takes its sleeves), at face 37649 (k, row 373)");
+}
+
+// A stitch graph in AutoKnit's format: one yarn as a helix, each stitch taking the oldest loops
+// on the needles (letters: s cast-on, k knit, i increase, d decrease, e bind-off).
+std::string helix_st(const std::string& letters) {
+  struct Line {
+    char letter;
+    int in[2] = {-1, -1}, out[2] = {-1, -1};
+  };
+  std::vector<Line> lines;
+  std::deque<std::pair<int, int>> live;  // (stitch, out slot) of the loops on the needles
+  for (char letter : letters) {
+    int s = static_cast<int>(lines.size());
+    lines.push_back({letter});
+    int takes = letter == 's' ? 0 : letter == 'd' ? 2 : 1;
+    int makes = letter == 'e' ? 0 : letter == 'i' ? 2 : 1;
+    for (int i = 0; i < takes; ++i) {
+      auto [maker, slot] = live.front();
+      live.pop_front();
+      lines[s].in[i] = maker;
+      lines[static_cast<std::size_t>(maker)].out[slot] = s;
+    }
+    for (int i = 0; i < makes; ++i) live.emplace_back(s, i);
+  }
+  std::string text;
+  for (const Line& l : lines)
+    text +=
+        fmt::format("0 {} a {} {} {} {} 0 0 0\n", l.letter, l.in[0], l.in[1], l.out[0], l.out[1]);
+  return text;
+}
+
+// A stitch graph (.st) has no rows: its helix is cut into rounds where a stitch takes a loop of
+// the round being knit, and knit as a tube; its bind-off, wherever in the round it starts,
+// is a course of its own.
+TEST(KnitoutStitchGraph, AHelixOfRoundsKnitsAsATubeAndProvesOnEveryProfile) {
+  struct Case {
+    const char* letters;
+    std::size_t courses;
+  };
+  for (Case helix : {Case{"ssssssssss"
+                          "kkkkikkkkk"
+                          "kkkkkkkkkkk"
+                          "kdkkkkkkkk"
+                          "kkkkkkkkkk"
+                          "eeeeeeeeee",
+                          6},
+                     Case{"ssssssssss"
+                          "kkkkkkkkkk"
+                          "kkkkk"
+                          "eeeeeeeeee",
+                          4}}) {
+    const char* letters = helix.letters;
+    Compilation c =
+        compile_knit_graph(parse_autoknit_st(helix_st(letters), "helix.st"), "helix.st");
+    for (const char* name : kProfiles) {
+      knitout::MachineProfile p = shipped_profile(name);
+      knitout::ProofResult proof =
+          testing::replay_and_prove(testing::emit_knitout_text(c, p), c, p);
+      EXPECT_TRUE(proof.proven) << letters << " on " << name << ": " << proof.summary;
+    }
+    knitout::CourseLayout l = knitout::lay_out_pieces(c).front();
+    EXPECT_TRUE(l.tube);
+    EXPECT_EQ(l.courses.size(), helix.courses) << letters;
+  }
+}
+
+// A tube whose third round starts one stitch further round (its yarn re-linked): re-laying
+// the whole round out would move every loop round the tube, so it is refused in words; a
+// bind-off may start anywhere, as it is knit where its loops wait.
+TEST(KnitoutCourses, ARoundWhoseStartDriftsIsRefusedInWords) {
+  KnitGraph g =
+      compile_stitch_mesh(build_from_rows(ribbed_rows(6, 4, {T::k}), Layout::tube), "drift.obj")
+          .knit;
+  std::vector<StitchId> round(6);
+  for (StitchId s = 0; s < g.size(); ++s)
+    if (g.row[s] == 2) round[g.source[s] % 6] = s;  // generated left to right, row by row
+  StitchId before = kNoStitch, after = g.yarn_next[round[5]];
+  for (StitchId s = 0; s < g.size(); ++s)
+    if (g.yarn_next[s] == round[0]) before = s;
+  ASSERT_NE(before, kNoStitch);
+  g.yarn_next[before] = round[1];
+  for (int i = 1; i < 5; ++i) g.yarn_next[round[i]] = round[i + 1];
+  g.yarn_next[round[5]] = round[0];
+  g.yarn_link[round[5]] = YarnLink::course;
+  g.yarn_next[round[0]] = after;
+  g.yarn_link[round[0]] = YarnLink::shift;
+  Compilation c = compile_knit_graph(g, "drift.obj");
+  ASSERT_TRUE(c.knittability.knittable);
+  EXPECT_EQ(emit_error(c, "generic"),
+            fmt::format("not yet supported by the knitout target: a round that starts elsewhere "
+                        "than the round below it (its start drifts), at {}",
+                        c.knit.describe(round[1])));
+}
+
+// Two knit graphs side by side in one model: two yarn pieces that share no loop.
+KnitGraph side_by_side(KnitGraph a, const KnitGraph& b) {
+  StitchId shift = a.size();
+  auto rows = static_cast<std::uint32_t>(a.row_shape.size());
+  for (StitchId s = 0; s < b.size(); ++s) {
+    a.add_stitch(b.type[s], b.row[s] + rows, b.source[s] + shift, b.flags[s]);
+    a.yarn_next.back() = b.yarn_next[s] == kNoStitch ? kNoStitch : b.yarn_next[s] + shift;
+    a.yarn_link.back() = b.yarn_link[s];
+  }
+  a.row_shape.insert(a.row_shape.end(), b.row_shape.begin(), b.row_shape.end());
+  for (Loop l : b.loops) {
+    l.maker += shift;
+    l.taker += shift;
+    a.loops.push_back(l);
+  }
+  a.index_loops();
+  return a;
+}
+
+// Several yarn pieces that share no loop are knit one after another, each on its own carrier
+// from cast-on to bind-off (carried in, and out at its end), and each is proven.
+TEST(KnitoutPieces, SeparatePiecesAreKnitOneAfterAnotherOnTheirOwnCarriers) {
+  RowPlan sheet = {{T::co, T::co, T::co, T::co}, {T::k, T::p, T::k2tog}, {T::bo, T::bo, T::bo}};
+  KnitGraph tube = compile_stitch_mesh(build_from_rows(hat_rows(24, 3, 4), Layout::tube), "t").knit;
+  KnitGraph flat = compile_stitch_mesh(build_from_rows(sheet, Layout::sheet), "s").knit;
+  Compilation c = compile_knit_graph(side_by_side(tube, flat), "pieces");
+  ASSERT_EQ(c.yarns.size(), 2u);
+  for (const char* name : kProfiles) {
+    knitout::MachineProfile p = shipped_profile(name);
+    std::string text = testing::emit_knitout_text(c, p);
+    EXPECT_NE(text.find("(226 stitches, 2 yarn pieces knit one after another)"), std::string::npos);
+    knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
+    EXPECT_TRUE(proof.proven) << name << ": " << proof.summary;
+    auto second = std::find_if(p.carriers.begin(), p.carriers.end(), [&](const std::string& n) {
+      return n != p.yarn_carrier && n != p.waste_carrier && n != p.draw_carrier;
+    });
+    EXPECT_NE(
+        text.find(fmt::format(";!source: yarn piece 2 (carrier {}): 3 rows: a sheet", *second)),
+        std::string::npos)
+        << name;
+  }
+}
+
+TEST(KnitoutPieces, MorePiecesThanCarriersAreRefusedInWords) {
+  RowPlan sheet = {{T::co, T::co}, {T::bo, T::bo}};
+  KnitGraph one = compile_stitch_mesh(build_from_rows(sheet, Layout::sheet), "s").knit;
+  KnitGraph many = one;
+  for (int i = 0; i < 6; ++i) many = side_by_side(many, one);
+  EXPECT_EQ(emit_error(compile_knit_graph(many, "seven.st"), "kniterate"),
+            "seven.st has 7 yarn pieces, one carrier each, and kniterate has only 4 carriers for "
+            "them besides the waste yarn's and the draw thread's");
 }
 
 // The knit graph does not say which way the yarn runs through a stitch; the courses do.
@@ -119,7 +271,7 @@ TEST(KnitoutCourses, RowsAlternateOnASheetAndRoundsRunOneWayInATube) {
                   {T::bo, T::bo, T::bo, T::bo}};
   for (Layout layout : {Layout::sheet, Layout::tube}) {
     Compilation c = compile_stitch_mesh(build_from_rows(plan, layout), "courses");
-    knitout::CourseLayout l = knitout::lay_out_courses(c);
+    knitout::CourseLayout l = knitout::lay_out_pieces(c).front();
     ASSERT_EQ(l.courses.size(), 4u);
     EXPECT_EQ(l.tube, layout == Layout::tube);
     for (std::size_t i = 0; i < l.courses.size(); ++i)
@@ -220,6 +372,39 @@ TEST(KnitoutRandomized, ShapedSheetsAndTubesCompileAndProveOnEveryProfileTheyFit
             << too_wide << " too wide, " << refused - too_wide << " decreases too deep)\n";
   EXPECT_GT(proven, 420);
   EXPECT_GT(refused, 0);
+}
+
+// Random shaped sheets and tubes with some knits made tucks or slips (never two in a column, so
+// no wale is only tucks): each proves on every profile, or is refused for a needle too full.
+TEST(KnitoutRandomized, TucksAndSlipsInShapedSheetsAndTubesProveOrAreRefusedInWords) {
+  std::mt19937_64 rng(12);
+  int proven = 0, refused = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    RowPlan plan = random_rows(6 + static_cast<std::uint32_t>(rng() % 20),
+                               2 + static_cast<std::uint32_t>(rng() % 10), RandomShaping{}, rng());
+    for (std::size_t r = 1; r + 1 < plan.size(); r += 2)
+      for (StitchType& t : plan[r])
+        if (t == T::k && rng() % 4 == 0) t = rng() % 2 ? T::tuck : T::sl;
+    Layout layout = trial % 2 ? Layout::tube : Layout::sheet;
+    Compilation c = compile_stitch_mesh(build_from_rows(plan, layout), "tucks");
+    for (const char* name : kProfiles) {
+      knitout::MachineProfile p = shipped_profile(name);
+      std::string text;
+      try {
+        text = testing::emit_knitout_text(c, p);
+      } catch (const Error& e) {
+        std::string what = e.what();
+        EXPECT_TRUE(is_fit_error(what) || what.find("would gather") != std::string::npos)
+            << "trial " << trial << " on " << name << ": " << what;
+        ++refused;
+        continue;
+      }
+      knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
+      EXPECT_TRUE(proof.proven) << "trial " << trial << " on " << name << ": " << proof.summary;
+      proven += proof.proven;
+    }
+  }
+  EXPECT_GT(proven, 80);
 }
 
 }  // namespace

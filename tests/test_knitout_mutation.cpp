@@ -186,6 +186,17 @@ void run_mutants(const std::string& name, const Compilation& c, const knitout::M
   }
 }
 
+// A random short-row sheet that turns at both an sr4 (with its wrap) and an sr5.
+Compilation sheet_with_both_turns() {
+  auto has = [](const Compilation& c, StitchType t) {
+    return std::count(c.knit.type.begin(), c.knit.type.end(), t) > 0;
+  };
+  for (std::uint64_t seed = 1;; ++seed) {
+    Compilation c = compile_stitch_mesh(short_row_sheet(12, 12, seed), "short rows");
+    if (has(c, T::sr4) && has(c, T::sr5)) return c;
+  }
+}
+
 TEST(KnitoutMutation, EveryEditThatChangesTheFabricOrBreaksARuleIsRejected) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
   Tally tally;
@@ -206,6 +217,11 @@ TEST(KnitoutMutation, EveryEditThatChangesTheFabricOrBreaksARuleIsRejected) {
       "shaped tube on swg091n2",
       compile_stitch_mesh(build_from_rows(random_rows(20, 10, shaping, 7), Layout::tube), "tube"),
       testing::shipped_profile("swg091n2"), 150, tally);
+  run_mutants("short-row sheet on kniterate", sheet_with_both_turns(),
+              testing::shipped_profile("kniterate"), 150, tally);
+  run_mutants("sock (short-row heel in a tube) on swg091n2",
+              compile_model("samples/sock/sock.yaml"), testing::shipped_profile("swg091n2"), 150,
+              tally);
   int rejected = 0, undetectable = 0;
   std::cout << "knitout mutants: " << tally.total << "\n";
   for (const auto& [verdict, count] : tally.outcome) {

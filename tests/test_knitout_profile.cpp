@@ -87,6 +87,10 @@ TEST(KnitoutProfile, ABadOrUnknownFieldNamesTheFileLineAndField) {
   EXPECT_EQ(error_after_edit("width_header: true\n", ""), "line 3: missing field 'width_header'");
   EXPECT_EQ(error_after_edit("  max_transfer_stretch: 4", "  max_transfer_stretch: 6"),
             "line 14: field 'racking.max_transfer_stretch' cannot exceed 'racking.max'");
+  // swg091n2 knits no waste section, so a draw thread has nothing to run between.
+  EXPECT_EQ(error_after_edit("  carrier: \"3\"", "  carrier: \"3\"\n  draw_carrier: \"2\""),
+            "line 22: field 'yarn.draw_carrier' needs 'cast_on.waste_rows' and a carrier of "
+            "'carriers' other than 'yarn.carrier' and 'yarn.waste_carrier'");
   EXPECT_EQ(error_after_edit("sliders: true", "sliders: [yes"),
             "line 17: not valid YAML: end of sequence flow not found");
 }

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "common/error.hpp"
+#include "knitout/stitch_recipes.hpp"
 
 namespace skein::knitout {
 namespace {
@@ -26,6 +27,10 @@ bool has_machine_recipe(StitchType t) {
     case StitchType::ssk:
     case StitchType::p2tog:
     case StitchType::s2kp:
+    case StitchType::sr4:
+    case StitchType::sr5:
+    case StitchType::tuck:
+    case StitchType::sl:
       return true;
     default:
       return false;
@@ -37,9 +42,6 @@ void check_stitches(const KnitGraph& g) {
     if (!has_machine_recipe(g.type[s]))
       unsupported(
           g, fmt::format("the {} stitch ({})", info(g.type[s]).name, abbreviation(g.type[s])), s);
-    RowShape shape = g.row_shape[g.row[s]];
-    if (shape == RowShape::unknown) unsupported(g, "a stitch graph without rows (.st import)", s);
-    if (shape == RowShape::short_row) unsupported(g, "short rows", s);
   }
   for (const Loop& l : g.loops) {
     StitchId at = l.taker != kNoStitch ? l.taker : l.maker;
@@ -48,16 +50,37 @@ void check_stitches(const KnitGraph& g) {
   }
 }
 
+// Whether the helix's bind-off starts at order[i] (wherever in its round: a course of its own).
+bool binds_off_from(const KnitGraph& g, const std::vector<StitchId>& order, std::uint32_t i) {
+  return i > 0 && g.type[order[i]] == StitchType::bo && g.type[order[i - 1]] != StitchType::bo;
+}
+
+// A course ends where the yarn turns or crosses a shift-path. A row with short rows inside
+// (a heel's) is knit in several courses; a course never spans two rows of a sheet or tube. A
+// stitch graph (.st) has no rows: its yarn is a helix whose next round starts where a stitch
+// takes a loop of the round being knit, or where its bind-off starts.
 std::vector<Course> split_into_courses(const KnitGraph& g, const std::vector<StitchId>& order) {
   std::vector<Course> courses;
-  std::vector<std::uint8_t> seen(g.row_shape.size(), 0);
+  std::vector<std::uint32_t> course_of(g.size(), 0);  // 1-based, for the helix
+  auto takes_from_this_course = [&](StitchId s) {
+    for (std::uint32_t loop : g.loops_taken_by(s))
+      if (course_of[g.loops[loop].maker] == courses.size()) return true;
+    return false;
+  };
   for (std::uint32_t i = 0; i < order.size(); ++i) {
-    std::uint32_t row = g.row[order[i]];
-    if (courses.empty() || courses.back().row != row) {
-      if (seen[row]) unsupported(g, "a row knit in several pieces", order[i]);
-      seen[row] = 1;
-      courses.push_back({row, i, i, true});
+    StitchId s = order[i];
+    bool helix = g.row_shape[g.row[s]] == RowShape::unknown;
+    bool starts = courses.empty() || g.yarn_link[order[i - 1]] == YarnLink::turn ||
+                  g.yarn_link[order[i - 1]] == YarnLink::shift ||
+                  (helix && (takes_from_this_course(s) || binds_off_from(g, order, i)));
+    if (starts) {
+      courses.emplace_back();
+      courses.back().row = g.row[s];
+      courses.back().begin = i;
     }
+    if (!starts && !helix && g.row[s] != courses.back().row)
+      unsupported(g, "a row that ends without a turn or a shift-path", s);
+    course_of[s] = static_cast<std::uint32_t>(courses.size());
     courses.back().end = i + 1;
   }
   return courses;
@@ -80,15 +103,10 @@ void check_borders(const KnitGraph& g, const CourseLayout& l) {
                           : "a bind-off stitch below the last row",
                   s);
   }
-  for (std::size_t c = 1; c < l.courses.size(); ++c) {
-    StitchId end = l.order[l.courses[c].begin - 1];
-    YarnLink link = g.yarn_link[end];
-    if (link != (l.tube ? YarnLink::shift : YarnLink::turn))
-      unsupported(g,
-                  l.tube ? "a round that does not continue the helix across a shift-path"
-                         : "a row that does not start with a turn",
-                  l.order[l.courses[c].begin]);
-  }
+  if (l.tube) return;
+  for (std::size_t c = 1; c < l.courses.size(); ++c)
+    if (g.yarn_link[l.order[l.courses[c].begin - 1]] != YarnLink::turn)
+      unsupported(g, "a row that does not start with a turn", l.order[l.courses[c].begin]);
 }
 
 template <typename F>
@@ -99,59 +117,251 @@ void each_left_to_right(const CourseLayout& l, const Course& c, F f) {
     for (std::uint32_t i = c.end; i-- > c.begin;) f(l.order[i]);
 }
 
-// Gives each course a direction, starting with `first`; returns the index of the first course
-// that does not consume the loops of the one below left to right, or 0 when all do.
-std::size_t assign_directions(const KnitGraph& g, CourseLayout& l, bool first,
-                              std::vector<std::uint32_t>& position) {
-  l.courses[0].left_to_right = first;
-  for (std::size_t c = 1; c < l.courses.size(); ++c) {
-    const Course& below = l.courses[c - 1];
-    l.courses[c].left_to_right = l.tube ? below.left_to_right : !below.left_to_right;
-    std::uint32_t p = 0;
-    each_left_to_right(l, below, [&](StitchId s) {
-      for (std::uint32_t loop : g.loops_made_by(s)) position[loop] = p++;
-    });
-    std::uint32_t expect = 0;
+// A run of loops on the needles, left to right.
+struct Run {
+  std::uint32_t first = kNoWrap, last = kNoWrap, count = 0;
+};
+
+// The loops on the needles, left to right along the fabric (a ring on a tube), as a linked
+// list: each course takes a run of them and leaves its own loops in their place, in time linear
+// in the loops it takes and makes.
+class LiveLoops {
+ public:
+  LiveLoops(const KnitGraph& g, bool ring)
+      : g_(g),
+        ring_(ring),
+        next_(g.loops.size(), kNoWrap),
+        prev_(g.loops.size(), kNoWrap),
+        live_(g.loops.size(), 0) {}
+  std::size_t size() const { return size_; }
+
+  void start(const CourseLayout& l, const Course& c) {
+    start_ = link_made(l, c, kNoWrap, kNoWrap).first;
+  }
+  // The first loop of the last full round (or of what replaced it in place): where a round
+  // that does not drift starts.
+  std::uint32_t round_start() const { return start_; }
+
+  // Whether the loops `c` takes, left to right, are live and follow each other; gives the
+  // run's ends and length.
+  bool find_run(const CourseLayout& l, const Course& c, Run& run) const {
+    run = Run{};
     bool in_order = true;
-    each_left_to_right(l, l.courses[c], [&](StitchId s) {
-      for (std::uint32_t loop : g.loops_taken_by(s)) in_order &= position[loop] == expect++;
+    each_left_to_right(l, c, [&](StitchId s) {
+      for (std::uint32_t loop : g_.loops_taken_by(s)) {
+        in_order &= live_[loop] && (run.count == 0 || next_[run.last] == loop);
+        if (run.count++ == 0) run.first = loop;
+        run.last = loop;
+      }
     });
-    if (!in_order) return c;
+    return in_order && run.count > 0 && run.count <= size_;
+  }
+
+  // Puts the loops `c` makes in place of the run; returns the loop waiting just beyond the
+  // course's last stitch along the yarn (kNoWrap at a sheet's edge or when nothing waits).
+  std::uint32_t replace_run(const CourseLayout& l, const Course& c, const Run& run) {
+    bool whole = run.count == size_;
+    std::uint32_t before = whole ? kNoWrap : prev_[run.first];
+    std::uint32_t after = whole ? kNoWrap : next_[run.last];
+    std::uint32_t start_at = whole ? 0 : kNoWrap;  // where the round's start lies in the run
+    for (std::uint32_t loop = run.first, n = 0; n < run.count; ++n, loop = next_[loop]) {
+      live_[loop] = 0;
+      if (loop == start_) start_at = n;
+    }
+    size_ -= run.count;
+    std::size_t before_size = size_;
+    auto [first, last] = link_made(l, c, before, after);
+    if (start_at != kNoWrap) move_start(first, start_at, size_ - before_size == run.count);
+    if (first == kNoWrap) {  // nothing made (a bind-off): the neighbours close up
+      if (before != kNoWrap) next_[before] = after;
+      if (after != kNoWrap) prev_[after] = before;
+      return kNoWrap;
+    }
+    return c.left_to_right ? after : before;
+  }
+
+ private:
+  // The round's start moves to the loop made at its place (the first made when the course
+  // makes another number of loops than it takes).
+  void move_start(std::uint32_t first, std::uint32_t at, bool same_count) {
+    start_ = first;
+    for (std::uint32_t n = 0; same_count && n < at; ++n) start_ = next_[start_];
+  }
+
+  // Links the loops `c` makes, left to right, between `before` and `after` (a ring closes on
+  // itself when both are absent); returns the first and last.
+  std::pair<std::uint32_t, std::uint32_t> link_made(const CourseLayout& l, const Course& c,
+                                                    std::uint32_t before, std::uint32_t after) {
+    std::uint32_t first = kNoWrap, last = before;
+    each_left_to_right(l, c, [&](StitchId s) {
+      for (std::uint32_t loop : g_.loops_made_by(s)) {
+        live_[loop] = 1;
+        ++size_;
+        prev_[loop] = last;
+        if (last != kNoWrap) next_[last] = loop;
+        if (first == kNoWrap) first = loop;
+        last = loop;
+      }
+    });
+    if (first == kNoWrap) return {kNoWrap, kNoWrap};
+    next_[last] = after;
+    if (after != kNoWrap) prev_[after] = last;
+    if (ring_ && before == kNoWrap && after == kNoWrap) {
+      next_[last] = first;
+      prev_[first] = last;
+    }
+    return {first, last};
+  }
+
+  const KnitGraph& g_;
+  bool ring_;
+  std::vector<std::uint32_t> next_, prev_;  // per loop, along the fabric (kNoWrap: an edge)
+  std::vector<std::uint8_t> live_;          // per loop: on the needles now
+  std::size_t size_ = 0;
+  std::uint32_t start_ = kNoWrap;
+};
+
+// The wrap of a short row's turn after `turning`: over the waiting loop `beyond`; or, when
+// another turn already wrapped it, over the turning stitch's own loop on the way back (so no
+// needle gathers two wraps). An sr5 makes the turn's loop itself; a loop that a tuck or slip
+// takes next is left unwrapped (the stitch above those takes the needle's loops).
+bool wrappable(const KnitGraph& g, std::uint32_t loop) {
+  return loop != kNoWrap && !keeps_loop_below(g.type[g.loops[loop].taker]);
+}
+void choose_wrap(const KnitGraph& g, StitchId turning, std::uint32_t beyond, Course& course,
+                 std::vector<std::uint8_t>& wrapped) {
+  if (g.type[turning] == StitchType::sr5 || !wrappable(g, beyond)) return;
+  auto own = g.loops_made_by(turning);
+  course.wrap_back = wrapped[beyond] != 0;
+  course.wrap = !course.wrap_back                         ? beyond
+                : own.size() == 1 && wrappable(g, own[0]) ? own[0]
+                                                          : kNoWrap;
+  if (course.wrap != kNoWrap) wrapped[course.wrap] = 1;
+}
+
+// Gives each course a direction, starting with `first`: a turn reverses it, a shift-path keeps
+// it. Returns the index of the first course whose stitches do not take a run of the loops on
+// the needles in order, or 0 when all do; marks short rows and the loops their turns wrap.
+std::size_t assign_directions(const KnitGraph& g, CourseLayout& l, bool first) {
+  LiveLoops live(g, l.tube);
+  std::vector<std::uint8_t> wrapped(g.loops.size(), 0);
+  l.courses[0].left_to_right = first;
+  live.start(l, l.courses[0]);
+  for (std::size_t c = 1; c < l.courses.size(); ++c) {
+    Course& course = l.courses[c];
+    bool turned = g.yarn_link[l.order[course.begin - 1]] == YarnLink::turn;
+    course.left_to_right = l.courses[c - 1].left_to_right != turned;
+    Run run;
+    if (!live.find_run(l, course, run)) return c;
+    course.partial = run.count < live.size();
+    course.rotated = l.tube && !course.partial && run.first != live.round_start();
+    std::uint32_t beyond = live.replace_run(l, course, run);
+    bool turns_next =
+        c + 1 < l.courses.size() && g.yarn_link[l.order[course.end - 1]] == YarnLink::turn;
+    if (course.partial && turns_next)
+      choose_wrap(g, l.order[course.end - 1], beyond, course, wrapped);
   }
   return 0;
 }
 
-}  // namespace
+// Whether a stitch can be knit where its loops wait: it takes one loop and leaves one, or it is
+// an sr5 (its turn loop waits on the facing needle), or it knits an sr5's two loops together.
+bool knits_in_place(const KnitGraph& g, StitchId s) {
+  const StitchTypeInfo& t = info(g.type[s]);
+  auto taken = g.loops_taken_by(s);
+  if (t.type == StitchType::sr5 || (taken.size() == 1 && t.loops_out == 1)) return true;
+  if (taken.size() != 2 || t.loops_out != 1) return false;
+  StitchId maker = g.loops[taken[0]].maker;
+  return g.loops[taken[1]].maker == maker && g.type[maker] == StitchType::sr5;
+}
 
-CourseLayout lay_out_courses(const Compilation& c) {
-  const KnitGraph& g = c.knit;
-  if (g.size() == 0) throw Error("the model has no stitches: nothing to knit");
-  if (c.yarns.size() != 1)
-    unsupported(g, fmt::format("several yarn pieces at once ({} pieces)", c.yarns.size()),
-                c.yarns.first[1]);
-  if (c.yarns.ring[0]) unsupported(g, "a yarn that closes on itself", c.yarns.first[0]);
-  check_stitches(g);
+// A short row is knit where its loops wait, so its stitches neither add nor remove needles; an
+// sr5's turn loop waits on the facing needle until one decrease knits it with the sr5's loop.
+void check_short_rows(const KnitGraph& g, const CourseLayout& l) {
+  for (const Course& c : l.courses) {
+    for (std::uint32_t i = c.begin; i < c.end; ++i) {
+      StitchId s = l.order[i];
+      if (c.partial && !knits_in_place(g, s))
+        unsupported(g, "an increase, decrease or bind-off in a short row", s);
+      auto made = g.loops_made_by(s);
+      if (g.type[s] == StitchType::sr5 && g.loops[made[0]].taker != g.loops[made[1]].taker)
+        unsupported(g, "an sr5 whose two loops are not knit together by the stitch above", s);
+    }
+  }
+}
+
+// Several yarn pieces are knit one after another, each from cast-on to bind-off; a piece that
+// takes loops of another would have to wait for it on the bed.
+void check_pieces_apart(const KnitGraph& g, const YarnPieces& yarns) {
+  for (const Loop& l : g.loops) {
+    std::uint32_t maker = yarns.piece_of[l.maker], taker = yarns.piece_of[l.taker];
+    if (maker != taker)
+      unsupported(g,
+                  fmt::format("pieces joined on the bed (yarn {} takes loops made by yarn {}, as "
+                              "a sweater's yoke takes its sleeves)",
+                              taker + 1, maker + 1),
+                  l.taker);
+  }
+}
+
+CourseLayout lay_out_piece(const KnitGraph& g, std::vector<StitchId> order) {
   CourseLayout l;
-  l.order.reserve(g.size());
-  for (const Event& e : c.schedule.events)
-    if (e.kind == EventKind::stitch) l.order.push_back(e.stitch);
+  l.order = std::move(order);
   l.courses = split_into_courses(g, l.order);
-  l.tube = g.row_shape[l.courses.front().row] == RowShape::closed;
-  for (const Course& course : l.courses)
-    if ((g.row_shape[course.row] == RowShape::closed) != l.tube)
+  // A stitch graph's helix is a tube (its rows are unknown).
+  bool helix = g.row_shape[l.courses.front().row] == RowShape::unknown;
+  l.tube = helix || g.row_shape[l.courses.front().row] == RowShape::closed;
+  for (const Course& course : l.courses) {
+    RowShape shape = g.row_shape[course.row];
+    if (!helix && shape != RowShape::short_row && (shape == RowShape::closed) != l.tube)
       unsupported(g, "a mix of open rows and closed rounds", l.order[course.begin]);
+  }
   if (l.courses.size() < 2) unsupported(g, "a piece with fewer than two rows", l.order.front());
   check_borders(g, l);
-  std::vector<std::uint32_t> position(g.loops.size(), 0);
-  std::size_t bad = assign_directions(g, l, true, position);
-  if (bad && assign_directions(g, l, false, position))
-    unsupported(g, "a row whose stitches do not take the loops below in order",
+  std::size_t bad = assign_directions(g, l, true);
+  if (bad && assign_directions(g, l, false))
+    unsupported(g,
+                helix ? "a stitch graph whose yarn is not one helix of rounds (it turns: rows "
+                        "knit back and forth or short rows)"
+                      : "a row whose stitches do not take the loops below in order",
                 l.order[l.courses[bad].begin]);
+  check_short_rows(g, l);
+  for (const Course& course : l.courses)  // a bind-off is knit where its loops wait
+    if (course.rotated && g.type[l.order[course.begin]] != StitchType::bo)
+      unsupported(g, "a round that starts elsewhere than the round below it (its start drifts)",
+                  l.order[course.begin]);
   l.left_to_right.assign(g.size(), 1);
   for (const Course& course : l.courses)
     for (std::uint32_t i = course.begin; i < course.end; ++i)
       l.left_to_right[l.order[i]] = course.left_to_right;
   return l;
+}
+
+}  // namespace
+
+std::vector<CourseLayout> lay_out_pieces(const Compilation& c) {
+  const KnitGraph& g = c.knit;
+  if (g.size() == 0) throw Error("the model has no stitches: nothing to knit");
+  check_stitches(g);
+  check_pieces_apart(g, c.yarns);
+  // Each piece's stitches in schedule order; the pieces in the order the schedule starts them.
+  std::vector<std::vector<StitchId>> orders(c.yarns.size());
+  std::vector<std::uint32_t> sequence;
+  for (const Event& e : c.schedule.events) {
+    if (e.kind != EventKind::stitch) continue;
+    std::uint32_t piece = c.yarns.piece_of[e.stitch];
+    if (orders[piece].empty()) {
+      sequence.push_back(piece);
+      orders[piece].reserve(c.yarns.length[piece]);
+    }
+    orders[piece].push_back(e.stitch);
+  }
+  std::vector<CourseLayout> layouts;
+  for (std::uint32_t piece : sequence) {
+    if (c.yarns.ring[piece]) unsupported(g, "a yarn that closes on itself", c.yarns.first[piece]);
+    layouts.push_back(lay_out_piece(g, std::move(orders[piece])));
+  }
+  return layouts;
 }
 
 }  // namespace skein::knitout

@@ -59,18 +59,18 @@ std::uint32_t footprint(StitchType t) {
 
 class Emitter {
  public:
-  Emitter(const Compilation& c, const MachineProfile& p, std::ostream& out)
-      : c_(c), g_(c.knit), p_(p), l_(lay_out_courses(c)), w_(out) {
+  // Checks that the piece fits the profile (throws Error in the user's words otherwise).
+  Emitter(const Compilation& c, const MachineProfile& p, const CourseLayout& l, KnitoutWriter& w,
+          std::string carrier)
+      : c_(c), g_(c.knit), p_(p), l_(l), w_(w), carrier_(std::move(carrier)) {
     pitch_ = l_.tube ? 2 : 1;
     reach_ = p_.max_transfer_stretch / pitch_ * pitch_;
     plan_.resize(g_.size());
     live_.resize(g_.loops.size());
-    carrier_ = p_.yarn_carrier;
+    check_fit();
   }
 
   void run() {
-    check_fit();
-    header();
     const Course& first = l_.courses.front();
     plan_course(first, true);
     cast_on(first);
@@ -78,10 +78,12 @@ class Emitter {
       const Course& course = l_.courses[i];
       plan_course(course, false);
       transition(course);
-      if (i + 1 == l_.courses.size())
+      if (i + 1 == l_.courses.size()) {
         bind_off(course);
-      else
+      } else {
         knit_course(course);
+        wrap_turn(course);
+      }
     }
   }
 
@@ -115,8 +117,16 @@ class Emitter {
     return l_.tube ? 2 * std::max(f.front, f.total - f.front) : f.total;
   }
 
-  // Checks that the model fits the profile, and centres a tube's widest course on the bed.
+  // Checks that the piece fits the profile, and centres a tube's widest course on the bed.
   void check_fit() {
+    check_width();
+    check_needle_loads();
+    if (reach_ < pitch_)
+      throw Error(fmt::format("{} allows no sideways transfer (racking.max_transfer_stretch {})",
+                              p_.name, p_.max_transfer_stretch));
+  }
+
+  void check_width() {
     std::uint32_t widest = 0;
     const Course* at_course = nullptr;
     for (const Course& c : l_.courses) {
@@ -130,8 +140,21 @@ class Emitter {
       throw Error(fmt::format("{} needs {} needles{} (row {}, from {}), {} has {}", c_.input,
                               widest, l_.tube ? " in half gauge" : "", at_course->row + 1,
                               g_.describe(l_.order[at_course->begin]), p_.name, p_.needles));
-    for (StitchId s = 0; s < g_.size(); ++s) {
-      std::uint32_t in = info(g_.type[s]).loops_in;
+  }
+
+  // The loops each stitch gathers on one needle, and the transfers a double decrease needs.
+  void check_needle_loads() const {
+    std::vector<std::uint32_t> wraps = wraps_per_stitch(), held = held_loops();
+    for (StitchId s : l_.order) {
+      // A bind-off's needle also receives the chain's loop.
+      std::uint32_t in = info(g_.type[s]).loops_in,
+                    gathered = wraps[s] + (g_.type[s] == StitchType::bo ? 1 : 0);
+      for (std::uint32_t loop : taken(s)) gathered += held[loop];
+      if (gathered > p_.max_loops_per_needle && gathered > in)
+        throw Error(fmt::format(
+            "{} would gather {} loops on one needle (with tucked loops, short-row wraps or the "
+            "bind-off chain), {} allows {}",
+            g_.describe(s), gathered, p_.name, p_.max_loops_per_needle));
       if (in > p_.max_loops_per_needle)
         throw Error(
             fmt::format("a {}-to-1 decrease exceeds the {} loop{} per needle {} allows, at {}", in,
@@ -142,9 +165,24 @@ class Emitter {
             fmt::format("a 3-to-1 decrease needs transfers across {} needles, {} allows {}, at {}",
                         2 * pitch_, p_.name, p_.max_transfer_stretch, g_.describe(s)));
     }
-    if (reach_ < pitch_)
-      throw Error(fmt::format("{} allows no sideways transfer (racking.max_transfer_stretch {})",
-                              p_.name, p_.max_transfer_stretch));
+  }
+
+  // How many loops a needle holds for each knit graph loop: a tuck keeps the loops it takes
+  // under its own, a slip passes them on.
+  std::vector<std::uint32_t> held_loops() const {
+    std::vector<std::uint32_t> held(g_.loops.size(), 1);
+    for (StitchId s : l_.order)
+      if (keeps_loop_below(g_.type[s]))
+        held[g_.loops_made_by(s)[0]] = held[taken(s)[0]] + (g_.type[s] == StitchType::tuck ? 1 : 0);
+    return held;
+  }
+
+  // How many short-row turns wrap each stitch's loop (their tucks are knit with it).
+  std::vector<std::uint32_t> wraps_per_stitch() const {
+    std::vector<std::uint32_t> wraps(g_.size(), 0);
+    for (const Course& c : l_.courses)
+      if (c.wrap != kNoWrap) ++wraps[g_.loops[c.wrap].taker];
+    return wraps;
   }
 
   // ---- laying a course out on the needles ----
@@ -167,7 +205,44 @@ class Emitter {
     return true;
   }
 
+  // Where a stitch knits and which way its pass goes, once its home bed and needle are known.
+  void aim(StitchId s, StitchPlan& sp, bool on_back) const {
+    sp.step = on_back ? -pitch_ : pitch_;
+    sp.knit = is_purl(g_.type[s]) ? other(sp.home) : sp.home;
+    bool rightward = (sp.step > 0) == l_.left_to_right[s];
+    sp.travel = rightward ? Direction::plus : Direction::minus;
+  }
+
+  // The taken loop that rests where the fabric's loops rest: not an sr5's turn loop, which
+  // waits on the facing needle.
+  std::uint32_t resting_loop(StitchId s) const {
+    for (std::uint32_t loop : taken(s)) {
+      StitchId maker = g_.loops[loop].maker;
+      bool turn_loop =
+          g_.type[maker] == StitchType::sr5 &&
+          g_.loops[loop].maker_slot != knit_slot(StitchType::sr5, l_.left_to_right[maker]);
+      if (!turn_loop) return loop;
+    }
+    return taken(s)[0];
+  }
+
+  // A short row takes the loops of one needle per stitch and leaves one: each stitch knits
+  // where its loop waits, so the loops beside the short row stay where they are.
+  void plan_in_place(const Course& c) {
+    for (std::uint32_t i = c.begin; i < c.end; ++i) {
+      StitchId s = l_.order[i];
+      StitchPlan& sp = plan_[s];
+      const Place& h = live_[resting_loop(s)].home;
+      sp.home = h.bed;
+      sp.needle = h.needle;
+      sp.knit_slot = knit_slot(g_.type[s], l_.left_to_right[s]);
+      aim(s, sp, l_.tube && h.bed == Bed::b);
+    }
+  }
+
   void plan_course(const Course& c, bool first) {
+    // A bind-off, like a short row, is knit where its loops wait (wherever its round starts).
+    if (c.partial || g_.type[l_.order[c.begin]] == StitchType::bo) return plan_in_place(c);
     Footprint f = measure(c);
     // A tube whose halves keep their folds moves no loop between the beds: its right fold may
     // then follow the loops; while loops cross a fold it stays where it is.
@@ -182,16 +257,13 @@ class Emitter {
       std::uint32_t qk = q + sp.knit_slot;
       bool on_back = l_.tube && index >= f.split;
       sp.home = on_back ? Bed::b : Bed::f;
-      sp.step = on_back ? -pitch_ : pitch_;
       // A sheet counts from its left end; a tube from its right fold, where the two beds meet.
       std::int32_t rank = static_cast<std::int32_t>(!l_.tube  ? qk
                                                     : on_back ? qk - f.front
                                                               : f.front - 1 - qk);
       std::int32_t sign = l_.tube ? -1 : 1;
       sp.needle = l_.tube ? 2 * (offset - rank) + (on_back ? 1 : 0) : offset + rank;
-      sp.knit = is_purl(g_.type[s]) ? other(sp.home) : sp.home;
-      bool rightward = (sp.step > 0) == ltr;
-      sp.travel = rightward ? Direction::plus : Direction::minus;
+      aim(s, sp, on_back);
       if (record && !g_.loops_taken_by(s).empty()) {
         std::uint32_t bottom = g_.loops_taken_by(s)[stacking_order(g_.type[s])[0]];
         const Place& h = live_[bottom].home;
@@ -220,20 +292,6 @@ class Emitter {
   }
 
   // ---- output helpers ----
-  void header() {
-    w_.line(";!knitout-2");
-    w_.line(fmt::format(";;Machine: {}", p_.machine));
-    w_.line(fmt::format(";;Gauge: {}", p_.gauge));
-    if (p_.width_header) w_.line(fmt::format(";;Width: {}", p_.needles));
-    w_.line(fmt::format(";;Carriers: {}", p_.carriers_line()));
-    w_.line(fmt::format(";;Position: {}", p_.position));
-    w_.line(fmt::format(";!source: {} ({} stitches, {} {}), knit by skein for {}", c_.input,
-                        g_.size(), l_.courses.size(),
-                        l_.tube ? "rounds: a tube in half gauge" : "rows: a sheet", p_.name));
-    if (p_.stitch_number) w_.line(fmt::format("x-stitch-number {}", p_.stitch_number));
-    if (p_.speed_number) w_.line(fmt::format("x-speed-number {}", p_.speed_number));
-  }
-
   void source(const Course& c, const char* what) {
     StitchId a = l_.order[c.begin], b = l_.order[c.end - 1];
     w_.note(fmt::format(";!source: row {} {}: {}s {}..{} ({})", c.row + 1, what, g_.element,
@@ -373,6 +431,7 @@ class Emitter {
   // One stage's stop toward `target`: along the bed by at most the reach, or, when some loops
   // cross a tube's fold (which then stays put), along the fabric across the fold.
   Place next_stop(Place now, Place target, bool crossing) const {
+    if (now == facing(target)) return target;  // an sr5's stack, gathered on its turn loop
     if (!crossing)
       return {now.bed, std::clamp(target.needle, now.needle - reach_, now.needle + reach_)};
     std::int32_t u = ring(now), step = reach_ / pitch_;
@@ -401,12 +460,25 @@ class Emitter {
     const StitchPlan& sp = plan_[s];
     Needle n{sp.knit, sp.needle};
     StitchType t = g_.type[s];
+    if (keeps_loop_below(t)) {  // the needle keeps its loops: a tuck adds one, a slip nothing
+      if (t == StitchType::tuck) w_.tuck(sp.travel, n, carrier_);
+      made(s, 0, {sp.knit, sp.needle});
+      return;
+    }
     if (info(t).loops_out < 2) {
       w_.knit(sp.travel, n, carrier_);
       made(s, 0, {sp.knit, sp.needle});
       return;
     }
     std::uint32_t extra = 1u - sp.knit_slot;
+    if (t == StitchType::sr5) {  // the turn's loop: a tuck on the facing needle on the way back
+      Place turn = facing({sp.knit, sp.needle});
+      w_.knit(sp.travel, n, carrier_);
+      w_.tuck(opposite(sp.travel), at(turn), carrier_);
+      made(s, sp.knit_slot, {sp.knit, sp.needle});
+      live_[g_.loops_made_by(s)[extra]] = {turn, turn};  // it waits there for its decrease
+      return;
+    }
     Place extra_home = sp.home_of(extra);
     if (t ==
         StitchType::kfb) {  // split: the old loop waits on the facing needle, then is knit there
@@ -427,9 +499,20 @@ class Emitter {
   }
 
   void knit_course(const Course& c) {
-    source(c, "knit");
+    source(c, c.partial ? "knit (short row)" : "knit");
     w_.rack(0);
     for (std::uint32_t i = c.begin; i < c.end; ++i) knit_stitch(l_.order[i]);
+  }
+
+  // Before turning beside a waiting loop, the yarn tucks over its needle, going on the way it
+  // went: the waiting stitch is later knit through the tuck too, which closes the turn's hole.
+  // A wrap over the turning stitch's own loop is made on the way back.
+  void wrap_turn(const Course& c) {
+    if (c.wrap == kNoWrap) return;
+    const LoopPlace& waiting = live_[c.wrap];
+    bool on_back = l_.tube && waiting.home.bed == Bed::b;
+    bool rightward = (!on_back == c.left_to_right) != c.wrap_back;
+    w_.tuck(rightward ? Direction::plus : Direction::minus, at(waiting.now), carrier_);
   }
 
   // ---- cast-on and bind-off ----
@@ -447,13 +530,18 @@ class Emitter {
   }
 
   // Alternating tucks over the cast-on needles (two passes per bed), starting in the profile's
-  // first direction; returns the direction of the next pass.
+  // first direction; returns the direction of the next pass. Each bed's first pass tucks the
+  // first needle it meets, so a yarn-inserting hook beside the first stitch is beyond them all.
   Direction tuck_border(const Course& c, const std::string& carrier) {
     Direction d = p_.first_pass;
-    for (int pass = 0; pass < (l_.tube ? 4 : 2); ++pass, d = opposite(d)) {
-      std::int32_t parity = l_.tube ? pass / 2 : pass;
-      for (const Needle& n : pass_needles(c, d))
-        if ((l_.tube ? n.index / 2 : n.index) % 2 == parity) w_.tuck(d, n, carrier);
+    std::int32_t beds = l_.tube ? 2 : 1, start[2] = {0, 0};
+    for (std::int32_t pass = 0; pass < 2 * beds; ++pass, d = opposite(d)) {
+      std::vector<Needle> needles = pass_needles(c, d);
+      if (needles.empty()) continue;
+      std::int32_t& first = start[pass % beds];
+      if (pass < beds) first = needles.front().index;
+      for (const Needle& n : needles)
+        if (std::abs(n.index - first) / pitch_ % 2 == pass / beds) w_.tuck(d, n, carrier);
     }
     return d;
   }
@@ -481,6 +569,7 @@ class Emitter {
       for (std::uint32_t row = 0; row < p_.waste_rows * (l_.tube ? 2 : 1); ++row, d = opposite(d))
         knit_pass(c, d, p_.waste_carrier);
       yarn_out(p_.waste_carrier);
+      if (!p_.draw_carrier.empty()) draw_thread(c);
       yarn_in(carrier_);
     } else {
       w_.line(";!source: cast-on border: alternating tucks");
@@ -500,6 +589,18 @@ class Emitter {
       return;
     }
     knit_course(c);
+  }
+
+  // One row (a round on a tube) of the draw thread over the waste loops: pulling it out later
+  // frees the piece from the waste section.
+  void draw_thread(const Course& c) {
+    w_.line(fmt::format(";!source: draw thread (carrier {})", p_.draw_carrier));
+    yarn_in(p_.draw_carrier);
+    Direction d = p_.first_pass;
+    for (int pass = 0; pass < (l_.tube ? 2 : 1); ++pass, d = opposite(d))
+      knit_pass(c, d, p_.draw_carrier);
+    release(p_.draw_carrier);
+    yarn_out(p_.draw_carrier);
   }
 
   // Chain bind-off: knit a loop, move it onto the next stitch's needle, knit both, and so on;
@@ -535,8 +636,8 @@ class Emitter {
   const Compilation& c_;
   const KnitGraph& g_;
   const MachineProfile& p_;
-  CourseLayout l_;
-  KnitoutWriter w_;
+  const CourseLayout& l_;
+  KnitoutWriter& w_;
   std::int32_t pitch_ = 1, reach_ = 1;
   std::int32_t fold_ = 0;         // a tube's right fold: front f2R faces back b2R+1 beside it
   std::vector<StitchPlan> plan_;  // per stitch, for the course being knit
@@ -544,10 +645,66 @@ class Emitter {
   std::string carrier_;
 };
 
+// "46 rows: a sheet", "107 rounds and 20 short rows: a tube in half gauge".
+std::string describe(const CourseLayout& l) {
+  auto partial = static_cast<std::size_t>(
+      std::count_if(l.courses.begin(), l.courses.end(), [](const Course& c) { return c.partial; }));
+  return fmt::format("{} {}{}: {}", l.courses.size() - partial, l.tube ? "rounds" : "rows",
+                     partial ? fmt::format(" and {} short rows", partial) : "",
+                     l.tube ? "a tube in half gauge" : "a sheet");
+}
+
+void write_header(KnitoutWriter& w, const Compilation& c, const MachineProfile& p,
+                  const std::vector<CourseLayout>& pieces) {
+  w.line(";!knitout-2");
+  w.line(fmt::format(";;Machine: {}", p.machine));
+  w.line(fmt::format(";;Gauge: {}", p.gauge));
+  if (p.width_header) w.line(fmt::format(";;Width: {}", p.needles));
+  w.line(fmt::format(";;Carriers: {}", p.carriers_line()));
+  w.line(fmt::format(";;Position: {}", p.position));
+  std::string what = pieces.size() == 1
+                         ? describe(pieces[0])
+                         : fmt::format("{} yarn pieces knit one after another", pieces.size());
+  w.line(fmt::format(";!source: {} ({} stitches, {}), knit by skein for {}", c.input, c.knit.size(),
+                     what, p.name));
+  if (p.stitch_number) w.line(fmt::format("x-stitch-number {}", p.stitch_number));
+  if (p.speed_number) w.line(fmt::format("x-speed-number {}", p.speed_number));
+}
+
+// One carrier per yarn piece: the profile's yarn carrier, then the others in the header's
+// order, never the waste yarn's or the draw thread's.
+std::vector<std::string> piece_carriers(const Compilation& c, const MachineProfile& p,
+                                        std::size_t pieces) {
+  std::vector<std::string> carriers{p.yarn_carrier};
+  for (const std::string& name : p.carriers)
+    if (carriers.size() < pieces && name != p.yarn_carrier && name != p.waste_carrier &&
+        name != p.draw_carrier)
+      carriers.push_back(name);
+  if (carriers.size() < pieces)
+    throw Error(
+        fmt::format("{} has {} yarn pieces, one carrier each, and {} has only {} carriers "
+                    "for them{}",
+                    c.input, pieces, p.name, carriers.size(),
+                    p.waste_carrier.empty()  ? ""
+                    : p.draw_carrier.empty() ? " besides the waste yarn's"
+                                             : " besides the waste yarn's and the draw "
+                                               "thread's"));
+  return carriers;
+}
+
 }  // namespace
 
 void emit_knitout(const Compilation& c, const MachineProfile& p, std::ostream& out) {
-  Emitter(c, p, out).run();
+  std::vector<CourseLayout> pieces = lay_out_pieces(c);
+  std::vector<std::string> carriers = piece_carriers(c, p, pieces.size());
+  KnitoutWriter w(out);
+  write_header(w, c, p, pieces);
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    if (pieces.size() > 1)
+      w.line(fmt::format(";!source: yarn piece {} (carrier {}): {}", i + 1, carriers[i],
+                         describe(pieces[i])));
+    Emitter(c, p, pieces[i], w, carriers[i]).run();  // one piece's state at a time
+  }
 }
 
 }  // namespace skein::knitout

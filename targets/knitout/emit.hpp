@@ -3,7 +3,9 @@
 // empty needle facing it for transfers) at a time, course by course along the yarn:
 //   cast-on border (tucks), the cast-on course, then per course a transfer plan (loops home,
 //   decrease stacks in lean order, re-spacing within the racking limit, purls to the other
-//   bed) and the course itself; the last course is a chain bind-off ending in a tag.
+//   bed) and the course itself; the last course is a chain bind-off ending in a tag. A short
+//   row is knit where its loops wait and, where it turns beside a waiting loop, tucks over
+//   that loop's needle. Yarn pieces are knit one after another, each with its own carrier.
 #pragma once
 
 #include <iosfwd>

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <limits>
+#include <unordered_map>
 
 #include "knitout/course_layout.hpp"
 #include "knitout/stitch_recipes.hpp"
@@ -10,9 +12,9 @@
 namespace skein::knitout {
 namespace {
 
-// Fabric loops a stitch makes along its yarn (a bind-off's chain loop included).
+// Fabric loops a stitch makes along its yarn (a bind-off's chain loop included; a slip none).
 std::uint32_t fabric_loops(StitchType t) {
-  return std::max<std::uint32_t>(info(t).loops_out, 1);
+  return t == StitchType::sl ? 0 : std::max<std::uint32_t>(info(t).loops_out, 1);
 }
 
 class Matcher {
@@ -20,7 +22,15 @@ class Matcher {
   Matcher(const Replay& r, std::string_view text, const Compilation& c, const CourseLayout& l)
       : f_(r.fabric), r_(r), text_(text), c_(c), g_(c.knit), l_(l) {
     loop_of_.assign(g_.loops.size(), kNoLoop);
+    kept_.assign(g_.loops.size(), kNoKept);
     stamp_.assign(f_.loops.size(), 0);
+    wrap_after_.assign(g_.size(), kNoWrap);
+    wrap_back_.assign(g_.size(), 0);
+    for (const Course& course : l_.courses) {
+      if (course.wrap == kNoWrap) continue;
+      wrap_after_[l_.order[course.end - 1]] = course.wrap;
+      wrap_back_[l_.order[course.end - 1]] = course.wrap_back;
+    }
   }
 
   // Tries the stitches against carrier `carrier`'s loops from index `start` on; on failure
@@ -33,9 +43,10 @@ class Matcher {
     std::size_t pos = start;
     LoopId previous_bo = kNoLoop;
     reached = 0;
+    wraps_.clear();
     for (StitchId s : l_.order) {
       StitchType t = g_.type[s];
-      std::uint32_t n = fabric_loops(t);
+      std::uint32_t n = fabric_loops(t) + (wrap_after_[s] != kNoWrap);
       if (pos + n > yarn.size()) {
         why = fmt::format("the yarn of carrier {} ends before {}", r_.header.carriers[carrier],
                           g_.describe(s));
@@ -51,15 +62,60 @@ class Matcher {
         }
       }
       if (!stitch_matches(s, t, &yarn[pos], previous_bo, why)) return false;
+      if (wrap_after_[s] != kNoWrap && !wrap_matches(s, yarn[pos], yarn[pos + n - 1], why))
+        return false;
       for (std::uint32_t i = 0; i < n; ++i) stamp_[yarn[pos + i]] = try_;
       previous_bo = t == StitchType::bo ? yarn[pos] : kNoLoop;
       pos += n;
       ++reached;
     }
-    return children_match(why);
+    return children_match(why) && wraps_taken(why);
   }
 
  private:
+  // A short row's turn: a tuck (a loop through nothing) that the stitch taking the waiting
+  // loop later knits through as well, made going on the way the row went (`last` is the
+  // turning stitch's loop); in a tube, the other way when the waiting loop lies over the fold.
+  bool wrap_matches(StitchId s, LoopId last, LoopId x, std::string& why) {
+    const FabricLoop& fl = f_.loops[x];
+    if (fl.made_by != OpCode::tuck || fl.parent_count != 0) {
+      why = fmt::format("the turn after {} leaves a hole: {} is not a tuck over the waiting loop",
+                        g_.describe(s), where(x));
+      return false;
+    }
+    std::uint32_t waiting = wrap_after_[s];
+    bool over_fold = l_.tube && front_half(loop_of_[waiting], g_.type[g_.loops[waiting].maker]) !=
+                                    front_half(last, g_.type[s]);
+    bool back = over_fold != wrap_back_[s];
+    Direction on = back ? opposite(f_.loops[last].dir) : f_.loops[last].dir;
+    if (fl.dir != on) {
+      why = fmt::format("the turn after {} goes back before its tuck: {} goes {}", g_.describe(s),
+                        where(x), direction_char(fl.dir));
+      return false;
+    }
+    wraps_.emplace(g_.loops[waiting].taker, x);
+    return true;
+  }
+  // Whether a loop made by a stitch of type `t` belongs to a tube's front half (a purl's loop
+  // is made on the bed facing its half).
+  bool front_half(LoopId x, StitchType t) const { return f_.loops[x].front != is_purl(t); }
+  bool is_wrap(StitchId s, LoopId x) const {
+    auto [first, last] = wraps_.equal_range(s);
+    return std::any_of(first, last, [x](const auto& w) { return w.second == x; });
+  }
+  // Each turn's tuck is pulled through by the stitch that takes the loop it wraps.
+  bool wraps_taken(std::string& why) const {
+    for (const auto& [taker, x] : wraps_) {
+      std::uint8_t want = g_.type[taker] == StitchType::kfb ? 2 : 1;
+      if (f_.loops[x].children != want) {
+        why = fmt::format("the turn's tuck {} is pulled through {} times, expected {} (by {})",
+                          where(x), f_.loops[x].children, want, g_.describe(taker));
+        return false;
+      }
+    }
+    return true;
+  }
+
   std::string where(LoopId x) const {
     if (lines_.empty()) lines_ = split_lines(text_);  // only ever needed for a message
     std::uint32_t line = f_.loops[x].line;
@@ -104,12 +160,35 @@ class Matcher {
     return false;
   }
 
+  // The fabric loops a stitch must be pulled through: the loops it takes, with the loops tucks
+  // kept under them, and the tucks of the short-row turns that wrapped them.
+  std::vector<LoopId> through_of(StitchId s) const {
+    std::vector<LoopId> through;
+    for (std::uint32_t loop : g_.loops_taken_by(s))
+      for (std::uint32_t l = loop; l != kNoKept; l = kept_[l]) through.push_back(loop_of_[l]);
+    auto [wrap, wraps_end] = wraps_.equal_range(s);
+    for (; wrap != wraps_end; ++wrap) through.push_back(wrap->second);
+    return through;
+  }
+
+  // A decrease's top loop (the last pulled through, wraps aside) is the one its lean puts there.
+  bool leans_right(StitchId s, StitchType t, LoopId x, std::string& why) const {
+    auto parents = f_.parents_of(x);
+    auto on_top =
+        std::find_if(parents.rbegin(), parents.rend(), [&](LoopId p) { return !is_wrap(s, p); });
+    LoopId top = loop_of_[g_.loops_taken_by(s)[stacking_order(t).back()]];
+    if (*on_top == top) return true;
+    why = fmt::format("{} leans the wrong way: {} has the loop of {} on top, expected that of {}",
+                      g_.describe(s), where(x), describe_maker(*on_top), describe_maker(top));
+    return false;
+  }
+
   bool stitch_matches(StitchId s, StitchType t, const LoopId* loops, LoopId previous_bo,
                       std::string& why) {
     auto taken = g_.loops_taken_by(s);
     auto made = g_.loops_made_by(s);
-    std::vector<LoopId> through;
-    for (std::uint32_t loop : taken) through.push_back(loop_of_[loop]);
+    if (keeps_loop_below(t)) return kept_below(s, t, loops, why);
+    std::vector<LoopId> through = through_of(s);
     if (t == StitchType::co) {
       for (LoopId parent : f_.parents_of(loops[0]))
         if (stamp_[parent] == try_) {
@@ -123,24 +202,15 @@ class Matcher {
     } else if (made.size() == 2) {
       bool ltr = l_.left_to_right[s];
       for (std::uint8_t i = 0; i < 2; ++i) {
-        std::uint8_t slot = slot_along_yarn(ltr, i, 2);
+        std::uint8_t slot = made_slot_along_yarn(t, ltr, i, 2);
         if (!parents_are(loops[i],
                          made_slot_pulled_through(t, slot, ltr) ? through : std::vector<LoopId>{},
                          s, why))
           return false;
       }
-    } else {
-      if (!parents_are(loops[0], through, s, why)) return false;
-      if (taken.size() > 1) {
-        auto parents = f_.parents_of(loops[0]);
-        LoopId top = loop_of_[taken[stacking_order(t).back()]];
-        if (parents.back() != top) {
-          why = fmt::format(
-              "{} leans the wrong way: {} has the loop of {} on top, expected that of {}",
-              g_.describe(s), where(loops[0]), describe_maker(parents.back()), describe_maker(top));
-          return false;
-        }
-      }
+    } else if (!parents_are(loops[0], through, s, why) ||
+               (taken.size() > 1 && !leans_right(s, t, loops[0], why))) {
+      return false;
     }
     if (!l_.tube && !made.empty() && f_.loops[loops[0]].front == is_purl(t)) {
       why = fmt::format("{} is a {} but {} knits it on the {} bed", g_.describe(s), info(t).name,
@@ -150,8 +220,8 @@ class Matcher {
     if (!travels_along_course(s, t, loops, std::max<std::size_t>(made.size(), 1), why))
       return false;
     for (std::size_t i = 0; i < made.size(); ++i)
-      loop_of_[made[slot_along_yarn(l_.left_to_right[s], static_cast<std::uint8_t>(i),
-                                    static_cast<std::uint8_t>(made.size()))]] = loops[i];
+      loop_of_[made[made_slot_along_yarn(t, l_.left_to_right[s], static_cast<std::uint8_t>(i),
+                                         static_cast<std::uint8_t>(made.size()))]] = loops[i];
     return true;
   }
 
@@ -159,12 +229,15 @@ class Matcher {
   // matched: on a sheet, rows alternate; in a tube the back half runs against the front half
   // (a stitch's half is the bed it is made on, the other for a purl). A loop made against
   // its course leaves a float where the carrier turns back.
+  // An sr5's second loop is made on the way back, after the turn.
   bool travels_along_course(StitchId s, StitchType t, const LoopId* loops, std::size_t n,
                             std::string& why) {
     bool back_half = l_.tube && f_.loops[loops[0]].front == is_purl(t);
     for (std::size_t i = 0; i < n; ++i) {
       const FabricLoop& fl = f_.loops[loops[i]];
-      int sign = (l_.left_to_right[s] ? 1 : -1) * (back_half ? -1 : 1) * static_cast<int>(fl.dir);
+      bool turned = t == StitchType::sr5 && i == 1;
+      int sign = (l_.left_to_right[s] != turned ? 1 : -1) * (back_half ? -1 : 1) *
+                 static_cast<int>(fl.dir);
       if (sign_ == 0) sign_ = sign;
       if (sign != sign_) {
         why = fmt::format("{} is knit against the direction of its row: {} goes {}", g_.describe(s),
@@ -175,19 +248,48 @@ class Matcher {
     return true;
   }
 
-  // Every loop of the input is pulled through as often as its taker needs (kfb twice).
-  bool children_match(std::string& why) const {
-    for (std::uint32_t loop = 0; loop < g_.loops.size(); ++loop) {
-      const Loop& l = g_.loops[loop];
-      std::uint32_t want = g_.type[l.taker] == StitchType::kfb ? 2 : 1;
-      LoopId x = loop_of_[loop];
-      if (f_.loops[x].children != want) {
-        why = fmt::format("the loop {} makes for {} is pulled through {} time{}, expected {}",
-                          where(x), g_.describe(l.maker), f_.loops[x].children,
-                          f_.loops[x].children == 1 ? "" : "s", want);
-        return false;
-      }
+  // A tuck: a loop through nothing, over the loop it takes, which stays on the needle for the
+  // stitch above (kept_); a slip makes no loop: its loop is the one it takes.
+  bool kept_below(StitchId s, StitchType t, const LoopId* loops, std::string& why) {
+    std::uint32_t below = g_.loops_taken_by(s)[0], made = g_.loops_made_by(s)[0];
+    if (t == StitchType::sl) {
+      loop_of_[made] = loop_of_[below];
+      kept_[made] = kept_[below];
+      return true;
     }
+    if (f_.loops[loops[0]].made_by != OpCode::tuck) {
+      why = fmt::format("{} is not there: {} is not a tuck", g_.describe(s), where(loops[0]));
+      return false;
+    }
+    if (!parents_are(loops[0], {}, s, why) || !travels_along_course(s, t, loops, 1, why))
+      return false;
+    loop_of_[made] = loops[0];
+    kept_[made] = below;
+    return true;
+  }
+
+  // How often a loop is pulled through: once, twice for a kfb; a tuck or slip above passes it
+  // on to the stitch that takes their loop.
+  std::uint32_t pulls(std::uint32_t loop) const {
+    StitchId taker = g_.loops[loop].taker;
+    if (keeps_loop_below(g_.type[taker])) return pulls(g_.loops_made_by(taker)[0]);
+    return g_.type[taker] == StitchType::kfb ? 2 : 1;
+  }
+
+  // Every loop of the input is pulled through as often as its taker needs.
+  bool children_match(std::string& why) const {
+    for (StitchId s : l_.order)
+      for (std::uint32_t loop : g_.loops_made_by(s)) {
+        const Loop& l = g_.loops[loop];
+        std::uint32_t want = pulls(loop);
+        LoopId x = loop_of_[loop];
+        if (f_.loops[x].children != want) {
+          why = fmt::format("the loop {} makes for {} is pulled through {} time{}, expected {}",
+                            where(x), g_.describe(l.maker), f_.loops[x].children,
+                            f_.loops[x].children == 1 ? "" : "s", want);
+          return false;
+        }
+      }
     return true;
   }
 
@@ -198,50 +300,91 @@ class Matcher {
   const Compilation& c_;
   const KnitGraph& g_;
   const CourseLayout& l_;
-  std::vector<LoopId> loop_of_;       // per knit graph loop: its fabric loop
-  std::vector<std::uint32_t> stamp_;  // per fabric loop: the try that matched it
+  std::vector<LoopId> loop_of_;  // per knit graph loop: its fabric loop
+  static constexpr std::uint32_t kNoKept = 0xffffffffu;
+  std::vector<std::uint32_t> kept_;        // per knit graph loop: the loop a tuck kept under it
+  std::vector<std::uint32_t> stamp_;       // per fabric loop: the try that matched it
+  std::vector<std::uint32_t> wrap_after_;  // per stitch: the loop its course's turn wraps
+  std::vector<std::uint8_t> wrap_back_;    // per stitch: ... its own loop, going back
+  std::unordered_multimap<StitchId, LoopId> wraps_;  // per stitch: the turn tucks it knits
   std::uint32_t try_ = 0;
   int sign_ = 0;  // the first stitch's direction relative to its frame
 };
 
-}  // namespace
+// Where one piece was found: along which carrier, after how many border loops.
+struct PieceMatch {
+  bool found = false;
+  std::size_t carrier = 0, start = 0, needed = 0;
+  std::string why;  // when not found: the first difference of the closest try
+};
 
-ProofResult prove_fabric(const Replay& r, std::string_view text, const Compilation& c) {
-  CourseLayout l = lay_out_courses(c);
-  std::size_t needed = 0;
-  for (StitchId s = 0; s < c.knit.size(); ++s) needed += fabric_loops(c.knit.type[s]);
+// Looks for the piece along every carrier's yarn, in a yarn piece no other piece matched.
+PieceMatch find_piece(const Replay& r, std::string_view text, const Compilation& c,
+                      const CourseLayout& l, std::vector<std::uint32_t>& used) {
+  PieceMatch match;
+  for (StitchId s : l.order) match.needed += fabric_loops(c.knit.type[s]);
+  for (const Course& course : l.courses) match.needed += course.wrap != kNoWrap;
   Matcher m(r, text, c, l);
-  ProofResult result;
   std::size_t best = 0;
-  std::string best_why;
   for (std::size_t carrier = 0; carrier < r.fabric.by_carrier.size(); ++carrier) {
     const auto& yarn = r.fabric.by_carrier[carrier];
-    for (std::size_t start = 0; start + needed <= yarn.size(); ++start) {
+    for (std::size_t start = 0; start + match.needed <= yarn.size(); ++start) {
+      std::uint32_t piece = r.fabric.loops[yarn[start]].piece;
+      if (std::find(used.begin(), used.end(), piece) != used.end()) continue;
       std::string why;
       std::size_t reached = 0;
       if (m.match(carrier, start, why, reached)) {
-        result.proven = true;
-        result.first_line = r.fabric.loops[yarn[start]].line;
-        result.last_line = r.fabric.loops[yarn[start + needed - 1]].line;
-        result.summary = fmt::format(
-            "proven against {}: all {} stitches are there, knit with carrier {} in yarn order "
-            "after a border of {} loops, each pulled through the right loops{}",
-            c.input, c.knit.size(), r.header.carriers[carrier], start,
-            l.tube ? "" : " on the right bed");
-        return result;
+        used.push_back(piece);
+        match.found = true;
+        match.carrier = carrier;
+        match.start = start;
+        return match;
       }
-      if (reached >= best) best = reached, best_why = why;
+      if (reached >= best) best = reached, match.why = why;
     }
   }
-  if (best_why.empty()) {
+  if (match.why.empty()) {
     std::size_t most = 0;
     for (const auto& yarn : r.fabric.by_carrier) most = std::max(most, yarn.size());
-    best_why = fmt::format(
+    match.why = fmt::format(
         "no carrier makes enough loops: the input needs {} (one per stitch, two "
         "per increase), the busiest carrier makes {}",
-        needed, most);
+        match.needed, most);
   }
-  result.summary = fmt::format("NOT proven against {}: {}", c.input, best_why);
+  return match;
+}
+
+}  // namespace
+
+ProofResult prove_fabric(const Replay& r, std::string_view text, const Compilation& c) {
+  std::vector<CourseLayout> pieces = lay_out_pieces(c);
+  ProofResult result;
+  result.first_line = std::numeric_limits<std::size_t>::max();
+  std::vector<std::uint32_t> used;
+  std::vector<std::string> where;
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    std::string piece = pieces.size() > 1 ? fmt::format("yarn piece {}: ", i + 1) : "";
+    PieceMatch m = find_piece(r, text, c, pieces[i], used);
+    if (!m.found) {
+      result.summary = fmt::format("NOT proven against {}: {}{}", c.input, piece, m.why);
+      return result;
+    }
+    const auto& yarn = r.fabric.by_carrier[m.carrier];
+    result.first_line =
+        std::min<std::size_t>(result.first_line, r.fabric.loops[yarn[m.start]].line);
+    result.last_line =
+        std::max<std::size_t>(result.last_line, r.fabric.loops[yarn[m.start + m.needed - 1]].line);
+    where.push_back(fmt::format("{}carrier {} in yarn order after a border of {} loops",
+                                pieces.size() > 1 ? fmt::format("piece {} with ", i + 1) : "with ",
+                                r.header.carriers[m.carrier], m.start));
+  }
+  bool sheets =
+      std::none_of(pieces.begin(), pieces.end(), [](const CourseLayout& l) { return l.tube; });
+  result.proven = true;
+  result.summary = fmt::format(
+      "proven against {}: all {} stitches are there, knit {}, each pulled through the right "
+      "loops{}",
+      c.input, c.knit.size(), fmt::join(where, "; "), sheets ? " on the right bed" : "");
   return result;
 }
 

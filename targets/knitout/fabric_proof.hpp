@@ -2,14 +2,17 @@
 // loop was pulled through which, in which order along each carrier's yarn) must be the input's
 // knit graph, stitch for stitch. Comments (;!source) are not trusted: the match is structural.
 //
-// Along one carrier's yarn, after any border (cast-on tucks, waste yarn), every stitch of the
-// input must appear in yarn order as its loops: a cast-on as one loop pulled through border
+// Each yarn piece of the input is matched along one carrier's yarn, in a yarn piece of its own.
+// After any border (cast-on tucks, waste yarn, draw thread), every stitch of the piece must
+// appear in yarn order as its loops: a cast-on as one loop pulled through border
 // loops only; a knit, purl or decrease as one loop pulled through exactly the loops its
 // stitch takes (a decrease with the right loop on top); an increase as two loops in the
 // order the yarn makes them (both pulled through for kfb, the new one through nothing for yo,
 // m1l, m1r); a bind-off as one loop pulled through its stitch's loop and the previous
-// bind-off's loop. Every loop of the input is pulled through exactly as often as it should
-// be, and, on a sheet, every knit is made on the front bed and every purl on the back.
+// bind-off's loop; an sr5 as its knit loop and a turn loop made going back. A short row's turn
+// beside a waiting loop is followed by a tuck that the waiting loop's taker pulls through too.
+// Every loop of the input is pulled through exactly as often as it should be, and, on a sheet,
+// every knit is made on the front bed and every purl on the back.
 #pragma once
 
 #include <string>

@@ -17,7 +17,8 @@ class KnitoutTarget : public Target {
   std::string name() const override { return "knitout"; }
   std::string description() const override {
     return "knitout for v-bed knitting machines (--machine swg091n2, kniterate, generic or a "
-           "profile .yaml): one sheet or tube with shaping, cast-on to bind-off";
+           "profile .yaml): sheets and tubes with shaping and short rows, one yarn piece after "
+           "another, cast-on to bind-off";
   }
   std::string default_extension() const override { return ".k"; }
   void emit(const Compilation& c, const TargetOptions& options, std::ostream& out) const override {

@@ -195,7 +195,8 @@ MachineProfile parse_profile(const std::string& path, const std::string& text) {
           {"hook", true, choice_to(hook, {"inhook", "in"})},
           {"first_pass", true, choice_to(first_pass, {"+", "-"})},
           {"carrier", true, text_to(r, p.yarn_carrier)},
-          {"waste_carrier", false, text_to(r, p.waste_carrier)}})},
+          {"waste_carrier", false, text_to(r, p.waste_carrier)},
+          {"draw_carrier", false, text_to(r, p.draw_carrier)}})},
       {"stitch_number", false, whole_to(r, p.stitch_number, 1, 255)},
       {"speed_number", false, whole_to(r, p.speed_number, 1, 10000)},
       {"cast_on", true, map_of(r, {
@@ -225,6 +226,12 @@ MachineProfile parse_profile(const std::string& path, const std::string& text) {
     r.fail(root["cast_on"]["waste_rows"].Mark(),
            "field 'cast_on.waste_rows' needs 'yarn.waste_carrier': a carrier of 'carriers' other "
            "than 'yarn.carrier'");
+  if (!p.draw_carrier.empty() &&
+      (p.waste_rows == 0 || !has_carrier(p.draw_carrier) || p.draw_carrier == p.yarn_carrier ||
+       p.draw_carrier == p.waste_carrier))
+    r.fail(root["yarn"]["draw_carrier"].Mark(),
+           "field 'yarn.draw_carrier' needs 'cast_on.waste_rows' and a carrier of 'carriers' other "
+           "than 'yarn.carrier' and 'yarn.waste_carrier'");
   if (p.max_transfer_stretch > p.max_rack)
     r.fail(root["racking"]["max_transfer_stretch"].Mark(),
            "field 'racking.max_transfer_stretch' cannot exceed 'racking.max'");

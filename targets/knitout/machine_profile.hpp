@@ -23,19 +23,20 @@ enum class YarnHook : std::uint8_t {
 };
 
 struct MachineProfile {
-  std::string file;                       // where it was read from, for messages
-  std::string name;                       // "swg091n2"
-  std::string description;                // one line for people
-  std::string machine;                    // the ;;Machine: header value
-  double gauge = 0;                       // needles per inch, the ;;Gauge: header value
-  std::uint32_t needles = 0;              // needles per bed, numbered 0..needles-1
-  std::string position;                   // the ;;Position: header value
-  bool width_header = false;              // write ;;Width: <needles>
-  std::vector<std::string> carriers;      // the ;;Carriers: header, in order
-  std::string yarn_carrier;               // the carrier skein knits with
-  std::string waste_carrier;              // the carrier for the waste section (if any)
-  std::int32_t max_rack = 0;              // |racking| limit, in needles
-  std::vector<double> rack_fractions;     // allowed fractional parts of a rack (0 always)
+  std::string file;                    // where it was read from, for messages
+  std::string name;                    // "swg091n2"
+  std::string description;             // one line for people
+  std::string machine;                 // the ;;Machine: header value
+  double gauge = 0;                    // needles per inch, the ;;Gauge: header value
+  std::uint32_t needles = 0;           // needles per bed, numbered 0..needles-1
+  std::string position;                // the ;;Position: header value
+  bool width_header = false;           // write ;;Width: <needles>
+  std::vector<std::string> carriers;   // the ;;Carriers: header, in order
+  std::string yarn_carrier;            // the carrier skein knits with
+  std::string waste_carrier;           // the carrier for the waste section (if any)
+  std::string draw_carrier;            // the draw thread's carrier between waste and piece (if any)
+  std::int32_t max_rack = 0;           // |racking| limit, in needles
+  std::vector<double> rack_fractions;  // allowed fractional parts of a rack (0 always)
   std::int32_t max_transfer_stretch = 0;  // |racking| limit for xfer/split
   std::uint32_t max_loops_per_needle = 0;
   bool sliders = false;

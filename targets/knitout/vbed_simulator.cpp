@@ -187,10 +187,42 @@ class VirtualBed {
                          names(op.carriers), direction_char(p_.first_pass), p_.name,
                          direction_char(op.dir)));
     }
+    // The hook holds the yarn's end beside the first stitch, on the side the carrier came from.
+    if (pending & hook_) {
+      hook_edge_ = op.a.index;
+      hook_side_ = opposite(op.dir);
+    }
     each(op.carriers, [&](Carrier& c, std::size_t) {
       c.state = CarrierState::in;
       c.stitched = true;
     });
+  }
+
+  // Until releasehook, the needles beyond the first stitch on the hook's side are in its way.
+  void check_hook_clear(Needle n) {
+    bool beyond = hook_side_ == Direction::plus ? n.index > hook_edge_ : n.index < hook_edge_;
+    if (beyond)
+      fail(
+          fmt::format("{} is blocked by the yarn-inserting hook, which holds carrier {} {} of "
+                      "needle {} until releasehook",
+                      needle_name(n), names(hook_),
+                      hook_side_ == Direction::plus ? "right" : "left", hook_edge_));
+  }
+  void check_hook_clear(const Op& op) {
+    switch (op.code) {
+      case OpCode::split:
+      case OpCode::xfer:
+        check_hook_clear(op.b);
+        [[fallthrough]];
+      case OpCode::knit:
+      case OpCode::tuck:
+      case OpCode::miss:
+      case OpCode::drop:
+      case OpCode::amiss:
+        return check_hook_clear(op.a);
+      default:
+        return;
+    }
   }
 
   void bring_in(const Op& op) {
@@ -222,6 +254,7 @@ class VirtualBed {
       c.hooked = false;
     });
     hook_ = 0;
+    hook_side_ = Direction::none;
   }
 
   void take_out(const Op& op) {
@@ -389,6 +422,7 @@ class VirtualBed {
   }
 
   void apply(const Op& op) {
+    if (hook_side_ != Direction::none) check_hook_clear(op);
     switch (op.code) {
       case OpCode::in:
       case OpCode::inhook:
@@ -446,6 +480,8 @@ class VirtualBed {
   std::array<std::vector<Stack>, 4> beds_;
   std::vector<Carrier> carriers_;
   CarrierMask hook_ = 0;
+  std::int32_t hook_edge_ = 0;             // the needle of the hooked yarn's first stitch
+  Direction hook_side_ = Direction::none;  // the side of it the hook blocks (none: no hook)
   std::uint32_t pieces_ = 0;
   std::int32_t rack_ = 0, n_ = 0, lo_ = 0, hi_ = 0, span_lo_ = 0, span_hi_ = 0;
   bool keep_ = true;

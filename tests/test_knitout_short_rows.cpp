@@ -1,0 +1,249 @@
+// Short rows on the knitout target: partial passes that turn beside waiting loops with a tuck
+// over the first waiting needle (no hole), on sheets and in a tube (a sock heel), proven by the
+// virtual v-bed on every profile.
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <random>
+
+#include "common/error.hpp"
+#include "fixtures.hpp"
+#include "knitout/course_layout.hpp"
+#include "labeling/shapes.hpp"
+#include "mesh/generate.hpp"
+#include "test_knitout_util.hpp"
+
+namespace skein {
+namespace {
+
+using T = StitchType;
+using testing::shipped_profile;
+
+const char* const kProfiles[] = {"swg091n2", "kniterate", "generic"};
+
+// The fixture: four stitches; a short row knits three and turns at an sr4, the next row comes
+// back, and a full row takes every loop, the first stitch's cast-on loop included.
+TEST(KnitoutShortRows, TheCoursesTakeARunOfTheWaitingLoopsAndTheTurnWrapsTheNextOne) {
+  Compilation c = compile_stitch_mesh(testing::short_row_mesh(T::sr4), "short rows");
+  knitout::CourseLayout l = knitout::lay_out_pieces(c).front();
+  ASSERT_EQ(l.courses.size(), 5u);
+  std::vector<bool> partial, wrapped;
+  for (const knitout::Course& course : l.courses) {
+    partial.push_back(course.partial);
+    wrapped.push_back(course.wrap != knitout::kNoWrap);
+  }
+  EXPECT_EQ(partial, (std::vector<bool>{false, true, true, false, false}));
+  // Only the turn at the sr4 has a loop waiting beyond it; the other turns are at the edge.
+  EXPECT_EQ(wrapped, (std::vector<bool>{false, true, false, false, false}));
+  const knitout::Course& turning = l.courses[1];
+  EXPECT_EQ(c.knit.type[l.order[turning.end - 1]], T::sr4);
+  EXPECT_EQ(c.knit.type[c.knit.loops[turning.wrap].maker], T::co);
+}
+
+// Every wrap of the sock's heel matters: without it, or made going back, the file is not the
+// sock (or breaks a rule).
+TEST(KnitoutShortRows, EachWrapOfTheSockHeelIsCheckedByTheProof) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  Compilation c = compile_model("samples/sock/sock.yaml");
+  knitout::MachineProfile p = shipped_profile("swg091n2");
+  std::string text = testing::emit_knitout_text(c, p);
+  auto rejected = [&](const std::string& edited) {
+    try {
+      return !testing::replay_and_prove(edited, c, p).proven;
+    } catch (const ParseError&) {
+      return true;
+    }
+  };
+  int wraps = 0;
+  for (std::size_t at = text.find("\ntuck "); at != std::string::npos;
+       at = text.find("\ntuck ", at + 1)) {
+    std::size_t begin = at + 1, end = text.find('\n', begin) + 1;
+    std::size_t heading = text.rfind(";!source:", begin);  // the section the tuck is in
+    if (text.substr(heading, text.find('\n', heading) - heading).find("(short row)") ==
+        std::string::npos)
+      continue;
+    ++wraps;
+    std::string dropped = text, flipped = text;
+    dropped.erase(begin, end - begin);
+    flipped[begin + 5] = flipped[begin + 5] == '+' ? '-' : '+';
+    EXPECT_TRUE(rejected(dropped)) << text.substr(begin, end - begin);
+    EXPECT_TRUE(rejected(flipped)) << text.substr(begin, end - begin);
+  }
+  EXPECT_EQ(wraps, 14);  // one per sr4 turn
+}
+
+// At 11 stitches and 49 rows per 10 cm, two of the sock heel's turns come beside one waiting
+// loop: the second wraps its own stitch instead, tucking its needle on the way back, so that
+// no needle of the Kniterate gathers more than 2 loops. Each such wrap matters to the proof.
+TEST(KnitoutShortRows, ASecondTurnBesideAWrappedLoopWrapsItsOwnStitchGoingBack) {
+  std::string project = ::testing::TempDir() + "/double-wrap.yaml";
+  std::ofstream(project) << fmt::format(
+      "mesh: {}/samples/sock/sock.obj\ngauge: {{stitches: 11, rows: 49}}\npatterns: {{cuff: "
+      "k2p2}}\nshort_rows:\n  method: sr4\n  faces: [34, 39]\n",
+      SKEIN_SOURCE_DIR);
+  Compilation c = compile_model(project);
+  knitout::MachineProfile p = shipped_profile("kniterate");
+  std::string text = testing::emit_knitout_text(c, p);
+  ASSERT_TRUE(testing::replay_and_prove(text, c, p).proven);
+  int back_wraps = 0;
+  for (const knitout::Course& course : knitout::lay_out_pieces(c).front().courses)
+    back_wraps += course.wrap_back;
+  EXPECT_EQ(back_wraps, 4);
+  // "knit - b131 6" then "tuck + b131 6": the same needle, the other way.
+  std::size_t at = text.find("knit - b131 6\ntuck + b131 6\n");
+  ASSERT_NE(at, std::string::npos);
+  std::size_t tuck = text.find("tuck", at);
+  std::string dropped = text, flipped = text;
+  dropped.erase(tuck, text.find('\n', tuck) + 1 - tuck);
+  flipped[tuck + 5] = '-';
+  for (const std::string& edited : {dropped, flipped}) {
+    try {
+      EXPECT_FALSE(testing::replay_and_prove(edited, c, p).proven);
+    } catch (const ParseError&) {
+    }
+  }
+}
+
+TEST(KnitoutShortRows, TheFixtureKnitsAndProvesOnEveryProfileWithATuckAtTheTurn) {
+  for (StitchType turn : {T::sr4, T::sr5}) {
+    Compilation c = compile_stitch_mesh(testing::short_row_mesh(turn), "short rows");
+    for (const char* name : kProfiles) {
+      knitout::MachineProfile p = shipped_profile(name);
+      std::string text = testing::emit_knitout_text(c, p);
+      EXPECT_NE(text.find(";!source: row 2 knit (short row)"), std::string::npos) << name;
+      knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
+      EXPECT_TRUE(proof.proven) << abbreviation(turn) << " on " << name << ": " << proof.summary;
+    }
+  }
+}
+
+// An sr5 makes the turn's loop itself: a tuck on the facing needle on the way back, which
+// the k2tog above takes on top of the sr5's knit loop (its lean). No other wrap is made.
+TEST(KnitoutShortRows, AFiveEdgedTurnTucksTheFacingNeedleOnTheWayBack) {
+  Compilation c = compile_stitch_mesh(testing::short_row_mesh(T::sr5), "short rows");
+  knitout::CourseLayout l = knitout::lay_out_pieces(c).front();
+  for (const knitout::Course& course : l.courses) EXPECT_EQ(course.wrap, knitout::kNoWrap);
+  std::string text = testing::emit_knitout_text(c, shipped_profile("generic"));
+  std::size_t row2 = text.find(";!source: row 2 knit (short row)");
+  std::size_t row3 = text.find(";!source: row 3", row2);
+  EXPECT_EQ(text.substr(row2, row3 - row2),
+            ";!source: row 2 knit (short row): faces 6..7 (right to left)\n"
+            "knit - f501 1\nknit - f500 1\nknit - f499 1\ntuck + b499 1\n");
+}
+
+// Without the tuck the rows still knit, but the proof names the hole.
+TEST(KnitoutShortRows, ATurnWithoutItsTuckIsNotProven) {
+  Compilation c = compile_stitch_mesh(testing::short_row_mesh(T::sr4), "short rows");
+  knitout::MachineProfile p = shipped_profile("generic");
+  std::string text = testing::emit_knitout_text(c, p);
+  std::size_t knit = text.find(";!source: row 2 knit (short row)");
+  std::size_t tuck = text.find("tuck ", knit);
+  ASSERT_NE(tuck, std::string::npos);
+  text.erase(tuck, text.find('\n', tuck) + 1 - tuck);
+  knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
+  EXPECT_FALSE(proof.proven);
+  EXPECT_NE(proof.summary.find("leaves a hole"), std::string::npos) << proof.summary;
+}
+
+// Random sheets with pairs of short rows (sr4 or sr5 turns) and random knits and purls: each
+// proves on every profile.
+TEST(KnitoutRandomized, ShortRowSheetsProveOnEveryProfile) {
+  std::mt19937_64 rng(77);
+  int proven = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    std::uint32_t width = 3 + static_cast<std::uint32_t>(rng() % 30);
+    std::uint32_t rows = 1 + static_cast<std::uint32_t>(rng() % 15);
+    Compilation c = compile_stitch_mesh(short_row_sheet(width, rows, rng()), "short-row sheet");
+    ASSERT_TRUE(c.knittability.knittable);
+    for (const char* name : kProfiles) {
+      knitout::MachineProfile p = shipped_profile(name);
+      std::string text = testing::emit_knitout_text(c, p);
+      knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
+      EXPECT_TRUE(proof.proven) << "trial " << trial << " on " << name << ": " << proof.summary;
+      proven += proof.proven;
+    }
+  }
+  EXPECT_EQ(proven, 180);
+}
+
+// Socks of random sizes from `skein new sock` (tubes with a short-row heel and a shaped toe):
+// each proves on every profile it fits and is refused for its width on the others.
+TEST(KnitoutRandomized, SocksOfRandomSizesProveOnEveryProfileTheyFit) {
+  std::mt19937_64 rng(19);
+  std::string dir = ::testing::TempDir();
+  int proven = 0, too_wide = 0;
+  for (int trial = 0; trial < 10; ++trial) {
+    ShapeSize size;
+    size.circumference = 12 + static_cast<double>(rng() % 130);
+    size.length = 6 + static_cast<double>(rng() % 12);
+    std::string name = fmt::format("sock{}", trial);
+    std::string project = write_shape(make_shape("sock", size, name), dir + "/" + name);
+    Compilation c = compile_model(project);
+    ASSERT_TRUE(c.knittability.knittable) << project;
+    for (const char* profile : kProfiles) {
+      knitout::MachineProfile p = shipped_profile(profile);
+      std::string text;
+      try {
+        text = testing::emit_knitout_text(c, p);
+      } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find(" needles in half gauge"), std::string::npos)
+            << name << " on " << profile << ": " << e.what();
+        ++too_wide;
+        continue;
+      }
+      knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
+      EXPECT_TRUE(proof.proven) << name << " (" << size.circumference << " cm) on " << profile
+                                << ": " << proof.summary;
+      proven += proof.proven;
+    }
+  }
+  EXPECT_GT(proven, 12);
+  EXPECT_GT(too_wide, 0);
+}
+
+// The short-row wedge (a sheet with increases) and the sock (a tube with a heel and a toe) at
+// random gauges, turning at sr4 or sr5 faces: each proves on every profile it fits. An sr5's
+// turn loop is knit together with its own by a decrease in the next short row, in place.
+TEST(KnitoutRandomized, ShortRowProjectsAtRandomGaugesProveOnEveryProfileTheyFit) {
+  std::mt19937_64 rng(31);
+  std::string dir = ::testing::TempDir();
+  int proven = 0, refused = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    bool sock = trial % 2;
+    std::string sample = sock ? "sock" : "short-row-wedge";
+    std::string project = fmt::format("{}/random-{}.yaml", dir, trial);
+    std::ofstream(project) << fmt::format(
+        "mesh: {}/samples/{}/{}.obj\ngauge: {{stitches: {}, rows: {}}}\n{}short_rows:\n  "
+        "method: {}\n{}",
+        SKEIN_SOURCE_DIR, sample, sample, 12 + rng() % 30, 16 + rng() % 30,
+        sock ? "patterns: {cuff: k2p2}\n" : "", rng() % 2 ? "sr5" : "sr4",
+        sock ? "  faces: [34, 39]\n" : "");
+    Compilation c = compile_model(project);
+    ASSERT_TRUE(c.knittability.knittable) << project;
+    for (const char* profile : kProfiles) {
+      knitout::MachineProfile p = shipped_profile(profile);
+      std::string text;
+      try {
+        text = testing::emit_knitout_text(c, p);
+      } catch (const Error& e) {
+        std::string what = e.what();
+        EXPECT_NE(what.find(" needles"), std::string::npos)
+            << project << " on " << profile << ": " << what;
+        ++refused;
+        continue;
+      }
+      knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
+      EXPECT_TRUE(proof.proven) << project << " on " << profile << ": " << proof.summary;
+      proven += proof.proven;
+    }
+  }
+  std::cout << "knitout short-row projects: " << proven << " proven, " << refused << " refused\n";
+  EXPECT_GT(proven, 100);
+}
+
+}  // namespace
+}  // namespace skein
