@@ -434,6 +434,24 @@ TEST(Generation, LegsAndABarMeetInOpenRowsOfTheirJunctions) {
   expect_generated_knittable(m, p, 4 + 2);
 }
 
+// A square bar turned a right angle by one bevelled ring (the R's and the teapot's corners):
+// a sloped outer wall, a short inner wall and short-row front and back walls, tall on the
+// outside. The tube bends in the round, so its path goes on through the turn: one yarn.
+TEST(Generation, ABarBentByABevelledShortRowRingStaysOneYarn) {
+  std::vector<Vec3> v{{0, 0, 3}, {0, 0, 0}, {3, 0, 3}, {3, 0, 0},               // cast on
+                      {0, 3, 3}, {0, 3, 0}, {3, 3, 3}, {3, 3, 0},               // the turn's bottom
+                      {3, 4, 0}, {3, 4, 3}, {3, 7, 3}, {3, 7, 0},               // its top, upright
+                      {6, 4, 3}, {6, 4, 0}, {6, 7, 3}, {6, 7, 0}};              // bound off
+  Faces faces{{3, 7, 6, 2},     {0, 4, 5, 1},   {0, 2, 6, 4},    {5, 7, 3, 1},  // a ring
+              {6, 7, 8, 9},     {5, 4, 10, 11},                                 // inner, slope
+              {4, 6, 9, 10},    {7, 5, 11, 8},                                  // front, back
+              {11, 10, 14, 15}, {13, 12, 9, 8}, {9, 12, 14, 10}, {11, 15, 13, 8}};  // the bar
+  CoarseMesh m = build_coarse_mesh("<bent bar>", v, faces);
+  Project p = project_with_stitch(0.25, 0.25);
+  p.short_row_faces = {{6, std::nullopt, 0}, {7, std::nullopt, 0}};
+  expect_generated_knittable(m, p, 1);
+}
+
 TEST(Generation, SkeinNewShapesAreKnittableAtSeveralSizes) {
   // Sheets, tubes, hats and socks (short rows inside rounds) on one yarn; sweaters on three
   // (body and sleeves, as the paper's).
