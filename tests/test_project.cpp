@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "common/error.hpp"
+#include "common/yaml_source.hpp"
 #include "labeling/project.hpp"
 
 namespace skein {

@@ -5,11 +5,11 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <numeric>
 #include <optional>
 
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "common/yaml_source.hpp"
 
 namespace skein {
 namespace {
@@ -21,26 +21,10 @@ constexpr std::pair<std::string_view, double> kUnitsPerCm[] = {
 constexpr std::string_view kPatterns[] = {"knit", "purl", "k1p1", "k2p2"};
 
 // Reads YAML nodes and turns every problem into a ParseError on the node's line.
-class Reader {
+class Reader : public YamlSource {
  public:
-  Reader(const std::string& text, std::string file) : file_(std::move(file)) {
-    for (std::size_t start = 0; start <= text.size();) {
-      std::size_t end = text.find('\n', start);
-      if (end == std::string::npos) end = text.size();
-      std::string line = text.substr(start, end - start);
-      if (!line.empty() && line.back() == '\r') line.pop_back();
-      lines_.push_back(std::move(line));
-      start = end + 1;
-    }
-  }
+  using YamlSource::YamlSource;
 
-  [[noreturn]] void fail(const YAML::Mark& mark, const std::string& expected) const {
-    std::size_t line = mark.line < 0 ? 0 : static_cast<std::size_t>(mark.line);
-    throw ParseError(file_, line + 1, line < lines_.size() ? lines_[line] : "", expected);
-  }
-  [[noreturn]] void fail(const YAML::Node& node, const std::string& expected) const {
-    fail(node.Mark(), expected);
-  }
   int line(const YAML::Node& node) const { return node.Mark().line + 1; }
 
   // Calls visit(key, value) for each field; an unknown key names the nearest known one.
@@ -50,8 +34,7 @@ class Reader {
     for (const auto& item : map) {
       std::string key = item.first.as<std::string>();
       if (std::find(known.begin(), known.end(), key) == known.end())
-        fail(item.first, fmt::format("unknown field '{}' in {}; did you mean '{}'? (known: {})",
-                                     key, what, nearest_name(key, known), fmt::join(known, ", ")));
+        unknown_field(item.first, what, known);
       visit(key, item.second);
     }
   }
@@ -99,10 +82,6 @@ class Reader {
     fail(node, fmt::format("unknown {} '{}'; did you mean '{}'? (known: {})", what, s,
                            nearest_name(s, known), fmt::join(known, ", ")));
   }
-
- private:
-  std::string file_;
-  std::vector<std::string> lines_;
 };
 
 StitchPattern read_pattern(const Reader& r, const YAML::Node& node) {
@@ -260,34 +239,13 @@ std::string_view pattern_name(StitchPattern pattern) {
   return kPatterns[static_cast<std::size_t>(pattern)];
 }
 
-std::string nearest_name(std::string_view word, const std::vector<std::string_view>& names) {
-  auto distance = [&](std::string_view name) {
-    std::vector<std::size_t> row(name.size() + 1);
-    std::iota(row.begin(), row.end(), 0u);
-    for (std::size_t i = 1; i <= word.size(); ++i) {
-      std::size_t diagonal = row[0];
-      row[0] = i;
-      for (std::size_t j = 1; j <= name.size(); ++j) {
-        std::size_t up = row[j];
-        row[j] =
-            std::min({row[j] + 1, row[j - 1] + 1,
-                      diagonal + (std::tolower(word[i - 1]) == std::tolower(name[j - 1]) ? 0 : 1)});
-        diagonal = up;
-      }
-    }
-    return row.back();
-  };
-  return std::string(*std::min_element(names.begin(), names.end(),
-                                       [&](auto a, auto b) { return distance(a) < distance(b); }));
-}
-
 bool is_project_file(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   return ext == ".yaml" || ext == ".yml";
 }
 
 Project parse_project(const std::string& text, const std::string& file) {
-  Reader r(text, file);
+  Reader r(file, text);
   YAML::Node root;
   try {
     root = YAML::Load(text);

@@ -85,7 +85,4 @@ std::string project_target_option(const std::string& path, const std::string& ke
 
 std::string_view pattern_name(StitchPattern pattern);
 
-// The valid name nearest to `word` (edit distance), for "did you mean" hints.
-std::string nearest_name(std::string_view word, const std::vector<std::string_view>& names);
-
 }  // namespace skein

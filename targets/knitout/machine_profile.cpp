@@ -11,6 +11,7 @@
 
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "common/yaml_source.hpp"
 
 namespace skein::knitout {
 namespace {
@@ -19,23 +20,9 @@ namespace fs = std::filesystem;
 
 // Reads one profile strictly: every field known, typed and in range, else a ParseError that
 // names the file, the line and the field.
-class ProfileReader {
+class ProfileReader : public YamlSource {
  public:
-  ProfileReader(std::string file, const std::string& text) : file_(std::move(file)) {
-    std::size_t start = 0;
-    while (start <= text.size()) {
-      std::size_t end = text.find('\n', start);
-      if (end == std::string::npos) end = text.size();
-      lines_.push_back(text.substr(start, end - start));
-      start = end + 1;
-    }
-  }
-
-  [[noreturn]] void fail(const YAML::Mark& mark, const std::string& why) const {
-    std::size_t line = mark.line >= 0 ? static_cast<std::size_t>(mark.line) : 0;
-    std::string quoted = line < lines_.size() ? lines_[line] : std::string();
-    throw ParseError(file_, line + 1, quoted, why);
-  }
+  using YamlSource::YamlSource;
 
   // A map whose keys must all be in `fields` (each with what reads it); required ones must be
   // present.
@@ -53,10 +40,9 @@ class ProfileReader {
       auto it =
           std::find_if(fields.begin(), fields.end(), [&](const Field& f) { return key == f.name; });
       if (it == fields.end()) {
-        std::string known;
-        for (const Field& f : fields) known += (known.empty() ? "" : ", ") + std::string(f.name);
-        fail(entry.first.Mark(),
-             fmt::format("unknown field '{}{}'; known fields here: {}", prefix(where), key, known));
+        std::vector<std::string_view> known;
+        for (const Field& f : fields) known.emplace_back(f.name);
+        unknown_field(entry.first, where.empty() ? "the profile" : "'" + where + "'", known);
       }
       it->read(entry.second, prefix(where) + key);
     }
@@ -105,9 +91,6 @@ class ProfileReader {
 
  private:
   static std::string prefix(const std::string& where) { return where.empty() ? "" : where + "."; }
-
-  std::string file_;
-  std::vector<std::string> lines_;
 };
 
 using Field = ProfileReader::Field;
