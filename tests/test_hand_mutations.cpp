@@ -16,6 +16,9 @@
 #include "driver/pipeline.hpp"
 #include "hand/hand_target.hpp"
 #include "hand/needle_sim.hpp"
+#include "hand/pattern_document.hpp"
+#include "hand/pattern_model.hpp"
+#include "hand/pattern_writers.hpp"
 #include "mesh/generate.hpp"
 #include "test_hand_plans.hpp"
 
@@ -109,7 +112,7 @@ class Mutator {
   // Numbers, count words, stitches and sides, one occurrence at a time.
   void word_edits(std::size_t i) {
     const std::string& line = lines_[i];
-    static const std::regex kWord(R"([A-Za-z0-9]+|\(RS\)|\(WS\))");
+    static const std::regex kWord(R"(w&t|[A-Za-z0-9]+|\(RS\)|\(WS\))");
     for (auto it = std::sregex_iterator(line.begin(), line.end(), kWord);
          it != std::sregex_iterator(); ++it) {
       std::string word = it->str();
@@ -202,6 +205,11 @@ class Mutator {
       {"fifteen", {"fourteen", "sixteen"}},
       {"end", {"last 1 st"}},
       {"last", {"end, and"}},
+      {"w&t", {"turn", "k1, turn"}},
+      {"turn", {"w&t"}},
+      {"DS", {"k", "sm"}},
+      {"kw", {"k", "pw"}},
+      {"pw", {"p", "kw"}},
   };
 
   std::vector<std::string> lines_;
@@ -276,12 +284,15 @@ std::string report(const std::string& name, const Tally& t) {
   return out;
 }
 
-void mutate_and_judge(const std::string& name, const Compilation& c) {
+std::string hand_pattern(const Compilation& c) {
   Registry registry;
   register_builtin_targets(registry);
   std::ostringstream out;
   registry.target("hand")->emit(c, {}, out);
-  std::string pattern = out.str();
+  return out.str();
+}
+
+void mutate_and_judge(const std::string& name, const Compilation& c, const std::string& pattern) {
   ASSERT_TRUE(hand::verify_pattern(pattern, name, &c).proven);
   Tally tally;
   for (const Mutant& m : Mutator(pattern).all()) judge(c, pattern, m, tally);
@@ -291,10 +302,29 @@ void mutate_and_judge(const std::string& name, const Compilation& c) {
                                     << tally.missed.front();
 }
 
+void mutate_and_judge(const std::string& name, const Compilation& c) {
+  mutate_and_judge(name, c, hand_pattern(c));
+}
+
 TEST(HandMutations, SamplesRejectEveryEditThatChangesTheFabric) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
-  for (const char* sample : {"samples/rib-swatch/rib-swatch.obj", "samples/hat/hat.obj"})
+  for (const char* sample :
+       {"samples/rib-swatch/rib-swatch.obj", "samples/hat/hat.obj", "samples/sock/sock.yaml",
+        "samples/short-row-wedge/short-row-wedge.yaml"})
     mutate_and_judge(sample, compile_model(sample));
+}
+
+// The same samples' short rows with wrap and turn (German short rows above).
+TEST(HandMutations, WrapAndTurnShortRowsRejectEveryEditThatChangesTheFabric) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  for (const char* sample :
+       {"samples/sock/sock.yaml", "samples/short-row-wedge/short-row-wedge.yaml"}) {
+    Compilation c = compile_model(sample);
+    std::ostringstream out;
+    hand::write_markdown(
+        hand::make_document(hand::build_hand_pattern(c, hand::TurnMethod::wrap_and_turn)), out);
+    mutate_and_judge(std::string(sample) + " (wrap and turn)", c, out.str());
+  }
 }
 
 TEST(HandMutations, SectionMarkerPatternsRejectEveryEditThatChangesTheFabric) {

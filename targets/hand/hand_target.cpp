@@ -10,6 +10,7 @@
 #include "hand/needle_sim.hpp"
 #include "hand/pattern_reader.hpp"
 #include "hand/pattern_writers.hpp"
+#include "labeling/project.hpp"
 
 namespace skein {
 namespace hand {
@@ -34,18 +35,24 @@ constexpr FormatInfo kFormats[] = {
      "the hand-knitting pattern's rows in Stitch-Maps' KnitSpeak"},
 };
 
+// The short-row method the project file chose (German short rows otherwise).
+TurnMethod turn_method_of(const Compilation& c) {
+  return is_project_file(c.input) ? read_project(c.input).hand_turns : TurnMethod::german;
+}
+
 class HandTarget : public Target {
  public:
   explicit HandTarget(const FormatInfo& f) : f_(f) {}
   std::string name() const override { return f_.target; }
   std::string description() const override { return f_.description; }
   std::string default_extension() const override { return f_.extension; }
-  void emit(const Compilation& c, const TargetOptions&, std::ostream& out) const override {
-    HandPattern pattern = build_hand_pattern(c);
+  std::vector<std::string> dialects() const override { return {"standard", "knitspeak"}; }
+  void emit(const Compilation& c, const TargetOptions& options, std::ostream& out) const override {
+    HandPattern pattern = build_hand_pattern(c, turn_method_of(c));
     Gauge gauge;
-    PatternDocument doc = make_document(
-        pattern, f_.format == Format::knitspeak ? Dialect::knitspeak : Dialect::standard, gauge);
-    switch (f_.format) {
+    PatternDocument doc = make_document(pattern, dialect_of(options), gauge);
+    Format format = options.dialect == "knitspeak" ? Format::knitspeak : f_.format;
+    switch (format) {
       case Format::markdown:
         write_markdown(doc, out);
         break;
@@ -59,6 +66,13 @@ class HandTarget : public Target {
   }
 
  private:
+  // --dialect knitspeak writes KnitSpeak rows whatever the target's own format.
+  Dialect dialect_of(const TargetOptions& options) const {
+    if (options.dialect.empty())
+      return f_.format == Format::knitspeak ? Dialect::knitspeak : Dialect::standard;
+    return options.dialect == "knitspeak" ? Dialect::knitspeak : Dialect::standard;
+  }
+
   const FormatInfo& f_;
 };
 

@@ -119,7 +119,8 @@ class NeedleSimulator {
     if (n == 0) fail("Cast on: no sts to cast on");
     active_ = true;
     facing_ = Side::rs;
-    round_ = place_bor_ = false;
+    joined_ = place_bor_ = false;
+    turn_before_ = true;  // a flat piece's first row works the cast-on from its last st
     bor_ = kNone;
     next_number_ = 1;
     last_side_.reset();
@@ -141,9 +142,10 @@ class NeedleSimulator {
   }
 
   void join(bool marker) {
-    if (!active_ || next_number_ != 1 || round_)
+    if (!active_ || next_number_ != 1 || joined_)
       fail("Join to work in the rnd: only right after a cast-on");
-    round_ = true;
+    joined_ = true;
+    turn_before_ = false;  // the first rnd starts with the first st cast on
     place_bor_ = marker;
   }
 
@@ -165,12 +167,10 @@ class NeedleSimulator {
   void check_kind(bool round_label, const char* what) const {
     if (!active_)
       throw StepFailure{fmt::format("{}: no sts are on the needle (cast on first)", what)};
-    if (round_label != round_)
-      throw StepFailure{
-          round_ ? fmt::format("{}: the work is joined in the rnd, so it has rnds, not rows", what)
-                 : fmt::format(
-                       "{}: the work is flat (never joined in the rnd), so it has rows, not rnds",
-                       what)};
+    // Joined work has rnds, and rows where it turns (short rows).
+    if (round_label && !joined_)
+      throw StepFailure{fmt::format(
+          "{}: the work is flat (never joined in the rnd), so it has rows, not rnds", what)};
   }
 
   void work_rows(const Step& s) {
@@ -181,7 +181,8 @@ class NeedleSimulator {
     for (std::uint32_t n = s.number; n <= s.last; ++n) {
       if (defined_.size() <= n) defined_.resize(n + 1, kNone);
       defined_[n] = s.program;
-      work_row(script_.programs[s.program], 0, n == s.number ? s.side : std::nullopt, s.line);
+      work_row(script_.programs[s.program], s.round, 0, n == s.number ? s.side : std::nullopt,
+               s.line);
     }
     check_count(s);
   }
@@ -204,7 +205,7 @@ class NeedleSimulator {
         std::uint32_t number = next_number_;
         if (defined_.size() <= number) defined_.resize(number + 1, kNone);
         defined_[number] = defined_[n];
-        work_row(script_.programs[defined_[n]], n, std::nullopt, s.line);
+        work_row(script_.programs[defined_[n]], s.round, n, std::nullopt, s.line);
       }
     check_count(s);
   }
@@ -215,7 +216,7 @@ class NeedleSimulator {
       throw StepFailure{fmt::format("until {} {} in all: {} are already worked", s.count,
                                     s.round ? "rnds" : "rows", next_number_ - 1)};
     std::uint32_t program = s.op == HandOp::k ? 0 : 1;
-    while (next_number_ <= s.count) work_row(work_even_[program], 0, std::nullopt, s.line);
+    while (next_number_ <= s.count) work_row(work_even_[program], s.round, 0, std::nullopt, s.line);
   }
 
   void check_count(const Step& s) {
@@ -227,61 +228,108 @@ class NeedleSimulator {
                                     live_ == 1 ? "1 st is" : fmt::format("{} sts are", live_))};
   }
 
-  void work_row(const Program& p, std::uint32_t repeat_of, std::optional<Side> label,
+  // A row turns the work first when the one before ended at a turn (every flat row does);
+  // after a rnd, or a row that did not turn, the work goes on in the same direction.
+  Side facing_of(bool round, std::optional<Side> label) const {
+    if (!last_side_) return round ? Side::rs : label.value_or(Side::rs);
+    return turn_before_ ? other(*last_side_) : *last_side_;
+  }
+
+  void work_row(const Program& p, bool round, std::uint32_t repeat_of, std::optional<Side> label,
                 std::size_t line) {
-    Side facing = Side::rs;
-    if (!round_) facing = last_side_ ? other(*last_side_) : label.value_or(Side::rs);
-    fab().rows.push_back({line, next_number_, repeat_of, round_, facing});
+    Side facing = facing_of(round, label);
+    fab().rows.push_back({line, next_number_, repeat_of, round, facing});
     row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
     in_row_ = true;
-    if (label && !round_ && *label != facing)
-      fail(fmt::format("labelled {}, but the {} faces you: every row turns the work",
-                       side_name(*label), side_name(facing)));
+    row_round_ = round;
+    if (round && facing != Side::rs)
+      fail("the WS faces you (the work was turned): rnds are worked with the RS facing");
+    if (label && !round && *label != facing)
+      fail(fmt::format("labelled {}, but the {} faces you: {}", side_name(*label),
+                       side_name(facing),
+                       !joined_       ? "every row turns the work"
+                       : turn_before_ ? "the work was turned"
+                                      : "the work was not turned"));
     begin_row(facing);
     run_nodes(p, p.top_begin, p.top_end);
     end_row();
     in_row_ = false;
     last_side_ = facing;
     ++next_number_;
-    ++(round_ ? out_.rounds : out_.rows);
+    ++(round ? out_.rounds : out_.rows);
   }
 
   void begin_row(Side facing) {
     facing_ = facing;
     position_ = 0;
     row_last_stitch_ = kNone;
+    row_ended_ = false;
     pending_.clear();
     last_make_ = std::nullopt;
-    if (round_)
-      left_.assign(right_.rbegin(), right_.rend());
-    else
-      left_.swap(right_);
+    next_link_ = turn_before_ ? YarnLink::turn : YarnLink::shift;
+    if (turn_before_) left_.swap(right_);
+    if (row_round_)
+      gather_round();
+    else if (!turn_before_)
+      slip_bor_if_next();
+    index_left_needle();
+  }
+
+  // A row that goes on from the end of a rnd starts, like a rnd, by slipping the marker.
+  void slip_bor_if_next() {
+    wrap_around();
+    if (left_.empty() || left_.back() != bor_) return;
+    right_.push_back(bor_);
+    left_.pop_back();
+  }
+
+  // A rnd runs from here to the beginning-of-round marker (all the way round when the marker
+  // is next: it is slipped): the loops before the marker go on the left needle, the marker
+  // and the rest behind.
+  void gather_round() {
+    std::vector<std::uint32_t> ring(left_.rbegin(), left_.rend());  // from here onwards
+    ring.insert(ring.end(), right_.begin(), right_.end());
+    auto at = std::find(ring.begin(), ring.end(), bor_);
+    if (place_bor_ || at == ring.end()) {
+      left_.assign(ring.rbegin(), ring.rend());
+      right_.clear();
+      if (place_bor_) right_.push_back(bor_ = new_marker());
+      place_bor_ = false;
+      return;
+    }
+    if (at == ring.begin()) {
+      std::rotate(ring.begin(), ring.begin() + 1, ring.end());
+      at = ring.end() - 1;
+    }
+    left_.assign(std::make_reverse_iterator(at), ring.rend());
+    right_.assign(at, ring.end());
+  }
+
+  // In the rnd the needle has no end: a row that turns goes on past the last st on the left
+  // needle to the first on the right one.
+  void wrap_around() {
+    if (!joined_ || row_round_ || !left_.empty()) return;
+    left_.assign(right_.rbegin(), right_.rend());
     right_.clear();
     index_left_needle();
-    next_link_ = round_ ? YarnLink::shift : YarnLink::turn;
-    if (place_bor_) {
-      bor_ = new_marker();
-      right_.push_back(bor_);
-      place_bor_ = false;
-    } else if (bor_ != kNone && !left_.empty() && left_.back() == bor_) {
-      right_.push_back(left_.back());
-      left_.pop_back();
-    }
   }
 
   void end_row() {
-    if (left_loops_ > 0)
-      fail(fmt::format("{} left unworked at the end of the {}", sts(left_loops_),
-                       round_ ? "rnd" : "row"));
-    if (!left_.empty())
+    const char* what = row_round_ ? "rnd" : "row";
+    if (!row_ended_ && joined_ && !row_round_)
+      fail("a row worked in the rnd ends where the work turns: end it with w&t or turn");
+    if (!row_ended_ && left_loops_ > 0)
+      fail(fmt::format("{} left unworked at the end of the {}", sts(left_loops_), what));
+    if (!row_ended_ && !left_.empty())
       fail(fmt::format("a marker is left at the end of the {}: slip it (sm) or remove it (rm)",
-                       round_ ? "rnd" : "row"));
+                       what));
     if (!pending_.empty())
       fail(fmt::format("{} with no st worked in the {} to go with it",
-                       info(pending_.front().op).abbreviation, round_ ? "rnd" : "row"));
-    if (!round_ && last_make_ && *last_make_ != HandOp::yo)
+                       info(pending_.front().op).abbreviation, what));
+    if (!row_round_ && last_make_ && *last_make_ != HandOp::yo)
       fail(fmt::format("{} at the end of a row: there is no strand after the last st to lift",
                        info(*last_make_).abbreviation));
+    turn_before_ = row_ended_ || !joined_;
   }
 
   // For each place on the left needle, the loops from there to the next marker (the tip is at
@@ -300,7 +348,7 @@ class NeedleSimulator {
 
   std::uint32_t loops_to_marker() const { return left_.empty() ? 0 : to_marker_[left_.size() - 1]; }
   // In the round the beginning-of-round marker ends the round: it counts as the last marker.
-  bool end_is_marker() const { return round_ && bor_ != kNone; }
+  bool end_is_marker() const { return row_round_ && bor_ != kNone; }
   bool marker_ahead() const {
     return (!left_.empty() && marker_ahead_[left_.size() - 1]) || end_is_marker();
   }
@@ -375,6 +423,8 @@ class NeedleSimulator {
   std::uint32_t remaining(const Until& u, std::string_view what) const {
     switch (u.kind) {
       case Until::Kind::end:
+        if (joined_ && !row_round_)
+          fail(fmt::format("{} to end: a row worked in the rnd has no end; give the count", what));
         return left_loops_;
       case Until::Kind::last:
         if (left_loops_ < u.sts)
@@ -406,7 +456,17 @@ class NeedleSimulator {
   }
 
   void apply(HandOp op) {
+    if (row_ended_)
+      fail(fmt::format("{} after the turn: the row ends where the work turns",
+                       info(op).abbreviation));
+    wrap_around();
     switch (op) {
+      case HandOp::turn:
+        row_ended_ = true;
+        return;
+      case HandOp::ds:
+        double_stitch();
+        return;
       case HandOp::pm:
         right_.push_back(new_marker());
         return;
@@ -434,6 +494,60 @@ class NeedleSimulator {
       make_one(op);
     else
       stitch(op);
+    if (op == HandOp::wt) wrap_and_turn();
+  }
+
+  // w&t: the st just slipped and wrapped goes back to the left needle, and the work turns.
+  void wrap_and_turn() {
+    std::uint32_t loop = right_.back();
+    right_.pop_back();
+    turn_mark_[loop] = kWrapped;
+    left_.push_back(loop);
+    to_marker_.resize(left_.size());
+    marker_ahead_.resize(left_.size());
+    std::size_t i = left_.size() - 1;
+    to_marker_[i] = (i ? to_marker_[i - 1] : 0) + 1;
+    marker_ahead_[i] = i && marker_ahead_[i - 1];
+    ++left_loops_;
+    row_ended_ = true;
+  }
+
+  // DS: first after a turn, the st worked last before it is pulled up into a double stitch
+  // and slipped.
+  void double_stitch() {
+    if (position_ != 0 || next_link_ != YarnLink::turn || left_.empty() ||
+        is_marker_entry(left_.back()) || fab().loop_maker[left_.back()] != piece_last_)
+      fail("DS: only first in a row after a turn, on the st worked last before it");
+    Fabric& f = fab();
+    std::uint32_t x = piece_last_;
+    bool plain = (f.type[x] == StitchType::k || f.type[x] == StitchType::p) && f.made[x] == 1 &&
+                 f.taken_first[x + 1] - f.taken_first[x] == 1;
+    if (!plain)
+      fail(fmt::format("DS: {} is not a plain st; a double stitch is made from a k or p",
+                       f.describe(x)));
+    f.type[x] = StitchType::sr4;
+    std::uint32_t loop = left_.back();
+    left_.pop_back();
+    --left_loops_;
+    turn_mark_[loop] = kDouble;
+    right_.push_back(loop);
+  }
+
+  // A loop a short row turned at must be worked with what resolves it, and only such a loop.
+  void check_turn_loop(HandOp op, std::uint32_t loop) const {
+    std::uint8_t needs = op == HandOp::kw || op == HandOp::pw     ? kWrapped
+                         : op == HandOp::kds || op == HandOp::pds ? kDouble
+                                                                  : kPlainLoop;
+    if (turn_mark_[loop] == needs) return;
+    if (needs != kPlainLoop)
+      fail(fmt::format("{}: the next st is {}", info(op).abbreviation,
+                       turn_mark_[loop] == kPlainLoop ? "not a short-row turn"
+                       : turn_mark_[loop] == kWrapped ? "wrapped, not a double stitch"
+                                                      : "a double stitch, not wrapped"));
+    fail(fmt::format("{}: the next st is {}: work it with {}", info(op).abbreviation,
+                     turn_mark_[loop] == kWrapped ? "wrapped" : "a double stitch",
+                     turn_mark_[loop] == kWrapped ? (facing_ == Side::rs ? "kw" : "pw")
+                                                  : (facing_ == Side::rs ? "k DS" : "p DS")));
   }
 
   void remove_bor() {
@@ -450,6 +564,7 @@ class NeedleSimulator {
                        marker_ahead() ? " before the marker" : "", ready));
     std::optional<StitchType> face = rs_face(op, facing_);
     if (!face) wrong_side(op);
+    for (std::uint32_t i = 0; i < oi.takes; ++i) check_turn_loop(op, left_[left_.size() - 1 - i]);
     std::uint32_t x = new_stitch(*face);
     for (std::uint32_t i = 0; i < oi.takes; ++i) {
       fab().taken.push_back(left_.back());
@@ -467,7 +582,7 @@ class NeedleSimulator {
 
   // A make-one goes with the stitch just worked, or (first in a row) with the next one.
   void make_one(HandOp op) {
-    if (!round_ && op != HandOp::yo && row_last_stitch_ == kNone)
+    if (!row_round_ && op != HandOp::yo && row_last_stitch_ == kNone)
       fail(fmt::format("{} at the start of a row: there is no strand before the first st to lift",
                        info(op).abbreviation));
     std::uint32_t loop = new_loop(kNone);
@@ -531,6 +646,7 @@ class NeedleSimulator {
     Fabric& f = fab();
     auto loop = static_cast<std::uint32_t>(f.loop_maker.size());
     f.loop_maker.push_back(maker);
+    turn_mark_.push_back(kPlainLoop);
     f.loop_index.push_back(maker == kNone ? 0 : f.made[maker]++);
     return loop;
   }
@@ -547,8 +663,13 @@ class NeedleSimulator {
   Replay out_;
   std::vector<Program> work_even_;  // "k to end", "p to end"
 
+  // Per loop: whether a short row turned at it, and how.
+  static constexpr std::uint8_t kPlainLoop = 0, kWrapped = 1, kDouble = 2;
+  std::vector<std::uint8_t> turn_mark_;
+
   // The piece being worked.
-  bool active_ = false, round_ = false, place_bor_ = false;
+  bool active_ = false, joined_ = false, place_bor_ = false;
+  bool turn_before_ = true;  // the next row starts by turning the work
   std::uint32_t bor_ = kNone;
   std::uint32_t next_number_ = 1;
   std::optional<Side> last_side_;
@@ -565,7 +686,8 @@ class NeedleSimulator {
   std::uint32_t markers_ = 0;
 
   // The row being worked.
-  bool in_row_ = false;
+  bool in_row_ = false, row_round_ = false;
+  bool row_ended_ = false;  // by w&t or turn
   std::uint32_t row_ = 0;
   Side facing_ = Side::rs;
   std::uint32_t position_ = 0;

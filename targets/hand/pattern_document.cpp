@@ -113,7 +113,8 @@ class InstructionWriter {
   bool block_repeats(std::uint32_t a, std::uint32_t b, std::uint32_t period) const {
     for (std::uint32_t k = 0; k < period; ++k) {
       const PatternRow &x = p_.rows[a + k], &y = p_.rows[b + k];
-      if (x.bind_off || y.bind_off || x.round != y.round || texts_[a + k] != texts_[b + k])
+      if (x.bind_off || y.bind_off || x.round != p_.rows[a].round || y.round != x.round ||
+          texts_[a + k] != texts_[b + k])
         return false;
     }
     return true;
@@ -126,15 +127,27 @@ class InstructionWriter {
       const PatternRow& r = p_.rows[i];
       if (times > 1 && period == 1 && (texts_[i] == "Knit" || texts_[i] == "Purl") &&
           !knitspeak()) {
-        add(InstructionLine::Kind::repeat, "",
-            fmt::format("{} every {} until {} {} in all.", texts_[i], r.round ? "rnd" : "row",
-                        p_.rows[last].number, r.round ? "rnds" : "rows"));
+        add(InstructionLine::Kind::repeat, "", work_even_text(r, p_.rows[last], first, i));
       } else {
         for (std::uint32_t k = 0; k < period; ++k) row_line(i + k);
         if (times > 1) repeat_line(i, period, times);
       }
       i = last + 1;
     }
+  }
+
+  // "Knit every rnd until 24 rnds in all"; after short rows, which the numbers count too,
+  // "Knit every rnd through Rnd 105".
+  std::string work_even_text(const PatternRow& r, const PatternRow& last, std::uint32_t first,
+                             std::uint32_t i) const {
+    bool turned = std::any_of(p_.rows.begin() + first, p_.rows.begin() + i,
+                              [](const PatternRow& row) { return row.short_row; });
+    const char* every = r.round ? "rnd" : "row";
+    if (turned)
+      return fmt::format("{} every {} through {} {}.", texts_[i], every, rows_word(r.round, false),
+                         last.number);
+    return fmt::format("{} every {} until {} {} in all.", texts_[i], every, last.number,
+                       r.round ? "rnds" : "rows");
   }
 
   void row_line(std::uint32_t i) {
@@ -181,7 +194,7 @@ class InstructionWriter {
 struct Totals {
   bool flat = false, round = false;
   std::uint32_t widest = 0, narrowest_round = 0;
-  std::vector<bool> used = std::vector<bool>(static_cast<std::size_t>(HandOp::rm) + 1, false);
+  std::vector<bool> used = std::vector<bool>(kHandOpCount, false);
 };
 
 Totals totals_of(const HandPattern& p) {
@@ -224,16 +237,20 @@ class FrontMatter {
   std::vector<std::string> measurements() const {
     std::vector<std::string> items;
     for (const PatternSection& s : p_.sections) {
-      std::uint32_t widest = s.cast_on, rows = s.end_row - s.first_row;
-      for (std::uint32_t r = s.first_row; r < s.end_row; ++r)
+      // Short rows add length to part of the piece only: they are counted apart.
+      std::uint32_t widest = s.cast_on, rows = 0, short_rows = 0;
+      for (std::uint32_t r = s.first_row; r < s.end_row; ++r) {
         widest = std::max(widest, p_.rows[r].sts_after);
+        ++(p_.rows[r].partial ? short_rows : rows);
+      }
       std::string piece =
           p_.sections.size() > 1 ? fmt::format("Piece {}: ", &s - &p_.sections[0] + 1) : "";
-      items.push_back(fmt::format("{}{}: {}, {} sts at the widest. {}: {}, {} {}.", piece,
+      std::string extra = short_rows ? fmt::format(", plus {} short rows", short_rows) : "";
+      items.push_back(fmt::format("{}{}: {}, {} sts at the widest. {}: {}, {} {}{}.", piece,
                                   s.in_round ? "Circumference" : "Width",
                                   cm_and_inches(width_cm(widest)), widest,
                                   s.in_round ? "Height" : "Length", cm_and_inches(length_cm(rows)),
-                                  rows, s.in_round ? "rnds" : "rows"));
+                                  rows, s.in_round ? "rnds" : "rows", extra));
     }
     return items;
   }
@@ -301,7 +318,7 @@ class FrontMatter {
 
   std::vector<std::string> abbreviations() const {
     std::vector<std::string> items;
-    for (auto op = HandOp::k; op <= HandOp::rm; op = static_cast<HandOp>(static_cast<int>(op) + 1))
+    for (auto op = HandOp::k; op <= HandOp::pds; op = static_cast<HandOp>(static_cast<int>(op) + 1))
       if (uses(op) || (op == HandOp::pm && says("Pm ")))
         items.push_back(fmt::format("**{}**: {}", info(op).abbreviation, info(op).meaning));
     auto word = [&](bool used, const char* abbr, const char* meaning) {
@@ -333,6 +350,7 @@ class FrontMatter {
           "with the cast-on edge untwisted, place the BOR marker and knit the first "
           "cast-on stitch with the working yarn. The marker then sits at the start of "
           "every round: slip it as you come to it.");
+    if (p_.short_rows) items.push_back(short_rows_technique());
     if (uses(HandOp::bo))
       items.push_back(
           "**Binding off (BO):** work 2 sts as they appear, *pass the first st on the "
@@ -340,6 +358,23 @@ class FrontMatter {
           "remains, removing any markers as you come to them; cut the yarn and pull it "
           "through that last loop (fasten off).");
     return items;
+  }
+
+  // The method the project chose, and how its turns are resolved later.
+  std::string short_rows_technique() const {
+    if (p_.turns == TurnMethod::wrap_and_turn)
+      return "**Short rows (wrap and turn):** a row that ends in w&t stops there: bring the yarn "
+             "between the needles, slip the next st purlwise, take the yarn back between the "
+             "needles, slip the st back to the left needle and turn the work; the next row starts "
+             "with the st worked last. The sts beyond wait on the needle. When a later row comes "
+             "to a wrapped st, lift the wrap onto the left needle and work it together with the "
+             "st: kw on the RS, pw on the WS.";
+    return "**Short rows (German short rows):** a row that ends in \"turn\" stops there: turn the "
+           "work; the sts beyond wait on the needle. When the next row begins with DS, bring the "
+           "yarn to the front, slip the first st (the one worked last) purlwise and pull the yarn "
+           "up over the needle to the back until the st shows two legs: a double stitch. When a "
+           "later row comes to a double stitch, work its two legs together as one st: k DS on "
+           "the RS, p DS on the WS.";
   }
 
   std::vector<std::string> notes() const {
@@ -360,6 +395,12 @@ class FrontMatter {
           fmt::format("\"{}\" counts every {} from the cast-on, those already "
                       "worked included.",
                       even, t_.round ? "rnd" : "row"));
+    if (p_.short_rows && t_.round)
+      items.push_back(
+          "In the rnd, a row that ends with a turn is a short row: it is worked back and forth "
+          "over part of the rnd while the other sts wait. A rnd after short rows starts where "
+          "the last one ended and goes on to the BOR marker; the row and rnd numbers count "
+          "both.");
     if (p_.markers > 1)
       items.push_back(t_.round ? "Slip the markers as you come to them. The beginning-of-round "
                                  "marker is the last \"m\" of every round: \"to m\" in the last "

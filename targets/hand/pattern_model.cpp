@@ -14,8 +14,8 @@ namespace {
 
 using T = StitchType;
 
-constexpr std::array kSupported = {T::k,   T::p,  T::co,    T::bo,  T::kfb,   T::m1l,
-                                   T::m1r, T::yo, T::k2tog, T::ssk, T::p2tog, T::s2kp};
+constexpr std::array kSupported = {T::k,  T::p,     T::co,  T::bo,    T::kfb,  T::m1l, T::m1r,
+                                   T::yo, T::k2tog, T::ssk, T::p2tog, T::s2kp, T::sr4};
 
 [[noreturn]] void unsupported(const std::string& what) {
   throw Error(fmt::format("hand target: {}", what));
@@ -32,9 +32,6 @@ void check_supported(const Compilation& c) {
     if (std::find(kSupported.begin(), kSupported.end(), g.type[s]) == kSupported.end())
       unsupported(fmt::format("{} is a {} ({}), which hand patterns do not cover yet",
                               g.describe(s), info(g.type[s]).name, abbreviation(g.type[s])));
-  if (std::count(g.row_shape.begin(), g.row_shape.end(), RowShape::short_row) > 0)
-    unsupported(
-        fmt::format("{} has short rows, which hand patterns do not cover yet", g.source_name));
   for (const Loop& l : g.loops)
     if (l.kind != LoopKind::wale || l.taker == kNoStitch)
       unsupported(fmt::format(
@@ -47,7 +44,10 @@ void check_supported(const Compilation& c) {
           fmt::format("yarn {} must put its stitches aside at {} until {} is knit; "
                       "holding and resuming stitches is not covered yet",
                       e.yarn + 1, g.describe(e.stitch), g.describe(e.waits_for)));
-    if (e.kind == EventKind::marker && e.marker != MarkerKind::beginning_of_round)
+    // Short rows need no marker: the wrap or double stitch shows where each one turned.
+    bool mismatch_marker =
+        e.marker == MarkerKind::mismatch_begin || e.marker == MarkerKind::mismatch_end;
+    if (e.kind == EventKind::marker && mismatch_marker)
       unsupported(fmt::format("a {} marker before {} is not covered yet", marker_name(e.marker),
                               g.describe(e.stitch)));
   }
@@ -144,9 +144,10 @@ bool needs_mirror(const Compilation& c, const Handedness& hand) {
 
 class PatternBuilder {
  public:
-  explicit PatternBuilder(const Compilation& c) : c_(c), g_(c.knit), hand_(c) {
+  PatternBuilder(const Compilation& c, TurnMethod turns) : c_(c), g_(c.knit), hand_(c) {
     out_.source = c.input;
     out_.mirror = needs_mirror(c, hand_);
+    out_.turns = turns;
   }
 
   HandPattern run() && {
@@ -155,17 +156,16 @@ class PatternBuilder {
         case EventKind::yarn_start:
           start_section(e.yarn);
           break;
-        case EventKind::row_start:
-          flush_row();
-          break;
         case EventKind::stitch:
+          // A knitter's row ends where the yarn turns or goes on into the next round.
           row_.push_back(e.stitch);
+          if (g_.yarn_link[e.stitch] != YarnLink::course) flush_row();
           break;
         case EventKind::yarn_end:
           end_section();
           break;
         default:
-          break;  // turns and round markers follow from the yarn links
+          break;  // rows, turns and round markers follow from the yarn links
       }
     }
     return std::move(out_);
@@ -206,39 +206,101 @@ class PatternBuilder {
       if (g_.type[s] != T::co)
         unsupported(fmt::format("yarn {} starts with {}, not with a row of cast-on stitches",
                                 section().yarn + 1, g_.describe(s)));
-    section().cast_on = live_ = static_cast<std::uint32_t>(row_.size());
+    section().cast_on = live_ = behind_ = static_cast<std::uint32_t>(row_.size());
+    ahead_ = 0;
     section().in_round = g_.yarn_link[row_.back()] == YarnLink::shift;
     cast_on_done_ = true;
   }
 
   void add_row() {
     PatternRow r;
-    r.round = previous_link_ == YarnLink::shift;
-    if (r.round != section().in_round)
-      unsupported(fmt::format("{} switches between rounds and rows, which is not covered yet",
-                              g_.describe(row_.front())));
+    bool turns = g_.yarn_link[row_.back()] == YarnLink::turn;
+    // In the rnd a row that turns is a short row; a rnd goes on around.
+    r.round = section().in_round && !turns;
     r.number = static_cast<std::uint32_t>(out_.rows.size()) - section().first_row + 1;
     r.side = (hand_.left_to_right(row_.front()) != out_.mirror) ? Side::ws : Side::rs;
     r.first_op = static_cast<std::uint32_t>(out_.ops.size());
     r.sts_before = live_;
     r.bind_off = g_.type[row_.front()] == T::bo;
+    if (previous_link_ == YarnLink::turn) std::swap(ahead_, behind_);
+    if (double_stitch_next_) slip_double_stitch();
     std::uint32_t takes = 0;
     for (StitchId s : row_) {
       append_ops(s, r);
       takes += info(g_.type[s]).loops_in;
-      live_ = live_ + info(g_.type[s]).loops_out - info(g_.type[s]).loops_in;
+      move_loops(s);
     }
-    if (takes != r.sts_before)
-      unsupported(fmt::format("the row of {} works {} of the {} live stitches",
-                              g_.describe(row_.front()), takes, r.sts_before));
+    end_row(r, turns, takes);
     check_make_one_has_a_strand(r);
     r.end_op = static_cast<std::uint32_t>(out_.ops.size());
     r.sts_after = live_;
     out_.rows.push_back(r);
   }
 
+  // A row that turns with sts left beyond it says so; German short rows make the st it turned
+  // at a double stitch first in the next row (at the edge too).
+  void end_row(PatternRow& r, bool turns, std::uint32_t takes) {
+    r.short_row = turns && (section().in_round || ahead_ > 0);
+    if (r.short_row && out_.ops.back() != HandOp::wt) out_.ops.push_back(HandOp::turn);
+    double_stitch_next_ = out_.turns == TurnMethod::german && g_.type[row_.back()] == T::sr4;
+    // A rnd works every st, unless it starts where short rows ended (it then goes on to the
+    // beginning of the rnd); a flat row ends at the edge or turns short of it.
+    bool full_round = r.round && previous_link_ != YarnLink::turn;
+    if (full_round && takes != r.sts_before)
+      unsupported(fmt::format("the row of {} works {} of the {} live stitches",
+                              g_.describe(row_.front()), takes, r.sts_before));
+    r.partial = r.short_row || (!r.bind_off && takes != r.sts_before);
+    out_.short_rows = out_.short_rows || r.short_row;
+  }
+
+  // Loops ahead of and behind the needle tip on a flat piece, as the stitch is worked (the row
+  // ends at the edge when none is ahead). A wrapped st goes back to the left needle.
+  void move_loops(StitchId s) {
+    const StitchTypeInfo& t = info(g_.type[s]);
+    live_ = live_ + t.loops_out - t.loops_in;
+    if (section().in_round || (g_.type[s] == T::sr4 && out_.turns == TurnMethod::wrap_and_turn))
+      return;
+    if (ahead_ < t.loops_in)
+      unsupported(fmt::format("{} works past the end of the needle", g_.describe(s)));
+    ahead_ -= t.loops_in;
+    behind_ += t.loops_out;
+  }
+
+  void slip_double_stitch() {
+    out_.ops.push_back(HandOp::ds);
+    double_stitch_next_ = false;
+    if (section().in_round) return;
+    --ahead_;
+    ++behind_;
+  }
+
+  // Does `s` work the loop a short row turned at?
+  bool works_a_turn(StitchId s) const {
+    for (std::uint32_t l : g_.loops_taken_by(s))
+      if (g_.loops[l].maker != kNoStitch && g_.type[g_.loops[l].maker] == T::sr4) return true;
+    return false;
+  }
+
+  // kw / pw (wrap and turn) or k DS / p DS (German short rows) for the plain st that works it.
+  HandOp resolving(HandOp plain, StitchId s) const {
+    if (!is_plain(plain))
+      unsupported(
+          fmt::format("{} works the loop a short row turned at as a {}; hand patterns "
+                      "resolve a turn with a plain k or p only",
+                      g_.describe(s), info(plain).abbreviation));
+    bool knit = plain == HandOp::k;
+    if (out_.turns == TurnMethod::wrap_and_turn) return knit ? HandOp::kw : HandOp::pw;
+    return knit ? HandOp::kds : HandOp::pds;
+  }
+
   void append_ops(StitchId s, const PatternRow& r) {
     T type = g_.type[s];
+    if (type == T::sr4) {
+      out_.ops.push_back(out_.turns == TurnMethod::wrap_and_turn ? HandOp::wt
+                         : r.side == Side::rs                    ? HandOp::k
+                                                                 : HandOp::p);
+      return;
+    }
     if (type == T::co)
       unsupported(fmt::format("{} casts on in the middle of the work, which is not covered yet",
                               g_.describe(s)));
@@ -249,7 +311,7 @@ class PatternBuilder {
                       g_.describe(s)));
     std::optional<Working> w = working_of(out_.mirror ? mirrored(type) : type, r.side);
     SKEIN_ASSERT(w.has_value(), "every supported stitch type has a hand working");
-    out_.ops.push_back(w->op);
+    out_.ops.push_back(works_a_turn(s) ? resolving(w->op, s) : w->op);
     if (w->make) out_.ops.push_back(*w->make);
   }
 
@@ -269,15 +331,17 @@ class PatternBuilder {
   HandPattern out_;
   std::vector<StitchId> row_;
   std::uint32_t live_ = 0;
+  std::uint32_t ahead_ = 0, behind_ = 0;  // loops on the left and right needle (flat pieces)
+  bool double_stitch_next_ = false;
   bool cast_on_done_ = false;
   YarnLink previous_link_ = YarnLink::none;
 };
 
 }  // namespace
 
-HandPattern build_hand_pattern(const Compilation& c) {
+HandPattern build_hand_pattern(const Compilation& c, TurnMethod turns) {
   check_supported(c);
-  HandPattern pattern = PatternBuilder(c).run();
+  HandPattern pattern = PatternBuilder(c, turns).run();
   place_section_markers(pattern);
   return pattern;
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "hand/hand_ops.hpp"
+#include "labeling/project.hpp"
 
 namespace skein {
 struct Compilation;
@@ -16,13 +17,21 @@ struct Compilation;
 
 namespace skein::hand {
 
+// How short rows turn (paper Fig. 10a: the sr4 stitch is where the yarn turns), chosen in the
+// project file (`short_rows: {hand: german}`): German short rows work the st, turn and make it
+// a double stitch (DS), later worked as one ("k DS"); wrap and turn wraps the next st (w&t),
+// later worked with its wrap ("kw").
+using TurnMethod = HandTurnMethod;
+
 struct PatternRow {
   std::uint32_t first_op = 0, end_op = 0;  // into HandPattern::ops
   std::uint32_t number = 0;                // 1-based in its section; the cast-on is not a row
   bool round = false;
   Side side = Side::rs;  // the side facing the knitter (rounds: always the RS)
   std::uint32_t sts_before = 0, sts_after = 0;
-  bool bind_off = false;  // the row binds off every stitch
+  bool bind_off = false;   // the row binds off every stitch
+  bool short_row = false;  // ends where the work turns, with sts left on the left needle
+  bool partial = false;    // works only some of the sts (short rows and the rows back)
 };
 
 struct PatternSection {
@@ -38,6 +47,8 @@ struct HandPattern {
   // The model's rounds run left to right seen from the RS, and hand knitting runs right to
   // left: the pattern knits the model's mirror image (decreases and increases swap lean).
   bool mirror = false;
+  TurnMethod turns = TurnMethod::german;
+  bool short_rows = false;    // some row turns before the end of the needle
   std::uint32_t markers = 0;  // the most stitch markers on the needle at once
   std::vector<PatternSection> sections;
   std::vector<PatternRow> rows;
@@ -49,8 +60,9 @@ struct HandPattern {
 };
 
 // Throws Error naming the stitch when the model needs something hand patterns do not cover
-// yet (short rows, joins, splits, held pieces, stitch graphs without rows). Rows shaped alike
-// get section markers (marker_plan.hpp).
-HandPattern build_hand_pattern(const Compilation& compilation);
+// yet (joins, splits, held pieces, stitch graphs without rows). Rows shaped alike get section
+// markers (marker_plan.hpp).
+HandPattern build_hand_pattern(const Compilation& compilation,
+                               TurnMethod turns = TurnMethod::german);
 
 }  // namespace skein::hand

@@ -223,17 +223,22 @@ class SentenceReader {
     add(step);
   }
 
-  // "Knit every rnd until 24 rnds in all".
+  // "Knit every rnd until 24 rnds in all", "Knit every rnd through Rnd 105".
   void work_even(std::string_view sentence, Cursor& c) {
     Step step{Step::Kind::work_even, line_no_};
     step.op = starts_with_ci(sentence, "knit") ? HandOp::k : HandOp::p;
     need(c.eat("every"), c, "'every rnd' or 'every row'");
     std::string_view word = c.word();
     step.round = starts_with_ci(word, "rnd") || starts_with_ci(word, "round");
-    need(c.eat("until"), c, "'until N rnds in all'");
-    step.count = need_number(c, "how many rows or rnds in all");
-    c.word();
-    need(c.eat("in") && c.eat("all"), c, "'in all'");
+    if (c.eat("through")) {  // "Knit every rnd through Rnd 105": up to that row number
+      c.word();
+      step.count = need_number(c, "the last row or rnd number");
+    } else {
+      need(c.eat("until"), c, "'until N rnds in all' or 'through Rnd N'");
+      step.count = need_number(c, "how many rows or rnds in all");
+      c.word();
+      need(c.eat("in") && c.eat("all"), c, "'in all'");
+    }
     need(c.done(), c, "the end of the sentence");
     add(step);
   }
@@ -350,8 +355,12 @@ class SentenceReader {
   }
 
   Node operation(Cursor& c) {
-    std::string_view w = c.word();
     Node n;
+    if (c.eat("w&t")) {  // not a word: '&' would end it
+      n.op = HandOp::wt;
+      return n;
+    }
+    std::string_view w = c.word();
     if (starts_with_ci(w, "bo") && w.size() == 2) return bind_off(c);
     if ((w.size() == 4 && (starts_with_ci(w, "knit") || starts_with_ci(w, "purl")))) {
       n.op = lower(w[0]) == 'k' ? HandOp::k : HandOp::p;
@@ -361,6 +370,7 @@ class SentenceReader {
     }
     if (auto op = hand_op_from(w)) {
       n.op = *op;
+      if (is_plain(*op) && c.eat("DS")) n.op = *op == HandOp::k ? HandOp::kds : HandOp::pds;
       if (c.eat("to")) n.until = until(c);
       return n;
     }
@@ -373,8 +383,10 @@ class SentenceReader {
         return n;
       }
     }
-    fail("expected a stitch (k, p, k2tog, ssk, M1L, yo, ...), a marker (pm, sm, rm), '*' or '['",
-         w.empty() ? c.rest() : w);
+    fail(
+        "expected a stitch (k, p, k2tog, ssk, M1L, yo, w&t, k DS, ...), a marker (pm, sm, rm), "
+        "'*' or '['",
+        w.empty() ? c.rest() : w);
   }
 
   // "BO all sts", "BO rem 8 sts", "BO 5 sts".

@@ -114,11 +114,13 @@ void choose_until(std::vector<Item>& items, const std::vector<Token>& t, std::ui
 }
 
 // Before a marker every run goes "to m": rows shaped between markers then read the same
-// whatever the width ("k to 2 sts before m, ssk").
+// whatever the width ("k to 2 sts before m, ssk"). A short row turns before the end of the
+// needle, so its last stretch keeps its counts.
 std::string stretch_text(std::span<const HandOp> ops, bool before_marker, Dialect dialect) {
   std::vector<Token> tokens = tokens_of(ops);
   std::vector<Item> items = items_of(tokens);
-  choose_until(items, tokens, before_marker ? 1 : kShortRun);
+  bool turns = !ops.empty() && ends_row(ops.back());
+  if (before_marker || !turns) choose_until(items, tokens, before_marker ? 1 : kShortRun);
   std::string out;
   std::uint32_t rest = 0;
   for (const Item& item : items) rest += item.takes;
