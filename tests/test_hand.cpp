@@ -108,7 +108,7 @@ TEST(HandTarget, StitchGraphsWithoutRowsAreRejectedNamingTheFile) {
 TEST(HandTarget, StitchesNotCoveredYetAreNamed) {
   using M = MismatchYarn::Kind;
   const std::pair<StitchMesh, const char*> cases[] = {
-      {testing::join_mesh(M::extra), "three-needle bind-off (3nbo)"},
+      {testing::join_mesh(M::own), "worked with its own yarn"},
       {meeting_sheets(Meeting::split, 6, 3, 3, M::extra, false, 1), "cast-on along a split (sco)"},
   };
   for (const auto& [mesh, named] : cases) {

@@ -14,6 +14,7 @@
 #include "builtin_targets.hpp"
 #include "common/error.hpp"
 #include "driver/pipeline.hpp"
+#include "fixtures.hpp"
 #include "hand/hand_target.hpp"
 #include "hand/needle_sim.hpp"
 #include "hand/pattern_document.hpp"
@@ -204,7 +205,9 @@ class Mutator {
       {"five", {"four", "six"}},
       {"fifteen", {"fourteen", "sixteen"}},
       {"end", {"last 1 st"}},
-      {"last", {"end, and"}},
+      {"last", {"end, and", "first"}},
+      {"first", {"last"}},
+      {"front", {"behind"}},
       {"w&t", {"turn", "k1, turn"}},
       {"turn", {"w&t"}},
       {"DS", {"k", "sm"}},
@@ -338,6 +341,15 @@ TEST(HandMutations, SectionMarkerPatternsRejectEveryEditThatChangesTheFabric) {
       compile_stitch_mesh(
           build_from_rows(testing::wedge_plan(3, 5, 3, 1, StitchType::yo), Layout::sheet),
           "wedges"));
+}
+
+TEST(HandMutations, JoinsRejectEveryEditThatChangesTheFabric) {
+  mutate_and_judge("join fixture",
+                   compile_stitch_mesh(testing::join_mesh(MismatchYarn::Kind::extra), "join"));
+  mutate_and_judge("joined sheets",
+                   compile_stitch_mesh(
+                       meeting_sheets(Meeting::join, 5, 4, 3, MismatchYarn::Kind::extra, false, 7),
+                       "joined sheets"));
 }
 
 TEST(HandMutations, ShapedSheetsAndTubesRejectEveryEditThatChangesTheFabric) {

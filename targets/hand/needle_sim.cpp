@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <map>
 
 namespace skein::hand {
 
@@ -22,6 +23,7 @@ std::vector<std::uint32_t> Fabric::rs_taken(std::uint32_t stitch) const {
 
 std::string Fabric::row_label(std::uint32_t r) const {
   const RowWorked& w = rows[r];
+  if (w.join) return "Three-needle bind-off";
   if (w.number == 0) return "Cast on";
   std::string word = w.round ? "Rnd" : "Row";
   std::string label = w.round ? fmt::format("Rnd {}", w.number)
@@ -89,6 +91,9 @@ class NeedleSimulator {
   void do_step(const Step& s) {
     switch (s.kind) {
       case Step::Kind::piece:
+        if (s.number != 0 && s.number != fab().piece_first.size() + 1)
+          fail(fmt::format("Piece {} comes next, not Piece {}", fab().piece_first.size() + 1,
+                           s.number));
         break;
       case Step::Kind::cast_on:
         cast_on(s.count);
@@ -108,6 +113,12 @@ class NeedleSimulator {
       case Step::Kind::fasten_off:
         fasten_off();
         break;
+      case Step::Kind::leave:
+        leave(s.count);
+        break;
+      case Step::Kind::three_needle_bind_off:
+        three_needle_bind_off(s);
+        break;
     }
   }
 
@@ -117,6 +128,19 @@ class NeedleSimulator {
     if (active_ && live_ > 0)
       fail(fmt::format("Cast on: the piece before still has {} on the needle", sts(live_)));
     if (n == 0) fail("Cast on: no sts to cast on");
+    start_piece();
+    fab().rows.push_back({0, 0, 0, false, Side::rs});
+    row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
+    for (std::uint32_t i = 0; i < n; ++i) {
+      std::uint32_t x = new_stitch(StitchType::co);
+      fab().taken_first.push_back(static_cast<std::uint32_t>(fab().taken.size()));
+      right_.push_back(new_loop(x));
+    }
+    live_ = n;
+  }
+
+  // A new piece with its own yarn and needles.
+  void start_piece() {
     active_ = true;
     facing_ = Side::rs;
     joined_ = place_bor_ = false;
@@ -129,16 +153,9 @@ class NeedleSimulator {
     right_.clear();
     piece_last_ = kNone;
     fab().piece_first.push_back(fab().size());
-    fab().rows.push_back({0, 0, 0, false, Side::rs});
-    row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
     position_ = 0;
+    live_ = 0;
     next_link_ = YarnLink::course;
-    for (std::uint32_t i = 0; i < n; ++i) {
-      std::uint32_t x = new_stitch(StitchType::co);
-      fab().taken_first.push_back(static_cast<std::uint32_t>(fab().taken.size()));
-      right_.push_back(new_loop(x));
-    }
-    live_ = n;
   }
 
   void join(bool marker) {
@@ -156,8 +173,65 @@ class NeedleSimulator {
     active_ = false;
   }
 
+  // The piece's live sts wait on a spare needle, in the order its last row worked them.
+  void leave(std::uint32_t n) {
+    if (!active_) fail("Leave the sts: no piece is being worked");
+    if (n != live_)
+      fail(fmt::format("Leave the sts: the pattern says {}, but {} on the needle", sts(n),
+                       live_ == 1 ? "1 st is" : fmt::format("{} sts are", live_)));
+    std::vector<std::uint32_t>& spare = spare_needles_[fab().piece_first.size()];
+    for (std::uint32_t entry : right_)
+      if (!is_marker_entry(entry)) spare.push_back(entry);
+    right_.clear();
+    left_.clear();
+    active_ = false;
+    live_ = 0;
+  }
+
+  // Pairs the sts of two spare needles, each from the end the pattern puts at the tip, and
+  // binds them off with a new yarn.
+  void three_needle_bind_off(const Step& s) {
+    std::uint32_t front = s.number, back = s.last, pairs = s.count;
+    if (active_ && live_ > 0)
+      fail(fmt::format("three-needle bind-off: the piece before still has {} on the needle",
+                       sts(live_)));
+    std::vector<std::uint32_t> f = spare_needle(front, s.from_last[0]);
+    std::vector<std::uint32_t> b = spare_needle(back, s.from_last[1]);
+    if (f.size() != b.size())
+      fail(fmt::format("three-needle bind-off: {} on front needle, {} on back", sts(f.size()),
+                       b.size()));
+    if (f.size() != pairs)
+      fail(fmt::format("three-needle bind-off: the pattern says {} pairs, but the needles hold {}",
+                       pairs, f.size()));
+    start_piece();
+    fab().rows.push_back({0, 0, 0, false, Side::ws, true});
+    row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
+    facing_ = Side::ws;  // the front piece shows its WS: its loop is taken first
+    for (std::uint32_t i = 0; i < pairs; ++i) {
+      new_stitch(StitchType::tnbo);
+      fab().taken.push_back(f[i]);
+      fab().taken.push_back(b[i]);
+      fab().taken_first.push_back(static_cast<std::uint32_t>(fab().taken.size()));
+    }
+    spare_needles_.erase(front);
+    spare_needles_.erase(back);
+  }
+
+  // The sts from the needle tip: the first or the last st of the piece's last row.
+  std::vector<std::uint32_t> spare_needle(std::uint32_t piece, bool from_last) const {
+    auto at = spare_needles_.find(piece);
+    if (at == spare_needles_.end())
+      fail(fmt::format("three-needle bind-off: Piece {} is not waiting on a spare needle", piece));
+    std::vector<std::uint32_t> loops = at->second;
+    if (from_last) std::reverse(loops.begin(), loops.end());
+    return loops;
+  }
+
   void finish() {
     if (fab().piece_first.empty()) throw StepFailure{"the pattern casts nothing on"};
+    if (!spare_needles_.empty())
+      throw StepFailure{fmt::format("the sts of Piece {} are left on a spare needle, never joined",
+                                    spare_needles_.begin()->first)};
     if (active_ && live_ > 0)
       throw StepFailure{fmt::format("the pattern ends with {} still on the needle", sts(live_))};
   }
@@ -662,6 +736,9 @@ class NeedleSimulator {
   const std::string& file_;
   Replay out_;
   std::vector<Program> work_even_;  // "k to end", "p to end"
+
+  // Per piece number (1-based): the sts it left on a spare needle.
+  std::map<std::uint32_t, std::vector<std::uint32_t>> spare_needles_;
 
   // Per loop: whether a short row turned at it, and how.
   static constexpr std::uint8_t kPlainLoop = 0, kWrapped = 1, kDouble = 2;

@@ -21,6 +21,7 @@ struct Fabric {
     std::uint32_t repeat_of = 0;  // the row it repeats, or 0
     bool round = false;
     Side side = Side::rs;
+    bool join = false;  // a three-needle bind-off
   };
 
   // Per stitch, in the order worked.

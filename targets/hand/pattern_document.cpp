@@ -66,11 +66,11 @@ class InstructionWriter {
       section_ = s;
       if (p_.sections.size() > 1)
         add(InstructionLine::Kind::heading, "",
-            fmt::format("Piece {} (yarn {})", s + 1, sec.yarn + 1));
+            fmt::format("Piece {} (yarn {}){}", s + 1, sec.yarn + 1,
+                        sec.joins ? ": three-needle bind-off" : ""));
       add(InstructionLine::Kind::setup, "", setup_text(sec));
       write_rows(sec.first_row, sec.end_row);
-      if (sec.end_row > sec.first_row && p_.rows[sec.end_row - 1].bind_off)
-        add(InstructionLine::Kind::finish, "", "Fasten off.");
+      add(InstructionLine::Kind::finish, "", finish_text(sec));
     }
   }
 
@@ -78,9 +78,24 @@ class InstructionWriter {
   bool knitspeak() const { return dialect_ == Dialect::knitspeak; }
 
   std::string setup_text(const PatternSection& sec) const {
+    if (sec.joins)
+      return fmt::format(
+          "Three-needle bind-off: hold the pieces with RS together: Piece {} in front, the {} st "
+          "of its last row at the needle tip; Piece {} behind, the {} st of its last row at the "
+          "tip (slide the sts to the other end of a needle if need be); with a new yarn bind off "
+          "all {} pairs.",
+          sec.front + 1, sec.from_last[0] ? "last" : "first", sec.back + 1,
+          sec.from_last[1] ? "last" : "first", sec.pairs);
     std::string text = fmt::format("Cast on {} sts.", sec.cast_on);
     if (sec.in_round) text += " Pm and join to work in the rnd, being careful not to twist.";
     return text;
+  }
+
+  std::string finish_text(const PatternSection& sec) const {
+    if (!sec.left_live) return "Fasten off.";
+    std::uint32_t live =
+        sec.end_row > sec.first_row ? p_.rows[sec.end_row - 1].sts_after : sec.cast_on;
+    return fmt::format("Leave the {} sts on a spare needle and cut the yarn.", live);
   }
 
   std::string rows_word(bool round, bool plural) const {
@@ -192,7 +207,7 @@ class InstructionWriter {
 
 // What the front matter needs to know about the whole pattern.
 struct Totals {
-  bool flat = false, round = false;
+  bool flat = false, round = false, joins = false;
   std::uint32_t widest = 0, narrowest_round = 0;
   std::vector<bool> used = std::vector<bool>(kHandOpCount, false);
 };
@@ -201,6 +216,8 @@ Totals totals_of(const HandPattern& p) {
   Totals t;
   t.narrowest_round = ~0u;
   for (const PatternSection& s : p.sections) {
+    t.joins = t.joins || s.joins;
+    if (s.joins) continue;
     (s.in_round ? t.round : t.flat) = true;
     t.widest = std::max(t.widest, s.cast_on);
     if (s.in_round) t.narrowest_round = std::min(t.narrowest_round, s.cast_on);
@@ -237,6 +254,7 @@ class FrontMatter {
   std::vector<std::string> measurements() const {
     std::vector<std::string> items;
     for (const PatternSection& s : p_.sections) {
+      if (s.joins) continue;
       // Short rows add length to part of the piece only: they are counted apart.
       std::uint32_t widest = s.cast_on, rows = 0, short_rows = 0;
       for (std::uint32_t r = s.first_row; r < s.end_row; ++r) {
@@ -293,6 +311,10 @@ class FrontMatter {
                                   t_.round ? ", one of them in another colour for the beginning "
                                              "of the round"
                                            : ""));
+    if (t_.joins)
+      items.push_back(
+          "A spare needle for each piece waiting to be joined, and a third for the "
+          "three-needle bind-off.");
     items.push_back("Tapestry needle for weaving in ends.");
     return items;
   }
@@ -351,6 +373,13 @@ class FrontMatter {
           "cast-on stitch with the working yarn. The marker then sits at the start of "
           "every round: slip it as you come to it.");
     if (p_.short_rows) items.push_back(short_rows_technique());
+    if (t_.joins)
+      items.push_back(
+          "**Three-needle bind-off:** hold the two needles parallel, tips to the right; insert "
+          "the third needle knitwise into the first st of the front needle and then the first st "
+          "of the back needle, knit them together; *knit the next pair together the same way, "
+          "pass the first st on the right needle over the second; rep from * until all pairs "
+          "are worked; cut the yarn and pull it through the last loop.");
     if (uses(HandOp::bo))
       items.push_back(
           "**Binding off (BO):** work 2 sts as they appear, *pass the first st on the "

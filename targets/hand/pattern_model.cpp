@@ -15,7 +15,7 @@ namespace {
 using T = StitchType;
 
 constexpr std::array kSupported = {T::k,  T::p,     T::co,  T::bo,    T::kfb,  T::m1l, T::m1r,
-                                   T::yo, T::k2tog, T::ssk, T::p2tog, T::s2kp, T::sr4};
+                                   T::yo, T::k2tog, T::ssk, T::p2tog, T::s2kp, T::sr4, T::tnbo};
 
 [[noreturn]] void unsupported(const std::string& what) {
   throw Error(fmt::format("hand target: {}", what));
@@ -32,24 +32,27 @@ void check_supported(const Compilation& c) {
     if (std::find(kSupported.begin(), kSupported.end(), g.type[s]) == kSupported.end())
       unsupported(fmt::format("{} is a {} ({}), which hand patterns do not cover yet",
                               g.describe(s), info(g.type[s]).name, abbreviation(g.type[s])));
-  for (const Loop& l : g.loops)
-    if (l.kind != LoopKind::wale || l.taker == kNoStitch)
+  for (const MismatchGroup& group : g.groups)
+    if (group.kind == MismatchKind::join && group.yarn == MismatchYarnUse::own)
+      unsupported(
+          fmt::format("the join next to {} is worked with its own yarn, which hand "
+                      "patterns do not cover yet (they join with a new yarn: yarn extra)",
+                      g.describe(group.own_side)));
+  for (const Loop& l : g.loops) {
+    bool joined = l.kind == LoopKind::joined && l.taker != kNoStitch && g.type[l.taker] == T::tnbo;
+    if ((l.kind != LoopKind::wale && !joined) || l.taker == kNoStitch)
       unsupported(fmt::format(
-          "the loop {} makes {}: hand patterns cover loops between rows only", g.describe(l.maker),
+          "the loop {} makes {}: hand patterns cover loops between rows and joins only",
+          g.describe(l.maker),
           l.taker == kNoStitch ? "is never worked"
                                : "crosses a mismatched edge to " + g.describe(l.taker)));
+  }
   for (const Event& e : c.schedule.events) {
     if (e.kind == EventKind::hold)
       unsupported(
           fmt::format("yarn {} must put its stitches aside at {} until {} is knit; "
                       "holding and resuming stitches is not covered yet",
                       e.yarn + 1, g.describe(e.stitch), g.describe(e.waits_for)));
-    // Short rows need no marker: the wrap or double stitch shows where each one turned.
-    bool mismatch_marker =
-        e.marker == MarkerKind::mismatch_begin || e.marker == MarkerKind::mismatch_end;
-    if (e.kind == EventKind::marker && mismatch_marker)
-      unsupported(fmt::format("a {} marker before {} is not covered yet", marker_name(e.marker),
-                              g.describe(e.stitch)));
   }
 }
 
@@ -159,13 +162,14 @@ class PatternBuilder {
         case EventKind::stitch:
           // A knitter's row ends where the yarn turns or goes on into the next round.
           row_.push_back(e.stitch);
-          if (g_.yarn_link[e.stitch] != YarnLink::course) flush_row();
+          if (g_.type[e.stitch] != T::tnbo && g_.yarn_link[e.stitch] != YarnLink::course)
+            flush_row();
           break;
         case EventKind::yarn_end:
           end_section();
           break;
         default:
-          break;  // rows, turns and round markers follow from the yarn links
+          break;  // rows, turns and markers follow from the yarn links and the stitches
       }
     }
     return std::move(out_);
@@ -175,6 +179,8 @@ class PatternBuilder {
   PatternSection& section() { return out_.sections.back(); }
 
   void start_section(std::uint32_t yarn) {
+    if (section_of_yarn_.size() <= yarn) section_of_yarn_.resize(yarn + 1, 0);
+    section_of_yarn_[yarn] = static_cast<std::uint32_t>(out_.sections.size());
     PatternSection& s = out_.sections.emplace_back();
     s.yarn = yarn;
     s.first_row = s.end_row = static_cast<std::uint32_t>(out_.rows.size());
@@ -183,15 +189,36 @@ class PatternBuilder {
   }
 
   void end_section() {
+    if (!row_.empty() && g_.type[row_.front()] == T::tnbo) join_live_sections();
     flush_row();
-    if (live_ != 0)
-      unsupported(
-          fmt::format("yarn {} ends with {} stitches still live", section().yarn + 1, live_));
+    section().left_live = live_ != 0;  // every loop is a join's (check_supported)
     section().end_row = static_cast<std::uint32_t>(out_.rows.size());
+  }
+
+  // A yarn of three-needle bind-off stitches pairs the loops of two sections left live: the
+  // first loop of each stitch from the front one.
+  void join_live_sections() {
+    PatternSection& join = section();
+    auto taken = g_.loops_taken_by(row_.front());
+    auto section_of = [&](std::uint32_t loop) {
+      return section_of_yarn_[c_.yarns.piece_of[g_.loops[loop].maker]];
+    };
+    join.joins = true;
+    join.front = section_of(taken[0]);
+    join.back = section_of(taken[1]);
+    for (int side : {0, 1}) {
+      const PatternSection& piece = out_.sections[side == 0 ? join.front : join.back];
+      join.from_last[side] = g_.loops[taken[side]].maker == piece.last_row_ends[1];
+    }
+    join.pairs = static_cast<std::uint32_t>(row_.size());
+    join.stitches = row_.size();
+    row_.clear();
   }
 
   void flush_row() {
     if (row_.empty()) return;
+    section().last_row_ends[0] = row_.front();
+    section().last_row_ends[1] = row_.back();
     section().stitches += row_.size();
     if (!cast_on_done_)
       cast_on();
@@ -332,6 +359,7 @@ class PatternBuilder {
   std::vector<StitchId> row_;
   std::uint32_t live_ = 0;
   std::uint32_t ahead_ = 0, behind_ = 0;  // loops on the left and right needle (flat pieces)
+  std::vector<std::uint32_t> section_of_yarn_;
   bool double_stitch_next_ = false;
   bool cast_on_done_ = false;
   YarnLink previous_link_ = YarnLink::none;

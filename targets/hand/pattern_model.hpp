@@ -40,6 +40,14 @@ struct PatternSection {
   bool in_round = false;                     // joined to work in the round after the cast-on
   std::uint32_t first_row = 0, end_row = 0;  // into HandPattern::rows
   std::uint64_t stitches = 0;                // model stitches worked with this yarn
+  bool left_live = false;                    // ends with its sts on a spare needle, to be joined
+  // A join: three-needle bind-off of two sections left live (front, back), with a new yarn.
+  bool joins = false;
+  std::uint32_t front = 0, back = 0;   // section indices
+  bool from_last[2] = {false, false};  // which end of each last row starts: first or last st
+  std::uint32_t pairs = 0;
+  // Model stitches: the first and last of the section's last row (or of its cast-on).
+  std::uint32_t last_row_ends[2] = {0, 0};
 };
 
 struct HandPattern {
@@ -60,7 +68,8 @@ struct HandPattern {
 };
 
 // Throws Error naming the stitch when the model needs something hand patterns do not cover
-// yet (joins, splits, held pieces, stitch graphs without rows). Rows shaped alike get section
+// yet (joins with a side's own yarn, splits, perpendicular edges, held pieces, stitch graphs
+// without rows). Rows shaped alike get section
 // markers (marker_plan.hpp).
 HandPattern build_hand_pattern(const Compilation& compilation,
                                TurnMethod turns = TurnMethod::german);

@@ -135,10 +135,12 @@ class SentenceReader {
       return add(step);
     }
     if (mentions(sentence, "fasten off")) return add({Step::Kind::fasten_off, line_no_});
+    if (c.eat("leave")) return leave(c);
+    if (c.eat("three-needle") && c.eat("bind-off")) return three_needle_bind_off(c);
     fail(
         "expected a row ('Row 3 (RS): ...', 'Rnd 5: ...'), 'Cast on N sts', 'Pm and join to "
         "work in the rnd', 'Rep Rows 3\u20134 N more times', 'Knit every rnd until N rnds in "
-        "all' or 'Fasten off'",
+        "all', 'Leave the N sts on a spare needle', 'Three-needle bind-off: ...' or 'Fasten off'",
         sentence);
   }
 
@@ -173,6 +175,57 @@ class SentenceReader {
     step.count = need_number(c, "the number of sts to cast on");
     need(c.eat_any({"sts", "st"}), c, "'sts' after the number");
     add(step);
+  }
+
+  // "Leave the 16 sts on a spare needle and cut the yarn".
+  void leave(Cursor& c) {
+    Step step{Step::Kind::leave, line_no_};
+    c.eat("the");
+    step.count = need_number(c, "the number of sts left on the needle");
+    need(c.eat_any({"sts", "st"}) && c.eat("on") && c.eat("a") && c.eat("spare") &&
+             c.eat("needle") && c.eat("and") && c.eat("cut") && c.eat("the") && c.eat("yarn"),
+         c, "'sts on a spare needle and cut the yarn'");
+    need(c.done(), c, "the end of the sentence");
+    add(step);
+  }
+
+  void need_words(Cursor& c, std::initializer_list<std::string_view> words, const char* expected) {
+    for (std::string_view w : words) need(w.size() == 1 ? c.eat_char(w[0]) : c.eat(w), c, expected);
+  }
+
+  // "Three-needle bind-off: hold the pieces with RS together: Piece 1 in front, the first st of
+  // its last row at the needle tip; Piece 2 behind, the last st of its last row at the tip
+  // (slide the sts to the other end of a needle if need be); with a new yarn bind off all 6
+  // pairs".
+  void three_needle_bind_off(Cursor& c) {
+    Step step{Step::Kind::three_needle_bind_off, line_no_};
+    need_words(c, {":", "hold", "the", "pieces", "with", "RS", "together", ":"},
+               "': hold the pieces with RS together:'");
+    step.number = needle_end(c, {"in", "front"}, step.from_last[0]);
+    need(c.eat_char(';'), c, "';' after the front piece");
+    step.last = needle_end(c, {"behind"}, step.from_last[1]);
+    if (c.eat_char('('))
+      while (!c.done() && !c.eat_char(')')) c.eat_char(c.peek());
+    need_words(c, {";", "with", "a", "new", "yarn", "bind", "off", "all"},
+               "'; with a new yarn bind off all N pairs'");
+    step.count = need_number(c, "the number of pairs");
+    need(c.eat_any({"pairs", "pair"}) && c.done(), c, "'pairs' and the end of the sentence");
+    add(step);
+  }
+
+  // "Piece 1 in front, the first st of its last row at the needle tip": the piece's number.
+  std::uint32_t needle_end(Cursor& c, std::initializer_list<std::string_view> where,
+                           bool& from_last) {
+    need(c.eat("piece"), c, "'Piece N'");
+    std::uint32_t piece = need_number(c, "a piece number");
+    need_words(c, where, "'in front' or 'behind' after the piece");
+    need_words(c, {",", "the"}, "', the first (or last) st of its last row'");
+    from_last = c.eat("last");
+    need(from_last || c.eat("first"), c, "'first' or 'last'");
+    need_words(c, {"st", "of", "its", "last", "row", "at", "the"}, "'st of its last row at the'");
+    c.eat("needle");
+    need(c.eat("tip"), c, "'tip'");
+    return piece;
   }
 
   // "Row 3 (RS): ...", "Rnds 2–16: ...".
@@ -454,7 +507,11 @@ void read_line(Script& script, const std::string& file, std::size_t line_no, std
   std::string_view line = trim(raw);
   if (line.empty()) return;
   if (line.front() == '#' || starts_with_ci(line, "piece ")) {
-    script.steps.push_back({Step::Kind::piece, line_no});
+    // "### Piece 3 (yarn 3)": the number is checked, the rest is a title.
+    Step step{Step::Kind::piece, line_no};
+    Cursor c(line.substr(line.find_first_not_of("# ")));
+    if (c.eat("piece")) step.number = c.number().value_or(0);
+    script.steps.push_back(step);
     return;
   }
   std::string text = plain(line);

@@ -52,6 +52,9 @@ struct Step {
     repeat_rows,  // number..last repeated count more times
     work_even,    // "Knit every rnd until <count> rnds in all": op is k or p
     fasten_off,
+    leave,                  // "Leave the <count> sts on a spare needle and cut the yarn"
+    three_needle_bind_off,  // Piece <number> in front, Piece <last> behind, <count> pairs;
+                            // from_last: which ends are at the tips (front, back)
   };
   Step(Kind step_kind, std::size_t line_no) : kind(step_kind), line(line_no) {}
   Kind kind;
@@ -63,6 +66,7 @@ struct Step {
   std::optional<Side> side;
   std::optional<std::uint32_t> sts;  // the printed stitch count ("— 56 sts")
   std::uint32_t program = 0;         // into Script::programs
+  bool from_last[2] = {false, false};
   HandOp op = HandOp::k;
 };
 

@@ -1,0 +1,101 @@
+// Joins in hand patterns: pieces left on spare needles and joined by a three-needle bind-off
+// with a new yarn, written and proven; and the simulator's reasons for rejecting a join.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "builtin_targets.hpp"
+#include "driver/pipeline.hpp"
+#include "fixtures.hpp"
+#include "hand/hand_target.hpp"
+#include "mesh/generate.hpp"
+
+namespace skein {
+namespace {
+
+std::string emit(const Compilation& c, const std::string& target) {
+  Registry registry;
+  register_builtin_targets(registry);
+  std::ostringstream out;
+  registry.target(target)->emit(c, {}, out);
+  return out.str();
+}
+
+VerifyReport verify(const Compilation& c, const std::string& target, const std::string& text) {
+  Registry registry;
+  register_builtin_targets(registry);
+  return registry.simulator_for(target)->verify(text, "pattern", &c, {});
+}
+
+TEST(HandJoins, TheJoinFixtureReadsLikeAPatternAndIsProven) {
+  Compilation c =
+      compile_stitch_mesh(testing::join_mesh(MismatchYarn::Kind::extra), "join fixture");
+  std::string pattern = emit(c, "hand");
+  EXPECT_NE(pattern.find("### Piece 3 (yarn 3): three-needle bind-off\n"), std::string::npos)
+      << pattern;
+  EXPECT_NE(pattern.find("Leave the 3 sts on a spare needle and cut the yarn.\n"),
+            std::string::npos);
+  EXPECT_NE(pattern.find("Piece 1 in front, the first st of its last row at the needle tip"),
+            std::string::npos);
+  EXPECT_NE(pattern.find("**Three-needle bind-off:**"), std::string::npos);
+  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
+    VerifyReport report = verify(c, target, emit(c, target));
+    EXPECT_TRUE(report.proven) << target << ": " << report.summary;
+  }
+}
+
+// Two flat pieces of random stitches knit towards one line (generate.hpp), joined there.
+TEST(HandJoins, RandomJoinedSheetsAreProven) {
+  for (std::uint32_t trial = 0; trial < 40; ++trial) {
+    Compilation c = compile_stitch_mesh(
+        meeting_sheets(Meeting::join, 2 + trial % 9, 1 + trial % 5, 1 + (trial / 5) % 6,
+                       MismatchYarn::Kind::extra, false, trial),
+        "joined sheets");
+    ASSERT_TRUE(c.knittability.knittable) << check_report(c);
+    std::string pattern = emit(c, "hand");
+    VerifyReport report = verify(c, "hand", pattern);
+    ASSERT_TRUE(report.proven) << "trial " << trial << ": " << report.summary << "\n" << pattern;
+  }
+}
+
+// Works a pattern written by hand (no model to compare with): the failure, or "".
+std::string failure_of(const std::string& pattern) {
+  VerifyReport r = hand::verify_pattern(pattern, "p.md", nullptr);
+  return r.summary.find("give --against") == std::string::npos ? r.summary : "";
+}
+
+std::string joined(std::uint32_t front, std::uint32_t back, std::uint32_t pairs) {
+  return fmt::format(
+      "Three-needle bind-off: hold the pieces with RS together: Piece {} in front, the first st "
+      "of its last row at the needle tip; Piece {} behind, the last st of its last row at the "
+      "tip; with a new yarn bind off all {} pairs.\n",
+      front, back, pairs);
+}
+
+TEST(HandJoins, RejectsAJoinThatCannotBeWorkedWithTheReason) {
+  const std::string pieces =
+      "## Instructions\nCast on 16 sts.\nRow 1 (RS): Knit.\n"
+      "Leave the 16 sts on a spare needle and cut the yarn.\nCast on 15 sts.\n"
+      "Row 1 (RS): Knit.\nLeave the 15 sts on a spare needle and cut the yarn.\n";
+  EXPECT_EQ(failure_of(pieces + joined(1, 2, 16)),
+            "p.md:8: three-needle bind-off: 16 sts on front needle, 15 on back");
+  EXPECT_EQ(failure_of(pieces + joined(1, 3, 16)),
+            "p.md:8: three-needle bind-off: Piece 3 is not waiting on a spare needle");
+  EXPECT_EQ(failure_of(pieces),
+            "p.md:7: the sts of Piece 1 are left on a spare needle, never joined");
+  EXPECT_EQ(failure_of("Cast on 4 sts.\nRow 1 (RS): Knit.\n"
+                       "Leave the 5 sts on a spare needle and cut the yarn.\n"),
+            "p.md:3: Leave the sts: the pattern says 5 sts, but 4 sts are on the needle");
+  EXPECT_EQ(failure_of("Cast on 4 sts.\nLeave the 4 sts on a spare needle and cut the yarn.\n"
+                       "Cast on 4 sts.\nLeave the 4 sts on a spare needle and cut the yarn.\n" +
+                       joined(2, 1, 3)),
+            "p.md:5: three-needle bind-off: the pattern says 3 pairs, but the needles hold 4");
+  EXPECT_EQ(failure_of("Cast on 4 sts.\nLeave the 4 sts on a spare needle and cut the yarn.\n"
+                       "Cast on 4 sts.\nLeave the 4 sts on a spare needle and cut the yarn.\n" +
+                       joined(2, 1, 4) + "Fasten off.\n"),
+            "");
+}
+
+}  // namespace
+}  // namespace skein
