@@ -1,8 +1,10 @@
-// Joins in hand patterns: pieces left on spare needles and joined by a three-needle bind-off
-// with a new yarn, written and proven; and the simulator's reasons for rejecting a join.
+// Several pieces in hand patterns: pieces left on spare needles and joined by a three-needle
+// bind-off with a new yarn, or set aside and taken up again with other pieces placed into their
+// rnd (the sweater), written and proven; and the simulator's reasons for rejecting them.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <sstream>
 
 #include "builtin_targets.hpp"
@@ -95,6 +97,53 @@ TEST(HandJoins, RejectsAJoinThatCannotBeWorkedWithTheReason) {
                        "Cast on 4 sts.\nLeave the 4 sts on a spare needle and cut the yarn.\n" +
                        joined(2, 1, 4) + "Fasten off.\n"),
             "");
+}
+
+TEST(HandPieces, TheSweaterIsProvenInEveryFormat) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  Compilation c = compile_model("samples/sweater/sweater.yaml");
+  std::string pattern = emit(c, "hand");
+  for (const char* line :
+       {"**Rnd 107:** *BO 48 sts, k48; rep from * to end \u2014 96 sts.\n",
+        "Leave the 96 sts on the needle and set the yarn aside (do not cut it).\n",
+        "Leave the 58 sts on a spare needle and cut the yarn.\n",
+        "### Piece 1 (yarn 1), taken up again\n",
+        "Take up Piece 1 again with its yarn. Place the 58 sts of Piece 2 on the needle at the "
+        "beginning of the rnd, the first st of its last rnd first. Place the 58 sts of Piece 3 on "
+        "the needle after the first 106 sts of the rnd, the first st of its last rnd first.\n",
+        "**Rnd 108:** K106, pm, k to end.\n"})
+    EXPECT_NE(pattern.find(line), std::string::npos) << line;
+  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
+    VerifyReport report = verify(c, target, emit(c, target));
+    EXPECT_TRUE(report.proven) << target << ": " << report.summary;
+  }
+}
+
+std::string body_and_sleeve(const std::string& take_up) {
+  return "Cast on 8 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\n"
+         "Leave the 8 sts on the needle and set the yarn aside (do not cut it).\n"
+         "Cast on 4 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\n"
+         "Leave the 4 sts on a spare needle and cut the yarn.\n" +
+         take_up + "Rnd 2: Knit.\nRnd 3: BO all sts.\nFasten off.\n";
+}
+
+TEST(HandPieces, RejectsSettingAsideAndTakingUpWrongWithTheReason) {
+  const std::string place =
+      " Place the 4 sts of Piece 2 on the needle after the first 4 sts of the rnd, the first st "
+      "of its last rnd first.\n";
+  EXPECT_EQ(failure_of(body_and_sleeve("Take up Piece 1 again with its yarn." + place)), "");
+  EXPECT_EQ(failure_of(body_and_sleeve("Take up Piece 3 again with its yarn." + place)),
+            "p.md:7: Take up Piece 3: it was not set aside");
+  EXPECT_EQ(failure_of(body_and_sleeve("Take up Piece 1 again with its yarn. Place the 5 sts of "
+                                       "Piece 2 on the needle at the beginning of the rnd, the "
+                                       "first st of its last rnd first.\n")),
+            "p.md:7: Place the sts of Piece 2: the pattern says 5 sts, but its needle holds 4");
+  EXPECT_EQ(failure_of(body_and_sleeve("Take up Piece 1 again with its yarn. Place the 4 sts of "
+                                       "Piece 2 on the needle after the first 9 sts of the rnd, "
+                                       "the first st of its last rnd first.\n")),
+            "p.md:7: Place the sts of Piece 2: the rnd has only 8 sts");
+  EXPECT_EQ(failure_of(body_and_sleeve("")),
+            "p.md:7: Rnd: no sts are on the needle (take up Piece 1 again first)");
 }
 
 }  // namespace

@@ -68,7 +68,10 @@ std::string items_text(const std::vector<std::string>& items) {
 
 class Mutator {
  public:
-  explicit Mutator(const std::string& pattern) : lines_(lines_of(pattern)) {
+  // With `near_pieces`, only the lines within 4 instructions of a piece heading (where pieces
+  // start, wait, are taken up and join): for large patterns.
+  explicit Mutator(const std::string& pattern, bool near_pieces = false)
+      : lines_(lines_of(pattern)), near_pieces_(near_pieces) {
     for (std::size_t i = 0; i < lines_.size(); ++i) {
       if (lines_[i] == "## Instructions") begin_ = i + 1;
       if (begin_ && i > begin_ && lines_[i].rfind("## ", 0) == 0 && !end_) end_ = i;
@@ -78,7 +81,7 @@ class Mutator {
 
   std::vector<Mutant> all() {
     for (std::size_t i = begin_; i < end_; ++i) {
-      if (lines_[i].empty()) continue;
+      if (lines_[i].empty() || (near_pieces_ && !near_a_piece_heading(i))) continue;
       line_edits(i);
       word_edits(i);
       item_edits(i);
@@ -215,7 +218,14 @@ class Mutator {
       {"pw", {"p", "kw"}},
   };
 
+  bool near_a_piece_heading(std::size_t i) const {  // blank lines between instructions
+    for (std::size_t j = i > 8 ? i - 8 : 0; j < std::min(i + 9, lines_.size()); ++j)
+      if (lines_[j].rfind("### Piece", 0) == 0) return true;
+    return false;
+  }
+
   std::vector<std::string> lines_;
+  bool near_pieces_ = false;
   std::size_t begin_ = 0, end_ = 0;
   std::vector<Mutant> out_;
 };
@@ -295,10 +305,11 @@ std::string hand_pattern(const Compilation& c) {
   return out.str();
 }
 
-void mutate_and_judge(const std::string& name, const Compilation& c, const std::string& pattern) {
+void mutate_and_judge(const std::string& name, const Compilation& c, const std::string& pattern,
+                      bool near_pieces = false) {
   ASSERT_TRUE(hand::verify_pattern(pattern, name, &c).proven);
   Tally tally;
-  for (const Mutant& m : Mutator(pattern).all()) judge(c, pattern, m, tally);
+  for (const Mutant& m : Mutator(pattern, near_pieces).all()) judge(c, pattern, m, tally);
   std::cout << report(name, tally);
   EXPECT_GE(tally.total, 25) << name;
   EXPECT_TRUE(tally.missed.empty()) << name << ": an edit that changes the fabric was proven:\n"
@@ -350,6 +361,14 @@ TEST(HandMutations, JoinsRejectEveryEditThatChangesTheFabric) {
                    compile_stitch_mesh(
                        meeting_sheets(Meeting::join, 5, 4, 3, MismatchYarn::Kind::extra, false, 7),
                        "joined sheets"));
+}
+
+// The sweater's pieces: where the body waits, the sleeves are left on spare needles, and the
+// body is taken up again with the sleeves placed into its rnd.
+TEST(HandMutations, PiecesSetAsideAndTakenUpRejectEveryEditThatChangesTheFabric) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  Compilation c = compile_model("samples/sweater/sweater.yaml");
+  mutate_and_judge("sweater (lines near the pieces)", c, hand_pattern(c), true);
 }
 
 TEST(HandMutations, ShapedSheetsAndTubesRejectEveryEditThatChangesTheFabric) {

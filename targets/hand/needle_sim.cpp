@@ -91,9 +91,10 @@ class NeedleSimulator {
   void do_step(const Step& s) {
     switch (s.kind) {
       case Step::Kind::piece:
-        if (s.number != 0 && s.number != fab().piece_first.size() + 1)
-          fail(fmt::format("Piece {} comes next, not Piece {}", fab().piece_first.size() + 1,
-                           s.number));
+        if (s.number != 0 && s.number != fab().piece_first.size() + 1 &&
+            !set_aside_.contains(s.number))
+          fail(fmt::format("Piece {} comes next (or one set aside), not Piece {}",
+                           fab().piece_first.size() + 1, s.number));
         break;
       case Step::Kind::cast_on:
         cast_on(s.count);
@@ -116,6 +117,15 @@ class NeedleSimulator {
       case Step::Kind::leave:
         leave(s.count);
         break;
+      case Step::Kind::set_aside:
+        set_aside(s.count);
+        break;
+      case Step::Kind::take_up:
+        take_up(s.number);
+        break;
+      case Step::Kind::place:
+        place(s);
+        break;
       case Step::Kind::three_needle_bind_off:
         three_needle_bind_off(s);
         break;
@@ -125,8 +135,8 @@ class NeedleSimulator {
   // --- pieces -------------------------------------------------------------------------------
 
   void cast_on(std::uint32_t n) {
-    if (active_ && live_ > 0)
-      fail(fmt::format("Cast on: the piece before still has {} on the needle", sts(live_)));
+    if (active_ && pc_.live > 0)
+      fail(fmt::format("Cast on: the piece before still has {} on the needle", sts(pc_.live)));
     if (n == 0) fail("Cast on: no sts to cast on");
     start_piece();
     fab().rows.push_back({0, 0, 0, false, Side::rs});
@@ -134,69 +144,115 @@ class NeedleSimulator {
     for (std::uint32_t i = 0; i < n; ++i) {
       std::uint32_t x = new_stitch(StitchType::co);
       fab().taken_first.push_back(static_cast<std::uint32_t>(fab().taken.size()));
-      right_.push_back(new_loop(x));
+      pc_.right.push_back(new_loop(x));
     }
-    live_ = n;
+    pc_.live = n;
   }
 
   // A new piece with its own yarn and needles.
+  // A flat piece's first row works the cast-on from its last st (turn_before).
   void start_piece() {
     active_ = true;
     facing_ = Side::rs;
-    joined_ = place_bor_ = false;
-    turn_before_ = true;  // a flat piece's first row works the cast-on from its last st
-    bor_ = kNone;
-    next_number_ = 1;
-    last_side_.reset();
-    defined_.clear();
-    left_.clear();
-    right_.clear();
-    piece_last_ = kNone;
     fab().piece_first.push_back(fab().size());
+    pc_ = Piece{};
+    pc_.number = static_cast<std::uint32_t>(fab().piece_first.size());
     position_ = 0;
-    live_ = 0;
     next_link_ = YarnLink::course;
   }
 
   void join(bool marker) {
-    if (!active_ || next_number_ != 1 || joined_)
+    if (!active_ || pc_.next_number != 1 || pc_.joined)
       fail("Join to work in the rnd: only right after a cast-on");
-    joined_ = true;
-    turn_before_ = false;  // the first rnd starts with the first st cast on
-    place_bor_ = marker;
+    pc_.joined = true;
+    pc_.turn_before = false;  // the first rnd starts with the first st cast on
+    pc_.place_bor = marker;
   }
 
   void fasten_off() {
     if (!active_) fail("Fasten off: no yarn is being worked");
-    if (live_ > 0)
-      fail(fmt::format("Fasten off: {} still on the needle; bind them off first", sts(live_)));
+    if (pc_.live > 0)
+      fail(fmt::format("Fasten off: {} still on the needle; bind them off first", sts(pc_.live)));
     active_ = false;
+  }
+
+  void check_live(std::uint32_t n, const char* what) const {
+    if (!active_) fail(fmt::format("{}: no piece is being worked", what));
+    if (n != pc_.live)
+      fail(fmt::format("{}: the pattern says {}, but {} on the needle", what, sts(n),
+                       pc_.live == 1 ? "1 st is" : fmt::format("{} sts are", pc_.live)));
+  }
+
+  // The piece waits, sts and yarn, until it is taken up again.
+  void set_aside(std::uint32_t n) {
+    check_live(n, "Leave the sts");
+    set_aside_[pc_.number] = std::move(pc_);
+    active_ = false;
+  }
+
+  void take_up(std::uint32_t number) {
+    if (active_ && pc_.live > 0)
+      fail(fmt::format("Take up Piece {}: the piece before still has {} on the needle", number,
+                       sts(pc_.live)));
+    auto at = set_aside_.find(number);
+    if (at == set_aside_.end()) fail(fmt::format("Take up Piece {}: it was not set aside", number));
+    pc_ = std::move(at->second);
+    set_aside_.erase(at);
+    active_ = true;
+  }
+
+  // The sts of a spare needle join the rnd of the piece being worked, after the first `last`
+  // sts from the beginning of the rnd.
+  void place(const Step& s) {
+    if (!active_ || !pc_.joined || pc_.bor == kNone)
+      fail(fmt::format("Place the sts of Piece {}: only into a piece worked in the rnd", s.number));
+    std::vector<std::uint32_t> placed = spare_needle(s.number, s.from_last[0], "Place the sts");
+    if (placed.size() != s.count)
+      fail(fmt::format("Place the sts of Piece {}: the pattern says {}, but its needle holds {}",
+                       s.number, sts(s.count), placed.size()));
+    std::vector<std::uint32_t> ring = ring_from_bor();
+    if (s.last > ring.size())
+      fail(fmt::format("Place the sts of Piece {}: the rnd has only {}", s.number,
+                       sts(static_cast<std::uint32_t>(ring.size()))));
+    ring.insert(ring.begin() + s.last, placed.begin(), placed.end());
+    pc_.right.assign(1, pc_.bor);
+    pc_.right.insert(pc_.right.end(), ring.begin(), ring.end());
+    pc_.left.clear();
+    pc_.live += s.count;
+    spare_needles_.erase(s.number);
+  }
+
+  // The loops around the needle from the beginning-of-round marker on (markers left out).
+  std::vector<std::uint32_t> ring_from_bor() const {
+    std::vector<std::uint32_t> ring(pc_.left.rbegin(), pc_.left.rend());
+    ring.insert(ring.end(), pc_.right.begin(), pc_.right.end());
+    auto at = std::find(ring.begin(), ring.end(), pc_.bor);
+    std::rotate(ring.begin(), at, ring.end());
+    std::erase_if(ring, is_marker_entry);
+    return ring;
   }
 
   // The piece's live sts wait on a spare needle, in the order its last row worked them.
   void leave(std::uint32_t n) {
-    if (!active_) fail("Leave the sts: no piece is being worked");
-    if (n != live_)
-      fail(fmt::format("Leave the sts: the pattern says {}, but {} on the needle", sts(n),
-                       live_ == 1 ? "1 st is" : fmt::format("{} sts are", live_)));
-    std::vector<std::uint32_t>& spare = spare_needles_[fab().piece_first.size()];
-    for (std::uint32_t entry : right_)
+    check_live(n, "Leave the sts");
+    std::vector<std::uint32_t>& spare = spare_needles_[pc_.number];
+    for (std::uint32_t entry : pc_.right)
       if (!is_marker_entry(entry)) spare.push_back(entry);
-    right_.clear();
-    left_.clear();
+    pc_.right.clear();
+    pc_.left.clear();
     active_ = false;
-    live_ = 0;
+    pc_.live = 0;
   }
 
   // Pairs the sts of two spare needles, each from the end the pattern puts at the tip, and
   // binds them off with a new yarn.
   void three_needle_bind_off(const Step& s) {
     std::uint32_t front = s.number, back = s.last, pairs = s.count;
-    if (active_ && live_ > 0)
+    if (active_ && pc_.live > 0)
       fail(fmt::format("three-needle bind-off: the piece before still has {} on the needle",
-                       sts(live_)));
-    std::vector<std::uint32_t> f = spare_needle(front, s.from_last[0]);
-    std::vector<std::uint32_t> b = spare_needle(back, s.from_last[1]);
+                       sts(pc_.live)));
+    std::vector<std::uint32_t> f = spare_needle(front, s.from_last[0], "three-needle bind-off");
+    std::vector<std::uint32_t> b = spare_needle(back, s.from_last[1], "three-needle bind-off");
     if (f.size() != b.size())
       fail(fmt::format("three-needle bind-off: {} on front needle, {} on back", sts(f.size()),
                        b.size()));
@@ -218,10 +274,11 @@ class NeedleSimulator {
   }
 
   // The sts from the needle tip: the first or the last st of the piece's last row.
-  std::vector<std::uint32_t> spare_needle(std::uint32_t piece, bool from_last) const {
+  std::vector<std::uint32_t> spare_needle(std::uint32_t piece, bool from_last,
+                                          const char* what) const {
     auto at = spare_needles_.find(piece);
     if (at == spare_needles_.end())
-      fail(fmt::format("three-needle bind-off: Piece {} is not waiting on a spare needle", piece));
+      fail(fmt::format("{}: Piece {} is not waiting on a spare needle", what, piece));
     std::vector<std::uint32_t> loops = at->second;
     if (from_last) std::reverse(loops.begin(), loops.end());
     return loops;
@@ -229,32 +286,39 @@ class NeedleSimulator {
 
   void finish() {
     if (fab().piece_first.empty()) throw StepFailure{"the pattern casts nothing on"};
+    if (!set_aside_.empty())
+      throw StepFailure{
+          fmt::format("Piece {} is set aside and never taken up again", set_aside_.begin()->first)};
     if (!spare_needles_.empty())
       throw StepFailure{fmt::format("the sts of Piece {} are left on a spare needle, never joined",
                                     spare_needles_.begin()->first)};
-    if (active_ && live_ > 0)
-      throw StepFailure{fmt::format("the pattern ends with {} still on the needle", sts(live_))};
+    if (active_ && pc_.live > 0)
+      throw StepFailure{fmt::format("the pattern ends with {} still on the needle", sts(pc_.live))};
   }
 
   // --- rows ---------------------------------------------------------------------------------
 
   void check_kind(bool round_label, const char* what) const {
     if (!active_)
-      throw StepFailure{fmt::format("{}: no sts are on the needle (cast on first)", what)};
+      throw StepFailure{
+          set_aside_.empty()
+              ? fmt::format("{}: no sts are on the needle (cast on first)", what)
+              : fmt::format("{}: no sts are on the needle (take up Piece {} again first)", what,
+                            set_aside_.begin()->first)};
     // Joined work has rnds, and rows where it turns (short rows).
-    if (round_label && !joined_)
+    if (round_label && !pc_.joined)
       throw StepFailure{fmt::format(
           "{}: the work is flat (never joined in the rnd), so it has rows, not rnds", what)};
   }
 
   void work_rows(const Step& s) {
     check_kind(s.round, s.round ? "Rnd" : "Row");
-    if (s.number != next_number_)
+    if (s.number != pc_.next_number)
       throw StepFailure{fmt::format("{} {} comes next, not {} {}", s.round ? "Rnd" : "Row",
-                                    next_number_, s.round ? "Rnd" : "Row", s.number)};
+                                    pc_.next_number, s.round ? "Rnd" : "Row", s.number)};
     for (std::uint32_t n = s.number; n <= s.last; ++n) {
-      if (defined_.size() <= n) defined_.resize(n + 1, kNone);
-      defined_[n] = s.program;
+      if (pc_.defined.size() <= n) pc_.defined.resize(n + 1, kNone);
+      pc_.defined[n] = s.program;
       work_row(script_.programs[s.program], s.round, 0, n == s.number ? s.side : std::nullopt,
                s.line);
     }
@@ -268,51 +332,52 @@ class NeedleSimulator {
             : fmt::format("Rep {} {}\u2013{}", s.round ? "Rnds" : "Rows", s.number, s.last);
     check_kind(s.round, what.c_str());
     for (std::uint32_t n = s.number; n <= s.last; ++n)
-      if (n >= defined_.size() || defined_[n] == kNone)
+      if (n >= pc_.defined.size() || pc_.defined[n] == kNone)
         throw StepFailure{
             fmt::format("{}: {} {} is not written out above", what, s.round ? "Rnd" : "Row", n)};
-    if (s.last + 1 != next_number_)
+    if (s.last + 1 != pc_.next_number)
       throw StepFailure{fmt::format("{}: the rows to repeat must be the last ones worked ({} {})",
-                                    what, s.round ? "Rnd" : "Row", next_number_ - 1)};
+                                    what, s.round ? "Rnd" : "Row", pc_.next_number - 1)};
     for (std::uint32_t t = 0; t < s.count; ++t)
       for (std::uint32_t n = s.number; n <= s.last; ++n) {
-        std::uint32_t number = next_number_;
-        if (defined_.size() <= number) defined_.resize(number + 1, kNone);
-        defined_[number] = defined_[n];
-        work_row(script_.programs[defined_[n]], s.round, n, std::nullopt, s.line);
+        std::uint32_t number = pc_.next_number;
+        if (pc_.defined.size() <= number) pc_.defined.resize(number + 1, kNone);
+        pc_.defined[number] = pc_.defined[n];
+        work_row(script_.programs[pc_.defined[n]], s.round, n, std::nullopt, s.line);
       }
     check_count(s);
   }
 
   void work_even(const Step& s) {
     check_kind(s.round, s.round ? "every rnd" : "every row");
-    if (s.count < next_number_)
+    if (s.count < pc_.next_number)
       throw StepFailure{fmt::format("until {} {} in all: {} are already worked", s.count,
-                                    s.round ? "rnds" : "rows", next_number_ - 1)};
+                                    s.round ? "rnds" : "rows", pc_.next_number - 1)};
     std::uint32_t program = s.op == HandOp::k ? 0 : 1;
-    while (next_number_ <= s.count) work_row(work_even_[program], s.round, 0, std::nullopt, s.line);
+    while (pc_.next_number <= s.count)
+      work_row(work_even_[program], s.round, 0, std::nullopt, s.line);
   }
 
   void check_count(const Step& s) {
     if (!s.sts) return;
     ++out_.counts_checked;
-    if (*s.sts != live_)
-      throw StepFailure{fmt::format("{}: the pattern says {}, but {} on the needle",
-                                    fab().row_label(row_), sts(*s.sts),
-                                    live_ == 1 ? "1 st is" : fmt::format("{} sts are", live_))};
+    if (*s.sts != pc_.live)
+      throw StepFailure{fmt::format(
+          "{}: the pattern says {}, but {} on the needle", fab().row_label(row_), sts(*s.sts),
+          pc_.live == 1 ? "1 st is" : fmt::format("{} sts are", pc_.live))};
   }
 
   // A row turns the work first when the one before ended at a turn (every flat row does);
   // after a rnd, or a row that did not turn, the work goes on in the same direction.
   Side facing_of(bool round, std::optional<Side> label) const {
-    if (!last_side_) return round ? Side::rs : label.value_or(Side::rs);
-    return turn_before_ ? other(*last_side_) : *last_side_;
+    if (!pc_.last_side) return round ? Side::rs : label.value_or(Side::rs);
+    return pc_.turn_before ? other(*pc_.last_side) : *pc_.last_side;
   }
 
   void work_row(const Program& p, bool round, std::uint32_t repeat_of, std::optional<Side> label,
                 std::size_t line) {
     Side facing = facing_of(round, label);
-    fab().rows.push_back({line, next_number_, repeat_of, round, facing});
+    fab().rows.push_back({line, pc_.next_number, repeat_of, round, facing});
     row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
     in_row_ = true;
     row_round_ = round;
@@ -321,15 +386,15 @@ class NeedleSimulator {
     if (label && !round && *label != facing)
       fail(fmt::format("labelled {}, but the {} faces you: {}", side_name(*label),
                        side_name(facing),
-                       !joined_       ? "every row turns the work"
-                       : turn_before_ ? "the work was turned"
-                                      : "the work was not turned"));
+                       !pc_.joined       ? "every row turns the work"
+                       : pc_.turn_before ? "the work was turned"
+                                         : "the work was not turned"));
     begin_row(facing);
     run_nodes(p, p.top_begin, p.top_end);
     end_row();
     in_row_ = false;
-    last_side_ = facing;
-    ++next_number_;
+    pc_.last_side = facing;
+    ++pc_.next_number;
     ++(round ? out_.rounds : out_.rows);
   }
 
@@ -340,11 +405,11 @@ class NeedleSimulator {
     row_ended_ = false;
     pending_.clear();
     last_make_ = std::nullopt;
-    next_link_ = turn_before_ ? YarnLink::turn : YarnLink::shift;
-    if (turn_before_) left_.swap(right_);
+    next_link_ = pc_.turn_before ? YarnLink::turn : YarnLink::shift;
+    if (pc_.turn_before) pc_.left.swap(pc_.right);
     if (row_round_)
       gather_round();
-    else if (!turn_before_)
+    else if (!pc_.turn_before)
       slip_bor_if_next();
     index_left_needle();
   }
@@ -352,49 +417,49 @@ class NeedleSimulator {
   // A row that goes on from the end of a rnd starts, like a rnd, by slipping the marker.
   void slip_bor_if_next() {
     wrap_around();
-    if (left_.empty() || left_.back() != bor_) return;
-    right_.push_back(bor_);
-    left_.pop_back();
+    if (pc_.left.empty() || pc_.left.back() != pc_.bor) return;
+    pc_.right.push_back(pc_.bor);
+    pc_.left.pop_back();
   }
 
   // A rnd runs from here to the beginning-of-round marker (all the way round when the marker
   // is next: it is slipped): the loops before the marker go on the left needle, the marker
   // and the rest behind.
   void gather_round() {
-    std::vector<std::uint32_t> ring(left_.rbegin(), left_.rend());  // from here onwards
-    ring.insert(ring.end(), right_.begin(), right_.end());
-    auto at = std::find(ring.begin(), ring.end(), bor_);
-    if (place_bor_ || at == ring.end()) {
-      left_.assign(ring.rbegin(), ring.rend());
-      right_.clear();
-      if (place_bor_) right_.push_back(bor_ = new_marker());
-      place_bor_ = false;
+    std::vector<std::uint32_t> ring(pc_.left.rbegin(), pc_.left.rend());  // from here onwards
+    ring.insert(ring.end(), pc_.right.begin(), pc_.right.end());
+    auto at = std::find(ring.begin(), ring.end(), pc_.bor);
+    if (pc_.place_bor || at == ring.end()) {
+      pc_.left.assign(ring.rbegin(), ring.rend());
+      pc_.right.clear();
+      if (pc_.place_bor) pc_.right.push_back(pc_.bor = new_marker());
+      pc_.place_bor = false;
       return;
     }
     if (at == ring.begin()) {
       std::rotate(ring.begin(), ring.begin() + 1, ring.end());
       at = ring.end() - 1;
     }
-    left_.assign(std::make_reverse_iterator(at), ring.rend());
-    right_.assign(at, ring.end());
+    pc_.left.assign(std::make_reverse_iterator(at), ring.rend());
+    pc_.right.assign(at, ring.end());
   }
 
   // In the rnd the needle has no end: a row that turns goes on past the last st on the left
   // needle to the first on the right one.
   void wrap_around() {
-    if (!joined_ || row_round_ || !left_.empty()) return;
-    left_.assign(right_.rbegin(), right_.rend());
-    right_.clear();
+    if (!pc_.joined || row_round_ || !pc_.left.empty()) return;
+    pc_.left.assign(pc_.right.rbegin(), pc_.right.rend());
+    pc_.right.clear();
     index_left_needle();
   }
 
   void end_row() {
     const char* what = row_round_ ? "rnd" : "row";
-    if (!row_ended_ && joined_ && !row_round_)
+    if (!row_ended_ && pc_.joined && !row_round_)
       fail("a row worked in the rnd ends where the work turns: end it with w&t or turn");
     if (!row_ended_ && left_loops_ > 0)
       fail(fmt::format("{} left unworked at the end of the {}", sts(left_loops_), what));
-    if (!row_ended_ && !left_.empty())
+    if (!row_ended_ && !pc_.left.empty())
       fail(fmt::format("a marker is left at the end of the {}: slip it (sm) or remove it (rm)",
                        what));
     if (!pending_.empty())
@@ -403,28 +468,30 @@ class NeedleSimulator {
     if (!row_round_ && last_make_ && *last_make_ != HandOp::yo)
       fail(fmt::format("{} at the end of a row: there is no strand after the last st to lift",
                        info(*last_make_).abbreviation));
-    turn_before_ = row_ended_ || !joined_;
+    pc_.turn_before = row_ended_ || !pc_.joined;
   }
 
   // For each place on the left needle, the loops from there to the next marker (the tip is at
   // the back), and whether a marker comes at all: "to m" in constant time.
   void index_left_needle() {
-    to_marker_.resize(left_.size());
-    marker_ahead_.resize(left_.size());
+    to_marker_.resize(pc_.left.size());
+    marker_ahead_.resize(pc_.left.size());
     left_loops_ = 0;
-    for (std::size_t i = 0; i < left_.size(); ++i) {
-      bool marker = is_marker_entry(left_[i]);
+    for (std::size_t i = 0; i < pc_.left.size(); ++i) {
+      bool marker = is_marker_entry(pc_.left[i]);
       to_marker_[i] = marker ? 0 : (i ? to_marker_[i - 1] : 0) + 1;
       marker_ahead_[i] = marker || (i && marker_ahead_[i - 1]);
       left_loops_ += !marker;
     }
   }
 
-  std::uint32_t loops_to_marker() const { return left_.empty() ? 0 : to_marker_[left_.size() - 1]; }
+  std::uint32_t loops_to_marker() const {
+    return pc_.left.empty() ? 0 : to_marker_[pc_.left.size() - 1];
+  }
   // In the round the beginning-of-round marker ends the round: it counts as the last marker.
-  bool end_is_marker() const { return row_round_ && bor_ != kNone; }
+  bool end_is_marker() const { return row_round_ && pc_.bor != kNone; }
   bool marker_ahead() const {
-    return (!left_.empty() && marker_ahead_[left_.size() - 1]) || end_is_marker();
+    return (!pc_.left.empty() && marker_ahead_[pc_.left.size() - 1]) || end_is_marker();
   }
 
   // --- instructions -------------------------------------------------------------------------
@@ -436,9 +503,9 @@ class NeedleSimulator {
   void run_node(const Program& p, const Node& n) {
     switch (n.kind) {
       case Node::Kind::bind_off_all:
-        while (!left_.empty()) {
-          if (is_marker_entry(left_.back()))
-            left_.pop_back();  // binding off removes markers
+        while (!pc_.left.empty()) {
+          if (is_marker_entry(pc_.left.back()))
+            pc_.left.pop_back();  // binding off removes markers
           else
             apply(HandOp::bo);
         }
@@ -451,10 +518,11 @@ class NeedleSimulator {
           bool slips = n.until.kind == Until::Kind::end || n.until.kind == Until::Kind::last;
           std::uint32_t times = whole_repeats(n.until, info(n.op).takes, info(n.op).abbreviation);
           for (std::uint32_t t = 0; t < times; ++t) {
-            while (slips && !left_.empty() && is_marker_entry(left_.back())) apply(HandOp::sm);
+            while (slips && !pc_.left.empty() && is_marker_entry(pc_.left.back()))
+              apply(HandOp::sm);
             apply(n.op);
           }
-          while (n.until.kind == Until::Kind::end && !left_.empty()) apply(HandOp::sm);
+          while (n.until.kind == Until::Kind::end && !pc_.left.empty()) apply(HandOp::sm);
         }
         return;
       case Node::Kind::group:
@@ -497,7 +565,7 @@ class NeedleSimulator {
   std::uint32_t remaining(const Until& u, std::string_view what) const {
     switch (u.kind) {
       case Until::Kind::end:
-        if (joined_ && !row_round_)
+        if (pc_.joined && !row_round_)
           fail(fmt::format("{} to end: a row worked in the rnd has no end; give the count", what));
         return left_loops_;
       case Until::Kind::last:
@@ -542,23 +610,23 @@ class NeedleSimulator {
         double_stitch();
         return;
       case HandOp::pm:
-        right_.push_back(new_marker());
+        pc_.right.push_back(new_marker());
         return;
       case HandOp::sm:
       case HandOp::rm: {
-        if (left_.empty() && end_is_marker()) {  // the beginning-of-round marker
+        if (pc_.left.empty() && end_is_marker()) {  // the beginning-of-round marker
           if (op == HandOp::rm) remove_bor();
           return;
         }
-        if (left_.empty() || !is_marker_entry(left_.back()))
+        if (pc_.left.empty() || !is_marker_entry(pc_.left.back()))
           fail(fmt::format("{}: the next thing on the left needle is {}, not a marker",
-                           info(op).abbreviation, left_.empty() ? "nothing" : "a st"));
-        std::uint32_t marker = left_.back();
-        left_.pop_back();
+                           info(op).abbreviation, pc_.left.empty() ? "nothing" : "a st"));
+        std::uint32_t marker = pc_.left.back();
+        pc_.left.pop_back();
         if (op == HandOp::sm)
-          right_.push_back(marker);
-        else if (marker == bor_)
-          bor_ = kNone;
+          pc_.right.push_back(marker);
+        else if (marker == pc_.bor)
+          pc_.bor = kNone;
         return;
       }
       default:
@@ -573,13 +641,13 @@ class NeedleSimulator {
 
   // w&t: the st just slipped and wrapped goes back to the left needle, and the work turns.
   void wrap_and_turn() {
-    std::uint32_t loop = right_.back();
-    right_.pop_back();
+    std::uint32_t loop = pc_.right.back();
+    pc_.right.pop_back();
     turn_mark_[loop] = kWrapped;
-    left_.push_back(loop);
-    to_marker_.resize(left_.size());
-    marker_ahead_.resize(left_.size());
-    std::size_t i = left_.size() - 1;
+    pc_.left.push_back(loop);
+    to_marker_.resize(pc_.left.size());
+    marker_ahead_.resize(pc_.left.size());
+    std::size_t i = pc_.left.size() - 1;
     to_marker_[i] = (i ? to_marker_[i - 1] : 0) + 1;
     marker_ahead_[i] = i && marker_ahead_[i - 1];
     ++left_loops_;
@@ -589,22 +657,22 @@ class NeedleSimulator {
   // DS: first after a turn, the st worked last before it is pulled up into a double stitch
   // and slipped.
   void double_stitch() {
-    if (position_ != 0 || next_link_ != YarnLink::turn || left_.empty() ||
-        is_marker_entry(left_.back()) || fab().loop_maker[left_.back()] != piece_last_)
+    if (position_ != 0 || next_link_ != YarnLink::turn || pc_.left.empty() ||
+        is_marker_entry(pc_.left.back()) || fab().loop_maker[pc_.left.back()] != pc_.last_stitch)
       fail("DS: only first in a row after a turn, on the st worked last before it");
     Fabric& f = fab();
-    std::uint32_t x = piece_last_;
+    std::uint32_t x = pc_.last_stitch;
     bool plain = (f.type[x] == StitchType::k || f.type[x] == StitchType::p) && f.made[x] == 1 &&
                  f.taken_first[x + 1] - f.taken_first[x] == 1;
     if (!plain)
       fail(fmt::format("DS: {} is not a plain st; a double stitch is made from a k or p",
                        f.describe(x)));
     f.type[x] = StitchType::sr4;
-    std::uint32_t loop = left_.back();
-    left_.pop_back();
+    std::uint32_t loop = pc_.left.back();
+    pc_.left.pop_back();
     --left_loops_;
     turn_mark_[loop] = kDouble;
-    right_.push_back(loop);
+    pc_.right.push_back(loop);
   }
 
   // A loop a short row turned at must be worked with what resolves it, and only such a loop.
@@ -625,9 +693,9 @@ class NeedleSimulator {
   }
 
   void remove_bor() {
-    auto at = std::find(right_.begin(), right_.end(), bor_);
-    if (at != right_.end()) right_.erase(at);
-    bor_ = kNone;
+    auto at = std::find(pc_.right.begin(), pc_.right.end(), pc_.bor);
+    if (at != pc_.right.end()) pc_.right.erase(at);
+    pc_.bor = kNone;
   }
 
   void stitch(HandOp op) {
@@ -638,18 +706,19 @@ class NeedleSimulator {
                        marker_ahead() ? " before the marker" : "", ready));
     std::optional<StitchType> face = rs_face(op, facing_);
     if (!face) wrong_side(op);
-    for (std::uint32_t i = 0; i < oi.takes; ++i) check_turn_loop(op, left_[left_.size() - 1 - i]);
+    for (std::uint32_t i = 0; i < oi.takes; ++i)
+      check_turn_loop(op, pc_.left[pc_.left.size() - 1 - i]);
     std::uint32_t x = new_stitch(*face);
     for (std::uint32_t i = 0; i < oi.takes; ++i) {
-      fab().taken.push_back(left_.back());
-      left_.pop_back();
+      fab().taken.push_back(pc_.left.back());
+      pc_.left.pop_back();
     }
     left_loops_ -= oi.takes;
     fab().taken_first.push_back(static_cast<std::uint32_t>(fab().taken.size()));
     for (const Pending& p : pending_) adopt(x, p.op, p.loop);
     pending_.clear();
-    for (std::uint32_t i = 0; i < oi.makes; ++i) right_.push_back(new_loop(x));
-    live_ = live_ + oi.makes - oi.takes;
+    for (std::uint32_t i = 0; i < oi.makes; ++i) pc_.right.push_back(new_loop(x));
+    pc_.live = pc_.live + oi.makes - oi.takes;
     row_last_stitch_ = x;
     last_make_.reset();
   }
@@ -660,8 +729,8 @@ class NeedleSimulator {
       fail(fmt::format("{} at the start of a row: there is no strand before the first st to lift",
                        info(op).abbreviation));
     std::uint32_t loop = new_loop(kNone);
-    right_.push_back(loop);
-    ++live_;
+    pc_.right.push_back(loop);
+    ++pc_.live;
     last_make_ = op;
     if (row_last_stitch_ == kNone)
       pending_.push_back({op, loop});
@@ -707,12 +776,12 @@ class NeedleSimulator {
     f.row.push_back(row_);
     f.position.push_back(++position_);
     f.made.push_back(0);
-    if (piece_last_ != kNone) {
-      f.yarn_next[piece_last_] = x;
-      f.yarn_link[piece_last_] = next_link_;
+    if (pc_.last_stitch != kNone) {
+      f.yarn_next[pc_.last_stitch] = x;
+      f.yarn_link[pc_.last_stitch] = next_link_;
     }
     next_link_ = YarnLink::course;
-    piece_last_ = x;
+    pc_.last_stitch = x;
     return x;
   }
 
@@ -744,19 +813,25 @@ class NeedleSimulator {
   static constexpr std::uint8_t kPlainLoop = 0, kWrapped = 1, kDouble = 2;
   std::vector<std::uint8_t> turn_mark_;
 
-  // The piece being worked.
-  bool active_ = false, joined_ = false, place_bor_ = false;
-  bool turn_before_ = true;  // the next row starts by turning the work
-  std::uint32_t bor_ = kNone;
-  std::uint32_t next_number_ = 1;
-  std::optional<Side> last_side_;
-  std::vector<std::uint32_t> defined_;  // per row number: the program that worked it
-  std::uint32_t live_ = 0;
-  std::uint32_t piece_last_ = kNone;
+  // The piece being worked: what a knitter sets aside with its yarn and takes up again.
+  struct Piece {
+    std::uint32_t number = 0;  // 1-based, in the order the pieces start
+    bool joined = false, place_bor = false;
+    bool turn_before = true;  // the next row starts by turning the work
+    std::uint32_t bor = kNone;
+    std::uint32_t next_number = 1;
+    std::optional<Side> last_side;
+    std::vector<std::uint32_t> defined;  // per row number: the program that worked it
+    std::uint32_t live = 0;
+    std::uint32_t last_stitch = kNone;       // along its yarn
+    std::vector<std::uint32_t> left, right;  // the needles; tips at the back
+  };
+  bool active_ = false;
+  Piece pc_;
+  std::map<std::uint32_t, Piece> set_aside_;  // by piece number
   YarnLink next_link_ = YarnLink::course;
 
-  // The needles; tips at the back.
-  std::vector<std::uint32_t> left_, right_;
+  // The left needle's index.
   std::vector<std::uint32_t> to_marker_;
   std::vector<std::uint8_t> marker_ahead_;
   std::uint32_t left_loops_ = 0;

@@ -66,8 +66,10 @@ class InstructionWriter {
       section_ = s;
       if (p_.sections.size() > 1)
         add(InstructionLine::Kind::heading, "",
-            fmt::format("Piece {} (yarn {}){}", s + 1, sec.yarn + 1,
-                        sec.joins ? ": three-needle bind-off" : ""));
+            fmt::format("Piece {} (yarn {}){}", sec.piece, sec.yarn + 1,
+                        sec.joins     ? ": three-needle bind-off"
+                        : sec.resumed ? ", taken up again"
+                                      : ""));
       add(InstructionLine::Kind::setup, "", setup_text(sec));
       write_rows(sec.first_row, sec.end_row);
       add(InstructionLine::Kind::finish, "", finish_text(sec));
@@ -84,18 +86,38 @@ class InstructionWriter {
           "of its last row at the needle tip; Piece {} behind, the {} st of its last row at the "
           "tip (slide the sts to the other end of a needle if need be); with a new yarn bind off "
           "all {} pairs.",
-          sec.front + 1, sec.from_last[0] ? "last" : "first", sec.back + 1,
-          sec.from_last[1] ? "last" : "first", sec.pairs);
+          p_.sections[sec.front].piece, sec.from_last[0] ? "last" : "first",
+          p_.sections[sec.back].piece, sec.from_last[1] ? "last" : "first", sec.pairs);
+    if (sec.resumed) return take_up_text(sec);
     std::string text = fmt::format("Cast on {} sts.", sec.cast_on);
     if (sec.in_round) text += " Pm and join to work in the rnd, being careful not to twist.";
     return text;
   }
 
-  std::string finish_text(const PatternSection& sec) const {
-    if (!sec.left_live) return "Fasten off.";
-    std::uint32_t live =
-        sec.end_row > sec.first_row ? p_.rows[sec.end_row - 1].sts_after : sec.cast_on;
-    return fmt::format("Leave the {} sts on a spare needle and cut the yarn.", live);
+  // "Take up Piece 1 again with its yarn. Place the 58 sts of Piece 2 on the needle at the
+  // beginning of the rnd, the first st of its last rnd first."
+  std::string take_up_text(const PatternSection& sec) const {
+    std::string text = fmt::format("Take up Piece {} again with its yarn.", sec.piece);
+    for (const PatternSection::Placement& p : sec.placements) {
+      const PatternSection& spare = p_.sections[p.section];
+      std::string where = p.after == 0 ? "at the beginning of the rnd"
+                                       : fmt::format("after the first {} sts of the rnd", p.after);
+      text += fmt::format(
+          " Place the {} sts of Piece {} on the needle {}, the {} st of its last "
+          "{} first.",
+          p.count, spare.piece, where, p.from_last ? "last" : "first",
+          spare.in_round ? "rnd" : "row");
+    }
+    return text;
+  }
+
+  static std::string finish_text(const PatternSection& sec) {
+    if (sec.set_aside)
+      return fmt::format("Leave the {} sts on the needle and set the yarn aside (do not cut it).",
+                         sec.live_at_end);
+    if (sec.left_live)
+      return fmt::format("Leave the {} sts on a spare needle and cut the yarn.", sec.live_at_end);
+    return "Fasten off.";
   }
 
   std::string rows_word(bool round, bool plural) const {
@@ -208,6 +230,8 @@ class InstructionWriter {
 // What the front matter needs to know about the whole pattern.
 struct Totals {
   bool flat = false, round = false, joins = false;
+  bool partial_bind_off = false;  // a row binds off some of its sts
+  bool spare_needles = false;     // a piece waits on one
   std::uint32_t widest = 0, narrowest_round = 0;
   std::vector<bool> used = std::vector<bool>(kHandOpCount, false);
 };
@@ -217,12 +241,16 @@ Totals totals_of(const HandPattern& p) {
   t.narrowest_round = ~0u;
   for (const PatternSection& s : p.sections) {
     t.joins = t.joins || s.joins;
+    t.spare_needles = t.spare_needles || s.left_live;
     if (s.joins) continue;
     (s.in_round ? t.round : t.flat) = true;
     t.widest = std::max(t.widest, s.cast_on);
     if (s.in_round) t.narrowest_round = std::min(t.narrowest_round, s.cast_on);
   }
   for (const PatternRow& r : p.rows) {
+    auto ops = p.ops_of(r);
+    t.partial_bind_off = t.partial_bind_off || (!r.bind_off && std::find(ops.begin(), ops.end(),
+                                                                         HandOp::bo) != ops.end());
     t.widest = std::max(t.widest, r.sts_after);
     if (r.round && !r.bind_off) t.narrowest_round = std::min(t.narrowest_round, r.sts_after);
   }
@@ -261,8 +289,9 @@ class FrontMatter {
         widest = std::max(widest, p_.rows[r].sts_after);
         ++(p_.rows[r].partial ? short_rows : rows);
       }
-      std::string piece =
-          p_.sections.size() > 1 ? fmt::format("Piece {}: ", &s - &p_.sections[0] + 1) : "";
+      std::string piece = p_.sections.size() > 1 ? fmt::format("Piece {}{}: ", s.piece,
+                                                               s.resumed ? " (taken up again)" : "")
+                                                 : "";
       std::string extra = short_rows ? fmt::format(", plus {} short rows", short_rows) : "";
       items.push_back(fmt::format("{}{}: {}, {} sts at the widest. {}: {}, {} {}{}.", piece,
                                   s.in_round ? "Circumference" : "Width",
@@ -273,15 +302,19 @@ class FrontMatter {
     return items;
   }
 
+  // One line per yarn piece; a piece taken up again goes on with the same yarn.
   std::vector<std::string> yarn() const {
+    std::vector<std::uint64_t> stitches(p_.sections.size() + 1, 0);
+    for (const PatternSection& s : p_.sections) stitches[s.piece] += s.stitches;
     std::vector<std::string> items;
     for (const PatternSection& s : p_.sections) {
-      double metres = std::ceil(s.stitches * gauge_.yarn_cm_per_stitch() / 100 + 0.4);
+      if (s.resumed) continue;
+      double metres = std::ceil(stitches[s.piece] * gauge_.yarn_cm_per_stitch() / 100 + 0.4);
       items.push_back(fmt::format(
           "{}About {:.0f} m ({:.0f} yd) of worsted-weight yarn, estimated from its {} sts at the "
           "gauge below, with 20 cm tails at each end.",
           p_.sections.size() > 1 ? fmt::format("Yarn {}: ", s.yarn + 1) : "", metres,
-          std::ceil(metres / 0.9144), with_commas(s.stitches)));
+          std::ceil(metres / 0.9144), with_commas(stitches[s.piece])));
     }
     return items;
   }
@@ -311,10 +344,9 @@ class FrontMatter {
                                   t_.round ? ", one of them in another colour for the beginning "
                                              "of the round"
                                            : ""));
-    if (t_.joins)
-      items.push_back(
-          "A spare needle for each piece waiting to be joined, and a third for the "
-          "three-needle bind-off.");
+    if (t_.spare_needles)
+      items.push_back("A spare needle (or stitch holder) for each piece left to wait on one.");
+    if (t_.joins) items.push_back("A third needle for the three-needle bind-off.");
     items.push_back("Tapestry needle for weaving in ends.");
     return items;
   }
@@ -386,6 +418,11 @@ class FrontMatter {
           "right needle over the second; work 1 more st; rep from * until 1 st "
           "remains, removing any markers as you come to them; cut the yarn and pull it "
           "through that last loop (fasten off).");
+    if (t_.partial_bind_off)
+      items.push_back(
+          "**Binding off part of a row** (\"BO 8 sts, k40\"): bind off 8 sts as above without "
+          "cutting the yarn; the st left on the right needle is the first st of what follows "
+          "(the first of the 40).");
     return items;
   }
 

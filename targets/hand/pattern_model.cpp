@@ -47,13 +47,6 @@ void check_supported(const Compilation& c) {
           l.taker == kNoStitch ? "is never worked"
                                : "crosses a mismatched edge to " + g.describe(l.taker)));
   }
-  for (const Event& e : c.schedule.events) {
-    if (e.kind == EventKind::hold)
-      unsupported(
-          fmt::format("yarn {} must put its stitches aside at {} until {} is knit; "
-                      "holding and resuming stitches is not covered yet",
-                      e.yarn + 1, g.describe(e.stitch), g.describe(e.waits_for)));
-  }
 }
 
 // Which way each row runs seen from the RS. Along one yarn piece a turn reverses the
@@ -154,18 +147,30 @@ class PatternBuilder {
   }
 
   HandPattern run() && {
+    std::size_t yarns = c_.yarns.size();
+    set_aside_.resize(yarns);
+    section_of_yarn_.resize(yarns, 0);
+    deferred_.resize(yarns);
+    taken_up_.resize(yarns, 0);
     for (const Event& e : c_.schedule.events) {
       switch (e.kind) {
         case EventKind::yarn_start:
           start_section(e.yarn);
           break;
         case EventKind::stitch:
-          // A knitter's row ends where the yarn turns or goes on into the next round.
-          row_.push_back(e.stitch);
-          if (g_.type[e.stitch] != T::tnbo && g_.yarn_link[e.stitch] != YarnLink::course)
-            flush_row();
+          if (taken_up_[e.yarn])
+            deferred_[e.yarn].push_back(e.stitch);
+          else
+            add_stitch(e.stitch);
+          break;
+        case EventKind::hold:
+          if (!taken_up_[e.yarn]) set_section_aside(e.yarn);
+          break;
+        case EventKind::resume:
+          taken_up_[e.yarn] = 1;
           break;
         case EventKind::yarn_end:
+          if (taken_up_[e.yarn]) take_up_section(e.yarn);
           end_section();
           break;
         default:
@@ -178,20 +183,54 @@ class PatternBuilder {
  private:
   PatternSection& section() { return out_.sections.back(); }
 
+  // A knitter's row ends where the yarn turns or goes on into the next round.
+  void add_stitch(StitchId s) {
+    row_.push_back(s);
+    if (g_.type[s] != T::tnbo && g_.yarn_link[s] != YarnLink::course) flush_row();
+  }
+
   void start_section(std::uint32_t yarn) {
-    if (section_of_yarn_.size() <= yarn) section_of_yarn_.resize(yarn + 1, 0);
     section_of_yarn_[yarn] = static_cast<std::uint32_t>(out_.sections.size());
     PatternSection& s = out_.sections.emplace_back();
     s.yarn = yarn;
+    s.piece = ++pieces_;
     s.first_row = s.end_row = static_cast<std::uint32_t>(out_.rows.size());
-    live_ = 0;
-    cast_on_done_ = false;
+    st_.live = 0;
+    st_.cast_on_done = false;
+  }
+
+  // The yarn waits for another piece: its sts stay on the needle.
+  void set_section_aside(std::uint32_t yarn) {
+    flush_row();
+    section().set_aside = true;
+    section().live_at_end = st_.live;
+    section().end_row = static_cast<std::uint32_t>(out_.rows.size());
+    set_aside_[yarn] = st_;
+  }
+
+  // The rest of a yarn set aside, as one section that goes on counting its rows.
+  void take_up_section(std::uint32_t yarn) {
+    const PatternSection& before = out_.sections[section_of_yarn_[yarn]];
+    PatternSection s;
+    s.yarn = yarn;
+    s.piece = before.piece;
+    s.in_round = before.in_round;
+    s.resumed = true;
+    s.first_number = before.first_number + (before.end_row - before.first_row);
+    s.first_row = s.end_row = static_cast<std::uint32_t>(out_.rows.size());
+    section_of_yarn_[yarn] = static_cast<std::uint32_t>(out_.sections.size());
+    out_.sections.push_back(s);
+    st_ = set_aside_[yarn];
+    taken_up_[yarn] = 0;
+    for (StitchId st : deferred_[yarn]) add_stitch(st);
+    deferred_[yarn].clear();
   }
 
   void end_section() {
     if (!row_.empty() && g_.type[row_.front()] == T::tnbo) join_live_sections();
     flush_row();
-    section().left_live = live_ != 0;  // every loop is a join's (check_supported)
+    section().left_live = st_.live != 0;  // every loop is taken by another piece
+    section().live_at_end = st_.live;
     section().end_row = static_cast<std::uint32_t>(out_.rows.size());
   }
 
@@ -217,14 +256,13 @@ class PatternBuilder {
 
   void flush_row() {
     if (row_.empty()) return;
-    section().last_row_ends[0] = row_.front();
-    section().last_row_ends[1] = row_.back();
+    note_last_row_ends();
     section().stitches += row_.size();
-    if (!cast_on_done_)
+    if (!st_.cast_on_done)
       cast_on();
     else
       add_row();
-    previous_link_ = g_.yarn_link[row_.back()];
+    st_.previous_link = g_.yarn_link[row_.back()];
     row_.clear();
   }
 
@@ -233,24 +271,59 @@ class PatternBuilder {
       if (g_.type[s] != T::co)
         unsupported(fmt::format("yarn {} starts with {}, not with a row of cast-on stitches",
                                 section().yarn + 1, g_.describe(s)));
-    section().cast_on = live_ = behind_ = static_cast<std::uint32_t>(row_.size());
-    ahead_ = 0;
+    section().cast_on = st_.live = st_.behind = static_cast<std::uint32_t>(row_.size());
+    st_.ahead = 0;
     section().in_round = g_.yarn_link[row_.back()] == YarnLink::shift;
-    cast_on_done_ = true;
+    st_.cast_on_done = true;
+  }
+
+  // The first and last st of the row that stay live (not bound off): the ends a spare needle
+  // is taken from.
+  void note_last_row_ends() {
+    auto live = [&](StitchId s) { return info(g_.type[s]).loops_out > 0; };
+    auto first = std::find_if(row_.begin(), row_.end(), live);
+    auto last = std::find_if(row_.rbegin(), row_.rend(), live);
+    if (first == row_.end()) return;
+    section().last_row_ends[0] = *first;
+    section().last_row_ends[1] = *last;
+  }
+
+  // When a piece taken up again first works sts of pieces left on spare needles, the knitter
+  // places them into its rnd where they are worked.
+  void place_spare_needles() {
+    std::uint32_t taken = 0;
+    const std::uint32_t self = section_of_yarn_[section().yarn];
+    for (StitchId s : row_)
+      for (std::uint32_t l : g_.loops_taken_by(s)) {
+        std::uint32_t from = section_of_yarn_[c_.yarns.piece_of[g_.loops[l].maker]];
+        bool placed =
+            std::any_of(section().placements.begin(), section().placements.end(),
+                        [&](const PatternSection::Placement& p) { return p.section == from; });
+        if (from != self && !placed) {
+          const PatternSection& spare = out_.sections[from];
+          bool from_last = g_.loops[l].maker == spare.last_row_ends[1];
+          section().placements.push_back({from, spare.live_at_end, taken, from_last});
+          st_.live += spare.live_at_end;
+        }
+        ++taken;
+      }
   }
 
   void add_row() {
+    if (section().resumed && section().first_row == out_.rows.size()) place_spare_needles();
     PatternRow r;
     bool turns = g_.yarn_link[row_.back()] == YarnLink::turn;
     // In the rnd a row that turns is a short row; a rnd goes on around.
     r.round = section().in_round && !turns;
-    r.number = static_cast<std::uint32_t>(out_.rows.size()) - section().first_row + 1;
+    r.number =
+        static_cast<std::uint32_t>(out_.rows.size()) - section().first_row + section().first_number;
     r.side = (hand_.left_to_right(row_.front()) != out_.mirror) ? Side::ws : Side::rs;
     r.first_op = static_cast<std::uint32_t>(out_.ops.size());
-    r.sts_before = live_;
-    r.bind_off = g_.type[row_.front()] == T::bo;
-    if (previous_link_ == YarnLink::turn) std::swap(ahead_, behind_);
-    if (double_stitch_next_) slip_double_stitch();
+    r.sts_before = st_.live;
+    r.bind_off =
+        std::all_of(row_.begin(), row_.end(), [&](StitchId s) { return g_.type[s] == T::bo; });
+    if (st_.previous_link == YarnLink::turn) std::swap(st_.ahead, st_.behind);
+    if (st_.double_stitch_next) slip_double_stitch();
     std::uint32_t takes = 0;
     for (StitchId s : row_) {
       append_ops(s, r);
@@ -260,19 +333,19 @@ class PatternBuilder {
     end_row(r, turns, takes);
     check_make_one_has_a_strand(r);
     r.end_op = static_cast<std::uint32_t>(out_.ops.size());
-    r.sts_after = live_;
+    r.sts_after = st_.live;
     out_.rows.push_back(r);
   }
 
   // A row that turns with sts left beyond it says so; German short rows make the st it turned
   // at a double stitch first in the next row (at the edge too).
   void end_row(PatternRow& r, bool turns, std::uint32_t takes) {
-    r.short_row = turns && (section().in_round || ahead_ > 0);
+    r.short_row = turns && (section().in_round || st_.ahead > 0);
     if (r.short_row && out_.ops.back() != HandOp::wt) out_.ops.push_back(HandOp::turn);
-    double_stitch_next_ = out_.turns == TurnMethod::german && g_.type[row_.back()] == T::sr4;
+    st_.double_stitch_next = out_.turns == TurnMethod::german && g_.type[row_.back()] == T::sr4;
     // A rnd works every st, unless it starts where short rows ended (it then goes on to the
     // beginning of the rnd); a flat row ends at the edge or turns short of it.
-    bool full_round = r.round && previous_link_ != YarnLink::turn;
+    bool full_round = r.round && st_.previous_link != YarnLink::turn;
     if (full_round && takes != r.sts_before)
       unsupported(fmt::format("the row of {} works {} of the {} live stitches",
                               g_.describe(row_.front()), takes, r.sts_before));
@@ -284,21 +357,21 @@ class PatternBuilder {
   // ends at the edge when none is ahead). A wrapped st goes back to the left needle.
   void move_loops(StitchId s) {
     const StitchTypeInfo& t = info(g_.type[s]);
-    live_ = live_ + t.loops_out - t.loops_in;
+    st_.live = st_.live + t.loops_out - t.loops_in;
     if (section().in_round || (g_.type[s] == T::sr4 && out_.turns == TurnMethod::wrap_and_turn))
       return;
-    if (ahead_ < t.loops_in)
+    if (st_.ahead < t.loops_in)
       unsupported(fmt::format("{} works past the end of the needle", g_.describe(s)));
-    ahead_ -= t.loops_in;
-    behind_ += t.loops_out;
+    st_.ahead -= t.loops_in;
+    st_.behind += t.loops_out;
   }
 
   void slip_double_stitch() {
     out_.ops.push_back(HandOp::ds);
-    double_stitch_next_ = false;
+    st_.double_stitch_next = false;
     if (section().in_round) return;
-    --ahead_;
-    ++behind_;
+    --st_.ahead;
+    ++st_.behind;
   }
 
   // Does `s` work the loop a short row turned at?
@@ -331,11 +404,6 @@ class PatternBuilder {
     if (type == T::co)
       unsupported(fmt::format("{} casts on in the middle of the work, which is not covered yet",
                               g_.describe(s)));
-    if ((type == T::bo) != r.bind_off)
-      unsupported(
-          fmt::format("the row of {} binds off only some of its stitches, which is not "
-                      "covered yet",
-                      g_.describe(s)));
     std::optional<Working> w = working_of(out_.mirror ? mirrored(type) : type, r.side);
     SKEIN_ASSERT(w.has_value(), "every supported stitch type has a hand working");
     out_.ops.push_back(works_a_turn(s) ? resolving(w->op, s) : w->op);
@@ -355,14 +423,24 @@ class PatternBuilder {
   const Compilation& c_;
   const KnitGraph& g_;
   Handedness hand_;
+  std::uint32_t pieces_ = 0;
   HandPattern out_;
   std::vector<StitchId> row_;
-  std::uint32_t live_ = 0;
-  std::uint32_t ahead_ = 0, behind_ = 0;  // loops on the left and right needle (flat pieces)
-  std::vector<std::uint32_t> section_of_yarn_;
-  bool double_stitch_next_ = false;
-  bool cast_on_done_ = false;
-  YarnLink previous_link_ = YarnLink::none;
+  // What the knitter has on the needle for the yarn being worked (kept while it is set aside).
+  struct Needle {
+    std::uint32_t live = 0;
+    std::uint32_t ahead = 0, behind = 0;  // loops on the left and right needle (flat pieces)
+    bool double_stitch_next = false;
+    bool cast_on_done = false;
+    YarnLink previous_link = YarnLink::none;
+  };
+  Needle st_;
+  std::vector<Needle> set_aside_;               // per yarn
+  std::vector<std::uint32_t> section_of_yarn_;  // its latest section
+  // A yarn taken up again is written from there to its end in one go, after the pieces it
+  // waited for: its stitches wait here meanwhile.
+  std::vector<std::vector<StitchId>> deferred_;  // per yarn
+  std::vector<std::uint8_t> taken_up_;           // per yarn
 };
 
 }  // namespace

@@ -40,7 +40,19 @@ struct PatternSection {
   bool in_round = false;                     // joined to work in the round after the cast-on
   std::uint32_t first_row = 0, end_row = 0;  // into HandPattern::rows
   std::uint64_t stitches = 0;                // model stitches worked with this yarn
-  bool left_live = false;                    // ends with its sts on a spare needle, to be joined
+  std::uint32_t piece = 0;         // 1-based, in the order pieces start (kept when taken up)
+  std::uint32_t first_number = 1;  // of its first row: a piece taken up again counts on
+  bool left_live = false;          // ends with its sts on a spare needle, to be joined or placed
+  bool set_aside = false;          // ends with its sts and yarn set aside, to be taken up again
+  bool resumed = false;            // takes up a piece set aside
+  std::uint32_t live_at_end = 0;
+  // Sts of another section's spare needle placed into the rnd when this one is taken up,
+  // `after` sts from the beginning of the rnd, that needle's last st first if `from_last`.
+  struct Placement {
+    std::uint32_t section, count, after;
+    bool from_last;
+  };
+  std::vector<Placement> placements;
   // A join: three-needle bind-off of two sections left live (front, back), with a new yarn.
   bool joins = false;
   std::uint32_t front = 0, back = 0;   // section indices

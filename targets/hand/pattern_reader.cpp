@@ -136,6 +136,8 @@ class SentenceReader {
     }
     if (mentions(sentence, "fasten off")) return add({Step::Kind::fasten_off, line_no_});
     if (c.eat("leave")) return leave(c);
+    if (c.eat("take") && c.eat("up")) return take_up(c);
+    if (c.eat("place")) return place(c);
     if (c.eat("three-needle") && c.eat("bind-off")) return three_needle_bind_off(c);
     fail(
         "expected a row ('Row 3 (RS): ...', 'Rnd 5: ...'), 'Cast on N sts', 'Pm and join to "
@@ -177,15 +179,58 @@ class SentenceReader {
     add(step);
   }
 
-  // "Leave the 16 sts on a spare needle and cut the yarn".
+  // "Leave the 16 sts on a spare needle and cut the yarn", "Leave the 96 sts on the needle and
+  // set the yarn aside (do not cut it)".
   void leave(Cursor& c) {
     Step step{Step::Kind::leave, line_no_};
     c.eat("the");
     step.count = need_number(c, "the number of sts left on the needle");
-    need(c.eat_any({"sts", "st"}) && c.eat("on") && c.eat("a") && c.eat("spare") &&
-             c.eat("needle") && c.eat("and") && c.eat("cut") && c.eat("the") && c.eat("yarn"),
-         c, "'sts on a spare needle and cut the yarn'");
+    need_words(c, {"sts", "on"}, "'sts on'");
+    if (c.eat("the")) {
+      step.kind = Step::Kind::set_aside;
+      need_words(c, {"needle", "and", "set", "the", "yarn", "aside"},
+                 "'the needle and set the yarn aside'");
+      if (c.eat_char('(')) need_words(c, {"do", "not", "cut", "it", ")"}, "'(do not cut it)'");
+    } else {
+      need_words(c, {"a", "spare", "needle", "and", "cut", "the", "yarn"},
+                 "'a spare needle and cut the yarn' or 'the needle and set the yarn aside'");
+    }
     need(c.done(), c, "the end of the sentence");
+    add(step);
+  }
+
+  // "Take up Piece 1 again with its yarn".
+  void take_up(Cursor& c) {
+    Step step{Step::Kind::take_up, line_no_};
+    need(c.eat("piece"), c, "'Take up Piece N again'");
+    step.number = need_number(c, "a piece number");
+    need_words(c, {"again", "with", "its", "yarn"}, "'again with its yarn'");
+    need(c.done(), c, "the end of the sentence");
+    add(step);
+  }
+
+  // "Place the 58 sts of Piece 2 on the needle at the beginning of the rnd (or: after the
+  // first 106 sts of the rnd), the first st of its last rnd first".
+  void place(Cursor& c) {
+    Step step{Step::Kind::place, line_no_};
+    c.eat("the");
+    step.count = need_number(c, "the number of sts to place");
+    need_words(c, {"sts", "of", "piece"}, "'sts of Piece N'");
+    step.number = need_number(c, "a piece number");
+    need_words(c, {"on", "the", "needle"}, "'on the needle'");
+    if (c.eat("after")) {
+      need_words(c, {"the", "first"}, "'after the first N sts'");
+      step.last = need_number(c, "how many sts come before them");
+      need(c.eat_any({"sts", "st"}), c, "'sts'");
+    } else {
+      need_words(c, {"at", "the", "beginning"}, "'at the beginning' or 'after the first N sts'");
+    }
+    need_words(c, {"of", "the", "rnd", ",", "the"}, "'of the rnd, the first (or last) st'");
+    step.from_last[0] = c.eat("last");
+    need(step.from_last[0] || c.eat("first"), c, "'first' or 'last'");
+    need_words(c, {"st", "of", "its", "last"}, "'st of its last rnd'");
+    need(c.eat_any({"rnd", "row"}), c, "'rnd' or 'row'");
+    need(c.eat("first") && c.done(), c, "'first' and the end of the sentence");
     add(step);
   }
 

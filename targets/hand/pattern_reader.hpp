@@ -53,6 +53,9 @@ struct Step {
     work_even,    // "Knit every rnd until <count> rnds in all": op is k or p
     fasten_off,
     leave,                  // "Leave the <count> sts on a spare needle and cut the yarn"
+    set_aside,              // "Leave the <count> sts on the needle and set the yarn aside"
+    take_up,                // "Take up Piece <number> again with its yarn"
+    place,                  // "Place the <count> sts of Piece <number> ... first <last> sts"
     three_needle_bind_off,  // Piece <number> in front, Piece <last> behind, <count> pairs;
                             // from_last: which ends are at the tips (front, back)
   };
