@@ -109,7 +109,6 @@ TEST(HandTarget, StitchesNotCoveredYetAreNamed) {
   using M = MismatchYarn::Kind;
   const std::pair<StitchMesh, const char*> cases[] = {
       {testing::join_mesh(M::own), "worked with its own yarn"},
-      {meeting_sheets(Meeting::split, 6, 3, 3, M::extra, false, 1), "cast-on along a split (sco)"},
   };
   for (const auto& [mesh, named] : cases) {
     Compilation c = compile_stitch_mesh(mesh, "uncovered");

@@ -1,6 +1,7 @@
 // Several pieces in hand patterns: pieces left on spare needles and joined by a three-needle
-// bind-off with a new yarn, or set aside and taken up again with other pieces placed into their
-// rnd (the sweater), written and proven; and the simulator's reasons for rejecting them.
+// bind-off with a new yarn, pieces worked on from both sides of a provisional cast-on (a
+// split), pieces set aside and taken up again with others placed into their rnd (the sweater):
+// written and proven; and the simulator's reasons for rejecting them.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -83,9 +84,9 @@ TEST(HandJoins, RejectsAJoinThatCannotBeWorkedWithTheReason) {
   EXPECT_EQ(failure_of(pieces + joined(1, 2, 16)),
             "p.md:8: three-needle bind-off: 16 sts on front needle, 15 on back");
   EXPECT_EQ(failure_of(pieces + joined(1, 3, 16)),
-            "p.md:8: three-needle bind-off: Piece 3 is not waiting on a spare needle");
+            "p.md:8: three-needle bind-off: the sts of Piece 3 are not waiting on a spare needle");
   EXPECT_EQ(failure_of(pieces),
-            "p.md:7: the sts of Piece 1 are left on a spare needle, never joined");
+            "p.md:7: the sts of Piece 1 are left on a spare needle, never worked");
   EXPECT_EQ(failure_of("Cast on 4 sts.\nRow 1 (RS): Knit.\n"
                        "Leave the 5 sts on a spare needle and cut the yarn.\n"),
             "p.md:3: Leave the sts: the pattern says 5 sts, but 4 sts are on the needle");
@@ -96,6 +97,59 @@ TEST(HandJoins, RejectsAJoinThatCannotBeWorkedWithTheReason) {
   EXPECT_EQ(failure_of("Cast on 4 sts.\nLeave the 4 sts on a spare needle and cut the yarn.\n"
                        "Cast on 4 sts.\nLeave the 4 sts on a spare needle and cut the yarn.\n" +
                        joined(2, 1, 4) + "Fasten off.\n"),
+            "");
+}
+
+TEST(HandSplits, TheSplitFixturesAreProvenInEveryFormat) {
+  using M = MismatchYarn::Kind;
+  const std::pair<StitchMesh, const char*> cases[] = {
+      {testing::split_mesh(M::extra), "Join a new yarn to the 3 sts of Piece 1, the first st"},
+      {testing::split_mesh(M::own), "Join a new yarn to the 3 loops of Piece 1's chain"},
+      {testing::split_mesh(M::own, true), "Join a new yarn to the 3 loops of Piece 1's chain"}};
+  for (const auto& [mesh, line] : cases) {
+    Compilation c = compile_stitch_mesh(mesh, "split fixture");
+    std::string pattern = emit(c, "hand");
+    EXPECT_NE(pattern.find("Cast on 3 sts with a provisional cast-on.\n"), std::string::npos)
+        << pattern;
+    EXPECT_NE(pattern.find(line), std::string::npos) << pattern;
+    EXPECT_NE(pattern.find("**Provisional cast-on**"), std::string::npos);
+    for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
+      VerifyReport report = verify(c, target, emit(c, target));
+      EXPECT_TRUE(report.proven) << target << ": " << report.summary;
+    }
+  }
+}
+
+// Two flat pieces of random stitches knit away from one line (generate.hpp), cast on along it
+// with a new yarn or with either piece's own.
+TEST(HandSplits, RandomSplitSheetsAreProven) {
+  const MismatchYarn::Kind kYarns[] = {MismatchYarn::Kind::extra, MismatchYarn::Kind::own};
+  for (std::uint32_t trial = 0; trial < 40; ++trial) {
+    Compilation c = compile_stitch_mesh(
+        meeting_sheets(Meeting::split, 2 + trial % 9, 2 + trial % 5, 2 + (trial / 5) % 6,
+                       kYarns[trial % 2], trial % 4 < 2, trial),
+        "split sheets");
+    ASSERT_TRUE(c.knittability.knittable) << check_report(c);
+    std::string pattern = emit(c, "hand");
+    VerifyReport report = verify(c, "hand", pattern);
+    ASSERT_TRUE(report.proven) << "trial " << trial << ": " << report.summary << "\n" << pattern;
+  }
+}
+
+TEST(HandSplits, RejectsWorkingASplitWrongWithTheReason) {
+  const std::string cast_on = "Cast on 4 sts with a provisional cast-on.\nRow 1 (WS): Purl.\n";
+  const std::string bound_off = cast_on + "Row 2 (RS): BO all sts.\nFasten off.\n";
+  EXPECT_EQ(failure_of(bound_off),
+            "p.md:4: the chain of Piece 1 is left on a spare needle, never worked");
+  EXPECT_EQ(failure_of(bound_off + "Join a new yarn to the 5 loops of Piece 1's chain, the "
+                                   "first st cast on at the tip.\n"),
+            "p.md:5: Join a new yarn: the pattern says 5 sts, but the needle holds 4");
+  EXPECT_EQ(failure_of(bound_off + "Join a new yarn to the 4 sts of Piece 1, the first st cast "
+                                   "on at the tip.\n"),
+            "p.md:5: Join a new yarn: the sts of Piece 1 are not waiting on a spare needle");
+  EXPECT_EQ(failure_of(bound_off + "Join a new yarn to the 4 loops of Piece 1's chain, the "
+                                   "first st cast on at the tip.\nRow 1 (RS): Knit.\n"
+                                   "Row 2 (WS): BO all sts.\nFasten off.\n"),
             "");
 }
 

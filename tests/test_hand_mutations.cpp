@@ -354,6 +354,15 @@ TEST(HandMutations, SectionMarkerPatternsRejectEveryEditThatChangesTheFabric) {
           "wedges"));
 }
 
+TEST(HandMutations, SplitsRejectEveryEditThatChangesTheFabric) {
+  mutate_and_judge("split fixture",
+                   compile_stitch_mesh(testing::split_mesh(MismatchYarn::Kind::extra), "split"));
+  mutate_and_judge(
+      "split sheets (own yarn)",
+      compile_stitch_mesh(meeting_sheets(Meeting::split, 5, 3, 4, MismatchYarn::Kind::own, true, 7),
+                          "split sheets"));
+}
+
 TEST(HandMutations, JoinsRejectEveryEditThatChangesTheFabric) {
   mutate_and_judge("join fixture",
                    compile_stitch_mesh(testing::join_mesh(MismatchYarn::Kind::extra), "join"));

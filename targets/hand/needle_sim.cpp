@@ -97,7 +97,10 @@ class NeedleSimulator {
                            fab().piece_first.size() + 1, s.number));
         break;
       case Step::Kind::cast_on:
-        cast_on(s.count);
+        cast_on(s.count, s.provisional);
+        break;
+      case Step::Kind::join_spare:
+        join_spare(s);
         break;
       case Step::Kind::join_round:
         join(s.marker);
@@ -134,19 +137,41 @@ class NeedleSimulator {
 
   // --- pieces -------------------------------------------------------------------------------
 
-  void cast_on(std::uint32_t n) {
+  // A provisional cast-on makes each st with two loops (a cast-on along a split): one on the
+  // needle, one in the waste-yarn chain, which waits on a spare needle for the other side.
+  void cast_on(std::uint32_t n, bool provisional) {
     if (active_ && pc_.live > 0)
       fail(fmt::format("Cast on: the piece before still has {} on the needle", sts(pc_.live)));
     if (n == 0) fail("Cast on: no sts to cast on");
     start_piece();
     fab().rows.push_back({0, 0, 0, false, Side::rs});
     row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
+    facing_ = provisional ? Side::ws : Side::rs;  // the needle's loop first, seen from the RS
     for (std::uint32_t i = 0; i < n; ++i) {
-      std::uint32_t x = new_stitch(StitchType::co);
+      std::uint32_t x = new_stitch(provisional ? StitchType::sco : StitchType::co);
       fab().taken_first.push_back(static_cast<std::uint32_t>(fab().taken.size()));
       pc_.right.push_back(new_loop(x));
+      if (provisional) spare_needles_[{pc_.number, kChain}].push_back(new_loop(x));
     }
     pc_.live = n;
+  }
+
+  // A new piece worked from a spare needle's sts with a new yarn.
+  void join_spare(const Step& s) {
+    if (active_ && pc_.live > 0)
+      fail(fmt::format("Join a new yarn: the piece before still has {} on the needle",
+                       sts(pc_.live)));
+    std::vector<std::uint32_t> loops =
+        spare_needle(s.number, s.from_last[0], "Join a new yarn", s.provisional);
+    if (loops.size() != s.count)
+      fail(fmt::format("Join a new yarn: the pattern says {}, but the needle holds {}",
+                       sts(s.count), loops.size()));
+    spare_needles_.erase({s.number, s.provisional ? kChain : kNeedle});
+    start_piece();
+    fab().rows.push_back({0, 0, 0, false, Side::rs});
+    row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
+    pc_.right.assign(loops.rbegin(), loops.rend());
+    pc_.live = s.count;
   }
 
   // A new piece with its own yarn and needles.
@@ -219,7 +244,7 @@ class NeedleSimulator {
     pc_.right.insert(pc_.right.end(), ring.begin(), ring.end());
     pc_.left.clear();
     pc_.live += s.count;
-    spare_needles_.erase(s.number);
+    spare_needles_.erase({s.number, kNeedle});
   }
 
   // The loops around the needle from the beginning-of-round marker on (markers left out).
@@ -235,7 +260,7 @@ class NeedleSimulator {
   // The piece's live sts wait on a spare needle, in the order its last row worked them.
   void leave(std::uint32_t n) {
     check_live(n, "Leave the sts");
-    std::vector<std::uint32_t>& spare = spare_needles_[pc_.number];
+    std::vector<std::uint32_t>& spare = spare_needles_[{pc_.number, kNeedle}];
     for (std::uint32_t entry : pc_.right)
       if (!is_marker_entry(entry)) spare.push_back(entry);
     pc_.right.clear();
@@ -269,16 +294,17 @@ class NeedleSimulator {
       fab().taken.push_back(b[i]);
       fab().taken_first.push_back(static_cast<std::uint32_t>(fab().taken.size()));
     }
-    spare_needles_.erase(front);
-    spare_needles_.erase(back);
+    spare_needles_.erase({front, kNeedle});
+    spare_needles_.erase({back, kNeedle});
   }
 
   // The sts from the needle tip: the first or the last st of the piece's last row.
-  std::vector<std::uint32_t> spare_needle(std::uint32_t piece, bool from_last,
-                                          const char* what) const {
-    auto at = spare_needles_.find(piece);
+  std::vector<std::uint32_t> spare_needle(std::uint32_t piece, bool from_last, const char* what,
+                                          bool chain = false) const {
+    auto at = spare_needles_.find({piece, chain ? kChain : kNeedle});
     if (at == spare_needles_.end())
-      fail(fmt::format("{}: Piece {} is not waiting on a spare needle", what, piece));
+      fail(fmt::format("{}: {} of Piece {} {} not waiting on a spare needle", what,
+                       chain ? "the chain" : "the sts", piece, chain ? "is" : "are"));
     std::vector<std::uint32_t> loops = at->second;
     if (from_last) std::reverse(loops.begin(), loops.end());
     return loops;
@@ -290,8 +316,11 @@ class NeedleSimulator {
       throw StepFailure{
           fmt::format("Piece {} is set aside and never taken up again", set_aside_.begin()->first)};
     if (!spare_needles_.empty())
-      throw StepFailure{fmt::format("the sts of Piece {} are left on a spare needle, never joined",
-                                    spare_needles_.begin()->first)};
+      throw StepFailure{
+          fmt::format("the {} of Piece {} {} left on a spare needle, never worked",
+                      spare_needles_.begin()->first.second == kChain ? "chain" : "sts",
+                      spare_needles_.begin()->first.first,
+                      spare_needles_.begin()->first.second == kChain ? "is" : "are")};
     if (active_ && pc_.live > 0)
       throw StepFailure{fmt::format("the pattern ends with {} still on the needle", sts(pc_.live))};
   }
@@ -807,7 +836,9 @@ class NeedleSimulator {
   std::vector<Program> work_even_;  // "k to end", "p to end"
 
   // Per piece number (1-based): the sts it left on a spare needle.
-  std::map<std::uint32_t, std::vector<std::uint32_t>> spare_needles_;
+  // (and with a provisional cast-on, the loops of its chain).
+  static constexpr std::uint32_t kNeedle = 0, kChain = 1;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> spare_needles_;
 
   // Per loop: whether a short row turned at it, and how.
   static constexpr std::uint8_t kPlainLoop = 0, kWrapped = 1, kDouble = 2;

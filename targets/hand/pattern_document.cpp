@@ -89,7 +89,9 @@ class InstructionWriter {
           p_.sections[sec.front].piece, sec.from_last[0] ? "last" : "first",
           p_.sections[sec.back].piece, sec.from_last[1] ? "last" : "first", sec.pairs);
     if (sec.resumed) return take_up_text(sec);
-    std::string text = fmt::format("Cast on {} sts.", sec.cast_on);
+    if (sec.starts_from) return join_spare_text(*sec.starts_from);
+    std::string text = fmt::format("Cast on {} sts{}.", sec.cast_on,
+                                   sec.provisional ? " with a provisional cast-on" : "");
     if (sec.in_round) text += " Pm and join to work in the rnd, being careful not to twist.";
     return text;
   }
@@ -109,6 +111,14 @@ class InstructionWriter {
           spare.in_round ? "rnd" : "row");
     }
     return text;
+  }
+
+  // "Join a new yarn to the 3 loops of Piece 1's chain, the first st cast on at the tip."
+  std::string join_spare_text(const PatternSection::Start& start) const {
+    const PatternSection& spare = p_.sections[start.section];
+    return fmt::format("Join a new yarn to the {} {} of Piece {}{}, the {} st cast on at the tip.",
+                       spare.cast_on, start.chain ? "loops" : "sts", spare.piece,
+                       start.chain ? "'s chain" : "", start.from_last ? "last" : "first");
   }
 
   static std::string finish_text(const PatternSection& sec) {
@@ -162,8 +172,10 @@ class InstructionWriter {
       auto [period, times] = best_block(i, end);
       std::uint32_t last = i + period * times - 1;
       const PatternRow& r = p_.rows[i];
+      // The first flat row of a piece keeps its label: it says which side is the RS.
+      bool sided = !r.round && i == first;
       if (times > 1 && period == 1 && (texts_[i] == "Knit" || texts_[i] == "Purl") &&
-          !knitspeak()) {
+          !knitspeak() && !sided) {
         add(InstructionLine::Kind::repeat, "", work_even_text(r, p_.rows[last], first, i));
       } else {
         for (std::uint32_t k = 0; k < period; ++k) row_line(i + k);
@@ -232,6 +244,7 @@ struct Totals {
   bool flat = false, round = false, joins = false;
   bool partial_bind_off = false;  // a row binds off some of its sts
   bool spare_needles = false;     // a piece waits on one
+  bool provisional = false;       // a provisional cast-on
   std::uint32_t widest = 0, narrowest_round = 0;
   std::vector<bool> used = std::vector<bool>(kHandOpCount, false);
 };
@@ -241,7 +254,8 @@ Totals totals_of(const HandPattern& p) {
   t.narrowest_round = ~0u;
   for (const PatternSection& s : p.sections) {
     t.joins = t.joins || s.joins;
-    t.spare_needles = t.spare_needles || s.left_live;
+    t.spare_needles = t.spare_needles || s.left_live || s.provisional;
+    t.provisional = t.provisional || s.provisional;
     if (s.joins) continue;
     (s.in_round ? t.round : t.flat) = true;
     t.widest = std::max(t.widest, s.cast_on);
@@ -405,6 +419,13 @@ class FrontMatter {
           "cast-on stitch with the working yarn. The marker then sits at the start of "
           "every round: slip it as you come to it.");
     if (p_.short_rows) items.push_back(short_rows_technique());
+    if (t_.provisional)
+      items.push_back(
+          "**Provisional cast-on** (a cast-on along a split): with waste yarn crochet a chain a "
+          "few sts longer than needed; with the working yarn pick up and knit 1 st through the "
+          "back bump of each chain st. The sts on the needle are one side of the split; where "
+          "the pattern works \"the loops of its chain\", unzip the waste yarn and put the live "
+          "loops on a needle: they are the other side.");
     if (t_.joins)
       items.push_back(
           "**Three-needle bind-off:** hold the two needles parallel, tips to the right; insert "

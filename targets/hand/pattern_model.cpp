@@ -14,8 +14,9 @@ namespace {
 
 using T = StitchType;
 
-constexpr std::array kSupported = {T::k,  T::p,     T::co,  T::bo,    T::kfb,  T::m1l, T::m1r,
-                                   T::yo, T::k2tog, T::ssk, T::p2tog, T::s2kp, T::sr4, T::tnbo};
+constexpr std::array kSupported = {T::k,     T::p,    T::co,  T::bo,    T::kfb,
+                                   T::m1l,   T::m1r,  T::yo,  T::k2tog, T::ssk,
+                                   T::p2tog, T::s2kp, T::sr4, T::tnbo,  T::sco};
 
 [[noreturn]] void unsupported(const std::string& what) {
   throw Error(fmt::format("hand target: {}", what));
@@ -40,9 +41,10 @@ void check_supported(const Compilation& c) {
                       g.describe(group.own_side)));
   for (const Loop& l : g.loops) {
     bool joined = l.kind == LoopKind::joined && l.taker != kNoStitch && g.type[l.taker] == T::tnbo;
-    if ((l.kind != LoopKind::wale && !joined) || l.taker == kNoStitch)
+    bool split = l.kind == LoopKind::split && l.maker != kNoStitch && g.type[l.maker] == T::sco;
+    if ((l.kind != LoopKind::wale && !joined && !split) || l.taker == kNoStitch)
       unsupported(fmt::format(
-          "the loop {} makes {}: hand patterns cover loops between rows and joins only",
+          "the loop {} makes {}: hand patterns cover loops between rows, joins and splits only",
           g.describe(l.maker),
           l.taker == kNoStitch ? "is never worked"
                                : "crosses a mismatched edge to " + g.describe(l.taker)));
@@ -258,6 +260,8 @@ class PatternBuilder {
     if (row_.empty()) return;
     note_last_row_ends();
     section().stitches += row_.size();
+    if (!st_.cast_on_done && g_.type[row_.front()] != T::co && g_.type[row_.front()] != T::sco)
+      start_from_spare_needle();
     if (!st_.cast_on_done)
       cast_on();
     else
@@ -266,14 +270,36 @@ class PatternBuilder {
     row_.clear();
   }
 
+  // A cast-on, or (sco: a cast-on along a split) a provisional cast-on whose chain's loops are
+  // the other side's.
   void cast_on() {
+    T first = g_.type[row_.front()];
     for (StitchId s : row_)
-      if (g_.type[s] != T::co)
+      if (g_.type[s] != first)
         unsupported(fmt::format("yarn {} starts with {}, not with a row of cast-on stitches",
                                 section().yarn + 1, g_.describe(s)));
+    section().provisional = first == T::sco;
     section().cast_on = st_.live = st_.behind = static_cast<std::uint32_t>(row_.size());
     st_.ahead = 0;
     section().in_round = g_.yarn_link[row_.back()] == YarnLink::shift;
+    st_.cast_on_done = true;
+  }
+
+  // A piece whose yarn starts on the sts of a provisional cast-on (one side of a split): it
+  // works them as they wait on the spare needle (or on its chain, the loops' second slot).
+  void start_from_spare_needle() {
+    const Loop& first = g_.loops[g_.loops_taken_by(row_.front())[0]];
+    if (first.maker == kNoStitch || g_.type[first.maker] != T::sco)
+      unsupported(
+          fmt::format("yarn {} starts with {}, neither with a cast-on nor on the sts of a "
+                      "cast-on along a split",
+                      section().yarn + 1, g_.describe(row_.front())));
+    std::uint32_t from = section_of_yarn_[c_.yarns.piece_of[first.maker]];
+    const PatternSection& spare = out_.sections[from];
+    section().starts_from =
+        PatternSection::Start{from, first.maker_slot == 1, first.maker == spare.last_row_ends[1]};
+    st_.live = st_.ahead = spare.cast_on;
+    st_.behind = 0;
     st_.cast_on_done = true;
   }
 
@@ -401,9 +427,10 @@ class PatternBuilder {
                                                                  : HandOp::p);
       return;
     }
-    if (type == T::co)
-      unsupported(fmt::format("{} casts on in the middle of the work, which is not covered yet",
-                              g_.describe(s)));
+    // A cast-on (or a three-needle bind-off) between worked sts of one row.
+    if (type == T::co || type == T::sco || type == T::tnbo)
+      unsupported(fmt::format("{} is a {} in the middle of the work, which is not covered yet",
+                              g_.describe(s), info(type).name));
     std::optional<Working> w = working_of(out_.mirror ? mirrored(type) : type, r.side);
     SKEIN_ASSERT(w.has_value(), "every supported stitch type has a hand working");
     out_.ops.push_back(works_a_turn(s) ? resolving(w->op, s) : w->op);

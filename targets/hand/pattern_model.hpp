@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -53,6 +54,14 @@ struct PatternSection {
     bool from_last;
   };
   std::vector<Placement> placements;
+  bool provisional = false;  // its cast-on is a provisional one (a cast-on along a split)
+  // A piece that starts on the sts of another's provisional cast-on: the sts on its needle,
+  // or the loops of its chain; the first or the last st cast on first.
+  struct Start {
+    std::uint32_t section;
+    bool chain, from_last;
+  };
+  std::optional<Start> starts_from;
   // A join: three-needle bind-off of two sections left live (front, back), with a new yarn.
   bool joins = false;
   std::uint32_t front = 0, back = 0;   // section indices

@@ -125,6 +125,10 @@ class SentenceReader {
       return row(c);
     if (c.eat_any({"rep", "repeat"})) return repeat(c);
     if (c.eat_any({"knit", "purl"})) return work_even(sentence, c);
+    if (starts_with_ci(sentence, "join a new yarn to")) {
+      Cursor rest(sentence.substr(18));
+      return join_spare(rest);
+    }
     if (std::size_t at = find_ci(sentence, "cast on"); at != std::string_view::npos)
       return cast_on(Cursor(sentence.substr(at + 7)));
     if (c.eat("co")) return cast_on(c);
@@ -172,10 +176,34 @@ class SentenceReader {
     if (!ok) fail(fmt::format("expected {}", expected), c.rest());
   }
 
+  // "Cast on 12 sts", "Cast on 12 sts with a provisional cast-on".
   void cast_on(Cursor c) {
     Step step{Step::Kind::cast_on, line_no_};
     step.count = need_number(c, "the number of sts to cast on");
     need(c.eat_any({"sts", "st"}), c, "'sts' after the number");
+    if (c.eat("with")) {
+      need_words(c, {"a", "provisional", "cast-on"}, "'with a provisional cast-on'");
+      step.provisional = true;
+    }
+    add(step);
+  }
+
+  // "Join a new yarn to the 3 sts of Piece 1 (or: the 3 loops of Piece 1's chain), the first
+  // st cast on at the tip".
+  void join_spare(Cursor& c) {
+    Step step{Step::Kind::join_spare, line_no_};
+    c.eat("the");
+    step.count = need_number(c, "the number of sts");
+    step.provisional = c.eat("loops");
+    need(step.provisional || c.eat("sts"), c, "'sts' or 'loops'");
+    need_words(c, {"of", "piece"}, "'of Piece N'");
+    step.number = need_number(c, "a piece number");
+    if (step.provisional) need_words(c, {"'", "s", "chain"}, "'s chain' after the piece");
+    need_words(c, {",", "the"}, "', the first (or last) st cast on'");
+    step.from_last[0] = c.eat("last");
+    need(step.from_last[0] || c.eat("first"), c, "'first' or 'last'");
+    need_words(c, {"st", "cast", "on", "at", "the", "tip"}, "'st cast on at the tip'");
+    need(c.done(), c, "the end of the sentence");
     add(step);
   }
 

@@ -56,6 +56,7 @@ struct Step {
     set_aside,              // "Leave the <count> sts on the needle and set the yarn aside"
     take_up,                // "Take up Piece <number> again with its yarn"
     place,                  // "Place the <count> sts of Piece <number> ... first <last> sts"
+    join_spare,             // "Join a new yarn to the <count> sts of Piece <number>['s chain], ..."
     three_needle_bind_off,  // Piece <number> in front, Piece <last> behind, <count> pairs;
                             // from_last: which ends are at the tips (front, back)
   };
@@ -70,6 +71,7 @@ struct Step {
   std::optional<std::uint32_t> sts;  // the printed stitch count ("— 56 sts")
   std::uint32_t program = 0;         // into Script::programs
   bool from_last[2] = {false, false};
+  bool provisional = false;  // cast_on: with a provisional cast-on; join_spare: its chain
   HandOp op = HandOp::k;
 };
 
