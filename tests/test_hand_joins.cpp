@@ -48,12 +48,29 @@ TEST(HandJoins, TheJoinFixtureReadsLikeAPatternAndIsProven) {
   }
 }
 
-// Two flat pieces of random stitches knit towards one line (generate.hpp), joined there.
+// With a piece's own yarn: the piece knit first is set aside until the other is done.
+TEST(HandJoins, JoinsWithAPiecesOwnYarnAreProven) {
+  for (bool upper : {false, true}) {
+    Compilation c =
+        compile_stitch_mesh(testing::join_mesh(MismatchYarn::Kind::own, upper), "join fixture");
+    std::string pattern = emit(c, "hand");
+    EXPECT_NE(pattern.find("; with its yarn bind off all 3 pairs.\n"), std::string::npos)
+        << pattern;
+    for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
+      VerifyReport report = verify(c, target, emit(c, target));
+      EXPECT_TRUE(report.proven) << target << ": " << report.summary;
+    }
+  }
+}
+
+// Two flat pieces of random stitches knit towards one line (generate.hpp), joined there with a
+// new yarn or either piece's own.
 TEST(HandJoins, RandomJoinedSheetsAreProven) {
+  const MismatchYarn::Kind kYarns[] = {MismatchYarn::Kind::extra, MismatchYarn::Kind::own};
   for (std::uint32_t trial = 0; trial < 40; ++trial) {
     Compilation c = compile_stitch_mesh(
-        meeting_sheets(Meeting::join, 2 + trial % 9, 1 + trial % 5, 1 + (trial / 5) % 6,
-                       MismatchYarn::Kind::extra, false, trial),
+        meeting_sheets(Meeting::join, 2 + trial % 9, 2 + trial % 5, 2 + (trial / 5) % 6,
+                       kYarns[trial % 2], trial % 4 < 2, trial),
         "joined sheets");
     ASSERT_TRUE(c.knittability.knittable) << check_report(c);
     std::string pattern = emit(c, "hand");

@@ -366,6 +366,8 @@ TEST(HandMutations, SplitsRejectEveryEditThatChangesTheFabric) {
 TEST(HandMutations, JoinsRejectEveryEditThatChangesTheFabric) {
   mutate_and_judge("join fixture",
                    compile_stitch_mesh(testing::join_mesh(MismatchYarn::Kind::extra), "join"));
+  mutate_and_judge("join fixture (own yarn)",
+                   compile_stitch_mesh(testing::join_mesh(MismatchYarn::Kind::own), "join own"));
   mutate_and_judge("joined sheets",
                    compile_stitch_mesh(
                        meeting_sheets(Meeting::join, 5, 4, 3, MismatchYarn::Kind::extra, false, 7),

@@ -8,6 +8,7 @@
 
 #include "common/error.hpp"
 #include "driver/pipeline.hpp"
+#include "fixtures.hpp"
 #include "hand/hand_target.hpp"
 #include "hand/pattern_document.hpp"
 #include "hand/pattern_model.hpp"
@@ -56,6 +57,16 @@ TEST(HandShortRows, RandomShortRowSheetsAreProvenWithEitherMethod) {
     ++proven;
   }
   EXPECT_GE(proven, 10);
+}
+
+// Fig. 9: a pair of short rows turning at an sr4 face, then a full row and a bind-off.
+TEST(HandShortRows, TheFigure9FixtureIsProvenWithEitherMethod) {
+  Compilation c = compile_stitch_mesh(testing::short_row_mesh(StitchType::sr4), "fig. 9");
+  for (TurnMethod turns : {TurnMethod::german, TurnMethod::wrap_and_turn}) {
+    std::string pattern = markdown(c, turns);
+    VerifyReport report = hand::verify_pattern(pattern, "fig9.md", &c);
+    EXPECT_TRUE(report.proven) << report.summary << "\n" << pattern;
+  }
 }
 
 TEST(HandShortRows, TheSockHeelReadsInEitherMethod) {

@@ -271,9 +271,14 @@ class NeedleSimulator {
 
   // Pairs the sts of two spare needles, each from the end the pattern puts at the tip, and
   // binds them off with a new yarn.
+  // With its own yarn the front piece is the one being worked: its needle is the front one.
   void three_needle_bind_off(const Step& s) {
     std::uint32_t front = s.number, back = s.last, pairs = s.count;
-    if (active_ && pc_.live > 0)
+    if (s.own_yarn && (!active_ || pc_.number != front))
+      fail(fmt::format("three-needle bind-off with its yarn: Piece {} is not being worked", front));
+    if (s.own_yarn)
+      leave(pc_.live);
+    else if (active_ && pc_.live > 0)
       fail(fmt::format("three-needle bind-off: the piece before still has {} on the needle",
                        sts(pc_.live)));
     std::vector<std::uint32_t> f = spare_needle(front, s.from_last[0], "three-needle bind-off");
@@ -284,7 +289,12 @@ class NeedleSimulator {
     if (f.size() != pairs)
       fail(fmt::format("three-needle bind-off: the pattern says {} pairs, but the needles hold {}",
                        pairs, f.size()));
-    start_piece();
+    if (s.own_yarn) {
+      active_ = true;
+      next_link_ = YarnLink::turn;  // the yarn turns from the front piece's last row
+    } else {
+      start_piece();
+    }
     fab().rows.push_back({0, 0, 0, false, Side::ws, true});
     row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
     facing_ = Side::ws;  // the front piece shows its WS: its loop is taken first

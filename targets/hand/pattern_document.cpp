@@ -66,12 +66,13 @@ class InstructionWriter {
       section_ = s;
       if (p_.sections.size() > 1)
         add(InstructionLine::Kind::heading, "",
-            fmt::format("Piece {} (yarn {}){}", sec.piece, sec.yarn + 1,
-                        sec.joins     ? ": three-needle bind-off"
-                        : sec.resumed ? ", taken up again"
-                                      : ""));
-      add(InstructionLine::Kind::setup, "", setup_text(sec));
+            fmt::format("Piece {} (yarn {}){}{}", sec.piece, sec.yarn + 1,
+                        sec.resumed ? ", taken up again" : "",
+                        sec.joins ? ": three-needle bind-off" : ""));
+      // A join with a new yarn is a piece of its own; with a piece's yarn it ends that piece.
+      if (!sec.joins || sec.own_yarn) add(InstructionLine::Kind::setup, "", setup_text(sec));
       write_rows(sec.first_row, sec.end_row);
+      if (sec.joins) add(InstructionLine::Kind::finish, "", three_needle_text(sec));
       add(InstructionLine::Kind::finish, "", finish_text(sec));
     }
   }
@@ -80,20 +81,23 @@ class InstructionWriter {
   bool knitspeak() const { return dialect_ == Dialect::knitspeak; }
 
   std::string setup_text(const PatternSection& sec) const {
-    if (sec.joins)
-      return fmt::format(
-          "Three-needle bind-off: hold the pieces with RS together: Piece {} in front, the {} st "
-          "of its last row at the needle tip; Piece {} behind, the {} st of its last row at the "
-          "tip (slide the sts to the other end of a needle if need be); with a new yarn bind off "
-          "all {} pairs.",
-          p_.sections[sec.front].piece, sec.from_last[0] ? "last" : "first",
-          p_.sections[sec.back].piece, sec.from_last[1] ? "last" : "first", sec.pairs);
     if (sec.resumed) return take_up_text(sec);
     if (sec.starts_from) return join_spare_text(*sec.starts_from);
     std::string text = fmt::format("Cast on {} sts{}.", sec.cast_on,
                                    sec.provisional ? " with a provisional cast-on" : "");
     if (sec.in_round) text += " Pm and join to work in the rnd, being careful not to twist.";
     return text;
+  }
+
+  std::string three_needle_text(const PatternSection& sec) const {
+    return fmt::format(
+        "Three-needle bind-off: hold the pieces with RS together: Piece {} in front, the {} st "
+        "of its last row at the needle tip; Piece {} behind, the {} st of its last row at the "
+        "tip (slide the sts to the other end of a needle if need be); with {} yarn bind off "
+        "all {} pairs.",
+        p_.sections[sec.front].piece, sec.from_last[0] ? "last" : "first",
+        p_.sections[sec.back].piece, sec.from_last[1] ? "last" : "first",
+        sec.own_yarn ? "its" : "a new", sec.pairs);
   }
 
   // "Take up Piece 1 again with its yarn. Place the 58 sts of Piece 2 on the needle at the

@@ -33,12 +33,6 @@ void check_supported(const Compilation& c) {
     if (std::find(kSupported.begin(), kSupported.end(), g.type[s]) == kSupported.end())
       unsupported(fmt::format("{} is a {} ({}), which hand patterns do not cover yet",
                               g.describe(s), info(g.type[s]).name, abbreviation(g.type[s])));
-  for (const MismatchGroup& group : g.groups)
-    if (group.kind == MismatchKind::join && group.yarn == MismatchYarnUse::own)
-      unsupported(
-          fmt::format("the join next to {} is worked with its own yarn, which hand "
-                      "patterns do not cover yet (they join with a new yarn: yarn extra)",
-                      g.describe(group.own_side)));
   for (const Loop& l : g.loops) {
     bool joined = l.kind == LoopKind::joined && l.taker != kNoStitch && g.type[l.taker] == T::tnbo;
     bool split = l.kind == LoopKind::split && l.maker != kNoStitch && g.type[l.maker] == T::sco;
@@ -219,6 +213,7 @@ class PatternBuilder {
     s.in_round = before.in_round;
     s.resumed = true;
     s.first_number = before.first_number + (before.end_row - before.first_row);
+    std::copy(std::begin(before.last_row_ends), std::end(before.last_row_ends), s.last_row_ends);
     s.first_row = s.end_row = static_cast<std::uint32_t>(out_.rows.size());
     section_of_yarn_[yarn] = static_cast<std::uint32_t>(out_.sections.size());
     out_.sections.push_back(s);
@@ -251,8 +246,10 @@ class PatternBuilder {
       const PatternSection& piece = out_.sections[side == 0 ? join.front : join.back];
       join.from_last[side] = g_.loops[taken[side]].maker == piece.last_row_ends[1];
     }
+    join.own_yarn = join.front == section_of_yarn_[join.yarn];
+    if (join.own_yarn) st_.live = 0;  // the front needle's sts are the ones bound off
     join.pairs = static_cast<std::uint32_t>(row_.size());
-    join.stitches = row_.size();
+    join.stitches += row_.size();
     row_.clear();
   }
 

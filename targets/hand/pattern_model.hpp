@@ -66,6 +66,7 @@ struct PatternSection {
   bool joins = false;
   std::uint32_t front = 0, back = 0;   // section indices
   bool from_last[2] = {false, false};  // which end of each last row starts: first or last st
+  bool own_yarn = false;               // worked with the front piece's yarn, taken up again
   std::uint32_t pairs = 0;
   // Model stitches: the first and last of the section's last row (or of its cast-on).
   std::uint32_t last_row_ends[2] = {0, 0};

@@ -279,8 +279,10 @@ class SentenceReader {
     step.last = needle_end(c, {"behind"}, step.from_last[1]);
     if (c.eat_char('('))
       while (!c.done() && !c.eat_char(')')) c.eat_char(c.peek());
-    need_words(c, {";", "with", "a", "new", "yarn", "bind", "off", "all"},
-               "'; with a new yarn bind off all N pairs'");
+    need_words(c, {";", "with"}, "'; with a new yarn' or '; with its yarn'");
+    step.own_yarn = c.eat("its");
+    if (!step.own_yarn) need_words(c, {"a", "new"}, "'a new yarn' or 'its yarn'");
+    need_words(c, {"yarn", "bind", "off", "all"}, "'yarn bind off all N pairs'");
     step.count = need_number(c, "the number of pairs");
     need(c.eat_any({"pairs", "pair"}) && c.done(), c, "'pairs' and the end of the sentence");
     add(step);

@@ -72,6 +72,7 @@ struct Step {
   std::uint32_t program = 0;         // into Script::programs
   bool from_last[2] = {false, false};
   bool provisional = false;  // cast_on: with a provisional cast-on; join_spare: its chain
+  bool own_yarn = false;     // three_needle_bind_off: with the front piece's yarn
   HandOp op = HandOp::k;
 };
 
