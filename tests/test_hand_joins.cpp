@@ -1,6 +1,7 @@
 // Several pieces in hand patterns: pieces left on spare needles and joined by a three-needle
 // bind-off with a new yarn, pieces worked on from both sides of a provisional cast-on (a
-// split), pieces set aside and taken up again with others placed into their rnd (the sweater):
+// split), pieces picked up along another's edge (an expanding perpendicular edge), pieces set
+// aside and taken up again with others placed into their rnd (the sweater):
 // written and proven; and the simulator's reasons for rejecting them.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -167,6 +168,35 @@ TEST(HandSplits, RejectsWorkingASplitWrongWithTheReason) {
   EXPECT_EQ(failure_of(bound_off + "Join a new yarn to the 4 loops of Piece 1's chain, the "
                                    "first st cast on at the tip.\nRow 1 (RS): Knit.\n"
                                    "Row 2 (WS): BO all sts.\nFasten off.\n"),
+            "");
+}
+
+TEST(HandPickUps, TheExpandingFixtureIsProvenInEveryFormat) {
+  Compilation c = compile_stitch_mesh(testing::expanding_mesh(), "expanding fixture");
+  std::string pattern = emit(c, "hand");
+  EXPECT_NE(pattern.find("Pick up 3 sts along the right edge of Piece 1, one in each row from "
+                         "Row 2 down to the cast-on.\n"),
+            std::string::npos)
+      << pattern;
+  EXPECT_NE(pattern.find("**Picking up along an edge:**"), std::string::npos);
+  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
+    VerifyReport report = verify(c, target, emit(c, target));
+    EXPECT_TRUE(report.proven) << target << ": " << report.summary;
+  }
+}
+
+TEST(HandPickUps, RejectsAPickUpThatCannotBeWorkedWithTheReason) {
+  const std::string piece =
+      "Cast on 2 sts.\nRow 1 (RS): Knit.\nRow 2 (WS): BO all sts.\nFasten off.\n";
+  EXPECT_EQ(
+      failure_of(piece + "Pick up 4 sts along the right edge of Piece 1, one in each row from "
+                         "Row 2 down to the cast-on.\nRow 1 (RS): BO all sts.\nFasten off.\n"),
+      "p.md:5: Pick up: the pattern says 4 sts, but there are 3 rows from 0 to 2");
+  EXPECT_EQ(failure_of(piece + "Pick up 2 sts along the left edge of Piece 1, one in each row from "
+                               "Row 3 down to Row 2.\n"),
+            "p.md:5: Pick up: Piece 1 has no Row 3");
+  EXPECT_EQ(failure_of(piece + "Pick up 3 sts along the left edge of Piece 1, one in each row from "
+                               "the cast-on up to Row 2.\nRow 1 (WS): BO all sts.\nFasten off.\n"),
             "");
 }
 

@@ -211,6 +211,10 @@ class Mutator {
       {"last", {"end, and", "first"}},
       {"first", {"last"}},
       {"front", {"behind"}},
+      {"right", {"left"}},
+      {"left", {"right"}},
+      {"up", {"down"}},
+      {"down", {"up"}},
       {"w&t", {"turn", "k1, turn"}},
       {"turn", {"w&t"}},
       {"DS", {"k", "sm"}},
@@ -361,6 +365,11 @@ TEST(HandMutations, SplitsRejectEveryEditThatChangesTheFabric) {
       "split sheets (own yarn)",
       compile_stitch_mesh(meeting_sheets(Meeting::split, 5, 3, 4, MismatchYarn::Kind::own, true, 7),
                           "split sheets"));
+}
+
+TEST(HandMutations, PickUpsRejectEveryEditThatChangesTheFabric) {
+  mutate_and_judge("expanding fixture (pick-up)",
+                   compile_stitch_mesh(testing::expanding_mesh(), "expanding"));
 }
 
 TEST(HandMutations, JoinsRejectEveryEditThatChangesTheFabric) {

@@ -132,6 +132,10 @@ VerifyReport verify_pattern(std::string_view text, const std::string& file,
                                file, work_done(r), r.fabric.size())};
   std::optional<Difference> straight = first_difference(r.fabric, *against, false);
   if (!straight) return proven(r, file, *against, false);
+  // Only rounds are written mirrored (when the model's run left to right): a flat pattern that
+  // knits the mirror image knits another piece.
+  if (r.rounds == 0)
+    return {false, fmt::format("{}: not the model's fabric: {}", file, straight->what)};
   std::optional<Difference> mirror = first_difference(r.fabric, *against, true);
   if (!mirror) return proven(r, file, *against, true);
   // Report the comparison that got further (the pattern is most likely meant that way); at

@@ -9,8 +9,13 @@ namespace skein::hand {
 
 std::uint8_t Fabric::rs_slot(std::uint32_t loop) const {
   std::uint32_t maker = loop_maker[loop];
-  return facing[maker] == Side::rs ? static_cast<std::uint8_t>(made[maker] - 1 - loop_index[loop])
-                                   : loop_index[loop];
+  bool left = picked_from[maker] == kLeftEdge;
+  if (loop_picked[loop]) return left ? 0 : static_cast<std::uint8_t>(made[maker] - 1);
+  auto worked = static_cast<std::uint8_t>(made[maker] - (picked_from[maker] != kNoEdge));
+  std::uint8_t slot = facing[maker] == Side::rs
+                          ? static_cast<std::uint8_t>(worked - 1 - loop_index[loop])
+                          : loop_index[loop];
+  return static_cast<std::uint8_t>(slot + left);
 }
 
 std::vector<std::uint32_t> Fabric::rs_taken(std::uint32_t stitch) const {
@@ -102,6 +107,9 @@ class NeedleSimulator {
       case Step::Kind::join_spare:
         join_spare(s);
         break;
+      case Step::Kind::pick_up:
+        pick_up(s);
+        break;
       case Step::Kind::join_round:
         join(s.marker);
         break;
@@ -154,6 +162,59 @@ class NeedleSimulator {
       if (provisional) spare_needles_[{pc_.number, kChain}].push_back(new_loop(x));
     }
     pc_.live = n;
+  }
+
+  // A new piece worked from loops picked up along an edge of a finished piece, one in each
+  // of its rows: the loop of the st at that edge, the last one picked up at the needle tip.
+  void pick_up(const Step& s) {
+    if (active_ && pc_.live > 0)
+      fail(fmt::format("Pick up: the piece before still has {} on the needle", sts(pc_.live)));
+    std::vector<std::uint32_t> rows = rows_of_piece(s.number);
+    std::uint32_t low = std::min(s.from_row, s.to_row), high = std::max(s.from_row, s.to_row);
+    for (std::uint32_t n : {low, high})
+      if (n >= rows.size() || rows[n] == kNone)
+        fail(fmt::format("Pick up: Piece {} has no {}", s.number,
+                         n == 0 ? std::string("cast-on") : fmt::format("Row {}", n)));
+    if (high - low + 1 != s.count)
+      fail(fmt::format("Pick up: the pattern says {}, but there are {} rows from {} to {}",
+                       sts(s.count), high - low + 1, low, high));
+    start_piece();
+    fab().rows.push_back({0, 0, 0, false, Side::rs});
+    row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
+    for (std::uint32_t i = 0; i < s.count; ++i) {
+      std::uint32_t n = s.from_row <= s.to_row ? s.from_row + i : s.from_row - i;
+      pc_.right.push_back(pick_up_loop(rows, n, s.provisional));
+    }
+    pc_.live = s.count;
+  }
+
+  // Per row number of a piece (0: its cast-on), the row worked (kNone: none with stitches).
+  std::vector<std::uint32_t> rows_of_piece(std::uint32_t piece) const {
+    std::vector<std::uint32_t> rows;
+    for (std::uint32_t r = 0; r < out_.fabric.rows.size(); ++r) {
+      const Fabric::RowWorked& w = out_.fabric.rows[r];
+      if (w.piece != piece || w.join) continue;
+      if (rows.size() <= w.number) rows.resize(w.number + 1, kNone);
+      rows[w.number] = r;
+    }
+    return rows;
+  }
+
+  // The loop picked up at the right (or left) edge of a row, seen from the RS: a row worked
+  // with the RS facing starts at the right; a cast-on ends where the next row starts.
+  std::uint32_t pick_up_loop(const std::vector<std::uint32_t>& rows, std::uint32_t n, bool right) {
+    Fabric& f = fab();
+    const Fabric::RowWorked& row = f.rows[rows[n]];
+    Side side =
+        n == 0 && rows.size() > 1 && rows[1] != kNone ? other(f.rows[rows[1]].side) : row.side;
+    bool first = (side == Side::rs) == right;
+    std::uint32_t x = first ? row.first : row.last;
+    if (f.picked_from[x] != Fabric::kNoEdge)
+      fail(fmt::format("Pick up: {} already gave a st", f.describe(x)));
+    std::uint32_t loop = new_loop(x);
+    f.loop_picked[loop] = 1;
+    f.picked_from[x] = right ? Fabric::kRightEdge : Fabric::kLeftEdge;
+    return loop;
   }
 
   // A new piece worked from a spare needle's sts with a new yarn.
@@ -815,6 +876,13 @@ class NeedleSimulator {
     f.row.push_back(row_);
     f.position.push_back(++position_);
     f.made.push_back(0);
+    f.picked_from.push_back(Fabric::kNoEdge);
+    Fabric::RowWorked& r = f.rows[row_];
+    if (r.first == kNoStitch) {
+      r.first = x;
+      r.piece = pc_.number;
+    }
+    r.last = x;
     if (pc_.last_stitch != kNone) {
       f.yarn_next[pc_.last_stitch] = x;
       f.yarn_link[pc_.last_stitch] = next_link_;
@@ -829,6 +897,7 @@ class NeedleSimulator {
     auto loop = static_cast<std::uint32_t>(f.loop_maker.size());
     f.loop_maker.push_back(maker);
     turn_mark_.push_back(kPlainLoop);
+    f.loop_picked.push_back(0);
     f.loop_index.push_back(maker == kNone ? 0 : f.made[maker]++);
     return loop;
   }

@@ -25,6 +25,11 @@ std::string with_commas(std::uint64_t n) {
   return out;
 }
 
+// "1 st", "12 sts".
+std::string sts(std::uint32_t n) {
+  return fmt::format("{} st{}", n, n == 1 ? "" : "s");
+}
+
 std::string cm_and_inches(double cm) {
   return fmt::format("{:.0f} cm ({:.1f} in)", cm, cm / 2.54);
 }
@@ -83,7 +88,8 @@ class InstructionWriter {
   std::string setup_text(const PatternSection& sec) const {
     if (sec.resumed) return take_up_text(sec);
     if (sec.starts_from) return join_spare_text(*sec.starts_from);
-    std::string text = fmt::format("Cast on {} sts{}.", sec.cast_on,
+    if (sec.picks_up) return pick_up_text(*sec.picks_up, sec.cast_on);
+    std::string text = fmt::format("Cast on {}{}.", sts(sec.cast_on),
                                    sec.provisional ? " with a provisional cast-on" : "");
     if (sec.in_round) text += " Pm and join to work in the rnd, being careful not to twist.";
     return text;
@@ -117,6 +123,19 @@ class InstructionWriter {
     return text;
   }
 
+  // "Pick up 3 sts along the right edge of Piece 1, one in each row from Row 2 down to the
+  // cast-on."
+  std::string pick_up_text(const PatternSection::PickUp& p, std::uint32_t count) const {
+    auto row = [](std::uint32_t n) {
+      return n == 0 ? std::string("the cast-on") : fmt::format("Row {}", n);
+    };
+    return fmt::format(
+        "Pick up {} along the {} edge of Piece {}, one in each row from {} {} "
+        "to {}.",
+        sts(count), p.right ? "right" : "left", p_.sections[p.section].piece, row(p.from_row),
+        p.from_row <= p.to_row ? "up" : "down", row(p.to_row));
+  }
+
   // "Join a new yarn to the 3 loops of Piece 1's chain, the first st cast on at the tip."
   std::string join_spare_text(const PatternSection::Start& start) const {
     const PatternSection& spare = p_.sections[start.section];
@@ -127,10 +146,10 @@ class InstructionWriter {
 
   static std::string finish_text(const PatternSection& sec) {
     if (sec.set_aside)
-      return fmt::format("Leave the {} sts on the needle and set the yarn aside (do not cut it).",
-                         sec.live_at_end);
+      return fmt::format("Leave the {} on the needle and set the yarn aside (do not cut it).",
+                         sts(sec.live_at_end));
     if (sec.left_live)
-      return fmt::format("Leave the {} sts on a spare needle and cut the yarn.", sec.live_at_end);
+      return fmt::format("Leave the {} on a spare needle and cut the yarn.", sts(sec.live_at_end));
     return "Fasten off.";
   }
 
@@ -249,6 +268,7 @@ struct Totals {
   bool partial_bind_off = false;  // a row binds off some of its sts
   bool spare_needles = false;     // a piece waits on one
   bool provisional = false;       // a provisional cast-on
+  bool picks_up = false;          // a piece starts on loops picked up along an edge
   std::uint32_t widest = 0, narrowest_round = 0;
   std::vector<bool> used = std::vector<bool>(kHandOpCount, false);
 };
@@ -260,6 +280,7 @@ Totals totals_of(const HandPattern& p) {
     t.joins = t.joins || s.joins;
     t.spare_needles = t.spare_needles || s.left_live || s.provisional;
     t.provisional = t.provisional || s.provisional;
+    t.picks_up = t.picks_up || s.picks_up.has_value();
     if (s.joins) continue;
     (s.in_round ? t.round : t.flat) = true;
     t.widest = std::max(t.widest, s.cast_on);
@@ -430,6 +451,11 @@ class FrontMatter {
           "back bump of each chain st. The sts on the needle are one side of the split; where "
           "the pattern works \"the loops of its chain\", unzip the waste yarn and put the live "
           "loops on a needle: they are the other side.");
+    if (t_.picks_up)
+      items.push_back(
+          "**Picking up along an edge:** with the RS facing and a new yarn, put the outer loop "
+          "of the edge st of each row named onto the needle, one row after the other (the loops "
+          "are not knit: the next row works them, starting with the last one picked up).");
     if (t_.joins)
       items.push_back(
           "**Three-needle bind-off:** hold the two needles parallel, tips to the right; insert "

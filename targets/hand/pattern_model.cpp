@@ -36,7 +36,8 @@ void check_supported(const Compilation& c) {
   for (const Loop& l : g.loops) {
     bool joined = l.kind == LoopKind::joined && l.taker != kNoStitch && g.type[l.taker] == T::tnbo;
     bool split = l.kind == LoopKind::split && l.maker != kNoStitch && g.type[l.maker] == T::sco;
-    if ((l.kind != LoopKind::wale && !joined && !split) || l.taker == kNoStitch)
+    bool across = l.kind == LoopKind::perpendicular && l.maker != kNoStitch;  // see append_ops
+    if ((l.kind != LoopKind::wale && !joined && !split && !across) || l.taker == kNoStitch)
       unsupported(fmt::format(
           "the loop {} makes {}: hand patterns cover loops between rows, joins and splits only",
           g.describe(l.maker),
@@ -258,7 +259,7 @@ class PatternBuilder {
     note_last_row_ends();
     section().stitches += row_.size();
     if (!st_.cast_on_done && g_.type[row_.front()] != T::co && g_.type[row_.front()] != T::sco)
-      start_from_spare_needle();
+      start_from_other_piece();
     if (!st_.cast_on_done)
       cast_on();
     else
@@ -277,15 +278,49 @@ class PatternBuilder {
                                 section().yarn + 1, g_.describe(s)));
     section().provisional = first == T::sco;
     section().cast_on = st_.live = st_.behind = static_cast<std::uint32_t>(row_.size());
+    for (StitchId s : row_) number_of_[s] = 0;
     st_.ahead = 0;
     section().in_round = g_.yarn_link[row_.back()] == YarnLink::shift;
     st_.cast_on_done = true;
   }
 
-  // A piece whose yarn starts on the sts of a provisional cast-on (one side of a split): it
-  // works them as they wait on the spare needle (or on its chain, the loops' second slot).
-  void start_from_spare_needle() {
+  // A piece whose yarn starts on loops of another: picked up along its edge, or on one side of
+  // a provisional cast-on.
+  void start_from_other_piece() {
     const Loop& first = g_.loops[g_.loops_taken_by(row_.front())[0]];
+    if (first.kind == LoopKind::perpendicular) return start_from_pick_up();
+    start_from_spare_needle(first);
+    st_.behind = 0;
+    st_.cast_on_done = true;
+  }
+
+  // Picked up along an edge, one loop in each row of the piece beside it (paper §3.2: an
+  // expanding perpendicular edge): the loop the edge st makes across it. The last picked up
+  // is worked first.
+  void start_from_pick_up() {
+    std::vector<StitchId> edge;
+    for (StitchId s : row_)
+      for (std::uint32_t l : g_.loops_taken_by(s))
+        if (g_.loops[l].kind == LoopKind::perpendicular) edge.push_back(g_.loops[l].maker);
+    PatternSection::PickUp p;
+    p.section = section_of_yarn_[c_.yarns.piece_of[edge.front()]];
+    p.from_row = number_of_[edge.back()];
+    p.to_row = number_of_[edge.front()];
+    for (StitchId s : edge) {
+      auto made = g_.loops_made_by(s);
+      if (made.size() < 2) continue;
+      p.right = g_.loops[made.front()].kind != LoopKind::perpendicular;
+      break;
+    }
+    section().picks_up = p;
+    section().cast_on = st_.live = st_.ahead = static_cast<std::uint32_t>(edge.size());
+    st_.behind = 0;
+    st_.cast_on_done = true;
+  }
+
+  // One side of a split: the loops wait on a spare needle (or on the provisional cast-on's
+  // chain: the loops' second slot).
+  void start_from_spare_needle(const Loop& first) {
     if (first.maker == kNoStitch || g_.type[first.maker] != T::sco)
       unsupported(
           fmt::format("yarn {} starts with {}, neither with a cast-on nor on the sts of a "
@@ -296,8 +331,6 @@ class PatternBuilder {
     section().starts_from =
         PatternSection::Start{from, first.maker_slot == 1, first.maker == spare.last_row_ends[1]};
     st_.live = st_.ahead = spare.cast_on;
-    st_.behind = 0;
-    st_.cast_on_done = true;
   }
 
   // The first and last st of the row that stay live (not bound off): the ends a spare needle
@@ -349,6 +382,7 @@ class PatternBuilder {
     if (st_.double_stitch_next) slip_double_stitch();
     std::uint32_t takes = 0;
     for (StitchId s : row_) {
+      number_of_[s] = r.number;
       append_ops(s, r);
       takes += info(g_.type[s]).loops_in;
       move_loops(s);
@@ -424,6 +458,13 @@ class PatternBuilder {
                                                                  : HandOp::p);
       return;
     }
+    bool first_row = out_.rows.size() == section().first_row;
+    for (std::uint32_t l : g_.loops_taken_by(s))
+      if (g_.loops[l].kind == LoopKind::perpendicular && !(section().picks_up && first_row))
+        unsupported(
+            fmt::format("{} works a loop of {} across a perpendicular edge (a "
+                        "contracting one), which is not covered yet",
+                        g_.describe(s), g_.describe(g_.loops[l].maker)));
     // A cast-on (or a three-needle bind-off) between worked sts of one row.
     if (type == T::co || type == T::sco || type == T::tnbo)
       unsupported(fmt::format("{} is a {} in the middle of the work, which is not covered yet",
@@ -461,6 +502,7 @@ class PatternBuilder {
   Needle st_;
   std::vector<Needle> set_aside_;               // per yarn
   std::vector<std::uint32_t> section_of_yarn_;  // its latest section
+  std::vector<std::uint32_t> number_of_ = std::vector<std::uint32_t>(g_.size(), 0);  // row no.
   // A yarn taken up again is written from there to its end in one go, after the pieces it
   // waited for: its stitches wait here meanwhile.
   std::vector<std::vector<StitchId>> deferred_;  // per yarn

@@ -62,6 +62,13 @@ struct PatternSection {
     bool chain, from_last;
   };
   std::optional<Start> starts_from;
+  // A piece that starts on loops picked up along the right (or left) edge of another, one in
+  // each of its rows from `from_row` to `to_row` (0: the cast-on).
+  struct PickUp {
+    std::uint32_t section = 0, from_row = 0, to_row = 0;
+    bool right = true;
+  };
+  std::optional<PickUp> picks_up;
   // A join: three-needle bind-off of two sections left live (front, back), with a new yarn.
   bool joins = false;
   std::uint32_t front = 0, back = 0;   // section indices

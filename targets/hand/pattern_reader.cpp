@@ -142,6 +142,7 @@ class SentenceReader {
     if (c.eat("leave")) return leave(c);
     if (c.eat("take") && c.eat("up")) return take_up(c);
     if (c.eat("place")) return place(c);
+    if (c.eat("pick") && c.eat("up")) return pick_up(c);
     if (c.eat("three-needle") && c.eat("bind-off")) return three_needle_bind_off(c);
     fail(
         "expected a row ('Row 3 (RS): ...', 'Rnd 5: ...'), 'Cast on N sts', 'Pm and join to "
@@ -186,6 +187,32 @@ class SentenceReader {
       step.provisional = true;
     }
     add(step);
+  }
+
+  // "Pick up 3 sts along the right edge of Piece 1, one in each row from Row 2 down to the
+  // cast-on".
+  void pick_up(Cursor& c) {
+    Step step{Step::Kind::pick_up, line_no_};
+    step.count = need_number(c, "the number of sts to pick up");
+    need_words(c, {"sts", "along", "the"}, "'sts along the right (or left) edge'");
+    step.provisional = c.eat("right");
+    need(step.provisional || c.eat("left"), c, "'right' or 'left'");
+    need_words(c, {"edge", "of", "piece"}, "'edge of Piece N'");
+    step.number = need_number(c, "a piece number");
+    need_words(c, {",", "one", "in", "each", "row", "from"}, "', one in each row from'");
+    step.from_row = row_of_piece(c);
+    need(c.eat_any({"up", "down"}), c, "'up' or 'down'");
+    need(c.eat("to"), c, "'to'");
+    step.to_row = row_of_piece(c);
+    need(c.done(), c, "the end of the sentence");
+    add(step);
+  }
+
+  // "the cast-on" (0) or "Row 7".
+  std::uint32_t row_of_piece(Cursor& c) {
+    if (c.eat("the") && c.eat("cast-on")) return 0;
+    need(c.eat("row"), c, "'the cast-on' or 'Row N'");
+    return need_number(c, "a row number");
   }
 
   // "Join a new yarn to the 3 sts of Piece 1 (or: the 3 loops of Piece 1's chain), the first

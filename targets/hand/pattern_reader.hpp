@@ -57,6 +57,7 @@ struct Step {
     take_up,                // "Take up Piece <number> again with its yarn"
     place,                  // "Place the <count> sts of Piece <number> ... first <last> sts"
     join_spare,             // "Join a new yarn to the <count> sts of Piece <number>['s chain], ..."
+    pick_up,                // "Pick up <count> sts along the right edge of Piece <number>, ..."
     three_needle_bind_off,  // Piece <number> in front, Piece <last> behind, <count> pairs;
                             // from_last: which ends are at the tips (front, back)
   };
@@ -73,6 +74,8 @@ struct Step {
   bool from_last[2] = {false, false};
   bool provisional = false;  // cast_on: with a provisional cast-on; join_spare: its chain
   bool own_yarn = false;     // three_needle_bind_off: with the front piece's yarn
+  std::uint32_t from_row = 0, to_row = 0;  // pick_up: one st in each of these rows (provisional:
+                                           // along the right edge)
   HandOp op = HandOp::k;
 };
 
