@@ -108,7 +108,6 @@ TEST(HandTarget, StitchGraphsWithoutRowsAreRejectedNamingTheFile) {
 TEST(HandTarget, StitchesNotCoveredYetAreNamed) {
   const std::pair<StitchMesh, const char*> cases[] = {
       {testing::short_row_mesh(T::sr5), "(sr5), which hand patterns do not cover yet"},
-      {testing::contracting_mesh(), "across a perpendicular edge (a contracting one)"},
   };
   for (const auto& [mesh, named] : cases) {
     Compilation c = compile_stitch_mesh(mesh, "uncovered");

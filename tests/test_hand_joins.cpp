@@ -1,7 +1,8 @@
 // Several pieces in hand patterns: pieces left on spare needles and joined by a three-needle
 // bind-off with a new yarn, pieces worked on from both sides of a provisional cast-on (a
-// split), pieces picked up along another's edge (an expanding perpendicular edge), pieces set
-// aside and taken up again with others placed into their rnd (the sweater):
+// split), pieces picked up along another's edge or worked into its rows one st at a time
+// (expanding and contracting perpendicular edges), pieces set aside and taken up again with
+// others placed into their rnd (the sweater):
 // written and proven; and the simulator's reasons for rejecting them.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -183,6 +184,20 @@ TEST(HandPickUps, TheExpandingFixtureIsProvenInEveryFormat) {
     VerifyReport report = verify(c, target, emit(c, target));
     EXPECT_TRUE(report.proven) << target << ": " << report.summary;
   }
+}
+
+TEST(HandPickUps, TheContractingFixtureIsProvenInEveryFormat) {
+  Compilation c = compile_stitch_mesh(testing::contracting_mesh(), "contracting fixture");
+  std::string pattern = emit(c, "hand");
+  EXPECT_NE(pattern.find("**Row 1 (RS):** Sl1 from spare, k2tog.\n"), std::string::npos) << pattern;
+  EXPECT_NE(pattern.find("**Row 2 (WS):** Sl1 from spare behind, p2tog.\n"), std::string::npos);
+  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
+    VerifyReport report = verify(c, target, emit(c, target));
+    EXPECT_TRUE(report.proven) << target << ": " << report.summary;
+  }
+  EXPECT_EQ(failure_of("Cast on 2 sts.\nRow 1 (RS): Sl1 from spare, k2tog, k1.\n"),
+            "p.md:2: Row 1 (RS): sl1 from spare: 0 pieces wait on spare needles; which one is "
+            "meant?");
 }
 
 TEST(HandPickUps, RejectsAPickUpThatCannotBeWorkedWithTheReason) {

@@ -211,6 +211,7 @@ class Mutator {
       {"last", {"end, and", "first"}},
       {"first", {"last"}},
       {"front", {"behind"}},
+      {"behind", {"front"}},
       {"right", {"left"}},
       {"left", {"right"}},
       {"up", {"down"}},
@@ -370,6 +371,8 @@ TEST(HandMutations, SplitsRejectEveryEditThatChangesTheFabric) {
 TEST(HandMutations, PickUpsRejectEveryEditThatChangesTheFabric) {
   mutate_and_judge("expanding fixture (pick-up)",
                    compile_stitch_mesh(testing::expanding_mesh(), "expanding"));
+  mutate_and_judge("contracting fixture (sl1 from spare)",
+                   compile_stitch_mesh(testing::contracting_mesh(), "contracting"));
 }
 
 TEST(HandMutations, JoinsRejectEveryEditThatChangesTheFabric) {

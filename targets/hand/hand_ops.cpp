@@ -67,6 +67,11 @@ constexpr std::array kOps{
                                 1, 1},
   HandOpInfo{O::pds,   "p DS",  "purl the two legs of the double stitch together as one st",
                                 1, 1},
+  HandOpInfo{O::from_spare, "sl1 from spare", "slip the next st waiting on the spare needle "
+                                "onto the left needle (it is worked next)", 0, 0},
+  HandOpInfo{O::from_spare_behind, "sl1 from spare behind", "slip the next st waiting on the "
+                                "spare needle onto the left needle behind its first st (the two "
+                                "are worked together, that one first)", 0, 0},
 };
 
 // How each operation shows from the RS when worked with a side facing. A make-one shows as

@@ -52,8 +52,12 @@ enum class HandOp : std::uint8_t {
   pw,
   kds,
   pds,
+  // A piece beside this one (a contracting perpendicular edge) gives its sts one at a time:
+  // the next st waiting on the spare needle goes onto the left needle, to be worked next.
+  from_spare,
+  from_spare_behind,  // ... behind the first st of the left needle (worked second)
 };
-inline constexpr std::size_t kHandOpCount = static_cast<std::size_t>(HandOp::pds) + 1;
+inline constexpr std::size_t kHandOpCount = static_cast<std::size_t>(HandOp::from_spare_behind) + 1;
 
 struct HandOpInfo {
   HandOp op;

@@ -709,6 +709,10 @@ class NeedleSimulator {
       case HandOp::ds:
         double_stitch();
         return;
+      case HandOp::from_spare:
+      case HandOp::from_spare_behind:
+        slip_from_spare(op == HandOp::from_spare_behind);
+        return;
       case HandOp::pm:
         pc_.right.push_back(new_marker());
         return;
@@ -744,6 +748,12 @@ class NeedleSimulator {
     std::uint32_t loop = pc_.right.back();
     pc_.right.pop_back();
     turn_mark_[loop] = kWrapped;
+    push_left(loop);
+    row_ended_ = true;
+  }
+
+  // Puts a loop at the tip of the left needle, keeping its index.
+  void push_left(std::uint32_t loop) {
     pc_.left.push_back(loop);
     to_marker_.resize(pc_.left.size());
     marker_ahead_.resize(pc_.left.size());
@@ -751,7 +761,28 @@ class NeedleSimulator {
     to_marker_[i] = (i ? to_marker_[i - 1] : 0) + 1;
     marker_ahead_[i] = i && marker_ahead_[i - 1];
     ++left_loops_;
-    row_ended_ = true;
+  }
+
+  // The next st of the one piece waiting on a spare needle (in the order its last row worked
+  // them) joins the work at the tip of the left needle.
+  void slip_from_spare(bool behind) {
+    if (spare_needles_.size() != 1)
+      fail(fmt::format("sl1 from spare: {} pieces wait on spare needles; which one is meant?",
+                       spare_needles_.size()));
+    std::uint32_t first = kNone;
+    if (behind) {
+      if (pc_.left.empty() || is_marker_entry(pc_.left.back()))
+        fail("sl1 from spare behind: there is no st on the left needle to slip it behind");
+      first = pc_.left.back();
+      pc_.left.pop_back();
+      --left_loops_;
+    }
+    std::vector<std::uint32_t>& spare = spare_needles_.begin()->second;
+    push_left(spare.front());
+    if (behind) push_left(first);
+    spare.erase(spare.begin());
+    if (spare.empty()) spare_needles_.clear();
+    ++pc_.live;
   }
 
   // DS: first after a turn, the st worked last before it is pulled up into a double stitch

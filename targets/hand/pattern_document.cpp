@@ -411,7 +411,8 @@ class FrontMatter {
 
   std::vector<std::string> abbreviations() const {
     std::vector<std::string> items;
-    for (auto op = HandOp::k; op <= HandOp::pds; op = static_cast<HandOp>(static_cast<int>(op) + 1))
+    for (auto op = HandOp::k; op <= HandOp::from_spare_behind;
+         op = static_cast<HandOp>(static_cast<int>(op) + 1))
       if (uses(op) || (op == HandOp::pm && says("Pm ")))
         items.push_back(fmt::format("**{}**: {}", info(op).abbreviation, info(op).meaning));
     auto word = [&](bool used, const char* abbr, const char* meaning) {

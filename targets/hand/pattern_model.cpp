@@ -351,6 +351,7 @@ class PatternBuilder {
     const std::uint32_t self = section_of_yarn_[section().yarn];
     for (StitchId s : row_)
       for (std::uint32_t l : g_.loops_taken_by(s)) {
+        if (g_.loops[l].kind == LoopKind::perpendicular) continue;  // one by one
         std::uint32_t from = section_of_yarn_[c_.yarns.piece_of[g_.loops[l].maker]];
         bool placed =
             std::any_of(section().placements.begin(), section().placements.end(),
@@ -431,6 +432,26 @@ class PatternBuilder {
     ++st_.behind;
   }
 
+  // A st that works a loop across a contracting perpendicular edge takes it from the piece
+  // beside, waiting on a spare needle: slipped to the tip of the left needle, or behind the st
+  // there when the st works it second.
+  void slip_from_spare_needle(StitchId s, const PatternRow& r) {
+    auto taken = g_.loops_taken_by(s);
+    for (std::size_t i = 0; i < taken.size(); ++i) {
+      if (g_.loops[taken[i]].kind != LoopKind::perpendicular) continue;
+      // Worked in the order taken off the needle: right to left seen from the RS on a RS row.
+      std::size_t worked = (r.side == Side::rs) != out_.mirror ? taken.size() - 1 - i : i;
+      if (worked > 1)
+        unsupported(
+            fmt::format("{} works a loop of {} across a perpendicular edge third, "
+                        "which is not covered yet",
+                        g_.describe(s), g_.describe(g_.loops[taken[i]].maker)));
+      out_.ops.push_back(worked == 0 ? HandOp::from_spare : HandOp::from_spare_behind);
+      ++st_.live;
+      if (!section().in_round) ++st_.ahead;
+    }
+  }
+
   // Does `s` work the loop a short row turned at?
   bool works_a_turn(StitchId s) const {
     for (std::uint32_t l : g_.loops_taken_by(s))
@@ -459,12 +480,7 @@ class PatternBuilder {
       return;
     }
     bool first_row = out_.rows.size() == section().first_row;
-    for (std::uint32_t l : g_.loops_taken_by(s))
-      if (g_.loops[l].kind == LoopKind::perpendicular && !(section().picks_up && first_row))
-        unsupported(
-            fmt::format("{} works a loop of {} across a perpendicular edge (a "
-                        "contracting one), which is not covered yet",
-                        g_.describe(s), g_.describe(g_.loops[l].maker)));
+    if (!(section().picks_up && first_row)) slip_from_spare_needle(s, r);
     // A cast-on (or a three-needle bind-off) between worked sts of one row.
     if (type == T::co || type == T::sco || type == T::tnbo)
       unsupported(fmt::format("{} is a {} in the middle of the work, which is not covered yet",

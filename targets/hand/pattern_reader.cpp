@@ -240,7 +240,7 @@ class SentenceReader {
     Step step{Step::Kind::leave, line_no_};
     c.eat("the");
     step.count = need_number(c, "the number of sts left on the needle");
-    need_words(c, {"sts", "on"}, "'sts on'");
+    need(c.eat_any({"sts", "st"}) && c.eat("on"), c, "'sts on'");
     if (c.eat("the")) {
       step.kind = Step::Kind::set_aside;
       need_words(c, {"needle", "and", "set", "the", "yarn", "aside"},
@@ -513,6 +513,11 @@ class SentenceReader {
     Node n;
     if (c.eat("w&t")) {  // not a word: '&' would end it
       n.op = HandOp::wt;
+      return n;
+    }
+    if (c.eat("sl1") && c.eat("from")) {
+      need(c.eat("spare"), c, "'sl1 from spare'");
+      n.op = c.eat("behind") ? HandOp::from_spare_behind : HandOp::from_spare;
       return n;
     }
     std::string_view w = c.word();
