@@ -155,10 +155,12 @@ class PatternBuilder {
           start_section(e.yarn);
           break;
         case EventKind::stitch:
-          if (taken_up_[e.yarn])
+          if (taken_up_[e.yarn]) {
             deferred_[e.yarn].push_back(e.stitch);
-          else
+            unwritten_[e.stitch] = 1;
+          } else {
             add_stitch(e.stitch);
+          }
           break;
         case EventKind::hold:
           if (!taken_up_[e.yarn]) set_section_aside(e.yarn);
@@ -220,7 +222,10 @@ class PatternBuilder {
     out_.sections.push_back(s);
     st_ = set_aside_[yarn];
     taken_up_[yarn] = 0;
-    for (StitchId st : deferred_[yarn]) add_stitch(st);
+    for (StitchId st : deferred_[yarn]) {
+      unwritten_[st] = 0;
+      add_stitch(st);
+    }
     deferred_[yarn].clear();
   }
 
@@ -479,6 +484,12 @@ class PatternBuilder {
                                                                  : HandOp::p);
       return;
     }
+    for (std::uint32_t l : g_.loops_taken_by(s))
+      if (g_.loops[l].maker != kNoStitch && unwritten_[g_.loops[l].maker])
+        unsupported(
+            fmt::format("{} works a loop of {}, which this pattern writes later (its yarn "
+                        "is taken up again after the pieces it waits for)",
+                        g_.describe(s), g_.describe(g_.loops[l].maker)));
     bool first_row = out_.rows.size() == section().first_row;
     if (!(section().picks_up && first_row)) slip_from_spare_needle(s, r);
     // A cast-on (or a three-needle bind-off) between worked sts of one row.
@@ -521,8 +532,9 @@ class PatternBuilder {
   std::vector<std::uint32_t> number_of_ = std::vector<std::uint32_t>(g_.size(), 0);  // row no.
   // A yarn taken up again is written from there to its end in one go, after the pieces it
   // waited for: its stitches wait here meanwhile.
-  std::vector<std::vector<StitchId>> deferred_;  // per yarn
-  std::vector<std::uint8_t> taken_up_;           // per yarn
+  std::vector<std::vector<StitchId>> deferred_;                                    // per yarn
+  std::vector<std::uint8_t> taken_up_;                                             // per yarn
+  std::vector<std::uint8_t> unwritten_ = std::vector<std::uint8_t>(g_.size(), 0);  // deferred
 };
 
 }  // namespace
