@@ -199,8 +199,11 @@ class PatternBuilder {
   }
 
   // The yarn waits for another piece: its sts stay on the needle.
+  // A row the yarn stops in the middle of is written with the rest, when it is taken up.
   void set_section_aside(std::uint32_t yarn) {
-    flush_row();
+    for (StitchId st : row_) unwritten_[st] = 1;
+    deferred_[yarn] = std::move(row_);
+    row_.clear();
     section().set_aside = true;
     section().live_at_end = st_.live;
     section().end_row = static_cast<std::uint32_t>(out_.rows.size());
