@@ -282,8 +282,10 @@ class PatternBuilder {
     T first = g_.type[row_.front()];
     for (StitchId s : row_)
       if (g_.type[s] != first)
-        unsupported(fmt::format("yarn {} starts with {}, not with a row of cast-on stitches",
-                                section().yarn + 1, g_.describe(s)));
+        unsupported(
+            fmt::format("yarn {} starts with a row of {} that goes on with {} (a cast-on "
+                        "that goes on into worked sts in one row is not covered yet)",
+                        section().yarn + 1, info(first).name, g_.describe(s)));
     section().provisional = first == T::sco;
     section().cast_on = st_.live = st_.behind = static_cast<std::uint32_t>(row_.size());
     for (StitchId s : row_) number_of_[s] = 0;
