@@ -51,7 +51,10 @@ class HandTarget : public Target {
     HandPattern pattern = build_hand_pattern(c, turn_method_of(c));
     Gauge gauge;
     PatternDocument doc = make_document(pattern, dialect_of(options), gauge);
-    Format format = options.dialect == "knitspeak" ? Format::knitspeak : f_.format;
+    // `--target hand --dialect knitspeak` writes what hand-knitspeak writes; the page stays a
+    // page, with its rows in KnitSpeak.
+    bool rows_only = f_.format == Format::markdown && options.dialect == "knitspeak";
+    Format format = rows_only ? Format::knitspeak : f_.format;
     switch (format) {
       case Format::markdown:
         write_markdown(doc, out);
