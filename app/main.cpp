@@ -1,7 +1,9 @@
 // skein: a knitting compiler. This file only parses the command line and calls the driver.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <iostream>
@@ -64,6 +66,16 @@ const Target& find_target(const Registry& registry, const std::string& name) {
   throw UsageError(fmt::format("unknown target '{}'; known targets: {}", name, known));
 }
 
+void check_dialect(const Target& target, const std::string& dialect) {
+  if (dialect.empty()) return;
+  std::vector<std::string> valid = target.dialects();
+  if (std::find(valid.begin(), valid.end(), dialect) != valid.end()) return;
+  if (valid.empty())
+    throw UsageError(fmt::format("target '{}' has no dialects; drop --dialect", target.name()));
+  throw UsageError(fmt::format("unknown dialect '{}' for target '{}'; valid dialects: {}", dialect,
+                               target.name(), fmt::join(valid, ", ")));
+}
+
 int run_check(const std::string& input, bool verbose) {
   Compilation c = compile_model(input, progress_printer(verbose));
   std::cout << check_report(c);
@@ -78,6 +90,7 @@ int report_verification(const VerifyReport& report) {
 int run_compile(const Registry& registry, const std::string& input, const std::string& target_name,
                 TargetOptions options, const std::string& output, bool verify, bool verbose) {
   const Target& target = find_target(registry, target_name);
+  check_dialect(target, options.dialect);
   if (options.machine.empty()) options.machine = project_target_option(input, "machine");
   Compilation c = compile_model(input, progress_printer(verbose));
   if (!c.knittability.knittable) {
@@ -155,6 +168,8 @@ int main(int argc, char** argv) {
   compile->add_option("-t,--target", target_name, "back end (see the list below)")->required();
   compile->add_option("-o,--output", output, "file to write (never left half-written)")->required();
   compile->add_option("-m,--machine", options.machine, "machine profile name or path");
+  compile->add_option("--dialect", options.dialect,
+                      "how the target spells its output (hand: standard or knitspeak)");
   compile->add_flag("--verify", verify, "replay the output in the target's simulator");
 
   auto* verify_cmd = app.add_subcommand("verify", "replay OUT in its target's simulator");

@@ -64,6 +64,25 @@ TEST_F(Cli, UnknownTargetIsAUsageErrorAndWritesNothing) {
   EXPECT_TRUE(outputs().empty());
 }
 
+TEST_F(Cli, DialectChoosesHowTheHandTargetSpellsItsRows) {
+  CliRun r = skein("compile samples/sock/sock.yaml --target hand --dialect knitspeak -o " +
+                   in_dir("sock.knitspeak") + " --verify");
+  EXPECT_EQ(r.exit_code, 0) << r.err << r.out;
+  EXPECT_NE(r.out.find("proven against samples/sock/sock.yaml"), std::string::npos) << r.out;
+  CliRun bad =
+      skein("compile samples/hat/hat.obj --target hand --dialect klingon -o " + in_dir("hat.md"));
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("unknown dialect 'klingon' for target 'hand'; valid dialects: standard, "
+                         "knitspeak"),
+            std::string::npos)
+      << bad.err;
+  CliRun none = skein("compile samples/hat/hat.obj --target schedule --dialect knitspeak -o " +
+                      in_dir("hat.schedule"));
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_NE(none.err.find("target 'schedule' has no dialects"), std::string::npos) << none.err;
+  EXPECT_EQ(outputs(), std::vector<std::string>{"sock.knitspeak"});
+}
+
 TEST_F(Cli, UnwritableOutputLeavesNoTemporaryFile) {
   CliRun r =
       skein("compile samples/hat/hat.obj -t schedule -o " + in_dir("missing-dir/hat.schedule"));

@@ -14,8 +14,12 @@
 #include "builtin_targets.hpp"
 #include "common/error.hpp"
 #include "driver/pipeline.hpp"
+#include "fixtures.hpp"
 #include "hand/hand_target.hpp"
 #include "hand/needle_sim.hpp"
+#include "hand/pattern_document.hpp"
+#include "hand/pattern_model.hpp"
+#include "hand/pattern_writers.hpp"
 #include "mesh/generate.hpp"
 #include "test_hand_plans.hpp"
 
@@ -64,7 +68,10 @@ std::string items_text(const std::vector<std::string>& items) {
 
 class Mutator {
  public:
-  explicit Mutator(const std::string& pattern) : lines_(lines_of(pattern)) {
+  // With `near_pieces`, only the lines within 4 instructions of a piece heading (where pieces
+  // start, wait, are taken up and join): for large patterns.
+  explicit Mutator(const std::string& pattern, bool near_pieces = false)
+      : lines_(lines_of(pattern)), near_pieces_(near_pieces) {
     for (std::size_t i = 0; i < lines_.size(); ++i) {
       if (lines_[i] == "## Instructions") begin_ = i + 1;
       if (begin_ && i > begin_ && lines_[i].rfind("## ", 0) == 0 && !end_) end_ = i;
@@ -74,7 +81,7 @@ class Mutator {
 
   std::vector<Mutant> all() {
     for (std::size_t i = begin_; i < end_; ++i) {
-      if (lines_[i].empty()) continue;
+      if (lines_[i].empty() || (near_pieces_ && !near_a_piece_heading(i))) continue;
       line_edits(i);
       word_edits(i);
       item_edits(i);
@@ -109,7 +116,7 @@ class Mutator {
   // Numbers, count words, stitches and sides, one occurrence at a time.
   void word_edits(std::size_t i) {
     const std::string& line = lines_[i];
-    static const std::regex kWord(R"([A-Za-z0-9]+|\(RS\)|\(WS\))");
+    static const std::regex kWord(R"(w&t|[A-Za-z0-9]+|\(RS\)|\(WS\))");
     for (auto it = std::sregex_iterator(line.begin(), line.end(), kWord);
          it != std::sregex_iterator(); ++it) {
       std::string word = it->str();
@@ -201,10 +208,29 @@ class Mutator {
       {"five", {"four", "six"}},
       {"fifteen", {"fourteen", "sixteen"}},
       {"end", {"last 1 st"}},
-      {"last", {"end, and"}},
+      {"last", {"end, and", "first"}},
+      {"first", {"last"}},
+      {"front", {"behind"}},
+      {"behind", {"front"}},
+      {"right", {"left"}},
+      {"left", {"right"}},
+      {"up", {"down"}},
+      {"down", {"up"}},
+      {"w&t", {"turn", "k1, turn"}},
+      {"turn", {"w&t"}},
+      {"DS", {"k", "sm"}},
+      {"kw", {"k", "pw"}},
+      {"pw", {"p", "kw"}},
   };
 
+  bool near_a_piece_heading(std::size_t i) const {  // blank lines between instructions
+    for (std::size_t j = i > 8 ? i - 8 : 0; j < std::min(i + 9, lines_.size()); ++j)
+      if (lines_[j].rfind("### Piece", 0) == 0) return true;
+    return false;
+  }
+
   std::vector<std::string> lines_;
+  bool near_pieces_ = false;
   std::size_t begin_ = 0, end_ = 0;
   std::vector<Mutant> out_;
 };
@@ -276,25 +302,48 @@ std::string report(const std::string& name, const Tally& t) {
   return out;
 }
 
-void mutate_and_judge(const std::string& name, const Compilation& c) {
+std::string hand_pattern(const Compilation& c) {
   Registry registry;
   register_builtin_targets(registry);
   std::ostringstream out;
   registry.target("hand")->emit(c, {}, out);
-  std::string pattern = out.str();
+  return out.str();
+}
+
+void mutate_and_judge(const std::string& name, const Compilation& c, const std::string& pattern,
+                      bool near_pieces = false) {
   ASSERT_TRUE(hand::verify_pattern(pattern, name, &c).proven);
   Tally tally;
-  for (const Mutant& m : Mutator(pattern).all()) judge(c, pattern, m, tally);
+  for (const Mutant& m : Mutator(pattern, near_pieces).all()) judge(c, pattern, m, tally);
   std::cout << report(name, tally);
   EXPECT_GE(tally.total, 25) << name;
   EXPECT_TRUE(tally.missed.empty()) << name << ": an edit that changes the fabric was proven:\n"
                                     << tally.missed.front();
 }
 
+void mutate_and_judge(const std::string& name, const Compilation& c) {
+  mutate_and_judge(name, c, hand_pattern(c));
+}
+
 TEST(HandMutations, SamplesRejectEveryEditThatChangesTheFabric) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
-  for (const char* sample : {"samples/rib-swatch/rib-swatch.obj", "samples/hat/hat.obj"})
+  for (const char* sample :
+       {"samples/rib-swatch/rib-swatch.obj", "samples/hat/hat.obj", "samples/sock/sock.yaml",
+        "samples/short-row-wedge/short-row-wedge.yaml"})
     mutate_and_judge(sample, compile_model(sample));
+}
+
+// The same samples' short rows with wrap and turn (German short rows above).
+TEST(HandMutations, WrapAndTurnShortRowsRejectEveryEditThatChangesTheFabric) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  for (const char* sample :
+       {"samples/sock/sock.yaml", "samples/short-row-wedge/short-row-wedge.yaml"}) {
+    Compilation c = compile_model(sample);
+    std::ostringstream out;
+    hand::write_markdown(
+        hand::make_document(hand::build_hand_pattern(c, hand::TurnMethod::wrap_and_turn)), out);
+    mutate_and_judge(std::string(sample) + " (wrap and turn)", c, out.str());
+  }
 }
 
 TEST(HandMutations, SectionMarkerPatternsRejectEveryEditThatChangesTheFabric) {
@@ -308,6 +357,41 @@ TEST(HandMutations, SectionMarkerPatternsRejectEveryEditThatChangesTheFabric) {
       compile_stitch_mesh(
           build_from_rows(testing::wedge_plan(3, 5, 3, 1, StitchType::yo), Layout::sheet),
           "wedges"));
+}
+
+TEST(HandMutations, SplitsRejectEveryEditThatChangesTheFabric) {
+  mutate_and_judge("split fixture",
+                   compile_stitch_mesh(testing::split_mesh(MismatchYarn::Kind::extra), "split"));
+  mutate_and_judge(
+      "split sheets (own yarn)",
+      compile_stitch_mesh(meeting_sheets(Meeting::split, 5, 3, 4, MismatchYarn::Kind::own, true, 7),
+                          "split sheets"));
+}
+
+TEST(HandMutations, PickUpsRejectEveryEditThatChangesTheFabric) {
+  mutate_and_judge("expanding fixture (pick-up)",
+                   compile_stitch_mesh(testing::expanding_mesh(), "expanding"));
+  mutate_and_judge("contracting fixture (sl1 from spare)",
+                   compile_stitch_mesh(testing::contracting_mesh(), "contracting"));
+}
+
+TEST(HandMutations, JoinsRejectEveryEditThatChangesTheFabric) {
+  mutate_and_judge("join fixture",
+                   compile_stitch_mesh(testing::join_mesh(MismatchYarn::Kind::extra), "join"));
+  mutate_and_judge("join fixture (own yarn)",
+                   compile_stitch_mesh(testing::join_mesh(MismatchYarn::Kind::own), "join own"));
+  mutate_and_judge("joined sheets",
+                   compile_stitch_mesh(
+                       meeting_sheets(Meeting::join, 5, 4, 3, MismatchYarn::Kind::extra, false, 7),
+                       "joined sheets"));
+}
+
+// The sweater's pieces: where the body waits, the sleeves are left on spare needles, and the
+// body is taken up again with the sleeves placed into its rnd.
+TEST(HandMutations, PiecesSetAsideAndTakenUpRejectEveryEditThatChangesTheFabric) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  Compilation c = compile_model("samples/sweater/sweater.yaml");
+  mutate_and_judge("sweater (lines near the pieces)", c, hand_pattern(c), true);
 }
 
 TEST(HandMutations, ShapedSheetsAndTubesRejectEveryEditThatChangesTheFabric) {

@@ -15,6 +15,7 @@ struct Compilation;
 // Options a user can pass to a target or simulator (e.g. --machine).
 struct TargetOptions {
   std::string machine;  // profile name or path, for machine targets
+  std::string dialect;  // one of the target's dialects(); empty: its default
 };
 
 class Target {
@@ -23,6 +24,8 @@ class Target {
   virtual std::string name() const = 0;
   virtual std::string description() const = 0;
   virtual std::string default_extension() const = 0;  // ".txt", ".k", ".md"
+  // The dialects --dialect may name (the hand target: "standard", "knitspeak"); none by default.
+  virtual std::vector<std::string> dialects() const { return {}; }
   // Writes the compiled model; throws Error when this target cannot express it.
   virtual void emit(const Compilation& compilation, const TargetOptions& options,
                     std::ostream& out) const = 0;

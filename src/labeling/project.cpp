@@ -127,11 +127,17 @@ void read_start(const Reader& r, const YAML::Node& node, Project& p) {
 
 void read_short_rows(const Reader& r, const YAML::Node& node, Project& p) {
   constexpr std::string_view kMethods[] = {"sr4", "sr5"};
-  r.fields(node, {"method", "faces"}, "short_rows",
+  constexpr std::string_view kHandMethods[] = {"german", "wrap-and-turn"};
+  r.fields(node, {"method", "hand", "faces"}, "short_rows",
            [&](const std::string& key, const YAML::Node& v) {
              if (key == "method") {
                p.short_row_method =
                    static_cast<ShortRowMethod>(r.choice(v, "short-row method", kMethods));
+               return;
+             }
+             if (key == "hand") {
+               p.hand_turns =
+                   static_cast<HandTurnMethod>(r.choice(v, "hand short-row method", kHandMethods));
                return;
              }
              if (!v.IsSequence())

@@ -52,6 +52,26 @@ constexpr std::array kOps{
   HandOpInfo{O::pm,    "pm",    "place marker", 0, 0},
   HandOpInfo{O::sm,    "sm",    "slip marker", 0, 0},
   HandOpInfo{O::rm,    "rm",    "remove marker", 0, 0},
+  HandOpInfo{O::wt,    "w&t",   "wrap and turn (short row): bring the yarn between the needles, "
+                                "slip the next st purlwise, take the yarn back between the "
+                                "needles, slip the st back and turn the work", 1, 1},
+  HandOpInfo{O::turn,  "turn",  "turn the work before the end of the row (short row)", 0, 0},
+  HandOpInfo{O::ds,    "DS",    "double stitch (German short row): with the yarn in front, "
+                                "slip the first st purlwise and pull the yarn up over the needle "
+                                "to the back, so the st shows two legs", 0, 0},
+  HandOpInfo{O::kw,    "kw",    "knit the wrapped st together with its wrap: lift the wrap "
+                                "onto the left needle and knit it with the st", 1, 1},
+  HandOpInfo{O::pw,    "pw",    "purl the wrapped st together with its wrap: lift the wrap "
+                                "from the RS onto the left needle and purl it with the st", 1, 1},
+  HandOpInfo{O::kds,   "k DS",  "knit the two legs of the double stitch together as one st",
+                                1, 1},
+  HandOpInfo{O::pds,   "p DS",  "purl the two legs of the double stitch together as one st",
+                                1, 1},
+  HandOpInfo{O::from_spare, "sl1 from spare", "slip the next st waiting on the spare needle "
+                                "onto the left needle (it is worked next)", 0, 0},
+  HandOpInfo{O::from_spare_behind, "sl1 from spare behind", "slip the next st waiting on the "
+                                "spare needle onto the left needle behind its first st (the two "
+                                "are worked together, that one first)", 0, 0},
 };
 
 // How each operation shows from the RS when worked with a side facing. A make-one shows as
@@ -73,6 +93,7 @@ constexpr std::array kFaces{
   FaceRule{O::m1r, Side::rs, T::m1r},     FaceRule{O::m1pr, Side::ws, T::m1r},
   FaceRule{O::yo, Side::rs, T::yo},       FaceRule{O::yo, Side::ws, T::yo},
   FaceRule{O::bo, Side::rs, T::bo},       FaceRule{O::bo, Side::ws, T::bo},
+  FaceRule{O::wt, Side::rs, T::sr4},      FaceRule{O::wt, Side::ws, T::sr4},
 };
 // clang-format on
 
@@ -95,10 +116,9 @@ bool equal_ignoring_case(std::string_view a, std::string_view b) {
 }
 
 // rs_face and working_of answer from tables filled once from kFaces.
-constexpr std::size_t kHandOps = static_cast<std::size_t>(O::rm) + 1;
 
 struct FaceTables {
-  std::array<std::array<std::optional<StitchType>, 2>, kHandOps> face{};
+  std::array<std::array<std::optional<StitchType>, 2>, kHandOpCount> face{};
   // By stitch type: the catalogue grows with the core, so it is sized from it.
   std::vector<std::array<std::optional<HandOp>, 2>> op =
       std::vector<std::array<std::optional<HandOp>, 2>>(stitch_catalogue().size());
@@ -140,8 +160,17 @@ bool is_make_one(HandOp op) {
 bool is_plain(HandOp op) {
   return op == HandOp::k || op == HandOp::p;
 }
+bool ends_row(HandOp op) {
+  return op == HandOp::wt || op == HandOp::turn;
+}
+bool resolves_turn(HandOp op) {
+  return op >= HandOp::kw && op <= HandOp::pds;
+}
 
 std::optional<StitchType> rs_face(HandOp op, Side side) {
+  // Resolving a short-row turn works the loop as a plain st (not in the table, so that
+  // working_of keeps k and p for plain stitches).
+  if (resolves_turn(op)) op = (op == HandOp::kw || op == HandOp::kds) ? HandOp::k : HandOp::p;
   return face_tables().face[static_cast<std::size_t>(op)][static_cast<std::size_t>(side)];
 }
 

@@ -41,7 +41,23 @@ enum class HandOp : std::uint8_t {
   pm,
   sm,
   rm,  // place, slip, remove a marker
+  // Short rows (paper Fig. 10a: the sr4 face is the stitch the yarn turns at). Wrap and turn:
+  // "w&t" wraps the next st and turns, and a later row works the wrap with it ("kw", "pw").
+  // German short rows: the last st worked before "turn" becomes a double stitch ("DS") first
+  // in the next row, and a later row works its two legs as one ("k DS", "p DS").
+  wt,
+  turn,
+  ds,
+  kw,
+  pw,
+  kds,
+  pds,
+  // A piece beside this one (a contracting perpendicular edge) gives its sts one at a time:
+  // the next st waiting on the spare needle goes onto the left needle, to be worked next.
+  from_spare,
+  from_spare_behind,  // ... behind the first st of the left needle (worked second)
 };
+inline constexpr std::size_t kHandOpCount = static_cast<std::size_t>(HandOp::from_spare_behind) + 1;
 
 struct HandOpInfo {
   HandOp op;
@@ -56,6 +72,9 @@ std::optional<HandOp> hand_op_from(std::string_view word);  // case-insensitive
 
 bool is_make_one(HandOp op);  // M1L, M1R, M1PL, M1PR, yo
 bool is_plain(HandOp op);     // k, p: written with a count ("k12")
+bool ends_row(HandOp op);     // w&t, turn: the rest of the needle waits
+// kw, pw, k DS, p DS: a plain st worked over the loop a short row turned at.
+bool resolves_turn(HandOp op);
 
 // The model stitch (as seen from the RS) that `op` makes when worked with `side` facing;
 // nullopt when no stitch of the catalogue looks like that (ssk worked on the WS). For a

@@ -10,6 +10,7 @@
 #include "hand/needle_sim.hpp"
 #include "hand/pattern_reader.hpp"
 #include "hand/pattern_writers.hpp"
+#include "labeling/project.hpp"
 
 namespace skein {
 namespace hand {
@@ -34,18 +35,27 @@ constexpr FormatInfo kFormats[] = {
      "the hand-knitting pattern's rows in Stitch-Maps' KnitSpeak"},
 };
 
+// The short-row method the project file chose (German short rows otherwise).
+TurnMethod turn_method_of(const Compilation& c) {
+  return is_project_file(c.input) ? read_project(c.input).hand_turns : TurnMethod::german;
+}
+
 class HandTarget : public Target {
  public:
   explicit HandTarget(const FormatInfo& f) : f_(f) {}
   std::string name() const override { return f_.target; }
   std::string description() const override { return f_.description; }
   std::string default_extension() const override { return f_.extension; }
-  void emit(const Compilation& c, const TargetOptions&, std::ostream& out) const override {
-    HandPattern pattern = build_hand_pattern(c);
+  std::vector<std::string> dialects() const override { return {"standard", "knitspeak"}; }
+  void emit(const Compilation& c, const TargetOptions& options, std::ostream& out) const override {
+    HandPattern pattern = build_hand_pattern(c, turn_method_of(c));
     Gauge gauge;
-    PatternDocument doc = make_document(
-        pattern, f_.format == Format::knitspeak ? Dialect::knitspeak : Dialect::standard, gauge);
-    switch (f_.format) {
+    PatternDocument doc = make_document(pattern, dialect_of(options), gauge);
+    // `--target hand --dialect knitspeak` writes what hand-knitspeak writes; the page stays a
+    // page, with its rows in KnitSpeak.
+    bool rows_only = f_.format == Format::markdown && options.dialect == "knitspeak";
+    Format format = rows_only ? Format::knitspeak : f_.format;
+    switch (format) {
       case Format::markdown:
         write_markdown(doc, out);
         break;
@@ -59,6 +69,13 @@ class HandTarget : public Target {
   }
 
  private:
+  // --dialect knitspeak writes KnitSpeak rows whatever the target's own format.
+  Dialect dialect_of(const TargetOptions& options) const {
+    if (options.dialect.empty())
+      return f_.format == Format::knitspeak ? Dialect::knitspeak : Dialect::standard;
+    return options.dialect == "knitspeak" ? Dialect::knitspeak : Dialect::standard;
+  }
+
   const FormatInfo& f_;
 };
 
@@ -118,6 +135,10 @@ VerifyReport verify_pattern(std::string_view text, const std::string& file,
                                file, work_done(r), r.fabric.size())};
   std::optional<Difference> straight = first_difference(r.fabric, *against, false);
   if (!straight) return proven(r, file, *against, false);
+  // Only rounds are written mirrored (when the model's run left to right): a flat pattern that
+  // knits the mirror image knits another piece.
+  if (r.rounds == 0)
+    return {false, fmt::format("{}: not the model's fabric: {}", file, straight->what)};
   std::optional<Difference> mirror = first_difference(r.fabric, *against, true);
   if (!mirror) return proven(r, file, *against, true);
   // Report the comparison that got further (the pattern is most likely meant that way); at

@@ -232,9 +232,7 @@ void write_html(const PatternDocument& doc, const HandPattern& pattern, const Ga
         << fmt::format(
                "<figcaption>Schematic{}: rows bottom to top, as wide as their stitches "
                "at the gauge{}; darker rows change the stitch count.</figcaption>\n",
-               pattern.sections.size() > 1
-                   ? fmt::format(" (piece {} highlighted)", line.section + 1)
-                   : "",
+               pattern.sections.size() > 1 ? fmt::format(" (piece {} highlighted)", s.piece) : "",
                s.in_round ? " (rounds drawn flat: the width is the circumference)" : "")
         << "</figure>\n"
         << chart(pattern, s);

@@ -3,13 +3,19 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <map>
 
 namespace skein::hand {
 
 std::uint8_t Fabric::rs_slot(std::uint32_t loop) const {
   std::uint32_t maker = loop_maker[loop];
-  return facing[maker] == Side::rs ? static_cast<std::uint8_t>(made[maker] - 1 - loop_index[loop])
-                                   : loop_index[loop];
+  bool left = picked_from[maker] == kLeftEdge;
+  if (loop_picked[loop]) return left ? 0 : static_cast<std::uint8_t>(made[maker] - 1);
+  auto worked = static_cast<std::uint8_t>(made[maker] - (picked_from[maker] != kNoEdge));
+  std::uint8_t slot = facing[maker] == Side::rs
+                          ? static_cast<std::uint8_t>(worked - 1 - loop_index[loop])
+                          : loop_index[loop];
+  return static_cast<std::uint8_t>(slot + left);
 }
 
 std::vector<std::uint32_t> Fabric::rs_taken(std::uint32_t stitch) const {
@@ -22,6 +28,7 @@ std::vector<std::uint32_t> Fabric::rs_taken(std::uint32_t stitch) const {
 
 std::string Fabric::row_label(std::uint32_t r) const {
   const RowWorked& w = rows[r];
+  if (w.join) return "Three-needle bind-off";
   if (w.number == 0) return "Cast on";
   std::string word = w.round ? "Rnd" : "Row";
   std::string label = w.round ? fmt::format("Rnd {}", w.number)
@@ -89,9 +96,19 @@ class NeedleSimulator {
   void do_step(const Step& s) {
     switch (s.kind) {
       case Step::Kind::piece:
+        if (s.number != 0 && s.number != fab().piece_first.size() + 1 &&
+            !set_aside_.contains(s.number))
+          fail(fmt::format("Piece {} comes next (or one set aside), not Piece {}",
+                           fab().piece_first.size() + 1, s.number));
         break;
       case Step::Kind::cast_on:
-        cast_on(s.count);
+        cast_on(s.count, s.provisional);
+        break;
+      case Step::Kind::join_spare:
+        join_spare(s);
+        break;
+      case Step::Kind::pick_up:
+        pick_up(s);
         break;
       case Step::Kind::join_round:
         join(s.marker);
@@ -108,80 +125,302 @@ class NeedleSimulator {
       case Step::Kind::fasten_off:
         fasten_off();
         break;
+      case Step::Kind::leave:
+        leave(s.count);
+        break;
+      case Step::Kind::set_aside:
+        set_aside(s.count);
+        break;
+      case Step::Kind::take_up:
+        take_up(s.number);
+        break;
+      case Step::Kind::place:
+        place(s);
+        break;
+      case Step::Kind::three_needle_bind_off:
+        three_needle_bind_off(s);
+        break;
     }
   }
 
   // --- pieces -------------------------------------------------------------------------------
 
-  void cast_on(std::uint32_t n) {
-    if (active_ && live_ > 0)
-      fail(fmt::format("Cast on: the piece before still has {} on the needle", sts(live_)));
+  // A provisional cast-on makes each st with two loops (a cast-on along a split): one on the
+  // needle, one in the waste-yarn chain, which waits on a spare needle for the other side.
+  void cast_on(std::uint32_t n, bool provisional) {
+    if (active_ && pc_.live > 0)
+      fail(fmt::format("Cast on: the piece before still has {} on the needle", sts(pc_.live)));
     if (n == 0) fail("Cast on: no sts to cast on");
-    active_ = true;
-    facing_ = Side::rs;
-    round_ = place_bor_ = false;
-    bor_ = kNone;
-    next_number_ = 1;
-    last_side_.reset();
-    defined_.clear();
-    left_.clear();
-    right_.clear();
-    piece_last_ = kNone;
-    fab().piece_first.push_back(fab().size());
+    start_piece();
     fab().rows.push_back({0, 0, 0, false, Side::rs});
     row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
+    facing_ = provisional ? Side::ws : Side::rs;  // the needle's loop first, seen from the RS
+    for (std::uint32_t i = 0; i < n; ++i) {
+      std::uint32_t x = new_stitch(provisional ? StitchType::sco : StitchType::co);
+      fab().taken_first.push_back(static_cast<std::uint32_t>(fab().taken.size()));
+      pc_.right.push_back(new_loop(x));
+      if (provisional) spare_needles_[{pc_.number, kChain}].push_back(new_loop(x));
+    }
+    pc_.live = n;
+  }
+
+  // A new piece worked from loops picked up along an edge of a finished piece, one in each
+  // of its rows: the loop of the st at that edge, the last one picked up at the needle tip.
+  void pick_up(const Step& s) {
+    if (active_ && pc_.live > 0)
+      fail(fmt::format("Pick up: the piece before still has {} on the needle", sts(pc_.live)));
+    std::vector<std::uint32_t> rows = rows_of_piece(s.number);
+    std::uint32_t low = std::min(s.from_row, s.to_row), high = std::max(s.from_row, s.to_row);
+    for (std::uint32_t n : {low, high})
+      if (n >= rows.size() || rows[n] == kNone)
+        fail(fmt::format("Pick up: Piece {} has no {}", s.number,
+                         n == 0 ? std::string("cast-on") : fmt::format("Row {}", n)));
+    if (high - low + 1 != s.count)
+      fail(fmt::format("Pick up: the pattern says {}, but there are {} rows from {} to {}",
+                       sts(s.count), high - low + 1, low, high));
+    start_piece();
+    fab().rows.push_back({0, 0, 0, false, Side::rs});
+    row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
+    for (std::uint32_t i = 0; i < s.count; ++i) {
+      std::uint32_t n = s.from_row <= s.to_row ? s.from_row + i : s.from_row - i;
+      pc_.right.push_back(pick_up_loop(rows, n, s.provisional));
+    }
+    pc_.live = s.count;
+  }
+
+  // Per row number of a piece (0: its cast-on), the row worked (kNone: none with stitches).
+  std::vector<std::uint32_t> rows_of_piece(std::uint32_t piece) const {
+    std::vector<std::uint32_t> rows;
+    for (std::uint32_t r = 0; r < out_.fabric.rows.size(); ++r) {
+      const Fabric::RowWorked& w = out_.fabric.rows[r];
+      if (w.piece != piece || w.join) continue;
+      if (rows.size() <= w.number) rows.resize(w.number + 1, kNone);
+      rows[w.number] = r;
+    }
+    return rows;
+  }
+
+  // The loop picked up at the right (or left) edge of a row, seen from the RS: a row worked
+  // with the RS facing starts at the right; a cast-on ends where the next row starts.
+  std::uint32_t pick_up_loop(const std::vector<std::uint32_t>& rows, std::uint32_t n, bool right) {
+    Fabric& f = fab();
+    const Fabric::RowWorked& row = f.rows[rows[n]];
+    Side side =
+        n == 0 && rows.size() > 1 && rows[1] != kNone ? other(f.rows[rows[1]].side) : row.side;
+    bool first = (side == Side::rs) == right;
+    std::uint32_t x = first ? row.first : row.last;
+    if (f.picked_from[x] != Fabric::kNoEdge)
+      fail(fmt::format("Pick up: {} already gave a st", f.describe(x)));
+    std::uint32_t loop = new_loop(x);
+    f.loop_picked[loop] = 1;
+    f.picked_from[x] = right ? Fabric::kRightEdge : Fabric::kLeftEdge;
+    return loop;
+  }
+
+  // A new piece worked from a spare needle's sts with a new yarn.
+  void join_spare(const Step& s) {
+    if (active_ && pc_.live > 0)
+      fail(fmt::format("Join a new yarn: the piece before still has {} on the needle",
+                       sts(pc_.live)));
+    std::vector<std::uint32_t> loops =
+        spare_needle(s.number, s.from_last[0], "Join a new yarn", s.provisional);
+    if (loops.size() != s.count)
+      fail(fmt::format("Join a new yarn: the pattern says {}, but the needle holds {}",
+                       sts(s.count), loops.size()));
+    spare_needles_.erase({s.number, s.provisional ? kChain : kNeedle});
+    start_piece();
+    fab().rows.push_back({0, 0, 0, false, Side::rs});
+    row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
+    pc_.right.assign(loops.rbegin(), loops.rend());
+    pc_.live = s.count;
+  }
+
+  // A new piece with its own yarn and needles.
+  // A flat piece's first row works the cast-on from its last st (turn_before).
+  void start_piece() {
+    active_ = true;
+    facing_ = Side::rs;
+    fab().piece_first.push_back(fab().size());
+    pc_ = Piece{};
+    pc_.number = static_cast<std::uint32_t>(fab().piece_first.size());
     position_ = 0;
     next_link_ = YarnLink::course;
-    for (std::uint32_t i = 0; i < n; ++i) {
-      std::uint32_t x = new_stitch(StitchType::co);
-      fab().taken_first.push_back(static_cast<std::uint32_t>(fab().taken.size()));
-      right_.push_back(new_loop(x));
-    }
-    live_ = n;
   }
 
   void join(bool marker) {
-    if (!active_ || next_number_ != 1 || round_)
+    if (!active_ || pc_.next_number != 1 || pc_.joined)
       fail("Join to work in the rnd: only right after a cast-on");
-    round_ = true;
-    place_bor_ = marker;
+    pc_.joined = true;
+    pc_.turn_before = false;  // the first rnd starts with the first st cast on
+    pc_.place_bor = marker;
   }
 
   void fasten_off() {
     if (!active_) fail("Fasten off: no yarn is being worked");
-    if (live_ > 0)
-      fail(fmt::format("Fasten off: {} still on the needle; bind them off first", sts(live_)));
+    if (pc_.live > 0)
+      fail(fmt::format("Fasten off: {} still on the needle; bind them off first", sts(pc_.live)));
     active_ = false;
+  }
+
+  void check_live(std::uint32_t n, const char* what) const {
+    if (!active_) fail(fmt::format("{}: no piece is being worked", what));
+    if (n != pc_.live)
+      fail(fmt::format("{}: the pattern says {}, but {} on the needle", what, sts(n),
+                       pc_.live == 1 ? "1 st is" : fmt::format("{} sts are", pc_.live)));
+  }
+
+  // The piece waits, sts and yarn, until it is taken up again.
+  void set_aside(std::uint32_t n) {
+    check_live(n, "Leave the sts");
+    set_aside_[pc_.number] = std::move(pc_);
+    active_ = false;
+  }
+
+  void take_up(std::uint32_t number) {
+    if (active_ && pc_.live > 0)
+      fail(fmt::format("Take up Piece {}: the piece before still has {} on the needle", number,
+                       sts(pc_.live)));
+    auto at = set_aside_.find(number);
+    if (at == set_aside_.end()) fail(fmt::format("Take up Piece {}: it was not set aside", number));
+    pc_ = std::move(at->second);
+    set_aside_.erase(at);
+    active_ = true;
+  }
+
+  // The sts of a spare needle join the rnd of the piece being worked, after the first `last`
+  // sts from the beginning of the rnd.
+  void place(const Step& s) {
+    if (!active_ || !pc_.joined || pc_.bor == kNone)
+      fail(fmt::format("Place the sts of Piece {}: only into a piece worked in the rnd", s.number));
+    std::vector<std::uint32_t> placed = spare_needle(s.number, s.from_last[0], "Place the sts");
+    if (placed.size() != s.count)
+      fail(fmt::format("Place the sts of Piece {}: the pattern says {}, but its needle holds {}",
+                       s.number, sts(s.count), placed.size()));
+    std::vector<std::uint32_t> ring = ring_from_bor();
+    if (s.last > ring.size())
+      fail(fmt::format("Place the sts of Piece {}: the rnd has only {}", s.number,
+                       sts(static_cast<std::uint32_t>(ring.size()))));
+    ring.insert(ring.begin() + s.last, placed.begin(), placed.end());
+    pc_.right.assign(1, pc_.bor);
+    pc_.right.insert(pc_.right.end(), ring.begin(), ring.end());
+    pc_.left.clear();
+    pc_.live += s.count;
+    spare_needles_.erase({s.number, kNeedle});
+  }
+
+  // The loops around the needle from the beginning-of-round marker on (markers left out).
+  std::vector<std::uint32_t> ring_from_bor() const {
+    std::vector<std::uint32_t> ring(pc_.left.rbegin(), pc_.left.rend());
+    ring.insert(ring.end(), pc_.right.begin(), pc_.right.end());
+    auto at = std::find(ring.begin(), ring.end(), pc_.bor);
+    std::rotate(ring.begin(), at, ring.end());
+    std::erase_if(ring, is_marker_entry);
+    return ring;
+  }
+
+  // The piece's live sts wait on a spare needle, in the order its last row worked them.
+  void leave(std::uint32_t n) {
+    check_live(n, "Leave the sts");
+    std::vector<std::uint32_t>& spare = spare_needles_[{pc_.number, kNeedle}];
+    for (std::uint32_t entry : pc_.right)
+      if (!is_marker_entry(entry)) spare.push_back(entry);
+    pc_.right.clear();
+    pc_.left.clear();
+    active_ = false;
+    pc_.live = 0;
+  }
+
+  // Pairs the sts of two spare needles, each from the end the pattern puts at the tip, and
+  // binds them off with a new yarn.
+  // With its own yarn the front piece is the one being worked: its needle is the front one.
+  void three_needle_bind_off(const Step& s) {
+    std::uint32_t front = s.number, back = s.last, pairs = s.count;
+    if (s.own_yarn && (!active_ || pc_.number != front))
+      fail(fmt::format("three-needle bind-off with its yarn: Piece {} is not being worked", front));
+    if (s.own_yarn)
+      leave(pc_.live);
+    else if (active_ && pc_.live > 0)
+      fail(fmt::format("three-needle bind-off: the piece before still has {} on the needle",
+                       sts(pc_.live)));
+    std::vector<std::uint32_t> f = spare_needle(front, s.from_last[0], "three-needle bind-off");
+    std::vector<std::uint32_t> b = spare_needle(back, s.from_last[1], "three-needle bind-off");
+    if (f.size() != b.size())
+      fail(fmt::format("three-needle bind-off: {} on front needle, {} on back", sts(f.size()),
+                       b.size()));
+    if (f.size() != pairs)
+      fail(fmt::format("three-needle bind-off: the pattern says {} pairs, but the needles hold {}",
+                       pairs, f.size()));
+    if (s.own_yarn) {
+      active_ = true;
+      next_link_ = YarnLink::turn;  // the yarn turns from the front piece's last row
+    } else {
+      start_piece();
+    }
+    fab().rows.push_back({0, 0, 0, false, Side::ws, true});
+    row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
+    facing_ = Side::ws;  // the front piece shows its WS: its loop is taken first
+    for (std::uint32_t i = 0; i < pairs; ++i) {
+      new_stitch(StitchType::tnbo);
+      fab().taken.push_back(f[i]);
+      fab().taken.push_back(b[i]);
+      fab().taken_first.push_back(static_cast<std::uint32_t>(fab().taken.size()));
+    }
+    spare_needles_.erase({front, kNeedle});
+    spare_needles_.erase({back, kNeedle});
+  }
+
+  // The sts from the needle tip: the first or the last st of the piece's last row.
+  std::vector<std::uint32_t> spare_needle(std::uint32_t piece, bool from_last, const char* what,
+                                          bool chain = false) const {
+    auto at = spare_needles_.find({piece, chain ? kChain : kNeedle});
+    if (at == spare_needles_.end())
+      fail(fmt::format("{}: {} of Piece {} {} not waiting on a spare needle", what,
+                       chain ? "the chain" : "the sts", piece, chain ? "is" : "are"));
+    std::vector<std::uint32_t> loops = at->second;
+    if (from_last) std::reverse(loops.begin(), loops.end());
+    return loops;
   }
 
   void finish() {
     if (fab().piece_first.empty()) throw StepFailure{"the pattern casts nothing on"};
-    if (active_ && live_ > 0)
-      throw StepFailure{fmt::format("the pattern ends with {} still on the needle", sts(live_))};
+    if (!set_aside_.empty())
+      throw StepFailure{
+          fmt::format("Piece {} is set aside and never taken up again", set_aside_.begin()->first)};
+    if (!spare_needles_.empty())
+      throw StepFailure{
+          fmt::format("the {} of Piece {} {} left on a spare needle, never worked",
+                      spare_needles_.begin()->first.second == kChain ? "chain" : "sts",
+                      spare_needles_.begin()->first.first,
+                      spare_needles_.begin()->first.second == kChain ? "is" : "are")};
+    if (active_ && pc_.live > 0)
+      throw StepFailure{fmt::format("the pattern ends with {} still on the needle", sts(pc_.live))};
   }
 
   // --- rows ---------------------------------------------------------------------------------
 
   void check_kind(bool round_label, const char* what) const {
     if (!active_)
-      throw StepFailure{fmt::format("{}: no sts are on the needle (cast on first)", what)};
-    if (round_label != round_)
       throw StepFailure{
-          round_ ? fmt::format("{}: the work is joined in the rnd, so it has rnds, not rows", what)
-                 : fmt::format(
-                       "{}: the work is flat (never joined in the rnd), so it has rows, not rnds",
-                       what)};
+          set_aside_.empty()
+              ? fmt::format("{}: no sts are on the needle (cast on first)", what)
+              : fmt::format("{}: no sts are on the needle (take up Piece {} again first)", what,
+                            set_aside_.begin()->first)};
+    // Joined work has rnds, and rows where it turns (short rows).
+    if (round_label && !pc_.joined)
+      throw StepFailure{fmt::format(
+          "{}: the work is flat (never joined in the rnd), so it has rows, not rnds", what)};
   }
 
   void work_rows(const Step& s) {
     check_kind(s.round, s.round ? "Rnd" : "Row");
-    if (s.number != next_number_)
+    if (s.number != pc_.next_number)
       throw StepFailure{fmt::format("{} {} comes next, not {} {}", s.round ? "Rnd" : "Row",
-                                    next_number_, s.round ? "Rnd" : "Row", s.number)};
+                                    pc_.next_number, s.round ? "Rnd" : "Row", s.number)};
     for (std::uint32_t n = s.number; n <= s.last; ++n) {
-      if (defined_.size() <= n) defined_.resize(n + 1, kNone);
-      defined_[n] = s.program;
-      work_row(script_.programs[s.program], 0, n == s.number ? s.side : std::nullopt, s.line);
+      if (pc_.defined.size() <= n) pc_.defined.resize(n + 1, kNone);
+      pc_.defined[n] = s.program;
+      work_row(script_.programs[s.program], s.round, 0, n == s.number ? s.side : std::nullopt,
+               s.line);
     }
     check_count(s);
   }
@@ -193,116 +432,166 @@ class NeedleSimulator {
             : fmt::format("Rep {} {}\u2013{}", s.round ? "Rnds" : "Rows", s.number, s.last);
     check_kind(s.round, what.c_str());
     for (std::uint32_t n = s.number; n <= s.last; ++n)
-      if (n >= defined_.size() || defined_[n] == kNone)
+      if (n >= pc_.defined.size() || pc_.defined[n] == kNone)
         throw StepFailure{
             fmt::format("{}: {} {} is not written out above", what, s.round ? "Rnd" : "Row", n)};
-    if (s.last + 1 != next_number_)
+    if (s.last + 1 != pc_.next_number)
       throw StepFailure{fmt::format("{}: the rows to repeat must be the last ones worked ({} {})",
-                                    what, s.round ? "Rnd" : "Row", next_number_ - 1)};
+                                    what, s.round ? "Rnd" : "Row", pc_.next_number - 1)};
     for (std::uint32_t t = 0; t < s.count; ++t)
       for (std::uint32_t n = s.number; n <= s.last; ++n) {
-        std::uint32_t number = next_number_;
-        if (defined_.size() <= number) defined_.resize(number + 1, kNone);
-        defined_[number] = defined_[n];
-        work_row(script_.programs[defined_[n]], n, std::nullopt, s.line);
+        std::uint32_t number = pc_.next_number;
+        if (pc_.defined.size() <= number) pc_.defined.resize(number + 1, kNone);
+        pc_.defined[number] = pc_.defined[n];
+        work_row(script_.programs[pc_.defined[n]], s.round, n, std::nullopt, s.line);
       }
     check_count(s);
   }
 
   void work_even(const Step& s) {
     check_kind(s.round, s.round ? "every rnd" : "every row");
-    if (s.count < next_number_)
+    if (s.count < pc_.next_number)
       throw StepFailure{fmt::format("until {} {} in all: {} are already worked", s.count,
-                                    s.round ? "rnds" : "rows", next_number_ - 1)};
+                                    s.round ? "rnds" : "rows", pc_.next_number - 1)};
     std::uint32_t program = s.op == HandOp::k ? 0 : 1;
-    while (next_number_ <= s.count) work_row(work_even_[program], 0, std::nullopt, s.line);
+    while (pc_.next_number <= s.count)
+      work_row(work_even_[program], s.round, 0, std::nullopt, s.line);
   }
 
   void check_count(const Step& s) {
     if (!s.sts) return;
     ++out_.counts_checked;
-    if (*s.sts != live_)
-      throw StepFailure{fmt::format("{}: the pattern says {}, but {} on the needle",
-                                    fab().row_label(row_), sts(*s.sts),
-                                    live_ == 1 ? "1 st is" : fmt::format("{} sts are", live_))};
+    if (*s.sts != pc_.live)
+      throw StepFailure{fmt::format(
+          "{}: the pattern says {}, but {} on the needle", fab().row_label(row_), sts(*s.sts),
+          pc_.live == 1 ? "1 st is" : fmt::format("{} sts are", pc_.live))};
   }
 
-  void work_row(const Program& p, std::uint32_t repeat_of, std::optional<Side> label,
+  // A row turns the work first when the one before ended at a turn (every flat row does);
+  // after a rnd, or a row that did not turn, the work goes on in the same direction.
+  Side facing_of(bool round, std::optional<Side> label) const {
+    if (!pc_.last_side) return round ? Side::rs : label.value_or(Side::rs);
+    return pc_.turn_before ? other(*pc_.last_side) : *pc_.last_side;
+  }
+
+  void work_row(const Program& p, bool round, std::uint32_t repeat_of, std::optional<Side> label,
                 std::size_t line) {
-    Side facing = Side::rs;
-    if (!round_) facing = last_side_ ? other(*last_side_) : label.value_or(Side::rs);
-    fab().rows.push_back({line, next_number_, repeat_of, round_, facing});
+    Side facing = facing_of(round, label);
+    fab().rows.push_back({line, pc_.next_number, repeat_of, round, facing});
     row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
     in_row_ = true;
-    if (label && !round_ && *label != facing)
-      fail(fmt::format("labelled {}, but the {} faces you: every row turns the work",
-                       side_name(*label), side_name(facing)));
+    row_round_ = round;
+    if (round && facing != Side::rs)
+      fail("the WS faces you (the work was turned): rnds are worked with the RS facing");
+    if (label && !round && *label != facing)
+      fail(fmt::format("labelled {}, but the {} faces you: {}", side_name(*label),
+                       side_name(facing),
+                       !pc_.joined       ? "every row turns the work"
+                       : pc_.turn_before ? "the work was turned"
+                                         : "the work was not turned"));
     begin_row(facing);
     run_nodes(p, p.top_begin, p.top_end);
     end_row();
     in_row_ = false;
-    last_side_ = facing;
-    ++next_number_;
-    ++(round_ ? out_.rounds : out_.rows);
+    pc_.last_side = facing;
+    ++pc_.next_number;
+    ++(round ? out_.rounds : out_.rows);
   }
 
   void begin_row(Side facing) {
     facing_ = facing;
     position_ = 0;
     row_last_stitch_ = kNone;
+    row_ended_ = false;
     pending_.clear();
     last_make_ = std::nullopt;
-    if (round_)
-      left_.assign(right_.rbegin(), right_.rend());
-    else
-      left_.swap(right_);
-    right_.clear();
+    next_link_ = pc_.turn_before ? YarnLink::turn : YarnLink::shift;
+    if (pc_.turn_before) pc_.left.swap(pc_.right);
+    if (row_round_)
+      gather_round();
+    else if (!pc_.turn_before)
+      slip_bor_if_next();
     index_left_needle();
-    next_link_ = round_ ? YarnLink::shift : YarnLink::turn;
-    if (place_bor_) {
-      bor_ = new_marker();
-      right_.push_back(bor_);
-      place_bor_ = false;
-    } else if (bor_ != kNone && !left_.empty() && left_.back() == bor_) {
-      right_.push_back(left_.back());
-      left_.pop_back();
+  }
+
+  // A row that goes on from the end of a rnd starts, like a rnd, by slipping the marker.
+  void slip_bor_if_next() {
+    wrap_around();
+    if (pc_.left.empty() || pc_.left.back() != pc_.bor) return;
+    pc_.right.push_back(pc_.bor);
+    pc_.left.pop_back();
+  }
+
+  // A rnd runs from here to the beginning-of-round marker (all the way round when the marker
+  // is next: it is slipped): the loops before the marker go on the left needle, the marker
+  // and the rest behind.
+  void gather_round() {
+    std::vector<std::uint32_t> ring(pc_.left.rbegin(), pc_.left.rend());  // from here onwards
+    ring.insert(ring.end(), pc_.right.begin(), pc_.right.end());
+    auto at = std::find(ring.begin(), ring.end(), pc_.bor);
+    if (pc_.place_bor || at == ring.end()) {
+      pc_.left.assign(ring.rbegin(), ring.rend());
+      pc_.right.clear();
+      if (pc_.place_bor) pc_.right.push_back(pc_.bor = new_marker());
+      pc_.place_bor = false;
+      return;
     }
+    if (at == ring.begin()) {
+      std::rotate(ring.begin(), ring.begin() + 1, ring.end());
+      at = ring.end() - 1;
+    }
+    pc_.left.assign(std::make_reverse_iterator(at), ring.rend());
+    pc_.right.assign(at, ring.end());
+  }
+
+  // In the rnd the needle has no end: a row that turns goes on past the last st on the left
+  // needle to the first on the right one.
+  void wrap_around() {
+    if (!pc_.joined || row_round_ || !pc_.left.empty()) return;
+    pc_.left.assign(pc_.right.rbegin(), pc_.right.rend());
+    pc_.right.clear();
+    index_left_needle();
   }
 
   void end_row() {
-    if (left_loops_ > 0)
-      fail(fmt::format("{} left unworked at the end of the {}", sts(left_loops_),
-                       round_ ? "rnd" : "row"));
-    if (!left_.empty())
+    const char* what = row_round_ ? "rnd" : "row";
+    if (!row_ended_ && pc_.joined && !row_round_)
+      fail("a row worked in the rnd ends where the work turns: end it with w&t or turn");
+    if (!row_ended_ && left_loops_ > 0)
+      fail(fmt::format("{} left unworked at the end of the {}", sts(left_loops_), what));
+    if (!row_ended_ && !pc_.left.empty())
       fail(fmt::format("a marker is left at the end of the {}: slip it (sm) or remove it (rm)",
-                       round_ ? "rnd" : "row"));
+                       what));
     if (!pending_.empty())
       fail(fmt::format("{} with no st worked in the {} to go with it",
-                       info(pending_.front().op).abbreviation, round_ ? "rnd" : "row"));
-    if (!round_ && last_make_ && *last_make_ != HandOp::yo)
+                       info(pending_.front().op).abbreviation, what));
+    if (!row_round_ && last_make_ && *last_make_ != HandOp::yo)
       fail(fmt::format("{} at the end of a row: there is no strand after the last st to lift",
                        info(*last_make_).abbreviation));
+    pc_.turn_before = row_ended_ || !pc_.joined;
   }
 
   // For each place on the left needle, the loops from there to the next marker (the tip is at
   // the back), and whether a marker comes at all: "to m" in constant time.
   void index_left_needle() {
-    to_marker_.resize(left_.size());
-    marker_ahead_.resize(left_.size());
+    to_marker_.resize(pc_.left.size());
+    marker_ahead_.resize(pc_.left.size());
     left_loops_ = 0;
-    for (std::size_t i = 0; i < left_.size(); ++i) {
-      bool marker = is_marker_entry(left_[i]);
+    for (std::size_t i = 0; i < pc_.left.size(); ++i) {
+      bool marker = is_marker_entry(pc_.left[i]);
       to_marker_[i] = marker ? 0 : (i ? to_marker_[i - 1] : 0) + 1;
       marker_ahead_[i] = marker || (i && marker_ahead_[i - 1]);
       left_loops_ += !marker;
     }
   }
 
-  std::uint32_t loops_to_marker() const { return left_.empty() ? 0 : to_marker_[left_.size() - 1]; }
+  std::uint32_t loops_to_marker() const {
+    return pc_.left.empty() ? 0 : to_marker_[pc_.left.size() - 1];
+  }
   // In the round the beginning-of-round marker ends the round: it counts as the last marker.
-  bool end_is_marker() const { return round_ && bor_ != kNone; }
+  bool end_is_marker() const { return row_round_ && pc_.bor != kNone; }
   bool marker_ahead() const {
-    return (!left_.empty() && marker_ahead_[left_.size() - 1]) || end_is_marker();
+    return (!pc_.left.empty() && marker_ahead_[pc_.left.size() - 1]) || end_is_marker();
   }
 
   // --- instructions -------------------------------------------------------------------------
@@ -314,9 +603,9 @@ class NeedleSimulator {
   void run_node(const Program& p, const Node& n) {
     switch (n.kind) {
       case Node::Kind::bind_off_all:
-        while (!left_.empty()) {
-          if (is_marker_entry(left_.back()))
-            left_.pop_back();  // binding off removes markers
+        while (!pc_.left.empty()) {
+          if (is_marker_entry(pc_.left.back()))
+            pc_.left.pop_back();  // binding off removes markers
           else
             apply(HandOp::bo);
         }
@@ -329,10 +618,11 @@ class NeedleSimulator {
           bool slips = n.until.kind == Until::Kind::end || n.until.kind == Until::Kind::last;
           std::uint32_t times = whole_repeats(n.until, info(n.op).takes, info(n.op).abbreviation);
           for (std::uint32_t t = 0; t < times; ++t) {
-            while (slips && !left_.empty() && is_marker_entry(left_.back())) apply(HandOp::sm);
+            while (slips && !pc_.left.empty() && is_marker_entry(pc_.left.back()))
+              apply(HandOp::sm);
             apply(n.op);
           }
-          while (n.until.kind == Until::Kind::end && !left_.empty()) apply(HandOp::sm);
+          while (n.until.kind == Until::Kind::end && !pc_.left.empty()) apply(HandOp::sm);
         }
         return;
       case Node::Kind::group:
@@ -375,6 +665,8 @@ class NeedleSimulator {
   std::uint32_t remaining(const Until& u, std::string_view what) const {
     switch (u.kind) {
       case Until::Kind::end:
+        if (pc_.joined && !row_round_)
+          fail(fmt::format("{} to end: a row worked in the rnd has no end; give the count", what));
         return left_loops_;
       case Until::Kind::last:
         if (left_loops_ < u.sts)
@@ -406,25 +698,39 @@ class NeedleSimulator {
   }
 
   void apply(HandOp op) {
+    if (row_ended_)
+      fail(fmt::format("{} after the turn: the row ends where the work turns",
+                       info(op).abbreviation));
+    wrap_around();
     switch (op) {
+      case HandOp::turn:
+        row_ended_ = true;
+        return;
+      case HandOp::ds:
+        double_stitch();
+        return;
+      case HandOp::from_spare:
+      case HandOp::from_spare_behind:
+        slip_from_spare(op == HandOp::from_spare_behind);
+        return;
       case HandOp::pm:
-        right_.push_back(new_marker());
+        pc_.right.push_back(new_marker());
         return;
       case HandOp::sm:
       case HandOp::rm: {
-        if (left_.empty() && end_is_marker()) {  // the beginning-of-round marker
+        if (pc_.left.empty() && end_is_marker()) {  // the beginning-of-round marker
           if (op == HandOp::rm) remove_bor();
           return;
         }
-        if (left_.empty() || !is_marker_entry(left_.back()))
+        if (pc_.left.empty() || !is_marker_entry(pc_.left.back()))
           fail(fmt::format("{}: the next thing on the left needle is {}, not a marker",
-                           info(op).abbreviation, left_.empty() ? "nothing" : "a st"));
-        std::uint32_t marker = left_.back();
-        left_.pop_back();
+                           info(op).abbreviation, pc_.left.empty() ? "nothing" : "a st"));
+        std::uint32_t marker = pc_.left.back();
+        pc_.left.pop_back();
         if (op == HandOp::sm)
-          right_.push_back(marker);
-        else if (marker == bor_)
-          bor_ = kNone;
+          pc_.right.push_back(marker);
+        else if (marker == pc_.bor)
+          pc_.bor = kNone;
         return;
       }
       default:
@@ -434,12 +740,93 @@ class NeedleSimulator {
       make_one(op);
     else
       stitch(op);
+    if (op == HandOp::wt) wrap_and_turn();
+  }
+
+  // w&t: the st just slipped and wrapped goes back to the left needle, and the work turns.
+  void wrap_and_turn() {
+    std::uint32_t loop = pc_.right.back();
+    pc_.right.pop_back();
+    turn_mark_[loop] = kWrapped;
+    push_left(loop);
+    row_ended_ = true;
+  }
+
+  // Puts a loop at the tip of the left needle, keeping its index.
+  void push_left(std::uint32_t loop) {
+    pc_.left.push_back(loop);
+    to_marker_.resize(pc_.left.size());
+    marker_ahead_.resize(pc_.left.size());
+    std::size_t i = pc_.left.size() - 1;
+    to_marker_[i] = (i ? to_marker_[i - 1] : 0) + 1;
+    marker_ahead_[i] = i && marker_ahead_[i - 1];
+    ++left_loops_;
+  }
+
+  // The next st of the one piece waiting on a spare needle (in the order its last row worked
+  // them) joins the work at the tip of the left needle.
+  void slip_from_spare(bool behind) {
+    if (spare_needles_.size() != 1)
+      fail(fmt::format("sl1 from spare: {} pieces wait on spare needles; which one is meant?",
+                       spare_needles_.size()));
+    std::uint32_t first = kNone;
+    if (behind) {
+      if (pc_.left.empty() || is_marker_entry(pc_.left.back()))
+        fail("sl1 from spare behind: there is no st on the left needle to slip it behind");
+      first = pc_.left.back();
+      pc_.left.pop_back();
+      --left_loops_;
+    }
+    std::vector<std::uint32_t>& spare = spare_needles_.begin()->second;
+    push_left(spare.front());
+    if (behind) push_left(first);
+    spare.erase(spare.begin());
+    if (spare.empty()) spare_needles_.clear();
+    ++pc_.live;
+  }
+
+  // DS: first after a turn, the st worked last before it is pulled up into a double stitch
+  // and slipped.
+  void double_stitch() {
+    if (position_ != 0 || next_link_ != YarnLink::turn || pc_.left.empty() ||
+        is_marker_entry(pc_.left.back()) || fab().loop_maker[pc_.left.back()] != pc_.last_stitch)
+      fail("DS: only first in a row after a turn, on the st worked last before it");
+    Fabric& f = fab();
+    std::uint32_t x = pc_.last_stitch;
+    bool plain = (f.type[x] == StitchType::k || f.type[x] == StitchType::p) && f.made[x] == 1 &&
+                 f.taken_first[x + 1] - f.taken_first[x] == 1;
+    if (!plain)
+      fail(fmt::format("DS: {} is not a plain st; a double stitch is made from a k or p",
+                       f.describe(x)));
+    f.type[x] = StitchType::sr4;
+    std::uint32_t loop = pc_.left.back();
+    pc_.left.pop_back();
+    --left_loops_;
+    turn_mark_[loop] = kDouble;
+    pc_.right.push_back(loop);
+  }
+
+  // A loop a short row turned at must be worked with what resolves it, and only such a loop.
+  void check_turn_loop(HandOp op, std::uint32_t loop) const {
+    std::uint8_t needs = op == HandOp::kw || op == HandOp::pw     ? kWrapped
+                         : op == HandOp::kds || op == HandOp::pds ? kDouble
+                                                                  : kPlainLoop;
+    if (turn_mark_[loop] == needs) return;
+    if (needs != kPlainLoop)
+      fail(fmt::format("{}: the next st is {}", info(op).abbreviation,
+                       turn_mark_[loop] == kPlainLoop ? "not a short-row turn"
+                       : turn_mark_[loop] == kWrapped ? "wrapped, not a double stitch"
+                                                      : "a double stitch, not wrapped"));
+    fail(fmt::format("{}: the next st is {}: work it with {}", info(op).abbreviation,
+                     turn_mark_[loop] == kWrapped ? "wrapped" : "a double stitch",
+                     turn_mark_[loop] == kWrapped ? (facing_ == Side::rs ? "kw" : "pw")
+                                                  : (facing_ == Side::rs ? "k DS" : "p DS")));
   }
 
   void remove_bor() {
-    auto at = std::find(right_.begin(), right_.end(), bor_);
-    if (at != right_.end()) right_.erase(at);
-    bor_ = kNone;
+    auto at = std::find(pc_.right.begin(), pc_.right.end(), pc_.bor);
+    if (at != pc_.right.end()) pc_.right.erase(at);
+    pc_.bor = kNone;
   }
 
   void stitch(HandOp op) {
@@ -450,29 +837,31 @@ class NeedleSimulator {
                        marker_ahead() ? " before the marker" : "", ready));
     std::optional<StitchType> face = rs_face(op, facing_);
     if (!face) wrong_side(op);
+    for (std::uint32_t i = 0; i < oi.takes; ++i)
+      check_turn_loop(op, pc_.left[pc_.left.size() - 1 - i]);
     std::uint32_t x = new_stitch(*face);
     for (std::uint32_t i = 0; i < oi.takes; ++i) {
-      fab().taken.push_back(left_.back());
-      left_.pop_back();
+      fab().taken.push_back(pc_.left.back());
+      pc_.left.pop_back();
     }
     left_loops_ -= oi.takes;
     fab().taken_first.push_back(static_cast<std::uint32_t>(fab().taken.size()));
     for (const Pending& p : pending_) adopt(x, p.op, p.loop);
     pending_.clear();
-    for (std::uint32_t i = 0; i < oi.makes; ++i) right_.push_back(new_loop(x));
-    live_ = live_ + oi.makes - oi.takes;
+    for (std::uint32_t i = 0; i < oi.makes; ++i) pc_.right.push_back(new_loop(x));
+    pc_.live = pc_.live + oi.makes - oi.takes;
     row_last_stitch_ = x;
     last_make_.reset();
   }
 
   // A make-one goes with the stitch just worked, or (first in a row) with the next one.
   void make_one(HandOp op) {
-    if (!round_ && op != HandOp::yo && row_last_stitch_ == kNone)
+    if (!row_round_ && op != HandOp::yo && row_last_stitch_ == kNone)
       fail(fmt::format("{} at the start of a row: there is no strand before the first st to lift",
                        info(op).abbreviation));
     std::uint32_t loop = new_loop(kNone);
-    right_.push_back(loop);
-    ++live_;
+    pc_.right.push_back(loop);
+    ++pc_.live;
     last_make_ = op;
     if (row_last_stitch_ == kNone)
       pending_.push_back({op, loop});
@@ -518,12 +907,19 @@ class NeedleSimulator {
     f.row.push_back(row_);
     f.position.push_back(++position_);
     f.made.push_back(0);
-    if (piece_last_ != kNone) {
-      f.yarn_next[piece_last_] = x;
-      f.yarn_link[piece_last_] = next_link_;
+    f.picked_from.push_back(Fabric::kNoEdge);
+    Fabric::RowWorked& r = f.rows[row_];
+    if (r.first == kNoStitch) {
+      r.first = x;
+      r.piece = pc_.number;
+    }
+    r.last = x;
+    if (pc_.last_stitch != kNone) {
+      f.yarn_next[pc_.last_stitch] = x;
+      f.yarn_link[pc_.last_stitch] = next_link_;
     }
     next_link_ = YarnLink::course;
-    piece_last_ = x;
+    pc_.last_stitch = x;
     return x;
   }
 
@@ -531,6 +927,8 @@ class NeedleSimulator {
     Fabric& f = fab();
     auto loop = static_cast<std::uint32_t>(f.loop_maker.size());
     f.loop_maker.push_back(maker);
+    turn_mark_.push_back(kPlainLoop);
+    f.loop_picked.push_back(0);
     f.loop_index.push_back(maker == kNone ? 0 : f.made[maker]++);
     return loop;
   }
@@ -547,25 +945,42 @@ class NeedleSimulator {
   Replay out_;
   std::vector<Program> work_even_;  // "k to end", "p to end"
 
-  // The piece being worked.
-  bool active_ = false, round_ = false, place_bor_ = false;
-  std::uint32_t bor_ = kNone;
-  std::uint32_t next_number_ = 1;
-  std::optional<Side> last_side_;
-  std::vector<std::uint32_t> defined_;  // per row number: the program that worked it
-  std::uint32_t live_ = 0;
-  std::uint32_t piece_last_ = kNone;
+  // Per piece number (1-based): the sts it left on a spare needle.
+  // (and with a provisional cast-on, the loops of its chain).
+  static constexpr std::uint32_t kNeedle = 0, kChain = 1;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> spare_needles_;
+
+  // Per loop: whether a short row turned at it, and how.
+  static constexpr std::uint8_t kPlainLoop = 0, kWrapped = 1, kDouble = 2;
+  std::vector<std::uint8_t> turn_mark_;
+
+  // The piece being worked: what a knitter sets aside with its yarn and takes up again.
+  struct Piece {
+    std::uint32_t number = 0;  // 1-based, in the order the pieces start
+    bool joined = false, place_bor = false;
+    bool turn_before = true;  // the next row starts by turning the work
+    std::uint32_t bor = kNone;
+    std::uint32_t next_number = 1;
+    std::optional<Side> last_side;
+    std::vector<std::uint32_t> defined;  // per row number: the program that worked it
+    std::uint32_t live = 0;
+    std::uint32_t last_stitch = kNone;       // along its yarn
+    std::vector<std::uint32_t> left, right;  // the needles; tips at the back
+  };
+  bool active_ = false;
+  Piece pc_;
+  std::map<std::uint32_t, Piece> set_aside_;  // by piece number
   YarnLink next_link_ = YarnLink::course;
 
-  // The needles; tips at the back.
-  std::vector<std::uint32_t> left_, right_;
+  // The left needle's index.
   std::vector<std::uint32_t> to_marker_;
   std::vector<std::uint8_t> marker_ahead_;
   std::uint32_t left_loops_ = 0;
   std::uint32_t markers_ = 0;
 
   // The row being worked.
-  bool in_row_ = false;
+  bool in_row_ = false, row_round_ = false;
+  bool row_ended_ = false;  // by w&t or turn
   std::uint32_t row_ = 0;
   Side facing_ = Side::rs;
   std::uint32_t position_ = 0;

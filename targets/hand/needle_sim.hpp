@@ -21,6 +21,9 @@ struct Fabric {
     std::uint32_t repeat_of = 0;  // the row it repeats, or 0
     bool round = false;
     Side side = Side::rs;
+    bool join = false;                                  // a three-needle bind-off
+    std::uint32_t piece = 0;                            // 1-based
+    std::uint32_t first = kNoStitch, last = kNoStitch;  // its stitches, in the order worked
   };
 
   // Per stitch, in the order worked.
@@ -35,6 +38,11 @@ struct Fabric {
   // Per loop: its maker and its index among the maker's loops, in the order made.
   std::vector<std::uint32_t> loop_maker;
   std::vector<std::uint8_t> loop_index;
+  // Loops picked up along an edge: per stitch, which of its edges gave one (none, left or right
+  // seen from the RS); per loop, whether it is that one. It is the stitch's first or last loop.
+  enum Edge : std::uint8_t { kNoEdge, kLeftEdge, kRightEdge };
+  std::vector<std::uint8_t> picked_from;
+  std::vector<std::uint8_t> loop_picked;
   std::vector<std::uint32_t> piece_first;  // per piece (one yarn each): its first stitch
   std::vector<RowWorked> rows;
 

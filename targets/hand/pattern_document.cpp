@@ -25,6 +25,11 @@ std::string with_commas(std::uint64_t n) {
   return out;
 }
 
+// "1 st", "12 sts".
+std::string sts(std::uint32_t n) {
+  return fmt::format("{} st{}", n, n == 1 ? "" : "s");
+}
+
 std::string cm_and_inches(double cm) {
   return fmt::format("{:.0f} cm ({:.1f} in)", cm, cm / 2.54);
 }
@@ -66,11 +71,14 @@ class InstructionWriter {
       section_ = s;
       if (p_.sections.size() > 1)
         add(InstructionLine::Kind::heading, "",
-            fmt::format("Piece {} (yarn {})", s + 1, sec.yarn + 1));
-      add(InstructionLine::Kind::setup, "", setup_text(sec));
+            fmt::format("Piece {} (yarn {}){}{}", sec.piece, sec.yarn + 1,
+                        sec.resumed ? ", taken up again" : "",
+                        sec.joins ? ": three-needle bind-off" : ""));
+      // A join with a new yarn is a piece of its own; with a piece's yarn it ends that piece.
+      if (!sec.joins || sec.own_yarn) add(InstructionLine::Kind::setup, "", setup_text(sec));
       write_rows(sec.first_row, sec.end_row);
-      if (sec.end_row > sec.first_row && p_.rows[sec.end_row - 1].bind_off)
-        add(InstructionLine::Kind::finish, "", "Fasten off.");
+      if (sec.joins) add(InstructionLine::Kind::finish, "", three_needle_text(sec));
+      add(InstructionLine::Kind::finish, "", finish_text(sec));
     }
   }
 
@@ -78,9 +86,71 @@ class InstructionWriter {
   bool knitspeak() const { return dialect_ == Dialect::knitspeak; }
 
   std::string setup_text(const PatternSection& sec) const {
-    std::string text = fmt::format("Cast on {} sts.", sec.cast_on);
+    if (sec.resumed) return take_up_text(sec);
+    if (sec.starts_from) return join_spare_text(*sec.starts_from);
+    if (sec.picks_up) return pick_up_text(*sec.picks_up, sec.cast_on);
+    std::string text = fmt::format("Cast on {}{}.", sts(sec.cast_on),
+                                   sec.provisional ? " with a provisional cast-on" : "");
     if (sec.in_round) text += " Pm and join to work in the rnd, being careful not to twist.";
     return text;
+  }
+
+  std::string three_needle_text(const PatternSection& sec) const {
+    return fmt::format(
+        "Three-needle bind-off: hold the pieces with RS together: Piece {} in front, the {} st "
+        "of its last row at the needle tip; Piece {} behind, the {} st of its last row at the "
+        "tip (slide the sts to the other end of a needle if need be); with {} yarn bind off "
+        "all {} pairs.",
+        p_.sections[sec.front].piece, sec.from_last[0] ? "last" : "first",
+        p_.sections[sec.back].piece, sec.from_last[1] ? "last" : "first",
+        sec.own_yarn ? "its" : "a new", sec.pairs);
+  }
+
+  // "Take up Piece 1 again with its yarn. Place the 58 sts of Piece 2 on the needle at the
+  // beginning of the rnd, the first st of its last rnd first."
+  std::string take_up_text(const PatternSection& sec) const {
+    std::string text = fmt::format("Take up Piece {} again with its yarn.", sec.piece);
+    for (const PatternSection::Placement& p : sec.placements) {
+      const PatternSection& spare = p_.sections[p.section];
+      std::string where = p.after == 0 ? "at the beginning of the rnd"
+                                       : fmt::format("after the first {} sts of the rnd", p.after);
+      text += fmt::format(
+          " Place the {} sts of Piece {} on the needle {}, the {} st of its last "
+          "{} first.",
+          p.count, spare.piece, where, p.from_last ? "last" : "first",
+          spare.in_round ? "rnd" : "row");
+    }
+    return text;
+  }
+
+  // "Pick up 3 sts along the right edge of Piece 1, one in each row from Row 2 down to the
+  // cast-on."
+  std::string pick_up_text(const PatternSection::PickUp& p, std::uint32_t count) const {
+    auto row = [](std::uint32_t n) {
+      return n == 0 ? std::string("the cast-on") : fmt::format("Row {}", n);
+    };
+    return fmt::format(
+        "Pick up {} along the {} edge of Piece {}, one in each row from {} {} "
+        "to {}.",
+        sts(count), p.right ? "right" : "left", p_.sections[p.section].piece, row(p.from_row),
+        p.from_row <= p.to_row ? "up" : "down", row(p.to_row));
+  }
+
+  // "Join a new yarn to the 3 loops of Piece 1's chain, the first st cast on at the tip."
+  std::string join_spare_text(const PatternSection::Start& start) const {
+    const PatternSection& spare = p_.sections[start.section];
+    return fmt::format("Join a new yarn to the {} {} of Piece {}{}, the {} st cast on at the tip.",
+                       spare.cast_on, start.chain ? "loops" : "sts", spare.piece,
+                       start.chain ? "'s chain" : "", start.from_last ? "last" : "first");
+  }
+
+  static std::string finish_text(const PatternSection& sec) {
+    if (sec.set_aside)
+      return fmt::format("Leave the {} on the needle and set the yarn aside (do not cut it).",
+                         sts(sec.live_at_end));
+    if (sec.left_live)
+      return fmt::format("Leave the {} on a spare needle and cut the yarn.", sts(sec.live_at_end));
+    return "Fasten off.";
   }
 
   std::string rows_word(bool round, bool plural) const {
@@ -113,7 +183,8 @@ class InstructionWriter {
   bool block_repeats(std::uint32_t a, std::uint32_t b, std::uint32_t period) const {
     for (std::uint32_t k = 0; k < period; ++k) {
       const PatternRow &x = p_.rows[a + k], &y = p_.rows[b + k];
-      if (x.bind_off || y.bind_off || x.round != y.round || texts_[a + k] != texts_[b + k])
+      if (x.bind_off || y.bind_off || x.round != p_.rows[a].round || y.round != x.round ||
+          texts_[a + k] != texts_[b + k])
         return false;
     }
     return true;
@@ -124,17 +195,31 @@ class InstructionWriter {
       auto [period, times] = best_block(i, end);
       std::uint32_t last = i + period * times - 1;
       const PatternRow& r = p_.rows[i];
+      // The first flat row of a piece keeps its label: it says which side is the RS.
+      bool sided = !r.round && i == first;
       if (times > 1 && period == 1 && (texts_[i] == "Knit" || texts_[i] == "Purl") &&
-          !knitspeak()) {
-        add(InstructionLine::Kind::repeat, "",
-            fmt::format("{} every {} until {} {} in all.", texts_[i], r.round ? "rnd" : "row",
-                        p_.rows[last].number, r.round ? "rnds" : "rows"));
+          !knitspeak() && !sided) {
+        add(InstructionLine::Kind::repeat, "", work_even_text(r, p_.rows[last], first, i));
       } else {
         for (std::uint32_t k = 0; k < period; ++k) row_line(i + k);
         if (times > 1) repeat_line(i, period, times);
       }
       i = last + 1;
     }
+  }
+
+  // "Knit every rnd until 24 rnds in all"; after short rows, which the numbers count too,
+  // "Knit every rnd through Rnd 105".
+  std::string work_even_text(const PatternRow& r, const PatternRow& last, std::uint32_t first,
+                             std::uint32_t i) const {
+    bool turned = std::any_of(p_.rows.begin() + first, p_.rows.begin() + i,
+                              [](const PatternRow& row) { return row.short_row; });
+    const char* every = r.round ? "rnd" : "row";
+    if (turned)
+      return fmt::format("{} every {} through {} {}.", texts_[i], every, rows_word(r.round, false),
+                         last.number);
+    return fmt::format("{} every {} until {} {} in all.", texts_[i], every, last.number,
+                       r.round ? "rnds" : "rows");
   }
 
   void row_line(std::uint32_t i) {
@@ -179,20 +264,32 @@ class InstructionWriter {
 
 // What the front matter needs to know about the whole pattern.
 struct Totals {
-  bool flat = false, round = false;
+  bool flat = false, round = false, joins = false;
+  bool partial_bind_off = false;  // a row binds off some of its sts
+  bool spare_needles = false;     // a piece waits on one
+  bool provisional = false;       // a provisional cast-on
+  bool picks_up = false;          // a piece starts on loops picked up along an edge
   std::uint32_t widest = 0, narrowest_round = 0;
-  std::vector<bool> used = std::vector<bool>(static_cast<std::size_t>(HandOp::rm) + 1, false);
+  std::vector<bool> used = std::vector<bool>(kHandOpCount, false);
 };
 
 Totals totals_of(const HandPattern& p) {
   Totals t;
   t.narrowest_round = ~0u;
   for (const PatternSection& s : p.sections) {
+    t.joins = t.joins || s.joins;
+    t.spare_needles = t.spare_needles || s.left_live || s.provisional;
+    t.provisional = t.provisional || s.provisional;
+    t.picks_up = t.picks_up || s.picks_up.has_value();
+    if (s.joins) continue;
     (s.in_round ? t.round : t.flat) = true;
     t.widest = std::max(t.widest, s.cast_on);
     if (s.in_round) t.narrowest_round = std::min(t.narrowest_round, s.cast_on);
   }
   for (const PatternRow& r : p.rows) {
+    auto ops = p.ops_of(r);
+    t.partial_bind_off = t.partial_bind_off || (!r.bind_off && std::find(ops.begin(), ops.end(),
+                                                                         HandOp::bo) != ops.end());
     t.widest = std::max(t.widest, r.sts_after);
     if (r.round && !r.bind_off) t.narrowest_round = std::min(t.narrowest_round, r.sts_after);
   }
@@ -224,29 +321,39 @@ class FrontMatter {
   std::vector<std::string> measurements() const {
     std::vector<std::string> items;
     for (const PatternSection& s : p_.sections) {
-      std::uint32_t widest = s.cast_on, rows = s.end_row - s.first_row;
-      for (std::uint32_t r = s.first_row; r < s.end_row; ++r)
+      if (s.joins) continue;
+      // Short rows add length to part of the piece only: they are counted apart.
+      std::uint32_t widest = s.cast_on, rows = 0, short_rows = 0;
+      for (std::uint32_t r = s.first_row; r < s.end_row; ++r) {
         widest = std::max(widest, p_.rows[r].sts_after);
-      std::string piece =
-          p_.sections.size() > 1 ? fmt::format("Piece {}: ", &s - &p_.sections[0] + 1) : "";
-      items.push_back(fmt::format("{}{}: {}, {} sts at the widest. {}: {}, {} {}.", piece,
+        ++(p_.rows[r].partial ? short_rows : rows);
+      }
+      std::string piece = p_.sections.size() > 1 ? fmt::format("Piece {}{}: ", s.piece,
+                                                               s.resumed ? " (taken up again)" : "")
+                                                 : "";
+      std::string extra = short_rows ? fmt::format(", plus {} short rows", short_rows) : "";
+      items.push_back(fmt::format("{}{}: {}, {} sts at the widest. {}: {}, {} {}{}.", piece,
                                   s.in_round ? "Circumference" : "Width",
                                   cm_and_inches(width_cm(widest)), widest,
                                   s.in_round ? "Height" : "Length", cm_and_inches(length_cm(rows)),
-                                  rows, s.in_round ? "rnds" : "rows"));
+                                  rows, s.in_round ? "rnds" : "rows", extra));
     }
     return items;
   }
 
+  // One line per yarn piece; a piece taken up again goes on with the same yarn.
   std::vector<std::string> yarn() const {
+    std::vector<std::uint64_t> stitches(p_.sections.size() + 1, 0);
+    for (const PatternSection& s : p_.sections) stitches[s.piece] += s.stitches;
     std::vector<std::string> items;
     for (const PatternSection& s : p_.sections) {
-      double metres = std::ceil(s.stitches * gauge_.yarn_cm_per_stitch() / 100 + 0.4);
+      if (s.resumed) continue;
+      double metres = std::ceil(stitches[s.piece] * gauge_.yarn_cm_per_stitch() / 100 + 0.4);
       items.push_back(fmt::format(
           "{}About {:.0f} m ({:.0f} yd) of worsted-weight yarn, estimated from its {} sts at the "
           "gauge below, with 20 cm tails at each end.",
           p_.sections.size() > 1 ? fmt::format("Yarn {}: ", s.yarn + 1) : "", metres,
-          std::ceil(metres / 0.9144), with_commas(s.stitches)));
+          std::ceil(metres / 0.9144), with_commas(stitches[s.piece])));
     }
     return items;
   }
@@ -276,6 +383,9 @@ class FrontMatter {
                                   t_.round ? ", one of them in another colour for the beginning "
                                              "of the round"
                                            : ""));
+    if (t_.spare_needles)
+      items.push_back("A spare needle (or stitch holder) for each piece left to wait on one.");
+    if (t_.joins) items.push_back("A third needle for the three-needle bind-off.");
     items.push_back("Tapestry needle for weaving in ends.");
     return items;
   }
@@ -301,7 +411,8 @@ class FrontMatter {
 
   std::vector<std::string> abbreviations() const {
     std::vector<std::string> items;
-    for (auto op = HandOp::k; op <= HandOp::rm; op = static_cast<HandOp>(static_cast<int>(op) + 1))
+    for (auto op = HandOp::k; op <= HandOp::from_spare_behind;
+         op = static_cast<HandOp>(static_cast<int>(op) + 1))
       if (uses(op) || (op == HandOp::pm && says("Pm ")))
         items.push_back(fmt::format("**{}**: {}", info(op).abbreviation, info(op).meaning));
     auto word = [&](bool used, const char* abbr, const char* meaning) {
@@ -333,13 +444,55 @@ class FrontMatter {
           "with the cast-on edge untwisted, place the BOR marker and knit the first "
           "cast-on stitch with the working yarn. The marker then sits at the start of "
           "every round: slip it as you come to it.");
+    if (p_.short_rows) items.push_back(short_rows_technique());
+    if (t_.provisional)
+      items.push_back(
+          "**Provisional cast-on** (a cast-on along a split): with waste yarn crochet a chain a "
+          "few sts longer than needed; with the working yarn pick up and knit 1 st through the "
+          "back bump of each chain st. The sts on the needle are one side of the split; where "
+          "the pattern works \"the loops of its chain\", unzip the waste yarn and put the live "
+          "loops on a needle: they are the other side.");
+    if (t_.picks_up)
+      items.push_back(
+          "**Picking up along an edge:** with the RS facing and a new yarn, put the outer loop "
+          "of the edge st of each row named onto the needle, one row after the other (the loops "
+          "are not knit: the next row works them, starting with the last one picked up).");
+    if (t_.joins)
+      items.push_back(
+          "**Three-needle bind-off:** hold the two needles parallel, tips to the right; insert "
+          "the third needle knitwise into the first st of the front needle and then the first st "
+          "of the back needle, knit them together; *knit the next pair together the same way, "
+          "pass the first st on the right needle over the second; rep from * until all pairs "
+          "are worked; cut the yarn and pull it through the last loop.");
     if (uses(HandOp::bo))
       items.push_back(
           "**Binding off (BO):** work 2 sts as they appear, *pass the first st on the "
           "right needle over the second; work 1 more st; rep from * until 1 st "
           "remains, removing any markers as you come to them; cut the yarn and pull it "
           "through that last loop (fasten off).");
+    if (t_.partial_bind_off)
+      items.push_back(
+          "**Binding off part of a row** (\"BO 8 sts, k40\"): bind off 8 sts as above without "
+          "cutting the yarn; the st left on the right needle is the first st of what follows "
+          "(the first of the 40).");
     return items;
+  }
+
+  // The method the project chose, and how its turns are resolved later.
+  std::string short_rows_technique() const {
+    if (p_.turns == TurnMethod::wrap_and_turn)
+      return "**Short rows (wrap and turn):** a row that ends in w&t stops there: bring the yarn "
+             "between the needles, slip the next st purlwise, take the yarn back between the "
+             "needles, slip the st back to the left needle and turn the work; the next row starts "
+             "with the st worked last. The sts beyond wait on the needle. When a later row comes "
+             "to a wrapped st, lift the wrap onto the left needle and work it together with the "
+             "st: kw on the RS, pw on the WS.";
+    return "**Short rows (German short rows):** a row that ends in \"turn\" stops there: turn the "
+           "work; the sts beyond wait on the needle. When the next row begins with DS, bring the "
+           "yarn to the front, slip the first st (the one worked last) purlwise and pull the yarn "
+           "up over the needle to the back until the st shows two legs: a double stitch. When a "
+           "later row comes to a double stitch, work its two legs together as one st: k DS on "
+           "the RS, p DS on the WS.";
   }
 
   std::vector<std::string> notes() const {
@@ -360,6 +513,12 @@ class FrontMatter {
           fmt::format("\"{}\" counts every {} from the cast-on, those already "
                       "worked included.",
                       even, t_.round ? "rnd" : "row"));
+    if (p_.short_rows && t_.round)
+      items.push_back(
+          "In the rnd, a row that ends with a turn is a short row: it is worked back and forth "
+          "over part of the rnd while the other sts wait. A rnd after short rows starts where "
+          "the last one ended and goes on to the BOR marker; the row and rnd numbers count "
+          "both.");
     if (p_.markers > 1)
       items.push_back(t_.round ? "Slip the markers as you come to them. The beginning-of-round "
                                  "marker is the last \"m\" of every round: \"to m\" in the last "

@@ -14,8 +14,9 @@ namespace {
 
 using T = StitchType;
 
-constexpr std::array kSupported = {T::k,   T::p,  T::co,    T::bo,  T::kfb,   T::m1l,
-                                   T::m1r, T::yo, T::k2tog, T::ssk, T::p2tog, T::s2kp};
+constexpr std::array kSupported = {T::k,     T::p,    T::co,  T::bo,    T::kfb,
+                                   T::m1l,   T::m1r,  T::yo,  T::k2tog, T::ssk,
+                                   T::p2tog, T::s2kp, T::sr4, T::tnbo,  T::sco};
 
 [[noreturn]] void unsupported(const std::string& what) {
   throw Error(fmt::format("hand target: {}", what));
@@ -32,24 +33,16 @@ void check_supported(const Compilation& c) {
     if (std::find(kSupported.begin(), kSupported.end(), g.type[s]) == kSupported.end())
       unsupported(fmt::format("{} is a {} ({}), which hand patterns do not cover yet",
                               g.describe(s), info(g.type[s]).name, abbreviation(g.type[s])));
-  if (std::count(g.row_shape.begin(), g.row_shape.end(), RowShape::short_row) > 0)
-    unsupported(
-        fmt::format("{} has short rows, which hand patterns do not cover yet", g.source_name));
-  for (const Loop& l : g.loops)
-    if (l.kind != LoopKind::wale || l.taker == kNoStitch)
+  for (const Loop& l : g.loops) {
+    bool joined = l.kind == LoopKind::joined && l.taker != kNoStitch && g.type[l.taker] == T::tnbo;
+    bool split = l.kind == LoopKind::split && l.maker != kNoStitch && g.type[l.maker] == T::sco;
+    bool across = l.kind == LoopKind::perpendicular && l.maker != kNoStitch;  // see append_ops
+    if ((l.kind != LoopKind::wale && !joined && !split && !across) || l.taker == kNoStitch)
       unsupported(fmt::format(
-          "the loop {} makes {}: hand patterns cover loops between rows only", g.describe(l.maker),
+          "the loop {} makes {}: hand patterns cover loops between rows, joins and splits only",
+          g.describe(l.maker),
           l.taker == kNoStitch ? "is never worked"
                                : "crosses a mismatched edge to " + g.describe(l.taker)));
-  for (const Event& e : c.schedule.events) {
-    if (e.kind == EventKind::hold)
-      unsupported(
-          fmt::format("yarn {} must put its stitches aside at {} until {} is knit; "
-                      "holding and resuming stitches is not covered yet",
-                      e.yarn + 1, g.describe(e.stitch), g.describe(e.waits_for)));
-    if (e.kind == EventKind::marker && e.marker != MarkerKind::beginning_of_round)
-      unsupported(fmt::format("a {} marker before {} is not covered yet", marker_name(e.marker),
-                              g.describe(e.stitch)));
   }
 }
 
@@ -144,28 +137,43 @@ bool needs_mirror(const Compilation& c, const Handedness& hand) {
 
 class PatternBuilder {
  public:
-  explicit PatternBuilder(const Compilation& c) : c_(c), g_(c.knit), hand_(c) {
+  PatternBuilder(const Compilation& c, TurnMethod turns) : c_(c), g_(c.knit), hand_(c) {
     out_.source = c.input;
     out_.mirror = needs_mirror(c, hand_);
+    out_.turns = turns;
   }
 
   HandPattern run() && {
+    std::size_t yarns = c_.yarns.size();
+    set_aside_.resize(yarns);
+    section_of_yarn_.resize(yarns, 0);
+    deferred_.resize(yarns);
+    taken_up_.resize(yarns, 0);
     for (const Event& e : c_.schedule.events) {
       switch (e.kind) {
         case EventKind::yarn_start:
           start_section(e.yarn);
           break;
-        case EventKind::row_start:
-          flush_row();
-          break;
         case EventKind::stitch:
-          row_.push_back(e.stitch);
+          if (taken_up_[e.yarn]) {
+            deferred_[e.yarn].push_back(e.stitch);
+            unwritten_[e.stitch] = 1;
+          } else {
+            add_stitch(e.stitch);
+          }
+          break;
+        case EventKind::hold:
+          if (!taken_up_[e.yarn]) set_section_aside(e.yarn);
+          break;
+        case EventKind::resume:
+          taken_up_[e.yarn] = 1;
           break;
         case EventKind::yarn_end:
+          if (taken_up_[e.yarn]) take_up_section(e.yarn);
           end_section();
           break;
         default:
-          break;  // turns and round markers follow from the yarn links
+          break;  // rows, turns and markers follow from the yarn links and the stitches
       }
     }
     return std::move(out_);
@@ -174,82 +182,328 @@ class PatternBuilder {
  private:
   PatternSection& section() { return out_.sections.back(); }
 
+  // A knitter's row ends where the yarn turns or goes on into the next round.
+  void add_stitch(StitchId s) {
+    row_.push_back(s);
+    if (g_.type[s] != T::tnbo && g_.yarn_link[s] != YarnLink::course) flush_row();
+  }
+
   void start_section(std::uint32_t yarn) {
+    section_of_yarn_[yarn] = static_cast<std::uint32_t>(out_.sections.size());
     PatternSection& s = out_.sections.emplace_back();
     s.yarn = yarn;
+    s.piece = ++pieces_;
     s.first_row = s.end_row = static_cast<std::uint32_t>(out_.rows.size());
-    live_ = 0;
-    cast_on_done_ = false;
+    st_.live = 0;
+    st_.cast_on_done = false;
+  }
+
+  // The yarn waits for another piece: its sts stay on the needle.
+  // A row the yarn stops in the middle of is written with the rest, when it is taken up.
+  void set_section_aside(std::uint32_t yarn) {
+    for (StitchId st : row_) unwritten_[st] = 1;
+    deferred_[yarn] = std::move(row_);
+    row_.clear();
+    section().set_aside = true;
+    section().live_at_end = st_.live;
+    section().end_row = static_cast<std::uint32_t>(out_.rows.size());
+    set_aside_[yarn] = st_;
+  }
+
+  // The rest of a yarn set aside, as one section that goes on counting its rows.
+  void take_up_section(std::uint32_t yarn) {
+    const PatternSection& before = out_.sections[section_of_yarn_[yarn]];
+    PatternSection s;
+    s.yarn = yarn;
+    s.piece = before.piece;
+    s.in_round = before.in_round;
+    s.resumed = true;
+    s.first_number = before.first_number + (before.end_row - before.first_row);
+    std::copy(std::begin(before.last_row_ends), std::end(before.last_row_ends), s.last_row_ends);
+    s.first_row = s.end_row = static_cast<std::uint32_t>(out_.rows.size());
+    section_of_yarn_[yarn] = static_cast<std::uint32_t>(out_.sections.size());
+    out_.sections.push_back(s);
+    st_ = set_aside_[yarn];
+    taken_up_[yarn] = 0;
+    for (StitchId st : deferred_[yarn]) {
+      unwritten_[st] = 0;
+      add_stitch(st);
+    }
+    deferred_[yarn].clear();
   }
 
   void end_section() {
+    if (!row_.empty() && g_.type[row_.front()] == T::tnbo) join_live_sections();
     flush_row();
-    if (live_ != 0)
-      unsupported(
-          fmt::format("yarn {} ends with {} stitches still live", section().yarn + 1, live_));
+    section().left_live = st_.live != 0;  // every loop is taken by another piece
+    section().live_at_end = st_.live;
     section().end_row = static_cast<std::uint32_t>(out_.rows.size());
+  }
+
+  // A yarn of three-needle bind-off stitches pairs the loops of two sections left live: the
+  // first loop of each stitch from the front one.
+  void join_live_sections() {
+    PatternSection& join = section();
+    auto taken = g_.loops_taken_by(row_.front());
+    auto section_of = [&](std::uint32_t loop) {
+      return section_of_yarn_[c_.yarns.piece_of[g_.loops[loop].maker]];
+    };
+    join.joins = true;
+    join.front = section_of(taken[0]);
+    join.back = section_of(taken[1]);
+    for (int side : {0, 1}) {
+      const PatternSection& piece = out_.sections[side == 0 ? join.front : join.back];
+      join.from_last[side] = g_.loops[taken[side]].maker == piece.last_row_ends[1];
+    }
+    join.own_yarn = join.front == section_of_yarn_[join.yarn];
+    if (join.own_yarn) st_.live = 0;  // the front needle's sts are the ones bound off
+    join.pairs = static_cast<std::uint32_t>(row_.size());
+    join.stitches += row_.size();
+    row_.clear();
   }
 
   void flush_row() {
     if (row_.empty()) return;
+    note_last_row_ends();
     section().stitches += row_.size();
-    if (!cast_on_done_)
+    if (!st_.cast_on_done && g_.type[row_.front()] != T::co && g_.type[row_.front()] != T::sco)
+      start_from_other_piece();
+    if (!st_.cast_on_done)
       cast_on();
     else
       add_row();
-    previous_link_ = g_.yarn_link[row_.back()];
+    st_.previous_link = g_.yarn_link[row_.back()];
     row_.clear();
   }
 
+  // A cast-on, or (sco: a cast-on along a split) a provisional cast-on whose chain's loops are
+  // the other side's.
   void cast_on() {
+    T first = g_.type[row_.front()];
     for (StitchId s : row_)
-      if (g_.type[s] != T::co)
-        unsupported(fmt::format("yarn {} starts with {}, not with a row of cast-on stitches",
-                                section().yarn + 1, g_.describe(s)));
-    section().cast_on = live_ = static_cast<std::uint32_t>(row_.size());
+      if (g_.type[s] != first)
+        unsupported(
+            fmt::format("yarn {} starts with a row of {} that goes on with {} (a cast-on "
+                        "that goes on into worked sts in one row is not covered yet)",
+                        section().yarn + 1, info(first).name, g_.describe(s)));
+    section().provisional = first == T::sco;
+    section().cast_on = st_.live = st_.behind = static_cast<std::uint32_t>(row_.size());
+    for (StitchId s : row_) number_of_[s] = 0;
+    st_.ahead = 0;
     section().in_round = g_.yarn_link[row_.back()] == YarnLink::shift;
-    cast_on_done_ = true;
+    st_.cast_on_done = true;
+  }
+
+  // A piece whose yarn starts on loops of another: picked up along its edge, or on one side of
+  // a provisional cast-on.
+  void start_from_other_piece() {
+    const Loop& first = g_.loops[g_.loops_taken_by(row_.front())[0]];
+    if (first.kind == LoopKind::perpendicular) return start_from_pick_up();
+    start_from_spare_needle(first);
+    st_.behind = 0;
+    st_.cast_on_done = true;
+  }
+
+  // Picked up along an edge, one loop in each row of the piece beside it (paper §3.2: an
+  // expanding perpendicular edge): the loop the edge st makes across it. The last picked up
+  // is worked first.
+  void start_from_pick_up() {
+    std::vector<StitchId> edge;
+    for (StitchId s : row_)
+      for (std::uint32_t l : g_.loops_taken_by(s))
+        if (g_.loops[l].kind == LoopKind::perpendicular) edge.push_back(g_.loops[l].maker);
+    PatternSection::PickUp p;
+    p.section = section_of_yarn_[c_.yarns.piece_of[edge.front()]];
+    p.from_row = number_of_[edge.back()];
+    p.to_row = number_of_[edge.front()];
+    for (StitchId s : edge) {
+      auto made = g_.loops_made_by(s);
+      if (made.size() < 2) continue;
+      p.right = g_.loops[made.front()].kind != LoopKind::perpendicular;
+      break;
+    }
+    section().picks_up = p;
+    section().cast_on = st_.live = st_.ahead = static_cast<std::uint32_t>(edge.size());
+    st_.behind = 0;
+    st_.cast_on_done = true;
+  }
+
+  // One side of a split: the loops wait on a spare needle (or on the provisional cast-on's
+  // chain: the loops' second slot).
+  void start_from_spare_needle(const Loop& first) {
+    if (first.maker == kNoStitch || g_.type[first.maker] != T::sco)
+      unsupported(
+          fmt::format("yarn {} starts with {}, neither with a cast-on nor on the sts of a "
+                      "cast-on along a split",
+                      section().yarn + 1, g_.describe(row_.front())));
+    std::uint32_t from = section_of_yarn_[c_.yarns.piece_of[first.maker]];
+    const PatternSection& spare = out_.sections[from];
+    section().starts_from =
+        PatternSection::Start{from, first.maker_slot == 1, first.maker == spare.last_row_ends[1]};
+    st_.live = st_.ahead = spare.cast_on;
+  }
+
+  // The first and last st of the row that stay live (not bound off): the ends a spare needle
+  // is taken from.
+  void note_last_row_ends() {
+    auto live = [&](StitchId s) { return info(g_.type[s]).loops_out > 0; };
+    auto first = std::find_if(row_.begin(), row_.end(), live);
+    auto last = std::find_if(row_.rbegin(), row_.rend(), live);
+    if (first == row_.end()) return;
+    section().last_row_ends[0] = *first;
+    section().last_row_ends[1] = *last;
+  }
+
+  // When a piece taken up again first works sts of pieces left on spare needles, the knitter
+  // places them into its rnd where they are worked.
+  void place_spare_needles() {
+    std::uint32_t taken = 0;
+    const std::uint32_t self = section_of_yarn_[section().yarn];
+    for (StitchId s : row_)
+      for (std::uint32_t l : g_.loops_taken_by(s)) {
+        if (g_.loops[l].kind == LoopKind::perpendicular) continue;  // one by one
+        std::uint32_t from = section_of_yarn_[c_.yarns.piece_of[g_.loops[l].maker]];
+        bool placed =
+            std::any_of(section().placements.begin(), section().placements.end(),
+                        [&](const PatternSection::Placement& p) { return p.section == from; });
+        if (from != self && !placed) {
+          const PatternSection& spare = out_.sections[from];
+          bool from_last = g_.loops[l].maker == spare.last_row_ends[1];
+          section().placements.push_back({from, spare.live_at_end, taken, from_last});
+          st_.live += spare.live_at_end;
+        }
+        ++taken;
+      }
   }
 
   void add_row() {
+    if (section().resumed && section().first_row == out_.rows.size()) place_spare_needles();
     PatternRow r;
-    r.round = previous_link_ == YarnLink::shift;
-    if (r.round != section().in_round)
-      unsupported(fmt::format("{} switches between rounds and rows, which is not covered yet",
-                              g_.describe(row_.front())));
-    r.number = static_cast<std::uint32_t>(out_.rows.size()) - section().first_row + 1;
+    bool turns = g_.yarn_link[row_.back()] == YarnLink::turn;
+    // In the rnd a row that turns is a short row; a rnd goes on around.
+    r.round = section().in_round && !turns;
+    r.number =
+        static_cast<std::uint32_t>(out_.rows.size()) - section().first_row + section().first_number;
     r.side = (hand_.left_to_right(row_.front()) != out_.mirror) ? Side::ws : Side::rs;
     r.first_op = static_cast<std::uint32_t>(out_.ops.size());
-    r.sts_before = live_;
-    r.bind_off = g_.type[row_.front()] == T::bo;
+    r.sts_before = st_.live;
+    r.bind_off =
+        std::all_of(row_.begin(), row_.end(), [&](StitchId s) { return g_.type[s] == T::bo; });
+    if (st_.previous_link == YarnLink::turn) std::swap(st_.ahead, st_.behind);
+    if (st_.double_stitch_next) slip_double_stitch();
     std::uint32_t takes = 0;
     for (StitchId s : row_) {
+      number_of_[s] = r.number;
       append_ops(s, r);
       takes += info(g_.type[s]).loops_in;
-      live_ = live_ + info(g_.type[s]).loops_out - info(g_.type[s]).loops_in;
+      move_loops(s);
     }
-    if (takes != r.sts_before)
-      unsupported(fmt::format("the row of {} works {} of the {} live stitches",
-                              g_.describe(row_.front()), takes, r.sts_before));
+    end_row(r, turns, takes);
     check_make_one_has_a_strand(r);
     r.end_op = static_cast<std::uint32_t>(out_.ops.size());
-    r.sts_after = live_;
+    r.sts_after = st_.live;
     out_.rows.push_back(r);
+  }
+
+  // A row that turns with sts left beyond it says so; German short rows make the st it turned
+  // at a double stitch first in the next row (at the edge too).
+  void end_row(PatternRow& r, bool turns, std::uint32_t takes) {
+    r.short_row = turns && (section().in_round || st_.ahead > 0);
+    if (r.short_row && out_.ops.back() != HandOp::wt) out_.ops.push_back(HandOp::turn);
+    st_.double_stitch_next = out_.turns == TurnMethod::german && g_.type[row_.back()] == T::sr4;
+    // A rnd works every st, unless it starts where short rows ended (it then goes on to the
+    // beginning of the rnd); a flat row ends at the edge or turns short of it.
+    bool full_round = r.round && st_.previous_link != YarnLink::turn;
+    if (full_round && takes != r.sts_before)
+      unsupported(fmt::format("the row of {} works {} of the {} live stitches",
+                              g_.describe(row_.front()), takes, r.sts_before));
+    r.partial = r.short_row || (!r.bind_off && takes != r.sts_before);
+    out_.short_rows = out_.short_rows || r.short_row;
+  }
+
+  // Loops ahead of and behind the needle tip on a flat piece, as the stitch is worked (the row
+  // ends at the edge when none is ahead). A wrapped st goes back to the left needle.
+  void move_loops(StitchId s) {
+    const StitchTypeInfo& t = info(g_.type[s]);
+    st_.live = st_.live + t.loops_out - t.loops_in;
+    if (section().in_round || (g_.type[s] == T::sr4 && out_.turns == TurnMethod::wrap_and_turn))
+      return;
+    if (st_.ahead < t.loops_in)
+      unsupported(fmt::format("{} works past the end of the needle", g_.describe(s)));
+    st_.ahead -= t.loops_in;
+    st_.behind += t.loops_out;
+  }
+
+  void slip_double_stitch() {
+    out_.ops.push_back(HandOp::ds);
+    st_.double_stitch_next = false;
+    if (section().in_round) return;
+    --st_.ahead;
+    ++st_.behind;
+  }
+
+  // A st that works a loop across a contracting perpendicular edge takes it from the piece
+  // beside, waiting on a spare needle: slipped to the tip of the left needle, or behind the st
+  // there when the st works it second.
+  void slip_from_spare_needle(StitchId s, const PatternRow& r) {
+    auto taken = g_.loops_taken_by(s);
+    for (std::size_t i = 0; i < taken.size(); ++i) {
+      if (g_.loops[taken[i]].kind != LoopKind::perpendicular) continue;
+      // Worked in the order taken off the needle: right to left seen from the RS on a RS row.
+      std::size_t worked = (r.side == Side::rs) != out_.mirror ? taken.size() - 1 - i : i;
+      if (worked > 1)
+        unsupported(
+            fmt::format("{} works a loop of {} across a perpendicular edge third, "
+                        "which is not covered yet",
+                        g_.describe(s), g_.describe(g_.loops[taken[i]].maker)));
+      out_.ops.push_back(worked == 0 ? HandOp::from_spare : HandOp::from_spare_behind);
+      ++st_.live;
+      if (!section().in_round) ++st_.ahead;
+    }
+  }
+
+  // Does `s` work the loop a short row turned at?
+  bool works_a_turn(StitchId s) const {
+    for (std::uint32_t l : g_.loops_taken_by(s))
+      if (g_.loops[l].maker != kNoStitch && g_.type[g_.loops[l].maker] == T::sr4) return true;
+    return false;
+  }
+
+  // kw / pw (wrap and turn) or k DS / p DS (German short rows) for the plain st that works it.
+  HandOp resolving(HandOp plain, StitchId s) const {
+    if (!is_plain(plain))
+      unsupported(
+          fmt::format("{} works the loop a short row turned at as a {}; hand patterns "
+                      "resolve a turn with a plain k or p only",
+                      g_.describe(s), info(plain).abbreviation));
+    bool knit = plain == HandOp::k;
+    if (out_.turns == TurnMethod::wrap_and_turn) return knit ? HandOp::kw : HandOp::pw;
+    return knit ? HandOp::kds : HandOp::pds;
   }
 
   void append_ops(StitchId s, const PatternRow& r) {
     T type = g_.type[s];
-    if (type == T::co)
-      unsupported(fmt::format("{} casts on in the middle of the work, which is not covered yet",
-                              g_.describe(s)));
-    if ((type == T::bo) != r.bind_off)
-      unsupported(
-          fmt::format("the row of {} binds off only some of its stitches, which is not "
-                      "covered yet",
-                      g_.describe(s)));
+    if (type == T::sr4) {
+      out_.ops.push_back(out_.turns == TurnMethod::wrap_and_turn ? HandOp::wt
+                         : r.side == Side::rs                    ? HandOp::k
+                                                                 : HandOp::p);
+      return;
+    }
+    for (std::uint32_t l : g_.loops_taken_by(s))
+      if (g_.loops[l].maker != kNoStitch && unwritten_[g_.loops[l].maker])
+        unsupported(
+            fmt::format("{} works a loop of {}, which this pattern writes later (its yarn "
+                        "is taken up again after the pieces it waits for)",
+                        g_.describe(s), g_.describe(g_.loops[l].maker)));
+    bool first_row = out_.rows.size() == section().first_row;
+    if (!(section().picks_up && first_row)) slip_from_spare_needle(s, r);
+    // A cast-on (or a three-needle bind-off) between worked sts of one row.
+    if (type == T::co || type == T::sco || type == T::tnbo)
+      unsupported(fmt::format("{} is a {} in the middle of the work, which is not covered yet",
+                              g_.describe(s), info(type).name));
     std::optional<Working> w = working_of(out_.mirror ? mirrored(type) : type, r.side);
     SKEIN_ASSERT(w.has_value(), "every supported stitch type has a hand working");
-    out_.ops.push_back(w->op);
+    out_.ops.push_back(works_a_turn(s) ? resolving(w->op, s) : w->op);
     if (w->make) out_.ops.push_back(*w->make);
   }
 
@@ -266,18 +520,33 @@ class PatternBuilder {
   const Compilation& c_;
   const KnitGraph& g_;
   Handedness hand_;
+  std::uint32_t pieces_ = 0;
   HandPattern out_;
   std::vector<StitchId> row_;
-  std::uint32_t live_ = 0;
-  bool cast_on_done_ = false;
-  YarnLink previous_link_ = YarnLink::none;
+  // What the knitter has on the needle for the yarn being worked (kept while it is set aside).
+  struct Needle {
+    std::uint32_t live = 0;
+    std::uint32_t ahead = 0, behind = 0;  // loops on the left and right needle (flat pieces)
+    bool double_stitch_next = false;
+    bool cast_on_done = false;
+    YarnLink previous_link = YarnLink::none;
+  };
+  Needle st_;
+  std::vector<Needle> set_aside_;               // per yarn
+  std::vector<std::uint32_t> section_of_yarn_;  // its latest section
+  std::vector<std::uint32_t> number_of_ = std::vector<std::uint32_t>(g_.size(), 0);  // row no.
+  // A yarn taken up again is written from there to its end in one go, after the pieces it
+  // waited for: its stitches wait here meanwhile.
+  std::vector<std::vector<StitchId>> deferred_;                                    // per yarn
+  std::vector<std::uint8_t> taken_up_;                                             // per yarn
+  std::vector<std::uint8_t> unwritten_ = std::vector<std::uint8_t>(g_.size(), 0);  // deferred
 };
 
 }  // namespace
 
-HandPattern build_hand_pattern(const Compilation& c) {
+HandPattern build_hand_pattern(const Compilation& c, TurnMethod turns) {
   check_supported(c);
-  HandPattern pattern = PatternBuilder(c).run();
+  HandPattern pattern = PatternBuilder(c, turns).run();
   place_section_markers(pattern);
   return pattern;
 }

@@ -4,11 +4,13 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "hand/hand_ops.hpp"
+#include "labeling/project.hpp"
 
 namespace skein {
 struct Compilation;
@@ -16,13 +18,21 @@ struct Compilation;
 
 namespace skein::hand {
 
+// How short rows turn (paper Fig. 10a: the sr4 stitch is where the yarn turns), chosen in the
+// project file (`short_rows: {hand: german}`): German short rows work the st, turn and make it
+// a double stitch (DS), later worked as one ("k DS"); wrap and turn wraps the next st (w&t),
+// later worked with its wrap ("kw").
+using TurnMethod = HandTurnMethod;
+
 struct PatternRow {
   std::uint32_t first_op = 0, end_op = 0;  // into HandPattern::ops
   std::uint32_t number = 0;                // 1-based in its section; the cast-on is not a row
   bool round = false;
   Side side = Side::rs;  // the side facing the knitter (rounds: always the RS)
   std::uint32_t sts_before = 0, sts_after = 0;
-  bool bind_off = false;  // the row binds off every stitch
+  bool bind_off = false;   // the row binds off every stitch
+  bool short_row = false;  // ends where the work turns, with sts left on the left needle
+  bool partial = false;    // works only some of the sts (short rows and the rows back)
 };
 
 struct PatternSection {
@@ -31,6 +41,42 @@ struct PatternSection {
   bool in_round = false;                     // joined to work in the round after the cast-on
   std::uint32_t first_row = 0, end_row = 0;  // into HandPattern::rows
   std::uint64_t stitches = 0;                // model stitches worked with this yarn
+  std::uint32_t piece = 0;         // 1-based, in the order pieces start (kept when taken up)
+  std::uint32_t first_number = 1;  // of its first row: a piece taken up again counts on
+  bool left_live = false;          // ends with its sts on a spare needle, to be joined or placed
+  bool set_aside = false;          // ends with its sts and yarn set aside, to be taken up again
+  bool resumed = false;            // takes up a piece set aside
+  std::uint32_t live_at_end = 0;
+  // Sts of another section's spare needle placed into the rnd when this one is taken up,
+  // `after` sts from the beginning of the rnd, that needle's last st first if `from_last`.
+  struct Placement {
+    std::uint32_t section, count, after;
+    bool from_last;
+  };
+  std::vector<Placement> placements;
+  bool provisional = false;  // its cast-on is a provisional one (a cast-on along a split)
+  // A piece that starts on the sts of another's provisional cast-on: the sts on its needle,
+  // or the loops of its chain; the first or the last st cast on first.
+  struct Start {
+    std::uint32_t section;
+    bool chain, from_last;
+  };
+  std::optional<Start> starts_from;
+  // A piece that starts on loops picked up along the right (or left) edge of another, one in
+  // each of its rows from `from_row` to `to_row` (0: the cast-on).
+  struct PickUp {
+    std::uint32_t section = 0, from_row = 0, to_row = 0;
+    bool right = true;
+  };
+  std::optional<PickUp> picks_up;
+  // A join: three-needle bind-off of two sections left live (front, back), with a new yarn.
+  bool joins = false;
+  std::uint32_t front = 0, back = 0;   // section indices
+  bool from_last[2] = {false, false};  // which end of each last row starts: first or last st
+  bool own_yarn = false;               // worked with the front piece's yarn, taken up again
+  std::uint32_t pairs = 0;
+  // Model stitches: the first and last of the section's last row (or of its cast-on).
+  std::uint32_t last_row_ends[2] = {0, 0};
 };
 
 struct HandPattern {
@@ -38,6 +84,8 @@ struct HandPattern {
   // The model's rounds run left to right seen from the RS, and hand knitting runs right to
   // left: the pattern knits the model's mirror image (decreases and increases swap lean).
   bool mirror = false;
+  TurnMethod turns = TurnMethod::german;
+  bool short_rows = false;    // some row turns before the end of the needle
   std::uint32_t markers = 0;  // the most stitch markers on the needle at once
   std::vector<PatternSection> sections;
   std::vector<PatternRow> rows;
@@ -49,8 +97,10 @@ struct HandPattern {
 };
 
 // Throws Error naming the stitch when the model needs something hand patterns do not cover
-// yet (short rows, joins, splits, held pieces, stitch graphs without rows). Rows shaped alike
-// get section markers (marker_plan.hpp).
-HandPattern build_hand_pattern(const Compilation& compilation);
+// yet (joins with a side's own yarn, splits, perpendicular edges, held pieces, stitch graphs
+// without rows). Rows shaped alike get section
+// markers (marker_plan.hpp).
+HandPattern build_hand_pattern(const Compilation& compilation,
+                               TurnMethod turns = TurnMethod::german);
 
 }  // namespace skein::hand

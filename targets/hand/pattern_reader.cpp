@@ -125,6 +125,10 @@ class SentenceReader {
       return row(c);
     if (c.eat_any({"rep", "repeat"})) return repeat(c);
     if (c.eat_any({"knit", "purl"})) return work_even(sentence, c);
+    if (starts_with_ci(sentence, "join a new yarn to")) {
+      Cursor rest(sentence.substr(18));
+      return join_spare(rest);
+    }
     if (std::size_t at = find_ci(sentence, "cast on"); at != std::string_view::npos)
       return cast_on(Cursor(sentence.substr(at + 7)));
     if (c.eat("co")) return cast_on(c);
@@ -135,10 +139,15 @@ class SentenceReader {
       return add(step);
     }
     if (mentions(sentence, "fasten off")) return add({Step::Kind::fasten_off, line_no_});
+    if (c.eat("leave")) return leave(c);
+    if (c.eat("take") && c.eat("up")) return take_up(c);
+    if (c.eat("place")) return place(c);
+    if (c.eat("pick") && c.eat("up")) return pick_up(c);
+    if (c.eat("three-needle") && c.eat("bind-off")) return three_needle_bind_off(c);
     fail(
         "expected a row ('Row 3 (RS): ...', 'Rnd 5: ...'), 'Cast on N sts', 'Pm and join to "
         "work in the rnd', 'Rep Rows 3\u20134 N more times', 'Knit every rnd until N rnds in "
-        "all' or 'Fasten off'",
+        "all', 'Leave the N sts on a spare needle', 'Three-needle bind-off: ...' or 'Fasten off'",
         sentence);
   }
 
@@ -168,11 +177,157 @@ class SentenceReader {
     if (!ok) fail(fmt::format("expected {}", expected), c.rest());
   }
 
+  // "Cast on 12 sts", "Cast on 12 sts with a provisional cast-on".
   void cast_on(Cursor c) {
     Step step{Step::Kind::cast_on, line_no_};
     step.count = need_number(c, "the number of sts to cast on");
     need(c.eat_any({"sts", "st"}), c, "'sts' after the number");
+    if (c.eat("with")) {
+      need_words(c, {"a", "provisional", "cast-on"}, "'with a provisional cast-on'");
+      step.provisional = true;
+    }
     add(step);
+  }
+
+  // "Pick up 3 sts along the right edge of Piece 1, one in each row from Row 2 down to the
+  // cast-on".
+  void pick_up(Cursor& c) {
+    Step step{Step::Kind::pick_up, line_no_};
+    step.count = need_number(c, "the number of sts to pick up");
+    need_words(c, {"sts", "along", "the"}, "'sts along the right (or left) edge'");
+    step.provisional = c.eat("right");
+    need(step.provisional || c.eat("left"), c, "'right' or 'left'");
+    need_words(c, {"edge", "of", "piece"}, "'edge of Piece N'");
+    step.number = need_number(c, "a piece number");
+    need_words(c, {",", "one", "in", "each", "row", "from"}, "', one in each row from'");
+    step.from_row = row_of_piece(c);
+    need(c.eat_any({"up", "down"}), c, "'up' or 'down'");
+    need(c.eat("to"), c, "'to'");
+    step.to_row = row_of_piece(c);
+    need(c.done(), c, "the end of the sentence");
+    add(step);
+  }
+
+  // "the cast-on" (0) or "Row 7".
+  std::uint32_t row_of_piece(Cursor& c) {
+    if (c.eat("the") && c.eat("cast-on")) return 0;
+    need(c.eat("row"), c, "'the cast-on' or 'Row N'");
+    return need_number(c, "a row number");
+  }
+
+  // "Join a new yarn to the 3 sts of Piece 1 (or: the 3 loops of Piece 1's chain), the first
+  // st cast on at the tip".
+  void join_spare(Cursor& c) {
+    Step step{Step::Kind::join_spare, line_no_};
+    c.eat("the");
+    step.count = need_number(c, "the number of sts");
+    step.provisional = c.eat("loops");
+    need(step.provisional || c.eat("sts"), c, "'sts' or 'loops'");
+    need_words(c, {"of", "piece"}, "'of Piece N'");
+    step.number = need_number(c, "a piece number");
+    if (step.provisional) need_words(c, {"'", "s", "chain"}, "'s chain' after the piece");
+    need_words(c, {",", "the"}, "', the first (or last) st cast on'");
+    step.from_last[0] = c.eat("last");
+    need(step.from_last[0] || c.eat("first"), c, "'first' or 'last'");
+    need_words(c, {"st", "cast", "on", "at", "the", "tip"}, "'st cast on at the tip'");
+    need(c.done(), c, "the end of the sentence");
+    add(step);
+  }
+
+  // "Leave the 16 sts on a spare needle and cut the yarn", "Leave the 96 sts on the needle and
+  // set the yarn aside (do not cut it)".
+  void leave(Cursor& c) {
+    Step step{Step::Kind::leave, line_no_};
+    c.eat("the");
+    step.count = need_number(c, "the number of sts left on the needle");
+    need(c.eat_any({"sts", "st"}) && c.eat("on"), c, "'sts on'");
+    if (c.eat("the")) {
+      step.kind = Step::Kind::set_aside;
+      need_words(c, {"needle", "and", "set", "the", "yarn", "aside"},
+                 "'the needle and set the yarn aside'");
+      if (c.eat_char('(')) need_words(c, {"do", "not", "cut", "it", ")"}, "'(do not cut it)'");
+    } else {
+      need_words(c, {"a", "spare", "needle", "and", "cut", "the", "yarn"},
+                 "'a spare needle and cut the yarn' or 'the needle and set the yarn aside'");
+    }
+    need(c.done(), c, "the end of the sentence");
+    add(step);
+  }
+
+  // "Take up Piece 1 again with its yarn".
+  void take_up(Cursor& c) {
+    Step step{Step::Kind::take_up, line_no_};
+    need(c.eat("piece"), c, "'Take up Piece N again'");
+    step.number = need_number(c, "a piece number");
+    need_words(c, {"again", "with", "its", "yarn"}, "'again with its yarn'");
+    need(c.done(), c, "the end of the sentence");
+    add(step);
+  }
+
+  // "Place the 58 sts of Piece 2 on the needle at the beginning of the rnd (or: after the
+  // first 106 sts of the rnd), the first st of its last rnd first".
+  void place(Cursor& c) {
+    Step step{Step::Kind::place, line_no_};
+    c.eat("the");
+    step.count = need_number(c, "the number of sts to place");
+    need_words(c, {"sts", "of", "piece"}, "'sts of Piece N'");
+    step.number = need_number(c, "a piece number");
+    need_words(c, {"on", "the", "needle"}, "'on the needle'");
+    if (c.eat("after")) {
+      need_words(c, {"the", "first"}, "'after the first N sts'");
+      step.last = need_number(c, "how many sts come before them");
+      need(c.eat_any({"sts", "st"}), c, "'sts'");
+    } else {
+      need_words(c, {"at", "the", "beginning"}, "'at the beginning' or 'after the first N sts'");
+    }
+    need_words(c, {"of", "the", "rnd", ",", "the"}, "'of the rnd, the first (or last) st'");
+    step.from_last[0] = c.eat("last");
+    need(step.from_last[0] || c.eat("first"), c, "'first' or 'last'");
+    need_words(c, {"st", "of", "its", "last"}, "'st of its last rnd'");
+    need(c.eat_any({"rnd", "row"}), c, "'rnd' or 'row'");
+    need(c.eat("first") && c.done(), c, "'first' and the end of the sentence");
+    add(step);
+  }
+
+  void need_words(Cursor& c, std::initializer_list<std::string_view> words, const char* expected) {
+    for (std::string_view w : words) need(w.size() == 1 ? c.eat_char(w[0]) : c.eat(w), c, expected);
+  }
+
+  // "Three-needle bind-off: hold the pieces with RS together: Piece 1 in front, the first st of
+  // its last row at the needle tip; Piece 2 behind, the last st of its last row at the tip
+  // (slide the sts to the other end of a needle if need be); with a new yarn bind off all 6
+  // pairs".
+  void three_needle_bind_off(Cursor& c) {
+    Step step{Step::Kind::three_needle_bind_off, line_no_};
+    need_words(c, {":", "hold", "the", "pieces", "with", "RS", "together", ":"},
+               "': hold the pieces with RS together:'");
+    step.number = needle_end(c, {"in", "front"}, step.from_last[0]);
+    need(c.eat_char(';'), c, "';' after the front piece");
+    step.last = needle_end(c, {"behind"}, step.from_last[1]);
+    if (c.eat_char('('))
+      while (!c.done() && !c.eat_char(')')) c.eat_char(c.peek());
+    need_words(c, {";", "with"}, "'; with a new yarn' or '; with its yarn'");
+    step.own_yarn = c.eat("its");
+    if (!step.own_yarn) need_words(c, {"a", "new"}, "'a new yarn' or 'its yarn'");
+    need_words(c, {"yarn", "bind", "off", "all"}, "'yarn bind off all N pairs'");
+    step.count = need_number(c, "the number of pairs");
+    need(c.eat_any({"pairs", "pair"}) && c.done(), c, "'pairs' and the end of the sentence");
+    add(step);
+  }
+
+  // "Piece 1 in front, the first st of its last row at the needle tip": the piece's number.
+  std::uint32_t needle_end(Cursor& c, std::initializer_list<std::string_view> where,
+                           bool& from_last) {
+    need(c.eat("piece"), c, "'Piece N'");
+    std::uint32_t piece = need_number(c, "a piece number");
+    need_words(c, where, "'in front' or 'behind' after the piece");
+    need_words(c, {",", "the"}, "', the first (or last) st of its last row'");
+    from_last = c.eat("last");
+    need(from_last || c.eat("first"), c, "'first' or 'last'");
+    need_words(c, {"st", "of", "its", "last", "row", "at", "the"}, "'st of its last row at the'");
+    c.eat("needle");
+    need(c.eat("tip"), c, "'tip'");
+    return piece;
   }
 
   // "Row 3 (RS): ...", "Rnds 2–16: ...".
@@ -223,17 +378,22 @@ class SentenceReader {
     add(step);
   }
 
-  // "Knit every rnd until 24 rnds in all".
+  // "Knit every rnd until 24 rnds in all", "Knit every rnd through Rnd 105".
   void work_even(std::string_view sentence, Cursor& c) {
     Step step{Step::Kind::work_even, line_no_};
     step.op = starts_with_ci(sentence, "knit") ? HandOp::k : HandOp::p;
     need(c.eat("every"), c, "'every rnd' or 'every row'");
     std::string_view word = c.word();
     step.round = starts_with_ci(word, "rnd") || starts_with_ci(word, "round");
-    need(c.eat("until"), c, "'until N rnds in all'");
-    step.count = need_number(c, "how many rows or rnds in all");
-    c.word();
-    need(c.eat("in") && c.eat("all"), c, "'in all'");
+    if (c.eat("through")) {  // "Knit every rnd through Rnd 105": up to that row number
+      c.word();
+      step.count = need_number(c, "the last row or rnd number");
+    } else {
+      need(c.eat("until"), c, "'until N rnds in all' or 'through Rnd N'");
+      step.count = need_number(c, "how many rows or rnds in all");
+      c.word();
+      need(c.eat("in") && c.eat("all"), c, "'in all'");
+    }
     need(c.done(), c, "the end of the sentence");
     add(step);
   }
@@ -350,8 +510,17 @@ class SentenceReader {
   }
 
   Node operation(Cursor& c) {
-    std::string_view w = c.word();
     Node n;
+    if (c.eat("w&t")) {  // not a word: '&' would end it
+      n.op = HandOp::wt;
+      return n;
+    }
+    if (c.eat("sl1") && c.eat("from")) {
+      need(c.eat("spare"), c, "'sl1 from spare'");
+      n.op = c.eat("behind") ? HandOp::from_spare_behind : HandOp::from_spare;
+      return n;
+    }
+    std::string_view w = c.word();
     if (starts_with_ci(w, "bo") && w.size() == 2) return bind_off(c);
     if ((w.size() == 4 && (starts_with_ci(w, "knit") || starts_with_ci(w, "purl")))) {
       n.op = lower(w[0]) == 'k' ? HandOp::k : HandOp::p;
@@ -361,6 +530,7 @@ class SentenceReader {
     }
     if (auto op = hand_op_from(w)) {
       n.op = *op;
+      if (is_plain(*op) && c.eat("DS")) n.op = *op == HandOp::k ? HandOp::kds : HandOp::pds;
       if (c.eat("to")) n.until = until(c);
       return n;
     }
@@ -373,8 +543,10 @@ class SentenceReader {
         return n;
       }
     }
-    fail("expected a stitch (k, p, k2tog, ssk, M1L, yo, ...), a marker (pm, sm, rm), '*' or '['",
-         w.empty() ? c.rest() : w);
+    fail(
+        "expected a stitch (k, p, k2tog, ssk, M1L, yo, w&t, k DS, ...), a marker (pm, sm, rm), "
+        "'*' or '['",
+        w.empty() ? c.rest() : w);
   }
 
   // "BO all sts", "BO rem 8 sts", "BO 5 sts".
@@ -442,7 +614,11 @@ void read_line(Script& script, const std::string& file, std::size_t line_no, std
   std::string_view line = trim(raw);
   if (line.empty()) return;
   if (line.front() == '#' || starts_with_ci(line, "piece ")) {
-    script.steps.push_back({Step::Kind::piece, line_no});
+    // "### Piece 3 (yarn 3)": the number is checked, the rest is a title.
+    Step step{Step::Kind::piece, line_no};
+    Cursor c(line.substr(line.find_first_not_of("# ")));
+    if (c.eat("piece")) step.number = c.number().value_or(0);
+    script.steps.push_back(step);
     return;
   }
   std::string text = plain(line);

@@ -52,6 +52,14 @@ struct Step {
     repeat_rows,  // number..last repeated count more times
     work_even,    // "Knit every rnd until <count> rnds in all": op is k or p
     fasten_off,
+    leave,                  // "Leave the <count> sts on a spare needle and cut the yarn"
+    set_aside,              // "Leave the <count> sts on the needle and set the yarn aside"
+    take_up,                // "Take up Piece <number> again with its yarn"
+    place,                  // "Place the <count> sts of Piece <number> ... first <last> sts"
+    join_spare,             // "Join a new yarn to the <count> sts of Piece <number>['s chain], ..."
+    pick_up,                // "Pick up <count> sts along the right edge of Piece <number>, ..."
+    three_needle_bind_off,  // Piece <number> in front, Piece <last> behind, <count> pairs;
+                            // from_last: which ends are at the tips (front, back)
   };
   Step(Kind step_kind, std::size_t line_no) : kind(step_kind), line(line_no) {}
   Kind kind;
@@ -63,6 +71,11 @@ struct Step {
   std::optional<Side> side;
   std::optional<std::uint32_t> sts;  // the printed stitch count ("— 56 sts")
   std::uint32_t program = 0;         // into Script::programs
+  bool from_last[2] = {false, false};
+  bool provisional = false;  // cast_on: with a provisional cast-on; join_spare: its chain
+  bool own_yarn = false;     // three_needle_bind_off: with the front piece's yarn
+  std::uint32_t from_row = 0, to_row = 0;  // pick_up: one st in each of these rows (provisional:
+                                           // along the right edge)
   HandOp op = HandOp::k;
 };
 

@@ -14,7 +14,7 @@ constexpr std::uint32_t kLongestUnit = 24;   // tokens in one repeated unit
 constexpr std::uint32_t kShortRun = 4;       // shorter plain runs keep their count
 constexpr std::uint32_t kCountableRest = 8;  // "to last N sts" only while N is easy to see
 
-// A run of one plain stitch ("k12"), or one other operation.
+// A run of one plain stitch ("k12") or of bind-offs ("BO 8 sts"), or one other operation.
 struct Token {
   HandOp op;
   std::uint32_t count;
@@ -25,7 +25,8 @@ struct Token {
 std::vector<Token> tokens_of(std::span<const HandOp> ops) {
   std::vector<Token> tokens;
   for (HandOp op : ops) {
-    if (is_plain(op) && !tokens.empty() && tokens.back().op == op)
+    bool runs = is_plain(op) || op == HandOp::bo;
+    if (runs && !tokens.empty() && tokens.back().op == op)
       ++tokens.back().count;
     else
       tokens.push_back({op, 1});
@@ -73,6 +74,7 @@ std::vector<Item> items_of(const std::vector<Token>& t) {
 
 std::string token_text(const Token& t) {
   std::string_view abbr = info(t.op).abbreviation;
+  if (t.op == HandOp::bo) return fmt::format("BO {} st{}", t.count, t.count == 1 ? "" : "s");
   return is_plain(t.op) ? fmt::format("{}{}", abbr, t.count) : std::string(abbr);
 }
 
@@ -114,11 +116,13 @@ void choose_until(std::vector<Item>& items, const std::vector<Token>& t, std::ui
 }
 
 // Before a marker every run goes "to m": rows shaped between markers then read the same
-// whatever the width ("k to 2 sts before m, ssk").
+// whatever the width ("k to 2 sts before m, ssk"). A short row turns before the end of the
+// needle, so its last stretch keeps its counts.
 std::string stretch_text(std::span<const HandOp> ops, bool before_marker, Dialect dialect) {
   std::vector<Token> tokens = tokens_of(ops);
   std::vector<Item> items = items_of(tokens);
-  choose_until(items, tokens, before_marker ? 1 : kShortRun);
+  bool turns = !ops.empty() && ends_row(ops.back());
+  if (before_marker || !turns) choose_until(items, tokens, before_marker ? 1 : kShortRun);
   std::string out;
   std::uint32_t rest = 0;
   for (const Item& item : items) rest += item.takes;

@@ -1,0 +1,266 @@
+// Several pieces in hand patterns: pieces left on spare needles and joined by a three-needle
+// bind-off with a new yarn, pieces worked on from both sides of a provisional cast-on (a
+// split), pieces picked up along another's edge or worked into its rows one st at a time
+// (expanding and contracting perpendicular edges), pieces set aside and taken up again with
+// others placed into their rnd (the sweater):
+// written and proven; and the simulator's reasons for rejecting them.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <sstream>
+
+#include "builtin_targets.hpp"
+#include "driver/pipeline.hpp"
+#include "fixtures.hpp"
+#include "hand/hand_target.hpp"
+#include "mesh/generate.hpp"
+
+namespace skein {
+namespace {
+
+std::string emit(const Compilation& c, const std::string& target) {
+  Registry registry;
+  register_builtin_targets(registry);
+  std::ostringstream out;
+  registry.target(target)->emit(c, {}, out);
+  return out.str();
+}
+
+VerifyReport verify(const Compilation& c, const std::string& target, const std::string& text) {
+  Registry registry;
+  register_builtin_targets(registry);
+  return registry.simulator_for(target)->verify(text, "pattern", &c, {});
+}
+
+TEST(HandJoins, TheJoinFixtureReadsLikeAPatternAndIsProven) {
+  Compilation c =
+      compile_stitch_mesh(testing::join_mesh(MismatchYarn::Kind::extra), "join fixture");
+  std::string pattern = emit(c, "hand");
+  EXPECT_NE(pattern.find("### Piece 3 (yarn 3): three-needle bind-off\n"), std::string::npos)
+      << pattern;
+  EXPECT_NE(pattern.find("Leave the 3 sts on a spare needle and cut the yarn.\n"),
+            std::string::npos);
+  EXPECT_NE(pattern.find("Piece 1 in front, the first st of its last row at the needle tip"),
+            std::string::npos);
+  EXPECT_NE(pattern.find("**Three-needle bind-off:**"), std::string::npos);
+  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
+    VerifyReport report = verify(c, target, emit(c, target));
+    EXPECT_TRUE(report.proven) << target << ": " << report.summary;
+  }
+}
+
+// With a piece's own yarn: the piece knit first is set aside until the other is done.
+TEST(HandJoins, JoinsWithAPiecesOwnYarnAreProven) {
+  for (bool upper : {false, true}) {
+    Compilation c =
+        compile_stitch_mesh(testing::join_mesh(MismatchYarn::Kind::own, upper), "join fixture");
+    std::string pattern = emit(c, "hand");
+    EXPECT_NE(pattern.find("; with its yarn bind off all 3 pairs.\n"), std::string::npos)
+        << pattern;
+    for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
+      VerifyReport report = verify(c, target, emit(c, target));
+      EXPECT_TRUE(report.proven) << target << ": " << report.summary;
+    }
+  }
+}
+
+// Two flat pieces of random stitches knit towards one line (generate.hpp), joined there with a
+// new yarn or either piece's own.
+TEST(HandJoins, RandomJoinedSheetsAreProven) {
+  const MismatchYarn::Kind kYarns[] = {MismatchYarn::Kind::extra, MismatchYarn::Kind::own};
+  for (std::uint32_t trial = 0; trial < 40; ++trial) {
+    Compilation c = compile_stitch_mesh(
+        meeting_sheets(Meeting::join, 2 + trial % 9, 2 + trial % 5, 2 + (trial / 5) % 6,
+                       kYarns[trial % 2], trial % 4 < 2, trial),
+        "joined sheets");
+    ASSERT_TRUE(c.knittability.knittable) << check_report(c);
+    std::string pattern = emit(c, "hand");
+    VerifyReport report = verify(c, "hand", pattern);
+    ASSERT_TRUE(report.proven) << "trial " << trial << ": " << report.summary << "\n" << pattern;
+  }
+}
+
+// Works a pattern written by hand (no model to compare with): the failure, or "".
+std::string failure_of(const std::string& pattern) {
+  VerifyReport r = hand::verify_pattern(pattern, "p.md", nullptr);
+  return r.summary.find("give --against") == std::string::npos ? r.summary : "";
+}
+
+std::string joined(std::uint32_t front, std::uint32_t back, std::uint32_t pairs) {
+  return fmt::format(
+      "Three-needle bind-off: hold the pieces with RS together: Piece {} in front, the first st "
+      "of its last row at the needle tip; Piece {} behind, the last st of its last row at the "
+      "tip; with a new yarn bind off all {} pairs.\n",
+      front, back, pairs);
+}
+
+TEST(HandJoins, RejectsAJoinThatCannotBeWorkedWithTheReason) {
+  const std::string pieces =
+      "## Instructions\nCast on 16 sts.\nRow 1 (RS): Knit.\n"
+      "Leave the 16 sts on a spare needle and cut the yarn.\nCast on 15 sts.\n"
+      "Row 1 (RS): Knit.\nLeave the 15 sts on a spare needle and cut the yarn.\n";
+  EXPECT_EQ(failure_of(pieces + joined(1, 2, 16)),
+            "p.md:8: three-needle bind-off: 16 sts on front needle, 15 on back");
+  EXPECT_EQ(failure_of(pieces + joined(1, 3, 16)),
+            "p.md:8: three-needle bind-off: the sts of Piece 3 are not waiting on a spare needle");
+  EXPECT_EQ(failure_of(pieces),
+            "p.md:7: the sts of Piece 1 are left on a spare needle, never worked");
+  EXPECT_EQ(failure_of("Cast on 4 sts.\nRow 1 (RS): Knit.\n"
+                       "Leave the 5 sts on a spare needle and cut the yarn.\n"),
+            "p.md:3: Leave the sts: the pattern says 5 sts, but 4 sts are on the needle");
+  EXPECT_EQ(failure_of("Cast on 4 sts.\nLeave the 4 sts on a spare needle and cut the yarn.\n"
+                       "Cast on 4 sts.\nLeave the 4 sts on a spare needle and cut the yarn.\n" +
+                       joined(2, 1, 3)),
+            "p.md:5: three-needle bind-off: the pattern says 3 pairs, but the needles hold 4");
+  EXPECT_EQ(failure_of("Cast on 4 sts.\nLeave the 4 sts on a spare needle and cut the yarn.\n"
+                       "Cast on 4 sts.\nLeave the 4 sts on a spare needle and cut the yarn.\n" +
+                       joined(2, 1, 4) + "Fasten off.\n"),
+            "");
+}
+
+TEST(HandSplits, TheSplitFixturesAreProvenInEveryFormat) {
+  using M = MismatchYarn::Kind;
+  const std::pair<StitchMesh, const char*> cases[] = {
+      {testing::split_mesh(M::extra), "Join a new yarn to the 3 sts of Piece 1, the first st"},
+      {testing::split_mesh(M::own), "Join a new yarn to the 3 loops of Piece 1's chain"},
+      {testing::split_mesh(M::own, true), "Join a new yarn to the 3 loops of Piece 1's chain"}};
+  for (const auto& [mesh, line] : cases) {
+    Compilation c = compile_stitch_mesh(mesh, "split fixture");
+    std::string pattern = emit(c, "hand");
+    EXPECT_NE(pattern.find("Cast on 3 sts with a provisional cast-on.\n"), std::string::npos)
+        << pattern;
+    EXPECT_NE(pattern.find(line), std::string::npos) << pattern;
+    EXPECT_NE(pattern.find("**Provisional cast-on**"), std::string::npos);
+    for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
+      VerifyReport report = verify(c, target, emit(c, target));
+      EXPECT_TRUE(report.proven) << target << ": " << report.summary;
+    }
+  }
+}
+
+// Two flat pieces of random stitches knit away from one line (generate.hpp), cast on along it
+// with a new yarn or with either piece's own.
+TEST(HandSplits, RandomSplitSheetsAreProven) {
+  const MismatchYarn::Kind kYarns[] = {MismatchYarn::Kind::extra, MismatchYarn::Kind::own};
+  for (std::uint32_t trial = 0; trial < 40; ++trial) {
+    Compilation c = compile_stitch_mesh(
+        meeting_sheets(Meeting::split, 2 + trial % 9, 2 + trial % 5, 2 + (trial / 5) % 6,
+                       kYarns[trial % 2], trial % 4 < 2, trial),
+        "split sheets");
+    ASSERT_TRUE(c.knittability.knittable) << check_report(c);
+    std::string pattern = emit(c, "hand");
+    VerifyReport report = verify(c, "hand", pattern);
+    ASSERT_TRUE(report.proven) << "trial " << trial << ": " << report.summary << "\n" << pattern;
+  }
+}
+
+TEST(HandSplits, RejectsWorkingASplitWrongWithTheReason) {
+  const std::string cast_on = "Cast on 4 sts with a provisional cast-on.\nRow 1 (WS): Purl.\n";
+  const std::string bound_off = cast_on + "Row 2 (RS): BO all sts.\nFasten off.\n";
+  EXPECT_EQ(failure_of(bound_off),
+            "p.md:4: the chain of Piece 1 is left on a spare needle, never worked");
+  EXPECT_EQ(failure_of(bound_off + "Join a new yarn to the 5 loops of Piece 1's chain, the "
+                                   "first st cast on at the tip.\n"),
+            "p.md:5: Join a new yarn: the pattern says 5 sts, but the needle holds 4");
+  EXPECT_EQ(failure_of(bound_off + "Join a new yarn to the 4 sts of Piece 1, the first st cast "
+                                   "on at the tip.\n"),
+            "p.md:5: Join a new yarn: the sts of Piece 1 are not waiting on a spare needle");
+  EXPECT_EQ(failure_of(bound_off + "Join a new yarn to the 4 loops of Piece 1's chain, the "
+                                   "first st cast on at the tip.\nRow 1 (RS): Knit.\n"
+                                   "Row 2 (WS): BO all sts.\nFasten off.\n"),
+            "");
+}
+
+TEST(HandPickUps, TheExpandingFixtureIsProvenInEveryFormat) {
+  Compilation c = compile_stitch_mesh(testing::expanding_mesh(), "expanding fixture");
+  std::string pattern = emit(c, "hand");
+  EXPECT_NE(pattern.find("Pick up 3 sts along the right edge of Piece 1, one in each row from "
+                         "Row 2 down to the cast-on.\n"),
+            std::string::npos)
+      << pattern;
+  EXPECT_NE(pattern.find("**Picking up along an edge:**"), std::string::npos);
+  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
+    VerifyReport report = verify(c, target, emit(c, target));
+    EXPECT_TRUE(report.proven) << target << ": " << report.summary;
+  }
+}
+
+TEST(HandPickUps, TheContractingFixtureIsProvenInEveryFormat) {
+  Compilation c = compile_stitch_mesh(testing::contracting_mesh(), "contracting fixture");
+  std::string pattern = emit(c, "hand");
+  EXPECT_NE(pattern.find("**Row 1 (RS):** Sl1 from spare, k2tog.\n"), std::string::npos) << pattern;
+  EXPECT_NE(pattern.find("**Row 2 (WS):** Sl1 from spare behind, p2tog.\n"), std::string::npos);
+  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
+    VerifyReport report = verify(c, target, emit(c, target));
+    EXPECT_TRUE(report.proven) << target << ": " << report.summary;
+  }
+  EXPECT_EQ(failure_of("Cast on 2 sts.\nRow 1 (RS): Sl1 from spare, k2tog, k1.\n"),
+            "p.md:2: Row 1 (RS): sl1 from spare: 0 pieces wait on spare needles; which one is "
+            "meant?");
+}
+
+TEST(HandPickUps, RejectsAPickUpThatCannotBeWorkedWithTheReason) {
+  const std::string piece =
+      "Cast on 2 sts.\nRow 1 (RS): Knit.\nRow 2 (WS): BO all sts.\nFasten off.\n";
+  EXPECT_EQ(
+      failure_of(piece + "Pick up 4 sts along the right edge of Piece 1, one in each row from "
+                         "Row 2 down to the cast-on.\nRow 1 (RS): BO all sts.\nFasten off.\n"),
+      "p.md:5: Pick up: the pattern says 4 sts, but there are 3 rows from 0 to 2");
+  EXPECT_EQ(failure_of(piece + "Pick up 2 sts along the left edge of Piece 1, one in each row from "
+                               "Row 3 down to Row 2.\n"),
+            "p.md:5: Pick up: Piece 1 has no Row 3");
+  EXPECT_EQ(failure_of(piece + "Pick up 3 sts along the left edge of Piece 1, one in each row from "
+                               "the cast-on up to Row 2.\nRow 1 (WS): BO all sts.\nFasten off.\n"),
+            "");
+}
+
+TEST(HandPieces, TheSweaterIsProvenInEveryFormat) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  Compilation c = compile_model("samples/sweater/sweater.yaml");
+  std::string pattern = emit(c, "hand");
+  for (const char* line :
+       {"**Rnd 107:** *BO 48 sts, k48; rep from * to end \u2014 96 sts.\n",
+        "Leave the 96 sts on the needle and set the yarn aside (do not cut it).\n",
+        "Leave the 58 sts on a spare needle and cut the yarn.\n",
+        "### Piece 1 (yarn 1), taken up again\n",
+        "Take up Piece 1 again with its yarn. Place the 58 sts of Piece 2 on the needle at the "
+        "beginning of the rnd, the first st of its last rnd first. Place the 58 sts of Piece 3 on "
+        "the needle after the first 106 sts of the rnd, the first st of its last rnd first.\n",
+        "**Rnd 108:** K106, pm, k to end.\n"})
+    EXPECT_NE(pattern.find(line), std::string::npos) << line;
+  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
+    VerifyReport report = verify(c, target, emit(c, target));
+    EXPECT_TRUE(report.proven) << target << ": " << report.summary;
+  }
+}
+
+std::string body_and_sleeve(const std::string& take_up) {
+  return "Cast on 8 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\n"
+         "Leave the 8 sts on the needle and set the yarn aside (do not cut it).\n"
+         "Cast on 4 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\n"
+         "Leave the 4 sts on a spare needle and cut the yarn.\n" +
+         take_up + "Rnd 2: Knit.\nRnd 3: BO all sts.\nFasten off.\n";
+}
+
+TEST(HandPieces, RejectsSettingAsideAndTakingUpWrongWithTheReason) {
+  const std::string place =
+      " Place the 4 sts of Piece 2 on the needle after the first 4 sts of the rnd, the first st "
+      "of its last rnd first.\n";
+  EXPECT_EQ(failure_of(body_and_sleeve("Take up Piece 1 again with its yarn." + place)), "");
+  EXPECT_EQ(failure_of(body_and_sleeve("Take up Piece 3 again with its yarn." + place)),
+            "p.md:7: Take up Piece 3: it was not set aside");
+  EXPECT_EQ(failure_of(body_and_sleeve("Take up Piece 1 again with its yarn. Place the 5 sts of "
+                                       "Piece 2 on the needle at the beginning of the rnd, the "
+                                       "first st of its last rnd first.\n")),
+            "p.md:7: Place the sts of Piece 2: the pattern says 5 sts, but its needle holds 4");
+  EXPECT_EQ(failure_of(body_and_sleeve("Take up Piece 1 again with its yarn. Place the 4 sts of "
+                                       "Piece 2 on the needle after the first 9 sts of the rnd, "
+                                       "the first st of its last rnd first.\n")),
+            "p.md:7: Place the sts of Piece 2: the rnd has only 8 sts");
+  EXPECT_EQ(failure_of(body_and_sleeve("")),
+            "p.md:7: Rnd: no sts are on the needle (take up Piece 1 again first)");
+}
+
+}  // namespace
+}  // namespace skein
