@@ -117,6 +117,24 @@ TEST(HandTarget, StitchesNotCoveredYetAreNamed) {
   }
 }
 
+// Samples not covered yet are refused at the first structure the pattern cannot write, named
+// as a knitter would see it (not as a stitch count gone wrong further on).
+TEST(HandTarget, SamplesNotCoveredYetNameWhatStopsThem) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  const std::pair<const char*, const char*> cases[] = {
+      {"samples/two-bars/two-bars.yaml",
+       "face 1831 (k2tog, row 59) works a loop of face 870 (k, row 24) across a perpendicular "
+       "edge from the needle of Piece 1, set aside, not from a spare needle"},
+      {"samples/letter-h/letter-h.yaml", "from the needle of Piece 1 itself"},
+      {"samples/three-bars/three-bars.yaml",
+       "(Piece 3) in the middle of the work, where its sts were not placed on the needle"},
+  };
+  for (const auto& [sample, named] : cases) {
+    std::string error = emit_error(compile_model(sample));
+    EXPECT_NE(error.find(named), std::string::npos) << sample << ": " << error;
+  }
+}
+
 TEST(HandTarget, AMakeOneLastInAFlatRowHasNoStrandToLift) {
   RowPlan plan = {{T::co, T::co, T::co}, {T::m1l, T::k, T::k}, {T::bo, T::bo, T::bo, T::bo}};
   std::string error = emit_error(compile_stitch_mesh(build_from_rows(plan, Layout::sheet), "edge"));

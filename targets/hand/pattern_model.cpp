@@ -456,9 +456,56 @@ class PatternBuilder {
             fmt::format("{} works a loop of {} across a perpendicular edge third, "
                         "which is not covered yet",
                         g_.describe(s), g_.describe(g_.loops[taken[i]].maker)));
+      refuse_edge_loop_off_spare_needle(s, g_.loops[taken[i]].maker);
       out_.ops.push_back(worked == 0 ? HandOp::from_spare : HandOp::from_spare_behind);
       ++st_.live;
       if (!section().in_round) ++st_.ahead;
+    }
+  }
+
+  // The latest section of the yarn that worked `maker`.
+  std::uint32_t section_of(StitchId maker) const {
+    return section_of_yarn_[c_.yarns.piece_of[maker]];
+  }
+
+  // Is the maker's st on the needle of the piece being worked: its own, one of a spare needle
+  // placed into its rnd, or one of the spare needle it started on?
+  bool on_own_needle(StitchId maker) const {
+    std::uint32_t from = section_of(maker);
+    const PatternSection& worked = out_.sections.back();
+    const auto& placed = worked.placements;
+    return c_.yarns.piece_of[maker] == worked.yarn ||
+           (worked.starts_from && worked.starts_from->section == from) ||
+           std::any_of(placed.begin(), placed.end(),
+                       [&](const PatternSection::Placement& p) { return p.section == from; });
+  }
+
+  // "Sl1 from spare" takes the st from a piece waiting on a spare needle. A loop of the piece
+  // being worked is among the sts its own rows work (a heel turn's "ssk across the gap"), and
+  // one of a piece set aside waits on that piece's needle (a knitter would put it on a holder
+  // first): neither is written yet.
+  void refuse_edge_loop_off_spare_needle(StitchId s, StitchId maker) const {
+    bool own = on_own_needle(maker);
+    const PatternSection& from = out_.sections[section_of(maker)];
+    if (own || from.set_aside)
+      unsupported(fmt::format(
+          "{} works a loop of {} across a perpendicular edge from the needle of Piece {}{}, "
+          "not from a spare needle, which is not covered yet",
+          g_.describe(s), g_.describe(maker), from.piece, own ? " itself" : ", set aside"));
+  }
+
+  // Sts of another piece are placed into the rnd when a piece is taken up again; a row that
+  // works them anywhere else would need them placed there first, which is not written yet.
+  void refuse_loop_of_a_piece_not_placed(StitchId s) const {
+    for (std::uint32_t l : g_.loops_taken_by(s)) {
+      const Loop& loop = g_.loops[l];
+      if (loop.kind == LoopKind::perpendicular || loop.maker == kNoStitch ||
+          on_own_needle(loop.maker))
+        continue;
+      unsupported(fmt::format(
+          "{} works a loop of {} (Piece {}) in the middle of the work, where its sts were not "
+          "placed on the needle (that is written only when a piece is taken up again)",
+          g_.describe(s), g_.describe(loop.maker), out_.sections[section_of(loop.maker)].piece));
     }
   }
 
@@ -501,6 +548,7 @@ class PatternBuilder {
     if (type == T::co || type == T::sco || type == T::tnbo)
       unsupported(fmt::format("{} is a {} in the middle of the work, which is not covered yet",
                               g_.describe(s), info(type).name));
+    refuse_loop_of_a_piece_not_placed(s);
     std::optional<Working> w = working_of(out_.mirror ? mirrored(type) : type, r.side);
     SKEIN_ASSERT(w.has_value(), "every supported stitch type has a hand working");
     out_.ops.push_back(works_a_turn(s) ? resolving(w->op, s) : w->op);
