@@ -141,7 +141,7 @@ class VirtualBed {
   Stack& at(Needle n) {
     if (is_slider(n.bed) && !p_.sliders)
       fail(fmt::format("{} is a slider, and {} has no sliders", needle_name(n), p_.name));
-    if (n.index < lo_ || n.index >= hi_ || (keep_ && (n.index < 0 || n.index >= n_)))
+    if (n.index < lo_ || n.index >= hi_)  // with Keep, lo_..hi_ is exactly the bed
       fail(fmt::format("needle {} is outside the bed: {} has needles 0..{}", needle_name(n),
                        p_.name, n_ - 1));
     ShopStats& s = r_.stats;
@@ -165,8 +165,10 @@ class VirtualBed {
 
   template <typename F>
   void each(CarrierMask mask, F f) {
-    for (std::size_t c = 0; mask; ++c, mask >>= 1)
-      if (mask & 1) f(carriers_[c], c);
+    for (; mask; mask &= mask - 1) {  // straight to each set bit: a high carrier costs no more
+      auto c = static_cast<std::size_t>(std::countr_zero(mask));
+      f(carriers_[c], c);
+    }
   }
 
   void use_carriers(const Op& op) {
