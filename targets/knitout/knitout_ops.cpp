@@ -13,11 +13,12 @@ namespace {
 constexpr std::string_view kMagic = ";!knitout-2";
 
 // What a character is to the tokenizer, looked up in one table read instead of four tests.
-enum class CharKind : std::uint8_t { word, space, comment };
+// `end`: a comment's ';' or the '\n' that ends the line.
+enum class CharKind : std::uint8_t { word, space, end };
 constexpr std::array<CharKind, 256> kCharKinds = [] {
   std::array<CharKind, 256> kinds{};
   for (char c : {' ', '\t', '\r'}) kinds[static_cast<unsigned char>(c)] = CharKind::space;
-  kinds[';'] = CharKind::comment;
+  kinds[';'] = kinds['\n'] = CharKind::end;
   return kinds;
 }();
 CharKind kind(char c) {
@@ -39,14 +40,15 @@ struct Tokens {
   bool too_many = false;
   std::string_view word(int i) const { return {words[i].text, words[i].size}; }
 };
+// The '\n' after the line stops every scan, so they need no test of where the line ends.
 Tokens tokenize(std::string_view line) {
   Tokens t;
-  const char *p = line.data(), *end = p + line.size();
+  const char* p = line.data();
   for (;;) {
-    while (p != end && is_space(*p)) ++p;
-    if (p == end || kind(*p) == CharKind::comment) break;
+    while (is_space(*p)) ++p;
+    if (kind(*p) == CharKind::end) break;
     const char* start = p;
-    while (p != end && kind(*p) == CharKind::word) ++p;
+    while (kind(*p) == CharKind::word) ++p;
     if (t.count == 8) {
       t.too_many = true;
       break;

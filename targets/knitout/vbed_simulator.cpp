@@ -69,6 +69,7 @@ class VirtualBed {
     for (line_ = r_.header.first_op_line; pos < text_.size(); ++line_) {
       std::size_t next = next_line(pos);
       std::string_view text = current_ = text_.substr(pos, next - pos - 1);
+      if (next > text_.size()) text = last_line_ = std::string(text) + '\n';  // see parse_op
       pos = next;
       if (!parse_op(text, r_.header, op, error)) {
         if (!error.empty()) fail(error);
@@ -478,6 +479,7 @@ class VirtualBed {
   std::string_view text_;
   std::vector<std::string_view> lines_;  // the header's lines only
   std::string_view current_, last_op_;   // the line being replayed, the last operation's
+  std::string last_line_;                // the last line with a '\n', if the file has none
   Replay r_;
   std::array<std::vector<Stack>, 4> beds_;
   std::vector<Carrier> carriers_;
