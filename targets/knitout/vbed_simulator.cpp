@@ -43,7 +43,11 @@ struct PassTracker {
 class VirtualBed {
  public:
   VirtualBed(const std::string& file, const MachineProfile& profile, std::string_view text)
-      : file_(file), p_(profile), text_(text), lines_(header_lines(text)) {
+      : file_(file),
+        p_(profile),
+        text_(text),
+        lines_(header_lines(text)),
+        line_count_(static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1) {
     n_ = static_cast<std::int32_t>(p_.needles);
   }
 
@@ -56,8 +60,8 @@ class VirtualBed {
     for (auto& bed : beds_) bed.assign(static_cast<std::size_t>(hi_ - lo_), Stack{});
     carriers_.assign(r_.header.carriers.size(), Carrier{});
     r_.fabric.by_carrier.assign(r_.header.carriers.size(), {});
-    r_.fabric.loops.reserve(most_lines());  // at most one loop a line: no regrowth
-    r_.fabric.parents.reserve(most_lines());
+    r_.fabric.loops.reserve(line_count_);  // at most one loop a line: no regrowth
+    r_.fabric.parents.reserve(line_count_);
     r_.stats.min_needle = std::numeric_limits<std::int32_t>::max();
     r_.stats.max_needle = std::numeric_limits<std::int32_t>::min();
     std::string error;
@@ -105,7 +109,6 @@ class VirtualBed {
     return end ? static_cast<std::size_t>(static_cast<const char*>(end) - text_.data()) + 1
                : text_.size() + 1;
   }
-  std::size_t most_lines() const { return text_.size() / 8 + 16; }  // the shortest op is 'drop f1'
 
   [[noreturn]] void fail_header(std::size_t line, const std::string& why) const {
     throw ParseError(file_, line,
@@ -330,7 +333,7 @@ class VirtualBed {
     r_.fabric.loops.push_back(l);
     each(yarn, [&](Carrier&, std::size_t c) {
       std::vector<LoopId>& along = r_.fabric.by_carrier[c];
-      if (along.empty()) along.reserve(most_lines());
+      if (along.empty()) along.reserve(line_count_);
       along.push_back(id);
     });
     return id;
@@ -478,8 +481,11 @@ class VirtualBed {
   const MachineProfile& p_;
   std::string_view text_;
   std::vector<std::string_view> lines_;  // the header's lines only
-  std::string_view current_, last_op_;   // the line being replayed, the last operation's
-  std::string last_line_;                // the last line with a '\n', if the file has none
+  // Counted, not bounded by bytes / 8: that reserved twice the memory, and past glibc's largest
+  // mmap threshold (32 MB), so each replay in a process faulted every page in again.
+  std::size_t line_count_;
+  std::string_view current_, last_op_;  // the line being replayed, the last operation's
+  std::string last_line_;               // the last line with a '\n', if the file has none
   Replay r_;
   std::array<std::vector<Stack>, 4> beds_;
   std::vector<Carrier> carriers_;
