@@ -60,7 +60,7 @@ class KnitoutWriter {
     append(FMT_COMPILE("{} {} {}{} {}\n"), op, direction_char(d), bed_name(n.bed), n.index, c);
   }
   // Formats compiled with FMT_COMPILE: parsing the format at run time, once per line, cost
-  // about a fifth of the time of writing a file.
+  // a fifth to a half of the time of writing a file.
   template <typename Format, typename... Args>
   void append(const Format& format, const Args&... args) {
     if (!note_.empty()) {
