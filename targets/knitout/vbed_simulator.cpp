@@ -189,6 +189,7 @@ class VirtualBed {
   }
 
   void use_carriers(const Op& op) {
+    if ((op.carriers & ~carriers_in_) == 0) return;  // all in and stitched: nothing to check
     CarrierMask pending = 0;
     each(op.carriers, [&](Carrier& c, std::size_t i) {
       if (c.state == CarrierState::out)
@@ -215,6 +216,7 @@ class VirtualBed {
       c.state = CarrierState::in;
       c.stitched = true;
     });
+    carriers_in_ |= op.carriers;
   }
 
   // Until releasehook, the needles beyond the first stitch on the hook's side are in its way.
@@ -292,6 +294,7 @@ class VirtualBed {
         fail(fmt::format("carrier {} is still held by the hook: releasehook {} first", name, name));
       c.state = CarrierState::out;
     });
+    carriers_in_ &= ~op.carriers;
   }
 
   // ---- racking and alignment ----
@@ -503,6 +506,7 @@ class VirtualBed {
   std::array<std::vector<Stack>, 4> beds_;
   std::vector<Carrier> carriers_;
   CarrierMask hook_ = 0;
+  CarrierMask carriers_in_ = 0;            // the carriers in state `in` (which have made a stitch)
   std::int32_t hook_edge_ = 0;             // the needle of the hooked yarn's first stitch
   Direction hook_side_ = Direction::none;  // the side of it the hook blocks (none: no hook)
   std::uint32_t pieces_ = 0;
