@@ -67,6 +67,21 @@ TEST(VbedRules, ATransferMayNotStretchFurtherThanTheProfileAllows) {
   }
 }
 
+// The parser reads up to each line's '\n': a last line without one is read all the same.
+TEST(VbedRules, ALastLineWithoutANewlineIsReadWhole) {
+  knitout::MachineProfile p = testing::shipped_profile("generic");
+  std::string text =
+      ";!knitout-2\n;;Carriers: 1 2 3 4 5 6 7 8 9 10\nin 1\ntuck + f1 1\nknit - f1 1\nout 1";
+  EXPECT_EQ(knitout::replay_knitout(text, "last.k", p).stats.operations, 4u);
+  try {
+    knitout::replay_knitout(text + " x", "last.k", p);
+    FAIL() << "expected a ParseError";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 6u);
+    EXPECT_EQ(e.expected(), "carrier 'x' is not named in the ;;Carriers: header");
+  }
+}
+
 // What a shop reads: passes, transfers, racks, drops, yarn pieces and time.
 TEST(VbedRules, ShopSummaryCountsWhatTheFileDoes) {
   std::string path = testing::source_path("tests/data/knitout/valid-swg-sheet.k");

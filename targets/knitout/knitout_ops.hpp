@@ -75,7 +75,8 @@ std::vector<std::string_view> split_lines(std::string_view text);
 Header parse_header(const std::vector<std::string_view>& lines, const std::string& file);
 
 // Parses one operation line (a comment or blank line gives false with no error). On a syntax
-// error, sets `error` to what was expected and returns false.
+// error, sets `error` to what was expected and returns false. The line must be followed by a
+// '\n' in memory (the one that ends it in the file), or end with one.
 bool parse_op(std::string_view line, const Header& header, Op& op, std::string& error);
 
 // The carriers of a mask as they are written ("1 3").
