@@ -15,6 +15,7 @@
 #include "hand/hand_target.hpp"
 #include "hand/row_text.hpp"
 #include "mesh/generate.hpp"
+#include "target_runner.hpp"
 #include "test_hand_plans.hpp"
 
 namespace skein {
@@ -22,19 +23,8 @@ namespace {
 
 using T = StitchType;
 
-std::string emit(const Compilation& c, const std::string& target) {
-  Registry registry;
-  register_builtin_targets(registry);
-  std::ostringstream out;
-  registry.target(target)->emit(c, {}, out);
-  return out.str();
-}
-
-VerifyReport verify(const Compilation& c, const std::string& target, const std::string& text) {
-  Registry registry;
-  register_builtin_targets(registry);
-  return registry.simulator_for(target)->verify(text, "pattern", &c, {});
-}
+using testing::emit;
+using testing::verify;
 
 // Works a pattern written by hand (no model to compare with): the failure, or "".
 std::string failure_of(const std::string& pattern) {

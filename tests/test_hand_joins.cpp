@@ -15,23 +15,13 @@
 #include "fixtures.hpp"
 #include "hand/hand_target.hpp"
 #include "mesh/generate.hpp"
+#include "target_runner.hpp"
 
 namespace skein {
 namespace {
 
-std::string emit(const Compilation& c, const std::string& target) {
-  Registry registry;
-  register_builtin_targets(registry);
-  std::ostringstream out;
-  registry.target(target)->emit(c, {}, out);
-  return out.str();
-}
-
-VerifyReport verify(const Compilation& c, const std::string& target, const std::string& text) {
-  Registry registry;
-  register_builtin_targets(registry);
-  return registry.simulator_for(target)->verify(text, "pattern", &c, {});
-}
+using testing::emit;
+using testing::verify;
 
 TEST(HandJoins, TheJoinFixtureReadsLikeAPatternAndIsProven) {
   Compilation c =
@@ -65,20 +55,26 @@ TEST(HandJoins, JoinsWithAPiecesOwnYarnAreProven) {
   }
 }
 
-// Two flat pieces of random stitches knit towards one line (generate.hpp), joined there with a
-// new yarn or either piece's own.
-TEST(HandJoins, RandomJoinedSheetsAreProven) {
+// Forty pairs of random flat pieces meeting on one line (generate.hpp), on a new yarn or either
+// piece's own: every pattern is proven.
+void expect_random_meeting_sheets_proven(Meeting meeting) {
   const MismatchYarn::Kind kYarns[] = {MismatchYarn::Kind::extra, MismatchYarn::Kind::own};
   for (std::uint32_t trial = 0; trial < 40; ++trial) {
     Compilation c = compile_stitch_mesh(
-        meeting_sheets(Meeting::join, 2 + trial % 9, 2 + trial % 5, 2 + (trial / 5) % 6,
+        meeting_sheets(meeting, 2 + trial % 9, 2 + trial % 5, 2 + (trial / 5) % 6,
                        kYarns[trial % 2], trial % 4 < 2, trial),
-        "joined sheets");
+        "meeting sheets");
     ASSERT_TRUE(c.knittability.knittable) << check_report(c);
     std::string pattern = emit(c, "hand");
     VerifyReport report = verify(c, "hand", pattern);
     ASSERT_TRUE(report.proven) << "trial " << trial << ": " << report.summary << "\n" << pattern;
   }
+}
+
+// Two flat pieces of random stitches knit towards one line (generate.hpp), joined there with a
+// new yarn or either piece's own.
+TEST(HandJoins, RandomJoinedSheetsAreProven) {
+  expect_random_meeting_sheets_proven(Meeting::join);
 }
 
 // Works a pattern written by hand (no model to compare with): the failure, or "".
@@ -142,17 +138,7 @@ TEST(HandSplits, TheSplitFixturesAreProvenInEveryFormat) {
 // Two flat pieces of random stitches knit away from one line (generate.hpp), cast on along it
 // with a new yarn or with either piece's own.
 TEST(HandSplits, RandomSplitSheetsAreProven) {
-  const MismatchYarn::Kind kYarns[] = {MismatchYarn::Kind::extra, MismatchYarn::Kind::own};
-  for (std::uint32_t trial = 0; trial < 40; ++trial) {
-    Compilation c = compile_stitch_mesh(
-        meeting_sheets(Meeting::split, 2 + trial % 9, 2 + trial % 5, 2 + (trial / 5) % 6,
-                       kYarns[trial % 2], trial % 4 < 2, trial),
-        "split sheets");
-    ASSERT_TRUE(c.knittability.knittable) << check_report(c);
-    std::string pattern = emit(c, "hand");
-    VerifyReport report = verify(c, "hand", pattern);
-    ASSERT_TRUE(report.proven) << "trial " << trial << ": " << report.summary << "\n" << pattern;
-  }
+  expect_random_meeting_sheets_proven(Meeting::split);
 }
 
 TEST(HandSplits, RejectsWorkingASplitWrongWithTheReason) {

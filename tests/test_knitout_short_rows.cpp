@@ -170,6 +170,28 @@ TEST(KnitoutRandomized, ShortRowSheetsProveOnEveryProfile) {
   EXPECT_EQ(proven, 180);
 }
 
+// Emits and proves `c` on each shipped profile; a profile too narrow for it must refuse it for
+// its needles (counted in `refused`). Returns how many proved.
+int prove_on_every_profile_it_fits(const Compilation& c, const std::string& name, int& refused) {
+  int proven = 0;
+  for (const char* profile : kProfiles) {
+    knitout::MachineProfile p = shipped_profile(profile);
+    std::string text;
+    try {
+      text = testing::emit_knitout_text(c, p);
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(" needles"), std::string::npos)
+          << name << " on " << profile << ": " << e.what();
+      ++refused;
+      continue;
+    }
+    knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
+    EXPECT_TRUE(proof.proven) << name << " on " << profile << ": " << proof.summary;
+    proven += proof.proven;
+  }
+  return proven;
+}
+
 // Socks of random sizes from `skein new sock` (tubes with a short-row heel and a shaped toe):
 // each proves on every profile it fits and is refused for its width on the others.
 TEST(KnitoutRandomized, SocksOfRandomSizesProveOnEveryProfileTheyFit) {
@@ -184,22 +206,7 @@ TEST(KnitoutRandomized, SocksOfRandomSizesProveOnEveryProfileTheyFit) {
     std::string project = write_shape(make_shape("sock", size, name), dir + "/" + name);
     Compilation c = compile_model(project);
     ASSERT_TRUE(c.knittability.knittable) << project;
-    for (const char* profile : kProfiles) {
-      knitout::MachineProfile p = shipped_profile(profile);
-      std::string text;
-      try {
-        text = testing::emit_knitout_text(c, p);
-      } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find(" needles in half gauge"), std::string::npos)
-            << name << " on " << profile << ": " << e.what();
-        ++too_wide;
-        continue;
-      }
-      knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
-      EXPECT_TRUE(proof.proven) << name << " (" << size.circumference << " cm) on " << profile
-                                << ": " << proof.summary;
-      proven += proof.proven;
-    }
+    proven += prove_on_every_profile_it_fits(c, name, too_wide);
   }
   EXPECT_GT(proven, 12);
   EXPECT_GT(too_wide, 0);
@@ -224,22 +231,7 @@ TEST(KnitoutRandomized, ShortRowProjectsAtRandomGaugesProveOnEveryProfileTheyFit
         sock ? "  faces: [34, 39]\n" : "");
     Compilation c = compile_model(project);
     ASSERT_TRUE(c.knittability.knittable) << project;
-    for (const char* profile : kProfiles) {
-      knitout::MachineProfile p = shipped_profile(profile);
-      std::string text;
-      try {
-        text = testing::emit_knitout_text(c, p);
-      } catch (const Error& e) {
-        std::string what = e.what();
-        EXPECT_NE(what.find(" needles"), std::string::npos)
-            << project << " on " << profile << ": " << what;
-        ++refused;
-        continue;
-      }
-      knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
-      EXPECT_TRUE(proof.proven) << project << " on " << profile << ": " << proof.summary;
-      proven += proof.proven;
-    }
+    proven += prove_on_every_profile_it_fits(c, project, refused);
   }
   std::cout << "knitout short-row projects: " << proven << " proven, " << refused << " refused\n";
   EXPECT_GT(proven, 100);

@@ -1,0 +1,28 @@
+// Runs a registered target or its simulator on a compilation, as `skein compile` and
+// `skein verify` do, for tests that check what a target writes or proves.
+#pragma once
+
+#include <sstream>
+#include <string>
+
+#include "builtin_targets.hpp"
+#include "driver/pipeline.hpp"
+
+namespace skein::testing {
+
+inline std::string emit(const Compilation& c, const std::string& target) {
+  Registry registry;
+  register_builtin_targets(registry);
+  std::ostringstream out;
+  registry.target(target)->emit(c, {}, out);
+  return out.str();
+}
+
+inline VerifyReport verify(const Compilation& c, const std::string& target,
+                           const std::string& text) {
+  Registry registry;
+  register_builtin_targets(registry);
+  return registry.simulator_for(target)->verify(text, "pattern", &c, {});
+}
+
+}  // namespace skein::testing
