@@ -1,8 +1,7 @@
 #include "fixtures.hpp"
 
-#include <map>
-
 #include "common/error.hpp"
+#include "mesh/generate.hpp"
 
 namespace skein::testing {
 StitchMesh grid_mesh(int width, int height, const std::vector<Square>& squares,
@@ -111,53 +110,40 @@ StitchMesh expanding_mesh() {
 
 StitchMesh short_row_mesh(StitchType turn) {
   using T = StitchType;
-  StitchMeshBuilder builder("<short rows>");
-  std::map<std::pair<float, float>, Vertex> at;
-  auto v = [&](float x, float y) {
-    auto [it, added] = at.try_emplace({x, y});
-    if (added) it->second = builder.add_vertex({x, y, 0});
-    return it->second;
-  };
-  auto face = [&](std::vector<std::pair<float, float>> corners, const std::string& roles, T type) {
-    std::vector<Vertex> vs;
-    std::vector<EdgeRole> rs;
-    for (auto [x, y] : corners) vs.push_back(v(x, y));
-    for (char c : roles) rs.push_back(role_from_letter(c).value());
-    builder.add_face(vs, rs, type);
-  };
-  for (float x = 0; x < 4; ++x) face({{x, 0}, {x + 1, 0}, {x + 1, 1}, {x, 1}}, "boti", T::co);
-  for (float x = 2; x < 4; ++x) face({{x, 1}, {x + 1, 1}, {x + 1, 2}, {x, 2}}, "bito", T::k);
+  CornerBuilder b("<short rows>");
+  for (float x = 0; x < 4; ++x) b.square(x, 0, "boti", T::co);
+  for (float x = 2; x < 4; ++x) b.square(x, 1, "bito", T::k);
   // The turn's top run: one edge (sr4), two (sr5) or three (srn, Fig. 10c) up the diagonal.
   constexpr float third = 1.0f / 3;
   if (turn == T::sr4)
-    face({{1, 1}, {2, 1}, {2, 2}, {2, 3}}, "biot", T::sr4);
+    b.face({{1, 1}, {2, 1}, {2, 2}, {2, 3}}, "biot", T::sr4);
   else if (turn == T::sr5)
-    face({{1, 1}, {2, 1}, {2, 2}, {2, 3}, {1.5f, 2}}, "biott", turn);
+    b.face({{1, 1}, {2, 1}, {2, 2}, {2, 3}, {1.5f, 2}}, "biott", turn);
   else
-    face({{1, 1},
-          {2, 1},
-          {2, 2},
-          {2, 3},
-          {1 + 2 * third, 1 + 4 * third},
-          {1 + third, 1 + 2 * third}},
-         "biottt", turn);
-  for (float x = 2; x < 4; ++x) face({{x, 2}, {x + 1, 2}, {x + 1, 3}, {x, 3}}, "boti", T::k);
-  face({{0, 1}, {1, 1}, {1, 4}, {0, 4}}, "bito", T::k);
+    b.face({{1, 1},
+            {2, 1},
+            {2, 2},
+            {2, 3},
+            {1 + 2 * third, 1 + 4 * third},
+            {1 + third, 1 + 2 * third}},
+           "biottt", turn);
+  for (float x = 2; x < 4; ++x) b.square(x, 2, "boti", T::k);
+  b.face({{0, 1}, {1, 1}, {1, 4}, {0, 4}}, "bito", T::k);
   if (turn == T::sr4)
-    face({{1, 1}, {2, 3}, {2, 4}, {1, 4}}, "bito", T::k);
+    b.face({{1, 1}, {2, 3}, {2, 4}, {1, 4}}, "bito", T::k);
   else if (turn == T::sr5)
-    face({{1, 1}, {1.5f, 2}, {2, 3}, {2, 4}, {1, 4}}, "bbito", T::k2tog);
+    b.face({{1, 1}, {1.5f, 2}, {2, 3}, {2, 4}, {1, 4}}, "bbito", T::k2tog);
   else
-    face({{1, 1},
-          {1 + third, 1 + 2 * third},
-          {1 + 2 * third, 1 + 4 * third},
-          {2, 3},
-          {2, 4},
-          {1, 4}},
-         "bbbito", T::s2kp);
-  for (float x = 2; x < 4; ++x) face({{x, 3}, {x + 1, 3}, {x + 1, 4}, {x, 4}}, "bito", T::k);
-  for (float x = 0; x < 4; ++x) face({{x, 4}, {x + 1, 4}, {x + 1, 5}, {x, 5}}, "boti", T::bo);
-  return std::move(builder).build();
+    b.face({{1, 1},
+            {1 + third, 1 + 2 * third},
+            {1 + 2 * third, 1 + 4 * third},
+            {2, 3},
+            {2, 4},
+            {1, 4}},
+           "bbbito", T::s2kp);
+  for (float x = 2; x < 4; ++x) b.square(x, 3, "bito", T::k);
+  for (float x = 0; x < 4; ++x) b.square(x, 4, "boti", T::bo);
+  return std::move(b).build();
 }
 
 }  // namespace skein::testing

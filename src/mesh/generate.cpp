@@ -154,37 +154,22 @@ RowPlan random_rows(std::uint32_t width, std::uint32_t rows, const RandomShaping
   return plan;
 }
 
+void CornerBuilder::face(std::initializer_list<std::pair<float, float>> corners,
+                         std::string_view roles, StitchType type) {
+  vertices_.clear();
+  roles_.clear();
+  for (auto [x, y] : corners) vertices_.push_back(vertex(x, y));
+  for (char c : roles) roles_.push_back(role_from_letter(c).value());
+  builder_.add_face(vertices_, roles_, type);
+}
+
+Vertex CornerBuilder::vertex(float x, float y) {
+  auto [it, added] = index_.try_emplace(std::pair{x, y});
+  if (added) it->second = builder_.add_vertex({x, y, 0});
+  return it->second;
+}
+
 namespace {
-
-// Builds faces from corner coordinates, sharing a vertex wherever coordinates repeat.
-class CornerBuilder {
- public:
-  explicit CornerBuilder(const char* name) : builder_(name) {}
-  void face(std::initializer_list<std::pair<float, float>> corners, std::string_view roles,
-            StitchType type) {
-    vertices_.clear();
-    roles_.clear();
-    for (auto [x, y] : corners) vertices_.push_back(vertex(x, y));
-    for (char c : roles) roles_.push_back(role_from_letter(c).value());
-    builder_.add_face(vertices_, roles_, type);
-  }
-  // A unit square with its lower-left corner at (x, y); roles lower, right, upper, left.
-  void square(float x, float y, std::string_view roles, StitchType type) {
-    face({{x, y}, {x + 1, y}, {x + 1, y + 1}, {x, y + 1}}, roles, type);
-  }
-  StitchMesh build() && { return std::move(builder_).build(); }
-
- private:
-  Vertex vertex(float x, float y) {
-    auto [it, added] = index_.try_emplace(std::pair{x, y});
-    if (added) it->second = builder_.add_vertex({x, y, 0});
-    return it->second;
-  }
-  StitchMeshBuilder builder_;
-  std::map<std::pair<float, float>, Vertex> index_;
-  std::vector<Vertex> vertices_;
-  std::vector<EdgeRole> roles_;
-};
 
 // Roles of a unit square by wale direction (up or down) and course direction.
 std::string_view square_roles(bool wale_up, bool left_to_right) {

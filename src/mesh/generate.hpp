@@ -3,6 +3,10 @@
 #pragma once
 
 #include <cstdint>
+#include <initializer_list>
+#include <map>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "mesh/stitch_mesh.hpp"
@@ -38,6 +42,28 @@ struct RandomShaping {
 };
 RowPlan random_rows(std::uint32_t width, std::uint32_t rows, const RandomShaping& shaping,
                     std::uint64_t seed);
+
+// Builds faces from corner coordinates, sharing a vertex wherever coordinates repeat (the
+// generators below and hand-built test meshes).
+class CornerBuilder {
+ public:
+  explicit CornerBuilder(const char* name) : builder_(name) {}
+  // Roles are edge-role letters (b t i o), one per edge from the first corner on.
+  void face(std::initializer_list<std::pair<float, float>> corners, std::string_view roles,
+            StitchType type);
+  // A unit square with its lower-left corner at (x, y); roles lower, right, upper, left.
+  void square(float x, float y, std::string_view roles, StitchType type) {
+    face({{x, y}, {x + 1, y}, {x + 1, y + 1}, {x, y + 1}}, roles, type);
+  }
+  StitchMesh build() && { return std::move(builder_).build(); }
+
+ private:
+  Vertex vertex(float x, float y);
+  StitchMeshBuilder builder_;
+  std::map<std::pair<float, float>, Vertex> index_;
+  std::vector<Vertex> vertices_;
+  std::vector<EdgeRole> roles_;
+};
 
 // A flat sheet of knit and purl rows with pairs of short rows over its right-hand stitches,
 // each pair turning at a short-row face (sr4 or sr5, Fig. 10) and followed by a full row.
