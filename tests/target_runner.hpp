@@ -7,6 +7,7 @@
 
 #include "builtin_targets.hpp"
 #include "driver/pipeline.hpp"
+#include "hand/hand_target.hpp"
 
 namespace skein::testing {
 
@@ -23,6 +24,12 @@ inline VerifyReport verify(const Compilation& c, const std::string& target,
   Registry registry;
   register_builtin_targets(registry);
   return registry.simulator_for(target)->verify(text, "pattern", &c, {});
+}
+
+// Works a hand pattern written by hand (no model to compare with): the failure, or "".
+inline std::string failure_of(const std::string& pattern) {
+  VerifyReport r = hand::verify_pattern(pattern, "p.md", nullptr);
+  return r.summary.find("give --against") == std::string::npos ? r.summary : "";
 }
 
 }  // namespace skein::testing

@@ -26,11 +26,7 @@ using T = StitchType;
 using testing::emit;
 using testing::verify;
 
-// Works a pattern written by hand (no model to compare with): the failure, or "".
-std::string failure_of(const std::string& pattern) {
-  VerifyReport r = hand::verify_pattern(pattern, "p.md", nullptr);
-  return r.summary.find("give --against") == std::string::npos ? r.summary : "";
-}
+using testing::failure_of;
 
 class HandSample : public ::testing::TestWithParam<const char*> {
  protected:

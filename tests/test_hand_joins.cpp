@@ -77,11 +77,7 @@ TEST(HandJoins, RandomJoinedSheetsAreProven) {
   expect_random_meeting_sheets_proven(Meeting::join);
 }
 
-// Works a pattern written by hand (no model to compare with): the failure, or "".
-std::string failure_of(const std::string& pattern) {
-  VerifyReport r = hand::verify_pattern(pattern, "p.md", nullptr);
-  return r.summary.find("give --against") == std::string::npos ? r.summary : "";
-}
+using testing::failure_of;
 
 std::string joined(std::uint32_t front, std::uint32_t back, std::uint32_t pairs) {
   return fmt::format(

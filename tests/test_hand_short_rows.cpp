@@ -15,6 +15,7 @@
 #include "hand/pattern_writers.hpp"
 #include "labeling/project.hpp"
 #include "mesh/generate.hpp"
+#include "target_runner.hpp"
 
 namespace skein {
 namespace {
@@ -95,11 +96,7 @@ TEST(HandShortRows, TheProjectFileChoosesTheMethod) {
   }
 }
 
-// Works a pattern written by hand (no model to compare with): the failure, or "".
-std::string failure_of(const std::string& pattern) {
-  VerifyReport r = hand::verify_pattern(pattern, "p.md", nullptr);
-  return r.summary.find("give --against") == std::string::npos ? r.summary : "";
-}
+using testing::failure_of;
 
 TEST(HandShortRows, ProvesHandWrittenShortRows) {
   EXPECT_EQ(failure_of("Cast on 6 sts.\nRow 1 (RS): K4, turn.\nRow 2 (WS): DS, p3.\n"
