@@ -113,7 +113,8 @@ TEST(HandTarget, SamplesNotCoveredYetNameWhatStopsThem) {
        "edge from the needle of Piece 1, set aside, not from a spare needle"},
       {"samples/letter-h/letter-h.yaml", "from the needle of Piece 1 itself"},
       {"samples/three-bars/three-bars.yaml",
-       "(Piece 3) in the middle of the work, where its sts were not placed on the needle"},
+       "face 2701 (k, row 97) works a loop of face 1612 (k, row 48) off the needle of Piece 2, "
+       "set aside with sts it works itself later"},
   };
   for (const auto& [sample, named] : cases) {
     std::string error = emit_error(compile_model(sample));

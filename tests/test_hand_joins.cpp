@@ -244,5 +244,40 @@ TEST(HandPieces, RejectsSettingAsideAndTakingUpWrongWithTheReason) {
             "p.md:7: Rnd: no sts are on the needle (take up Piece 1 again first)");
 }
 
+// A provisional cast-on (Piece 1) whose sts or chain a tube (Piece 2) places into a rnd in
+// the middle of its work; the other side is worked by Piece 3.
+std::string tube_taking_in(const std::string& place, const std::string& other_side) {
+  return "Cast on 2 sts with a provisional cast-on.\n"
+         "Leave the 2 sts on a spare needle and cut the yarn.\n"
+         "Cast on 4 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\n" +
+         place + "\nRnd 2: Knit \u2014 6 sts.\nRnd 3: BO all sts.\nFasten off.\n" + other_side +
+         "Row 1 (RS): BO all sts.\nFasten off.\n";
+}
+
+TEST(HandPieces, PlacesASpareNeedleOrAChainIntoARndInTheMiddleOfTheWork) {
+  const std::string chain_side =
+      "Join a new yarn to the 2 loops of Piece 1's chain, the first st cast on at the tip.\n";
+  const std::string needle_side =
+      "Join a new yarn to the 2 sts of Piece 1, the first st cast on at the tip.\n";
+  EXPECT_EQ(failure_of(tube_taking_in("Place the 2 sts of Piece 1 on the needle after the first 2 "
+                                      "sts of the rnd, the first st cast on first.",
+                                      chain_side)),
+            "");
+  EXPECT_EQ(failure_of(tube_taking_in("Place the 2 loops of Piece 1's chain on the needle at the "
+                                      "beginning of the rnd, the last st cast on first.",
+                                      needle_side)),
+            "");
+  EXPECT_EQ(failure_of(tube_taking_in("Place the 3 loops of Piece 1's chain on the needle at the "
+                                      "beginning of the rnd, the last st cast on first.",
+                                      needle_side)),
+            "p.md:5: Place the sts of Piece 1: the pattern says 3 sts, but its chain holds 2");
+  EXPECT_EQ(failure_of(tube_taking_in("Place the 2 loops of Piece 1's chain on the needle at the "
+                                      "beginning of the rnd, the last st cast on first.",
+                                      chain_side)),
+            "p.md:9: Join a new yarn: the chain of Piece 1 is not waiting on a spare needle");
+  EXPECT_EQ(failure_of(tube_taking_in("", needle_side)),
+            "p.md:6: Rnd 2: the pattern says 6 sts, but 4 sts are on the needle");
+}
+
 }  // namespace
 }  // namespace skein

@@ -292,10 +292,11 @@ class NeedleSimulator {
   void place(const Step& s) {
     if (!active_ || !pc_.joined || pc_.bor == kNone)
       fail(fmt::format("Place the sts of Piece {}: only into a piece worked in the rnd", s.number));
-    std::vector<std::uint32_t> placed = spare_needle(s.number, s.from_last[0], "Place the sts");
+    std::vector<std::uint32_t> placed =
+        spare_needle(s.number, s.from_last[0], "Place the sts", s.provisional);
     if (placed.size() != s.count)
-      fail(fmt::format("Place the sts of Piece {}: the pattern says {}, but its needle holds {}",
-                       s.number, sts(s.count), placed.size()));
+      fail(fmt::format("Place the sts of Piece {}: the pattern says {}, but its {} holds {}",
+                       s.number, sts(s.count), s.provisional ? "chain" : "needle", placed.size()));
     std::vector<std::uint32_t> ring = ring_from_bor();
     if (s.last > ring.size())
       fail(fmt::format("Place the sts of Piece {}: the rnd has only {}", s.number,
@@ -305,7 +306,7 @@ class NeedleSimulator {
     pc_.right.insert(pc_.right.end(), ring.begin(), ring.end());
     pc_.left.clear();
     pc_.live += s.count;
-    spare_needles_.erase({s.number, kNeedle});
+    spare_needles_.erase({s.number, s.provisional ? kChain : kNeedle});
   }
 
   // The loops around the needle from the beginning-of-round marker on (markers left out).

@@ -110,17 +110,36 @@ class InstructionWriter {
   // beginning of the rnd, the first st of its last rnd first."
   std::string take_up_text(const PatternSection& sec) const {
     std::string text = fmt::format("Take up Piece {} again with its yarn.", sec.piece);
-    for (const PatternSection::Placement& p : sec.placements) {
-      const PatternSection& spare = p_.sections[p.section];
-      std::string where = p.after == 0 ? "at the beginning of the rnd"
-                                       : fmt::format("after the first {} sts of the rnd", p.after);
-      text += fmt::format(
-          " Place the {} sts of Piece {} on the needle {}, the {} st of its last "
-          "{} first.",
-          p.count, spare.piece, where, p.from_last ? "last" : "first",
-          spare.in_round ? "rnd" : "row");
-    }
+    for (const PatternSection::Placement& p : sec.placements)
+      if (p.before_row == sec.first_row) text.append(" ").append(placement_text(p));
     return text;
+  }
+
+  // "Place the 9 loops of Piece 3's chain on the needle after the first 9 sts of the rnd, the
+  // first st cast on first."
+  std::string placement_text(const PatternSection::Placement& p) const {
+    const PatternSection& spare = p_.sections[p.section];
+    std::string where = p.after == 0 ? "at the beginning of the rnd"
+                                     : fmt::format("after the first {} sts of the rnd", p.after);
+    bool cast_on = p.chain || spare.first_row == spare.end_row;
+    std::string which = cast_on          ? "cast on"
+                        : spare.in_round ? "of its last rnd"
+                                         : "of its last row";
+    return fmt::format("Place the {} {} of Piece {}{} on the needle {}, the {} st {} first.",
+                       p.count, p.chain ? "loops" : "sts", spare.piece, p.chain ? "'s chain" : "",
+                       where, p.from_last ? "last" : "first", which);
+  }
+
+  // Placements into a rnd in the middle of a piece's work, written before the rnd.
+  void write_placements_before(std::uint32_t row) {
+    for (const PatternSection::Placement& p : p_.sections[section_].placements)
+      if (p.before_row == row) add(InstructionLine::Kind::setup, "", placement_text(p));
+  }
+
+  bool placement_before(std::uint32_t row) const {
+    const auto& placed = p_.sections[section_].placements;
+    return std::any_of(placed.begin(), placed.end(),
+                       [&](const PatternSection::Placement& p) { return p.before_row == row; });
   }
 
   // "Pick up 3 sts along the right edge of Piece 1, one in each row from Row 2 down to the
@@ -190,8 +209,20 @@ class InstructionWriter {
     return true;
   }
 
+  // Rows are written in runs between the placements that come before some of them.
   void write_rows(std::uint32_t first, std::uint32_t end) {
     for (std::uint32_t i = first; i < end;) {
+      std::uint32_t stop = i + 1;
+      while (stop < end && !placement_before(stop)) ++stop;
+      // A piece taken up again places its first ones as it is taken up.
+      if (i != first || !p_.sections[section_].resumed) write_placements_before(i);
+      write_row_run(first, i, stop);
+      i = stop;
+    }
+  }
+
+  void write_row_run(std::uint32_t first, std::uint32_t from, std::uint32_t end) {
+    for (std::uint32_t i = from; i < end;) {
       auto [period, times] = best_block(i, end);
       std::uint32_t last = i + period * times - 1;
       const PatternRow& r = p_.rows[i];

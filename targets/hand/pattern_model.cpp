@@ -354,32 +354,51 @@ class PatternBuilder {
     section().last_row_ends[1] = *last;
   }
 
-  // When a piece taken up again first works sts of pieces left on spare needles, the knitter
-  // places them into its rnd where they are worked.
+  // When a rnd (the first of a piece taken up again, or one in the middle of a piece's work)
+  // works sts of pieces left on spare needles, or the loops of a provisional cast-on's chain,
+  // the knitter first places them into the rnd where they are worked.
   void place_spare_needles() {
     std::uint32_t taken = 0;
     const std::uint32_t self = section_of_yarn_[section().yarn];
     for (StitchId s : row_)
       for (std::uint32_t l : g_.loops_taken_by(s)) {
-        if (g_.loops[l].kind == LoopKind::perpendicular) continue;  // one by one
-        std::uint32_t from = section_of_yarn_[c_.yarns.piece_of[g_.loops[l].maker]];
-        bool placed =
-            std::any_of(section().placements.begin(), section().placements.end(),
-                        [&](const PatternSection::Placement& p) { return p.section == from; });
-        if (from != self && !placed) {
-          const PatternSection& spare = out_.sections[from];
-          bool from_last = g_.loops[l].maker == spare.last_row_ends[1];
-          section().placements.push_back({from, spare.live_at_end, taken, from_last});
-          st_.live += spare.live_at_end;
-        }
+        const Loop& loop = g_.loops[l];
+        if (loop.kind == LoopKind::perpendicular) continue;  // one by one
+        std::uint32_t from = section_of(loop.maker);
+        bool chain = loop.kind == LoopKind::split && loop.maker_slot == 1;
+        if (from != self && placeable(from, chain)) place_spare_needle(from, chain, loop, taken);
         ++taken;
       }
   }
 
+  // A spare needle (or chain) not yet on this piece's needle: one set aside waits on its own.
+  bool placeable(std::uint32_t from, bool chain) const {
+    const PatternSection& spare = out_.sections[from];
+    const auto& placed = out_.sections.back().placements;
+    bool done = std::any_of(placed.begin(), placed.end(), [&](const PatternSection::Placement& p) {
+      return p.section == from && p.chain == chain;
+    });
+    const auto& start = out_.sections.back().starts_from;
+    bool started_on = start && start->section == from && start->chain == chain;
+    return !done && !started_on && !spare.set_aside && (spare.left_live || chain);
+  }
+
+  void place_spare_needle(std::uint32_t from, bool chain, const Loop& loop, std::uint32_t after) {
+    const PatternSection& spare = out_.sections[from];
+    PatternSection::Placement p{from, chain ? spare.cast_on : spare.live_at_end, after,
+                                loop.maker == spare.last_row_ends[1]};
+    p.chain = chain;
+    p.before_row = static_cast<std::uint32_t>(out_.rows.size());
+    section().placements.push_back(p);
+    st_.live += p.count;
+  }
+
   void add_row() {
-    if (section().resumed && section().first_row == out_.rows.size()) place_spare_needles();
-    PatternRow r;
     bool turns = g_.yarn_link[row_.back()] == YarnLink::turn;
+    bool first_of_take_up = section().resumed && section().first_row == out_.rows.size();
+    bool full_round = section().in_round && !turns && st_.previous_link != YarnLink::turn;
+    if (first_of_take_up || full_round) place_spare_needles();
+    PatternRow r;
     // In the rnd a row that turns is a short row; a rnd goes on around.
     r.round = section().in_round && !turns;
     r.number =
@@ -494,18 +513,28 @@ class PatternBuilder {
           g_.describe(s), g_.describe(maker), from.piece, own ? " itself" : ", set aside"));
   }
 
-  // Sts of another piece are placed into the rnd when a piece is taken up again; a row that
-  // works them anywhere else would need them placed there first, which is not written yet.
+  // Sts of another piece's spare needle are placed into a rnd that works them. A piece set
+  // aside keeps its sts on its own needle with those it works later (a knitter would slip the
+  // others to a holder first), and a row that is no whole rnd has no place for them: neither
+  // is written yet.
   void refuse_loop_of_a_piece_not_placed(StitchId s) const {
     for (std::uint32_t l : g_.loops_taken_by(s)) {
       const Loop& loop = g_.loops[l];
       if (loop.kind == LoopKind::perpendicular || loop.maker == kNoStitch ||
           on_own_needle(loop.maker))
         continue;
+      const PatternSection& from = out_.sections[section_of(loop.maker)];
+      if (from.set_aside)
+        unsupported(fmt::format(
+            "{} works a loop of {} off the needle of Piece {}, set aside with sts it works "
+            "itself later; a knitter would first slip the sts other pieces take to holders, "
+            "which is not covered yet",
+            g_.describe(s), g_.describe(loop.maker), from.piece));
       unsupported(fmt::format(
-          "{} works a loop of {} (Piece {}) in the middle of the work, where its sts were not "
-          "placed on the needle (that is written only when a piece is taken up again)",
-          g_.describe(s), g_.describe(loop.maker), out_.sections[section_of(loop.maker)].piece));
+          "{} works a loop of {} (Piece {}) in a row that is not a whole rnd, where its sts "
+          "cannot be placed on the needle (that is written only before a rnd), which is not "
+          "covered yet",
+          g_.describe(s), g_.describe(loop.maker), from.piece));
     }
   }
 

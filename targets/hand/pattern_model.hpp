@@ -47,11 +47,15 @@ struct PatternSection {
   bool set_aside = false;          // ends with its sts and yarn set aside, to be taken up again
   bool resumed = false;            // takes up a piece set aside
   std::uint32_t live_at_end = 0;
-  // Sts of another section's spare needle placed into the rnd when this one is taken up,
-  // `after` sts from the beginning of the rnd, that needle's last st first if `from_last`.
+  // Sts of another section's spare needle (or its provisional cast-on's chain) placed into
+  // the rnd before the row `before_row` works them (when this one is taken up, or in the
+  // middle of its work), `after` sts from the beginning of the rnd, that needle's last st
+  // first if `from_last`.
   struct Placement {
     std::uint32_t section, count, after;
     bool from_last;
+    bool chain = false;
+    std::uint32_t before_row = 0;  // into HandPattern::rows
   };
   std::vector<Placement> placements;
   bool provisional = false;  // its cast-on is a provisional one (a cast-on along a split)
