@@ -217,6 +217,32 @@ TEST(HandPieces, TheSweaterIsProvenInEveryFormat) {
   }
 }
 
+// Three arms knit towards the centre, where their sts go four ways: into each arm beyond it
+// (with the sts of two provisional cast-ons) and into two three-needle bind-offs.
+TEST(HandPieces, TheThreeBarsAreProvenInEveryFormat) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  Compilation c = compile_model("samples/three-bars/three-bars.yaml");
+  std::string pattern = emit(c, "hand");
+  for (const char* line :
+       {"Slip sts 1\u20139 of the rnd to holder 1, sts 10\u201318 to holder 2 and sts "
+        "19\u201327 to holder 3.\n\nLeave the 9 sts on the needle and set the yarn aside (do not "
+        "cut it).\n",
+        "Slip sts 10\u201318 of the rnd to holder 7, sts 19\u201327 to holder 8 and sts "
+        "28\u201336 to holder 9.\n\nPlace the 9 sts of Piece 3 on the needle after the first 9 "
+        "sts of the rnd, the first st cast on first.\n",
+        "Place the 9 sts of holder 2 on the needle after the first 27 sts of the rnd, the first "
+        "st of its last rnd first.\n",
+        "Take up Piece 2 again with its yarn. Place the 9 loops of Piece 3's chain on the needle "
+        "at the beginning of the rnd, the last st cast on first.",
+        "Three-needle bind-off: hold the pieces with RS together: holder 3 in front, the first st "
+        "of its last row at the needle tip; holder 9 behind,"})
+    EXPECT_NE(pattern.find(line), std::string::npos) << line;
+  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
+    VerifyReport report = verify(c, target, emit(c, target));
+    EXPECT_TRUE(report.proven) << target << ": " << report.summary;
+  }
+}
+
 std::string body_and_sleeve(const std::string& take_up) {
   return "Cast on 8 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\n"
          "Leave the 8 sts on the needle and set the yarn aside (do not cut it).\n"

@@ -140,6 +140,9 @@ class NeedleSimulator {
       case Step::Kind::three_needle_bind_off:
         three_needle_bind_off(s);
         break;
+      case Step::Kind::hold:
+        hold(s);
+        break;
     }
   }
 
@@ -293,10 +296,15 @@ class NeedleSimulator {
     if (!active_ || !pc_.joined || pc_.bor == kNone)
       fail(fmt::format("Place the sts of Piece {}: only into a piece worked in the rnd", s.number));
     std::vector<std::uint32_t> placed =
-        spare_needle(s.number, s.from_last[0], "Place the sts", s.provisional);
+        s.holder[0] ? held(s.number, s.from_last[0], "Place the sts")
+                    : spare_needle(s.number, s.from_last[0], "Place the sts", s.provisional);
     if (placed.size() != s.count)
-      fail(fmt::format("Place the sts of Piece {}: the pattern says {}, but its {} holds {}",
-                       s.number, sts(s.count), s.provisional ? "chain" : "needle", placed.size()));
+      fail(fmt::format("Place the sts of {} {}: the pattern says {}, but {} holds {}",
+                       s.holder[0] ? "holder" : "Piece", s.number, sts(s.count),
+                       s.holder[0]     ? "it"
+                       : s.provisional ? "its chain"
+                                       : "its needle",
+                       placed.size()));
     std::vector<std::uint32_t> ring = ring_from_bor();
     if (s.last > ring.size())
       fail(fmt::format("Place the sts of Piece {}: the rnd has only {}", s.number,
@@ -306,7 +314,39 @@ class NeedleSimulator {
     pc_.right.insert(pc_.right.end(), ring.begin(), ring.end());
     pc_.left.clear();
     pc_.live += s.count;
-    spare_needles_.erase({s.number, s.provisional ? kChain : kNeedle});
+    if (s.holder[0])
+      holders_.erase(s.number);
+    else
+      spare_needles_.erase({s.number, s.provisional ? kChain : kNeedle});
+  }
+
+  // Sts A–B of the rnd, counted from the beginning-of-round marker, go to a holder of their
+  // own (the reader gives the runs of one sentence last first, so the counts stay true).
+  void hold(const Step& s) {
+    if (!active_ || !pc_.joined || pc_.bor == kNone)
+      fail(fmt::format("Slip sts to holder {}: only from a piece worked in the rnd", s.number));
+    if (holders_.contains(s.number))
+      fail(fmt::format("Slip sts to holder {}: it already holds sts", s.number));
+    std::vector<std::uint32_t> ring = ring_from_bor();
+    if (s.to_row > ring.size())
+      fail(fmt::format("Slip sts {}\u2013{} to holder {}: the rnd has only {}", s.from_row,
+                       s.to_row, s.number, sts(static_cast<std::uint32_t>(ring.size()))));
+    auto first = ring.begin() + (s.from_row - 1), end = ring.begin() + s.to_row;
+    holders_[s.number].assign(first, end);
+    ring.erase(first, end);
+    pc_.right.assign(1, pc_.bor);
+    pc_.right.insert(pc_.right.end(), ring.begin(), ring.end());
+    pc_.left.clear();
+    pc_.live -= s.to_row - s.from_row + 1;
+  }
+
+  // A holder's sts from the needle tip: the first or the last st of the run slipped to it.
+  std::vector<std::uint32_t> held(std::uint32_t holder, bool from_last, const char* what) const {
+    auto at = holders_.find(holder);
+    if (at == holders_.end()) fail(fmt::format("{}: holder {} holds no sts", what, holder));
+    std::vector<std::uint32_t> loops = at->second;
+    if (from_last) std::reverse(loops.begin(), loops.end());
+    return loops;
   }
 
   // The loops around the needle from the beginning-of-round marker on (markers left out).
@@ -343,8 +383,12 @@ class NeedleSimulator {
     else if (active_ && pc_.live > 0)
       fail(fmt::format("three-needle bind-off: the piece before still has {} on the needle",
                        sts(pc_.live)));
-    std::vector<std::uint32_t> f = spare_needle(front, s.from_last[0], "three-needle bind-off");
-    std::vector<std::uint32_t> b = spare_needle(back, s.from_last[1], "three-needle bind-off");
+    auto needle = [&](int side) {
+      std::uint32_t n = side == 0 ? front : back;
+      return s.holder[side] ? held(n, s.from_last[side], "three-needle bind-off")
+                            : spare_needle(n, s.from_last[side], "three-needle bind-off");
+    };
+    std::vector<std::uint32_t> f = needle(0), b = needle(1);
     if (f.size() != b.size())
       fail(fmt::format("three-needle bind-off: {} on front needle, {} on back", sts(f.size()),
                        b.size()));
@@ -366,8 +410,13 @@ class NeedleSimulator {
       fab().taken.push_back(b[i]);
       fab().taken_first.push_back(static_cast<std::uint32_t>(fab().taken.size()));
     }
-    spare_needles_.erase({front, kNeedle});
-    spare_needles_.erase({back, kNeedle});
+    for (int side : {0, 1}) {
+      std::uint32_t n = side == 0 ? front : back;
+      if (s.holder[side])
+        holders_.erase(n);
+      else
+        spare_needles_.erase({n, kNeedle});
+    }
   }
 
   // The sts from the needle tip: the first or the last st of the piece's last row.
@@ -393,6 +442,9 @@ class NeedleSimulator {
                       spare_needles_.begin()->first.second == kChain ? "chain" : "sts",
                       spare_needles_.begin()->first.first,
                       spare_needles_.begin()->first.second == kChain ? "is" : "are")};
+    if (!holders_.empty())
+      throw StepFailure{fmt::format("the sts of holder {} are left on it, never worked",
+                                    holders_.begin()->first)};
     if (active_ && pc_.live > 0)
       throw StepFailure{fmt::format("the pattern ends with {} still on the needle", sts(pc_.live))};
   }
@@ -950,6 +1002,7 @@ class NeedleSimulator {
   // (and with a provisional cast-on, the loops of its chain).
   static constexpr std::uint32_t kNeedle = 0, kChain = 1;
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> spare_needles_;
+  std::map<std::uint32_t, std::vector<std::uint32_t>> holders_;  // by holder number
 
   // Per loop: whether a short row turned at it, and how.
   static constexpr std::uint8_t kPlainLoop = 0, kWrapped = 1, kDouble = 2;

@@ -97,13 +97,18 @@ class InstructionWriter {
 
   std::string three_needle_text(const PatternSection& sec) const {
     return fmt::format(
-        "Three-needle bind-off: hold the pieces with RS together: Piece {} in front, the {} st "
-        "of its last row at the needle tip; Piece {} behind, the {} st of its last row at the "
+        "Three-needle bind-off: hold the pieces with RS together: {} in front, the {} st "
+        "of its last row at the needle tip; {} behind, the {} st of its last row at the "
         "tip (slide the sts to the other end of a needle if need be); with {} yarn bind off "
         "all {} pairs.",
-        p_.sections[sec.front].piece, sec.from_last[0] ? "last" : "first",
-        p_.sections[sec.back].piece, sec.from_last[1] ? "last" : "first",
-        sec.own_yarn ? "its" : "a new", sec.pairs);
+        joined_needle(sec, 0), sec.from_last[0] ? "last" : "first", joined_needle(sec, 1),
+        sec.from_last[1] ? "last" : "first", sec.own_yarn ? "its" : "a new", sec.pairs);
+  }
+
+  // "Piece 1", or "holder 3" where the sts wait on one.
+  std::string joined_needle(const PatternSection& sec, int side) const {
+    if (sec.holders[side] != 0) return fmt::format("holder {}", sec.holders[side]);
+    return fmt::format("Piece {}", p_.sections[side == 0 ? sec.front : sec.back].piece);
   }
 
   // "Take up Piece 1 again with its yarn. Place the 58 sts of Piece 2 on the needle at the
@@ -121,13 +126,37 @@ class InstructionWriter {
     const PatternSection& spare = p_.sections[p.section];
     std::string where = p.after == 0 ? "at the beginning of the rnd"
                                      : fmt::format("after the first {} sts of the rnd", p.after);
-    bool cast_on = p.chain || spare.first_row == spare.end_row;
+    bool cast_on = p.holder == 0 && (p.chain || spare.first_row == spare.end_row);
     std::string which = cast_on          ? "cast on"
                         : spare.in_round ? "of its last rnd"
                                          : "of its last row";
-    return fmt::format("Place the {} {} of Piece {}{} on the needle {}, the {} st {} first.",
-                       p.count, p.chain ? "loops" : "sts", spare.piece, p.chain ? "'s chain" : "",
-                       where, p.from_last ? "last" : "first", which);
+    std::string from = p.holder != 0
+                           ? fmt::format("holder {}", p.holder)
+                           : fmt::format("Piece {}{}", spare.piece, p.chain ? "'s chain" : "");
+    return fmt::format("Place the {} {} of {} on the needle {}, the {} st {} first.", p.count,
+                       p.chain ? "loops" : "sts", from, where, p.from_last ? "last" : "first",
+                       which);
+  }
+
+  // "Slip sts 10–18 of the rnd to holder 1, sts 19–27 to holder 2 and sts 28–36 to holder 3."
+  void write_holdings_after(std::uint32_t row) {
+    std::vector<std::string> runs;
+    for (const PatternSection::Holding& h : p_.sections[section_].holdings)
+      if (h.after_row == row)
+        runs.push_back(fmt::format("sts {}{}{}{} to holder {}", h.first, knitspeak() ? "-" : kRange,
+                                   h.first + h.count - 1, runs.empty() ? " of the rnd" : "",
+                                   h.holder));
+    if (runs.empty()) return;
+    std::string text = "Slip " + runs.front();
+    for (std::size_t i = 1; i < runs.size(); ++i)
+      text.append(i + 1 == runs.size() ? " and " : ", ").append(runs[i]);
+    add(InstructionLine::Kind::setup, "", text + ".");
+  }
+
+  bool holding_after(std::uint32_t row) const {
+    const auto& held = p_.sections[section_].holdings;
+    return std::any_of(held.begin(), held.end(),
+                       [&](const PatternSection::Holding& h) { return h.after_row == row; });
   }
 
   // Placements into a rnd in the middle of a piece's work, written before the rnd.
@@ -213,10 +242,11 @@ class InstructionWriter {
   void write_rows(std::uint32_t first, std::uint32_t end) {
     for (std::uint32_t i = first; i < end;) {
       std::uint32_t stop = i + 1;
-      while (stop < end && !placement_before(stop)) ++stop;
+      while (stop < end && !placement_before(stop) && !holding_after(stop - 1)) ++stop;
       // A piece taken up again places its first ones as it is taken up.
       if (i != first || !p_.sections[section_].resumed) write_placements_before(i);
       write_row_run(first, i, stop);
+      write_holdings_after(stop - 1);
       i = stop;
     }
   }
@@ -309,7 +339,7 @@ Totals totals_of(const HandPattern& p) {
   t.narrowest_round = ~0u;
   for (const PatternSection& s : p.sections) {
     t.joins = t.joins || s.joins;
-    t.spare_needles = t.spare_needles || s.left_live || s.provisional;
+    t.spare_needles = t.spare_needles || s.left_live || s.provisional || !s.holdings.empty();
     t.provisional = t.provisional || s.provisional;
     t.picks_up = t.picks_up || s.picks_up.has_value();
     if (s.joins) continue;

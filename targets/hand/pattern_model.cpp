@@ -253,7 +253,11 @@ class PatternBuilder {
     join.back = section_of(taken[1]);
     for (int side : {0, 1}) {
       const PatternSection& piece = out_.sections[side == 0 ? join.front : join.back];
-      join.from_last[side] = g_.loops[taken[side]].maker == piece.last_row_ends[1];
+      StitchId maker = g_.loops[taken[side]].maker;
+      join.holders[side] = holder_of_[maker];
+      join.from_last[side] =
+          maker == (join.holders[side] != 0 ? holders_[join.holders[side] - 1].last
+                                            : piece.last_row_ends[1]);
     }
     join.own_yarn = join.front == section_of_yarn_[join.yarn];
     if (join.own_yarn) st_.live = 0;  // the front needle's sts are the ones bound off
@@ -366,7 +370,11 @@ class PatternBuilder {
         if (loop.kind == LoopKind::perpendicular) continue;  // one by one
         std::uint32_t from = section_of(loop.maker);
         bool chain = loop.kind == LoopKind::split && loop.maker_slot == 1;
-        if (from != self && placeable(from, chain)) place_spare_needle(from, chain, loop, taken);
+        if (std::uint32_t holder = holder_of_[loop.maker]; holder != 0) {
+          if (!holder_placed(holder)) place_holder(holder, loop, taken);
+        } else if (from != self && placeable(from, chain)) {
+          place_spare_needle(from, chain, loop, taken);
+        }
         ++taken;
       }
   }
@@ -376,7 +384,7 @@ class PatternBuilder {
     const PatternSection& spare = out_.sections[from];
     const auto& placed = out_.sections.back().placements;
     bool done = std::any_of(placed.begin(), placed.end(), [&](const PatternSection::Placement& p) {
-      return p.section == from && p.chain == chain;
+      return p.section == from && p.chain == chain && p.holder == 0;
     });
     const auto& start = out_.sections.back().starts_from;
     bool started_on = start && start->section == from && start->chain == chain;
@@ -391,6 +399,53 @@ class PatternBuilder {
     p.before_row = static_cast<std::uint32_t>(out_.rows.size());
     section().placements.push_back(p);
     st_.live += p.count;
+  }
+
+  bool holder_placed(std::uint32_t holder) const {
+    const auto& placed = out_.sections.back().placements;
+    return std::any_of(placed.begin(), placed.end(),
+                       [&](const PatternSection::Placement& p) { return p.holder == holder; });
+  }
+
+  void place_holder(std::uint32_t holder, const Loop& loop, std::uint32_t after) {
+    const Held& held = holders_[holder - 1];
+    PatternSection::Placement p{section_of(loop.maker), held.count, after, loop.maker == held.last};
+    p.before_row = static_cast<std::uint32_t>(out_.rows.size());
+    p.holder = holder;
+    section().placements.push_back(p);
+    st_.live += p.count;
+  }
+
+  // Where a rnd's sts go different ways and the piece works some of them itself, the runs
+  // that other pieces (or joins) work are slipped to holders after it: the piece's needle
+  // keeps its own. Sts worked across a perpendicular edge are taken one by one, not held.
+  void hold_what_others_work(std::uint32_t row) {
+    std::vector<std::pair<StitchId, std::uint32_t>> loops;  // maker, taker's yarn
+    for (StitchId s : row_)
+      for (std::uint32_t l : g_.loops_made_by(s)) {
+        const Loop& loop = g_.loops[l];
+        if (loop.kind == LoopKind::perpendicular || loop.taker == kNoStitch) return;
+        loops.emplace_back(s, c_.yarns.piece_of[loop.taker]);
+      }
+    const std::uint32_t own = section().yarn;
+    if (std::none_of(loops.begin(), loops.end(), [&](const auto& l) { return l.second == own; }))
+      return;  // the whole needle waits as it is
+    for (std::uint32_t i = 0; i < loops.size(); ++i) {
+      if (loops[i].second == own) continue;
+      std::uint32_t end = i;
+      while (end < loops.size() && loops[end].second == loops[i].second) ++end;
+      hold(row, loops, i, end);
+      i = end - 1;
+    }
+  }
+
+  void hold(std::uint32_t row, const std::vector<std::pair<StitchId, std::uint32_t>>& loops,
+            std::uint32_t first, std::uint32_t end) {
+    holders_.push_back({loops[end - 1].first, end - first});
+    auto holder = static_cast<std::uint32_t>(holders_.size());
+    for (std::uint32_t i = first; i < end; ++i) holder_of_[loops[i].first] = holder;
+    section().holdings.push_back({row, first + 1, end - first, holder});
+    st_.live -= end - first;
   }
 
   void add_row() {
@@ -422,6 +477,7 @@ class PatternBuilder {
     r.end_op = static_cast<std::uint32_t>(out_.ops.size());
     r.sts_after = st_.live;
     out_.rows.push_back(r);
+    if (full_round) hold_what_others_work(static_cast<std::uint32_t>(out_.rows.size() - 1));
   }
 
   // A row that turns with sts left beyond it says so; German short rows make the st it turned
@@ -490,6 +546,7 @@ class PatternBuilder {
   // Is the maker's st on the needle of the piece being worked: its own, one of a spare needle
   // placed into its rnd, or one of the spare needle it started on?
   bool on_own_needle(StitchId maker) const {
+    if (holder_of_[maker] != 0) return holder_placed(holder_of_[maker]);
     std::uint32_t from = section_of(maker);
     const PatternSection& worked = out_.sections.back();
     const auto& placed = worked.placements;
@@ -617,6 +674,14 @@ class PatternBuilder {
   std::vector<std::vector<StitchId>> deferred_;                                    // per yarn
   std::vector<std::uint8_t> taken_up_;                                             // per yarn
   std::vector<std::uint8_t> unwritten_ = std::vector<std::uint8_t>(g_.size(), 0);  // deferred
+  // Sts slipped to holders: per model stitch its holder (1-based, 0: none); per holder its
+  // last st (in the order its rnd worked them) and how many it holds.
+  std::vector<std::uint32_t> holder_of_ = std::vector<std::uint32_t>(g_.size(), 0);
+  struct Held {
+    StitchId last;
+    std::uint32_t count;
+  };
+  std::vector<Held> holders_;
 };
 
 }  // namespace

@@ -56,7 +56,15 @@ struct PatternSection {
     bool from_last;
     bool chain = false;
     std::uint32_t before_row = 0;  // into HandPattern::rows
+    std::uint32_t holder = 0;      // 1-based: the sts of that holder instead
   };
+  // Where the sts of one rnd go different ways (to the piece's next rnd, into another piece's
+  // rnd, into a join), those the piece does not work itself are slipped to holders after it:
+  // `count` sts from the `first` (1-based, from the beginning of the rnd) to holder `holder`.
+  struct Holding {
+    std::uint32_t after_row, first, count, holder;
+  };
+  std::vector<Holding> holdings;
   std::vector<Placement> placements;
   bool provisional = false;  // its cast-on is a provisional one (a cast-on along a split)
   // A piece that starts on the sts of another's provisional cast-on: the sts on its needle,
@@ -78,6 +86,7 @@ struct PatternSection {
   std::uint32_t front = 0, back = 0;   // section indices
   bool from_last[2] = {false, false};  // which end of each last row starts: first or last st
   bool own_yarn = false;               // worked with the front piece's yarn, taken up again
+  std::uint32_t holders[2] = {0, 0};   // 1-based: the front (back) sts wait on that holder
   std::uint32_t pairs = 0;
   // Model stitches: the first and last of the section's last row (or of its cast-on).
   std::uint32_t last_row_ends[2] = {0, 0};

@@ -131,6 +131,7 @@ class SentenceReader {
     }
     // "Place ... the first st cast on first" is no cast-on.
     if (c.eat("place")) return place(c);
+    if (c.eat("slip")) return hold(c);
     if (std::size_t at = find_ci(sentence, "cast on"); at != std::string_view::npos)
       return cast_on(Cursor(sentence.substr(at + 7)));
     if (c.eat("co")) return cast_on(c);
@@ -274,8 +275,10 @@ class SentenceReader {
     step.count = need_number(c, "the number of sts to place");
     step.provisional = c.eat("loops");
     need(step.provisional || c.eat("sts"), c, "'sts' or 'loops'");
-    need_words(c, {"of", "piece"}, "'of Piece N'");
-    step.number = need_number(c, "a piece number");
+    need(c.eat("of"), c, "'of Piece N' or 'of holder N'");
+    step.holder[0] = !step.provisional && c.eat("holder");
+    need(step.holder[0] || c.eat("piece"), c, "'of Piece N' or 'of holder N'");
+    step.number = need_number(c, step.holder[0] ? "a holder number" : "a piece number");
     if (step.provisional) need_words(c, {"'", "s", "chain"}, "'s chain' after the piece");
     need_words(c, {"on", "the", "needle"}, "'on the needle'");
     if (c.eat("after")) {
@@ -299,6 +302,26 @@ class SentenceReader {
     add(step);
   }
 
+  // "Slip sts 10–18 of the rnd to holder 1, sts 19–27 to holder 2 and sts 28–36 to holder 3":
+  // the sts are counted in the rnd as it is before any is slipped, so the last run goes first.
+  void hold(Cursor& c) {
+    std::vector<Step> runs;
+    do {
+      Step step{Step::Kind::hold, line_no_};
+      need(c.eat("sts"), c, "'sts A–B'");
+      step.from_row = need_number(c, "the first st to hold");
+      need(c.eat(kEnDash) || c.eat("-"), c, "'–' between the first and the last st");
+      step.to_row = need_number(c, "the last st to hold");
+      if (step.to_row < step.from_row) fail("expected the sts in increasing order", c.rest());
+      if (runs.empty()) need_words(c, {"of", "the", "rnd"}, "'of the rnd'");
+      need_words(c, {"to", "holder"}, "'to holder N'");
+      step.number = need_number(c, "a holder number");
+      runs.push_back(step);
+    } while (c.eat_char(',') || c.eat("and"));
+    need(c.done(), c, "the end of the sentence");
+    for (auto run = runs.rbegin(); run != runs.rend(); ++run) add(*run);
+  }
+
   void need_words(Cursor& c, std::initializer_list<std::string_view> words, const char* expected) {
     for (std::string_view w : words) need(w.size() == 1 ? c.eat_char(w[0]) : c.eat(w), c, expected);
   }
@@ -311,9 +334,9 @@ class SentenceReader {
     Step step{Step::Kind::three_needle_bind_off, line_no_};
     need_words(c, {":", "hold", "the", "pieces", "with", "RS", "together", ":"},
                "': hold the pieces with RS together:'");
-    step.number = needle_end(c, {"in", "front"}, step.from_last[0]);
+    step.number = needle_end(c, {"in", "front"}, step.from_last[0], step.holder[0]);
     need(c.eat_char(';'), c, "';' after the front piece");
-    step.last = needle_end(c, {"behind"}, step.from_last[1]);
+    step.last = needle_end(c, {"behind"}, step.from_last[1], step.holder[1]);
     if (c.eat_char('('))
       while (!c.done() && !c.eat_char(')')) c.eat_char(c.peek());
     need_words(c, {";", "with"}, "'; with a new yarn' or '; with its yarn'");
@@ -325,11 +348,13 @@ class SentenceReader {
     add(step);
   }
 
-  // "Piece 1 in front, the first st of its last row at the needle tip": the piece's number.
+  // "Piece 1 (or: holder 3) in front, the first st of its last row at the needle tip": the
+  // piece's (or holder's) number.
   std::uint32_t needle_end(Cursor& c, std::initializer_list<std::string_view> where,
-                           bool& from_last) {
-    need(c.eat("piece"), c, "'Piece N'");
-    std::uint32_t piece = need_number(c, "a piece number");
+                           bool& from_last, bool& holder) {
+    holder = c.eat("holder");
+    need(holder || c.eat("piece"), c, "'Piece N' or 'holder N'");
+    std::uint32_t piece = need_number(c, holder ? "a holder number" : "a piece number");
     need_words(c, where, "'in front' or 'behind' after the piece");
     need_words(c, {",", "the"}, "', the first (or last) st of its last row'");
     from_last = c.eat("last");

@@ -60,6 +60,7 @@ struct Step {
     pick_up,                // "Pick up <count> sts along the right edge of Piece <number>, ..."
     three_needle_bind_off,  // Piece <number> in front, Piece <last> behind, <count> pairs;
                             // from_last: which ends are at the tips (front, back)
+    hold,                   // "Slip sts <from_row>–<to_row> of the rnd to holder <number>"
   };
   Step(Kind step_kind, std::size_t line_no) : kind(step_kind), line(line_no) {}
   Kind kind;
@@ -77,6 +78,8 @@ struct Step {
   std::uint32_t from_row = 0, to_row = 0;  // pick_up: one st in each of these rows (provisional:
                                            // along the right edge)
   HandOp op = HandOp::k;
+  // place (front), three_needle_bind_off: the number (and last) name a holder, not a piece.
+  bool holder[2] = {false, false};
 };
 
 struct Script {
