@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <regex>
 #include <sstream>
 
 #include "builtin_targets.hpp"
@@ -241,6 +242,37 @@ TEST(HandPieces, TheThreeBarsAreProvenInEveryFormat) {
     VerifyReport report = verify(c, target, emit(c, target));
     EXPECT_TRUE(report.proven) << target << ": " << report.summary;
   }
+}
+
+// A tube whose sts 3-4 wait on a holder for a rnd and are placed back.
+std::string tube_with_holder(const std::string& slip, const std::string& place) {
+  return "Cast on 6 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\n" + slip +
+         "\nRnd 2: Knit.\n" + place + "\nRnd 3: BO all sts.\nFasten off.\n";
+}
+
+TEST(HandPieces, RejectsSlippingToHoldersAndPlacingThemWrongWithTheReason) {
+  const std::string slip = "Slip sts 3\u20134 of the rnd to holder 1.";
+  const std::string place =
+      "Place the 2 sts of holder 1 on the needle after the first 2 sts of the rnd, the first st of "
+      "its last rnd first.";
+  EXPECT_EQ(failure_of(tube_with_holder(slip, place)), "");
+  EXPECT_EQ(failure_of(tube_with_holder(slip, "")),
+            "p.md:7: the sts of holder 1 are left on it, never worked");
+  EXPECT_EQ(failure_of(tube_with_holder(
+                slip, std::regex_replace(place, std::regex("2 sts of"), "3 sts of"))),
+            "p.md:5: Place the sts of holder 1: the pattern says 3 sts, but it holds 2");
+  EXPECT_EQ(failure_of(tube_with_holder(
+                slip, std::regex_replace(place, std::regex("holder 1"), "holder 2"))),
+            "p.md:5: Place the sts: holder 2 holds no sts");
+  EXPECT_EQ(failure_of(tube_with_holder("Slip sts 5\u20138 of the rnd to holder 1.", place)),
+            "p.md:3: Slip sts 5\u20138 to holder 1: the rnd has only 6 sts");
+  EXPECT_EQ(failure_of(tube_with_holder("Slip sts 0\u20131 of the rnd to holder 1.", place)),
+            "p.md:3: Slip sts to holder 1: the sts count from 1");
+  EXPECT_EQ(failure_of(tube_with_holder(
+                "Slip sts 1\u20132 of the rnd to holder 1 and sts 3\u20134 to holder 1.", place)),
+            "p.md:3: Slip sts to holder 1: it already holds sts");
+  EXPECT_EQ(failure_of("Cast on 6 sts.\nRow 1 (RS): Knit.\n" + slip + "\n"),
+            "p.md:3: Slip sts to holder 1: only from a piece worked in the rnd");
 }
 
 std::string body_and_sleeve(const std::string& take_up) {

@@ -394,6 +394,13 @@ TEST(HandMutations, PiecesSetAsideAndTakenUpRejectEveryEditThatChangesTheFabric)
   mutate_and_judge("sweater (lines near the pieces)", c, hand_pattern(c), true);
 }
 
+// The three bars: sts slipped to holders, placed into other pieces' rnds (with a provisional
+// cast-on's sts and chain) and bound off together from holders.
+TEST(HandMutations, HoldersRejectEveryEditThatChangesTheFabric) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  mutate_and_judge("three bars", compile_model("samples/three-bars/three-bars.yaml"));
+}
+
 TEST(HandMutations, ShapedSheetsAndTubesRejectEveryEditThatChangesTheFabric) {
   std::mt19937_64 rng(11);
   for (int trial = 0; trial < 6; ++trial) {

@@ -327,6 +327,7 @@ class NeedleSimulator {
       fail(fmt::format("Slip sts to holder {}: only from a piece worked in the rnd", s.number));
     if (holders_.contains(s.number))
       fail(fmt::format("Slip sts to holder {}: it already holds sts", s.number));
+    if (s.from_row == 0) fail(fmt::format("Slip sts to holder {}: the sts count from 1", s.number));
     std::vector<std::uint32_t> ring = ring_from_bor();
     if (s.to_row > ring.size())
       fail(fmt::format("Slip sts {}\u2013{} to holder {}: the rnd has only {}", s.from_row,
