@@ -190,7 +190,8 @@ TEST(HandReadability, PlainKnittingTakesAFewLines) {
        {std::pair{"samples/rib-swatch/rib-swatch.obj", 14.0}, std::pair{"samples/hat/hat.obj", 4.5},
         std::pair{"samples/sock/sock.yaml", 8.0},
         std::pair{"samples/short-row-wedge/short-row-wedge.yaml", 12.5},
-        std::pair{"samples/sweater/sweater.yaml", 2.6}}) {
+        std::pair{"samples/sweater/sweater.yaml", 2.6},
+        std::pair{"samples/three-bars/three-bars.yaml", 8.5}}) {
     Compilation c = compile_model(input);
     double figure = lines_per_thousand(c, emit(c, "hand"));
     std::cout << input << ": " << figure << " instruction lines per 1,000 sts\n";
