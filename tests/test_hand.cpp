@@ -108,9 +108,6 @@ TEST(HandTarget, StitchesNotCoveredYetAreNamed) {
 TEST(HandTarget, SamplesNotCoveredYetNameWhatStopsThem) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
   const std::pair<const char*, const char*> cases[] = {
-      {"samples/two-bars/two-bars.yaml",
-       "face 1831 (k2tog, row 59) works a loop of face 870 (k, row 24) across a perpendicular "
-       "edge from the needle of Piece 1, set aside, not from a spare needle"},
       {"samples/letter-h/letter-h.yaml", "from the needle of Piece 1 itself"},
   };
   for (const auto& [sample, named] : cases) {
@@ -191,7 +188,8 @@ TEST(HandReadability, PlainKnittingTakesAFewLines) {
         std::pair{"samples/sock/sock.yaml", 8.0},
         std::pair{"samples/short-row-wedge/short-row-wedge.yaml", 12.5},
         std::pair{"samples/sweater/sweater.yaml", 2.6},
-        std::pair{"samples/three-bars/three-bars.yaml", 8.5}}) {
+        std::pair{"samples/three-bars/three-bars.yaml", 8.5},
+        std::pair{"samples/two-bars/two-bars.yaml", 12.0}}) {
     Compilation c = compile_model(input);
     double figure = lines_per_thousand(c, emit(c, "hand"));
     std::cout << input << ": " << figure << " instruction lines per 1,000 sts\n";

@@ -218,30 +218,49 @@ TEST(HandPieces, TheSweaterIsProvenInEveryFormat) {
   }
 }
 
+// A sample's hand pattern holds these lines and is proven in every format.
+void expect_written_and_proven(const char* sample, std::initializer_list<const char*> lines) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  Compilation c = compile_model(sample);
+  std::string pattern = emit(c, "hand");
+  for (const char* line : lines) EXPECT_NE(pattern.find(line), std::string::npos) << line;
+  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
+    VerifyReport report = verify(c, target, emit(c, target));
+    EXPECT_TRUE(report.proven) << sample << ", " << target << ": " << report.summary;
+  }
+}
+
 // Three arms knit towards the centre, where their sts go four ways: into each arm beyond it
 // (with the sts of two provisional cast-ons) and into two three-needle bind-offs.
 TEST(HandPieces, TheThreeBarsAreProvenInEveryFormat) {
-  std::filesystem::current_path(SKEIN_SOURCE_DIR);
-  Compilation c = compile_model("samples/three-bars/three-bars.yaml");
-  std::string pattern = emit(c, "hand");
-  for (const char* line :
-       {"Slip sts 1\u20139 of the rnd to holder 1, sts 10\u201318 to holder 2 and sts "
-        "19\u201327 to holder 3.\n\nLeave the 9 sts on the needle and set the yarn aside (do not "
-        "cut it).\n",
-        "Slip sts 10\u201318 of the rnd to holder 7, sts 19\u201327 to holder 8 and sts "
-        "28\u201336 to holder 9.\n\nPlace the 9 sts of Piece 3 on the needle after the first 9 "
-        "sts of the rnd, the first st cast on first.\n",
-        "Place the 9 sts of holder 2 on the needle after the first 27 sts of the rnd, the first "
-        "st of its last rnd first.\n",
-        "Take up Piece 2 again with its yarn. Place the 9 loops of Piece 3's chain on the needle "
-        "at the beginning of the rnd, the last st cast on first.",
-        "Three-needle bind-off: hold the pieces with RS together: holder 3 in front, the first st "
-        "of its last row at the needle tip; holder 9 behind,"})
-    EXPECT_NE(pattern.find(line), std::string::npos) << line;
-  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
-    VerifyReport report = verify(c, target, emit(c, target));
-    EXPECT_TRUE(report.proven) << target << ": " << report.summary;
-  }
+  expect_written_and_proven(
+      "samples/three-bars/three-bars.yaml",
+      {"Slip sts 1\u20139 of the rnd to holder 1, sts 10\u201318 to holder 2 and sts "
+       "19\u201327 to holder 3.\n\nLeave the 9 sts on the needle and set the yarn aside (do not "
+       "cut it).\n",
+       "Slip sts 10\u201318 of the rnd to holder 7, sts 19\u201327 to holder 8 and sts "
+       "28\u201336 to holder 9.\n\nPlace the 9 sts of Piece 3 on the needle after the first 9 "
+       "sts of the rnd, the first st cast on first.\n",
+       "Place the 9 sts of holder 2 on the needle after the first 27 sts of the rnd, the first "
+       "st of its last rnd first.\n",
+       "Take up Piece 2 again with its yarn. Place the 9 loops of Piece 3's chain on the needle "
+       "at the beginning of the rnd, the last st cast on first.",
+       "Three-needle bind-off: hold the pieces with RS together: holder 3 in front, the first st "
+       "of its last row at the needle tip; holder 9 behind,"});
+}
+
+// Two bars knit towards each other: each ends in a flat face that works the other's sts one
+// at a time from a holder put on a spare needle, and the rnds beyond pick up along its edge.
+TEST(HandPieces, TheTwoBarsAreProvenInEveryFormat) {
+  expect_written_and_proven(
+      "samples/two-bars/two-bars.yaml",
+      {"Slip sts 10\u201318 of the rnd to holder 4, sts 19\u201328 to holder 5 and sts "
+       "29\u201337 to holder 6.\n\nPut the 10 sts of holder 2 on a spare needle, the last st "
+       "of its last rnd at the tip.\n\n**Row 24 (RS):** Sl1 from spare, ssk, k8, turn.\n",
+       "Pick up 10 sts along the left edge of Piece 2, one in each row from Row 33 down to Row "
+       "24, onto the needle after the first 18 sts of the rnd.\n",
+       "holder 6 in front, the last st of its last row at the needle tip; holder 3 behind, the "
+       "first st"});
 }
 
 // A tube whose sts 3-4 wait on a holder for a rnd and are placed back.

@@ -143,6 +143,9 @@ class NeedleSimulator {
       case Step::Kind::hold:
         hold(s);
         break;
+      case Step::Kind::to_spare:
+        put_on_spare_needle(s);
+        break;
     }
   }
 
@@ -170,7 +173,7 @@ class NeedleSimulator {
   // A new piece worked from loops picked up along an edge of a finished piece, one in each
   // of its rows: the loop of the st at that edge, the last one picked up at the needle tip.
   void pick_up(const Step& s) {
-    if (active_ && pc_.live > 0)
+    if (!s.into_rnd && active_ && pc_.live > 0)
       fail(fmt::format("Pick up: the piece before still has {} on the needle", sts(pc_.live)));
     std::vector<std::uint32_t> rows = rows_of_piece(s.number);
     std::uint32_t low = std::min(s.from_row, s.to_row), high = std::max(s.from_row, s.to_row);
@@ -181,6 +184,7 @@ class NeedleSimulator {
     if (high - low + 1 != s.count)
       fail(fmt::format("Pick up: the pattern says {}, but there are {} rows from {} to {}",
                        sts(s.count), high - low + 1, low, high));
+    if (s.into_rnd) return pick_up_into_rnd(s, rows);
     start_piece();
     fab().rows.push_back({0, 0, 0, false, Side::rs});
     row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
@@ -189,6 +193,20 @@ class NeedleSimulator {
       pc_.right.push_back(pick_up_loop(rows, n, s.provisional));
     }
     pc_.live = s.count;
+  }
+
+  // Loops picked up along another piece's edge go into the rnd of the piece worked, the first
+  // picked up worked first.
+  void pick_up_into_rnd(const Step& s, const std::vector<std::uint32_t>& rows) {
+    if (!active_ || !pc_.joined || pc_.bor == kNone)
+      fail(fmt::format(
+          "Pick up along Piece {} onto the needle: only into a piece worked in the rnd", s.number));
+    std::vector<std::uint32_t> loops;
+    for (std::uint32_t i = 0; i < s.count; ++i) {
+      std::uint32_t n = s.from_row <= s.to_row ? s.from_row + i : s.from_row - i;
+      loops.push_back(pick_up_loop(rows, n, s.provisional));
+    }
+    insert_into_rnd(loops, s.last, fmt::format("Pick up along Piece {}", s.number));
   }
 
   // Per row number of a piece (0: its cast-on), the row worked (kNone: none with stitches).
@@ -305,19 +323,49 @@ class NeedleSimulator {
                        : s.provisional ? "its chain"
                                        : "its needle",
                        placed.size()));
-    std::vector<std::uint32_t> ring = ring_from_bor();
-    if (s.last > ring.size())
-      fail(fmt::format("Place the sts of Piece {}: the rnd has only {}", s.number,
-                       sts(static_cast<std::uint32_t>(ring.size()))));
-    ring.insert(ring.begin() + s.last, placed.begin(), placed.end());
-    pc_.right.assign(1, pc_.bor);
-    pc_.right.insert(pc_.right.end(), ring.begin(), ring.end());
-    pc_.left.clear();
-    pc_.live += s.count;
+    insert_into_rnd(
+        placed, s.last,
+        fmt::format("Place the sts of {} {}", s.holder[0] ? "holder" : "Piece", s.number));
     if (s.holder[0])
       holders_.erase(s.number);
     else
       spare_needles_.erase({s.number, s.provisional ? kChain : kNeedle});
+  }
+
+  // The loops go into the rnd after its first `after` sts, from the beginning-of-round marker.
+  void insert_into_rnd(const std::vector<std::uint32_t>& loops, std::uint32_t after,
+                       const std::string& what) {
+    std::vector<std::uint32_t> ring = ring_from_bor();
+    if (after > ring.size())
+      fail(fmt::format("{}: the rnd has only {}", what,
+                       sts(static_cast<std::uint32_t>(ring.size()))));
+    ring.insert(ring.begin() + after, loops.begin(), loops.end());
+    lay_out_from_bor(ring);
+    pc_.live += static_cast<std::uint32_t>(loops.size());
+  }
+
+  // The loops of the rnd, the beginning-of-round marker first, go on the right needle, so that
+  // the next rnd starts at the marker; after a row that turned, on the left one, where the turn
+  // still to come puts them on the right.
+  void lay_out_from_bor(const std::vector<std::uint32_t>& ring) {
+    std::vector<std::uint32_t>& needle = pc_.turn_before ? pc_.left : pc_.right;
+    needle.assign(1, pc_.bor);
+    needle.insert(needle.end(), ring.begin(), ring.end());
+    (pc_.turn_before ? pc_.right : pc_.left).clear();
+  }
+
+  // A holder's sts go on the spare needle that "sl1 from spare" takes from.
+  void put_on_spare_needle(const Step& s) {
+    if (!spare_for_rows_.empty())
+      fail(
+          fmt::format("Put the sts of holder {} on a spare needle: the spare needle still holds {}",
+                      s.number, sts(static_cast<std::uint32_t>(spare_for_rows_.size()))));
+    std::vector<std::uint32_t> loops = held(s.number, s.from_last[0], "Put the sts");
+    if (loops.size() != s.count)
+      fail(fmt::format("Put the sts of holder {}: the pattern says {}, but it holds {}", s.number,
+                       sts(s.count), loops.size()));
+    holders_.erase(s.number);
+    spare_for_rows_ = std::move(loops);
   }
 
   // Sts A–B of the rnd, counted from the beginning-of-round marker, go to a holder of their
@@ -335,9 +383,7 @@ class NeedleSimulator {
     auto first = ring.begin() + (s.from_row - 1), end = ring.begin() + s.to_row;
     holders_[s.number].assign(first, end);
     ring.erase(first, end);
-    pc_.right.assign(1, pc_.bor);
-    pc_.right.insert(pc_.right.end(), ring.begin(), ring.end());
-    pc_.left.clear();
+    lay_out_from_bor(ring);
     pc_.live -= s.to_row - s.from_row + 1;
   }
 
@@ -351,9 +397,12 @@ class NeedleSimulator {
   }
 
   // The loops around the needle from the beginning-of-round marker on (markers left out).
+  // A turn still to come (after a row that turned) swaps the needles first.
   std::vector<std::uint32_t> ring_from_bor() const {
-    std::vector<std::uint32_t> ring(pc_.left.rbegin(), pc_.left.rend());
-    ring.insert(ring.end(), pc_.right.begin(), pc_.right.end());
+    const std::vector<std::uint32_t>& ahead = pc_.turn_before ? pc_.right : pc_.left;
+    const std::vector<std::uint32_t>& behind = pc_.turn_before ? pc_.left : pc_.right;
+    std::vector<std::uint32_t> ring(ahead.rbegin(), ahead.rend());
+    ring.insert(ring.end(), behind.begin(), behind.end());
     auto at = std::find(ring.begin(), ring.end(), pc_.bor);
     std::rotate(ring.begin(), at, ring.end());
     std::erase_if(ring, is_marker_entry);
@@ -443,6 +492,9 @@ class NeedleSimulator {
                       spare_needles_.begin()->first.second == kChain ? "chain" : "sts",
                       spare_needles_.begin()->first.first,
                       spare_needles_.begin()->first.second == kChain ? "is" : "are")};
+    if (!spare_for_rows_.empty())
+      throw StepFailure{fmt::format("{} left on the spare needle, never worked",
+                                    sts(static_cast<std::uint32_t>(spare_for_rows_.size())))};
     if (!holders_.empty())
       throw StepFailure{fmt::format("the sts of holder {} are left on it, never worked",
                                     holders_.begin()->first)};
@@ -820,7 +872,7 @@ class NeedleSimulator {
   // The next st of the one piece waiting on a spare needle (in the order its last row worked
   // them) joins the work at the tip of the left needle.
   void slip_from_spare(bool behind) {
-    if (spare_needles_.size() != 1)
+    if (spare_for_rows_.empty() && spare_needles_.size() != 1)
       fail(fmt::format("sl1 from spare: {} pieces wait on spare needles; which one is meant?",
                        spare_needles_.size()));
     std::uint32_t first = kNone;
@@ -831,11 +883,13 @@ class NeedleSimulator {
       pc_.left.pop_back();
       --left_loops_;
     }
-    std::vector<std::uint32_t>& spare = spare_needles_.begin()->second;
+    // The spare needle a holder was put on, or else the one piece waiting on a spare needle.
+    bool holder = !spare_for_rows_.empty();
+    std::vector<std::uint32_t>& spare = holder ? spare_for_rows_ : spare_needles_.begin()->second;
     push_left(spare.front());
     if (behind) push_left(first);
     spare.erase(spare.begin());
-    if (spare.empty()) spare_needles_.clear();
+    if (spare.empty() && !holder) spare_needles_.clear();
     ++pc_.live;
   }
 
@@ -1004,6 +1058,7 @@ class NeedleSimulator {
   static constexpr std::uint32_t kNeedle = 0, kChain = 1;
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> spare_needles_;
   std::map<std::uint32_t, std::vector<std::uint32_t>> holders_;  // by holder number
+  std::vector<std::uint32_t> spare_for_rows_;  // a holder's sts that sl1 from spare takes
 
   // Per loop: whether a short row turned at it, and how.
   static constexpr std::uint8_t kPlainLoop = 0, kWrapped = 1, kDouble = 2;

@@ -126,6 +126,13 @@ class InstructionWriter {
     const PatternSection& spare = p_.sections[p.section];
     std::string where = p.after == 0 ? "at the beginning of the rnd"
                                      : fmt::format("after the first {} sts of the rnd", p.after);
+    if (p.edge)  // "Pick up 10 sts along ..., onto the needle after the first 18 sts of the rnd."
+      return fmt::format("{}, onto the needle {}.", pick_up_words(*p.edge, p.count), where);
+    if (p.to_spare)
+      return fmt::format(
+          "Put the {} sts of holder {} on a spare needle, the {} st of its last rnd "
+          "at the tip.",
+          p.count, p.holder, p.from_last ? "last" : "first");
     bool cast_on = p.holder == 0 && (p.chain || spare.first_row == spare.end_row);
     std::string which = cast_on          ? "cast on"
                         : spare.in_round ? "of its last rnd"
@@ -174,12 +181,16 @@ class InstructionWriter {
   // "Pick up 3 sts along the right edge of Piece 1, one in each row from Row 2 down to the
   // cast-on."
   std::string pick_up_text(const PatternSection::PickUp& p, std::uint32_t count) const {
+    return pick_up_words(p, count) + ".";
+  }
+
+  std::string pick_up_words(const PatternSection::PickUp& p, std::uint32_t count) const {
     auto row = [](std::uint32_t n) {
       return n == 0 ? std::string("the cast-on") : fmt::format("Row {}", n);
     };
     return fmt::format(
         "Pick up {} along the {} edge of Piece {}, one in each row from {} {} "
-        "to {}.",
+        "to {}",
         sts(count), p.right ? "right" : "left", p_.sections[p.section].piece, row(p.from_row),
         p.from_row <= p.to_row ? "up" : "down", row(p.to_row));
   }
@@ -341,7 +352,11 @@ Totals totals_of(const HandPattern& p) {
     t.joins = t.joins || s.joins;
     t.spare_needles = t.spare_needles || s.left_live || s.provisional || !s.holdings.empty();
     t.provisional = t.provisional || s.provisional;
-    t.picks_up = t.picks_up || s.picks_up.has_value();
+    t.picks_up = t.picks_up || s.picks_up.has_value() ||
+                 std::any_of(s.placements.begin(), s.placements.end(),
+                             [](const PatternSection::Placement& placed) {
+                               return placed.edge.has_value();
+                             });
     if (s.joins) continue;
     (s.in_round ? t.round : t.flat) = true;
     t.widest = std::max(t.widest, s.cast_on);

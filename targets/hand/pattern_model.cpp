@@ -248,12 +248,14 @@ class PatternBuilder {
     auto section_of = [&](std::uint32_t loop) {
       return section_of_yarn_[c_.yarns.piece_of[g_.loops[loop].maker]];
     };
+    // The mirror image swaps the loops' order: its front piece is the model's second.
+    const std::uint32_t front = out_.mirror ? 1 : 0;
     join.joins = true;
-    join.front = section_of(taken[0]);
-    join.back = section_of(taken[1]);
+    join.front = section_of(taken[front]);
+    join.back = section_of(taken[1 - front]);
     for (int side : {0, 1}) {
       const PatternSection& piece = out_.sections[side == 0 ? join.front : join.back];
-      StitchId maker = g_.loops[taken[side]].maker;
+      StitchId maker = g_.loops[taken[side == 0 ? front : 1 - front]].maker;
       join.holders[side] = holder_of_[maker];
       join.from_last[side] =
           maker == (join.holders[side] != 0 ? holders_[join.holders[side] - 1].last
@@ -367,9 +369,11 @@ class PatternBuilder {
     for (StitchId s : row_)
       for (std::uint32_t l : g_.loops_taken_by(s)) {
         const Loop& loop = g_.loops[l];
-        if (loop.kind == LoopKind::perpendicular) continue;  // one by one
+        if (picked_up_along_an_edge(loop)) pick_up_into_the_rnd(loop, taken++);
+        if (loop.kind == LoopKind::perpendicular) continue;  // one by one, or picked up
         std::uint32_t from = section_of(loop.maker);
-        bool chain = loop.kind == LoopKind::split && loop.maker_slot == 1;
+        // The chain's loop is the cast-on st's second (the first in the mirror image).
+        bool chain = loop.kind == LoopKind::split && (loop.maker_slot == 1) != out_.mirror;
         if (std::uint32_t holder = holder_of_[loop.maker]; holder != 0) {
           if (!holder_placed(holder)) place_holder(holder, loop, taken);
         } else if (from != self && placeable(from, chain)) {
@@ -377,6 +381,37 @@ class PatternBuilder {
         }
         ++taken;
       }
+  }
+
+  // An edge st of another piece that makes a loop across a perpendicular edge besides its own
+  // (paper §3.2: an expanding edge) gives a loop to pick up.
+  bool picked_up_along_an_edge(const Loop& loop) const {
+    return loop.kind == LoopKind::perpendicular && g_.loops_made_by(loop.maker).size() > 1 &&
+           c_.yarns.piece_of[loop.maker] != out_.sections.back().yarn;
+  }
+
+  // Consecutive loops picked up along one edge are one pick-up, in the order the rnd works
+  // them: one in each row of the piece beside.
+  void pick_up_into_the_rnd(const Loop& loop, std::uint32_t after) {
+    auto& placed = section().placements;
+    std::uint32_t row = number_of_[loop.maker];
+    std::uint32_t before_row = static_cast<std::uint32_t>(out_.rows.size());
+    if (!placed.empty() && placed.back().edge && placed.back().before_row == before_row &&
+        placed.back().after + placed.back().count == after &&
+        placed.back().section == section_of(loop.maker)) {
+      ++placed.back().count;
+      placed.back().edge->to_row = row;
+    } else {
+      PatternSection::Placement p{section_of(loop.maker), 1, after, false};
+      p.before_row = before_row;
+      // The edge seen from the RS: the loop across it is the maker's last (right) or first;
+      // the mirror image swaps them.
+      auto made = g_.loops_made_by(loop.maker);
+      bool right = (g_.loops[made.front()].kind != LoopKind::perpendicular) != out_.mirror;
+      p.edge = PatternSection::PickUp{p.section, row, row, right};
+      placed.push_back(p);
+    }
+    ++st_.live;
   }
 
   // A spare needle (or chain) not yet on this piece's needle: one set aside waits on its own.
@@ -418,16 +453,19 @@ class PatternBuilder {
 
   // Where a rnd's sts go different ways and the piece works some of them itself, the runs
   // that other pieces (or joins) work are slipped to holders after it: the piece's needle
-  // keeps its own. Sts worked across a perpendicular edge are taken one by one, not held.
+  // keeps its own (those it works across a gap too). A run another piece works one st at a
+  // time across a perpendicular edge is a holder of its own.
   void hold_what_others_work(std::uint32_t row) {
-    std::vector<std::pair<StitchId, std::uint32_t>> loops;  // maker, taker's yarn
+    const std::uint32_t own = 2 * section().yarn;
+    std::vector<std::pair<StitchId, std::uint32_t>> loops;  // maker, taker's yarn (x2, +1 across)
     for (StitchId s : row_)
       for (std::uint32_t l : g_.loops_made_by(s)) {
         const Loop& loop = g_.loops[l];
-        if (loop.kind == LoopKind::perpendicular || loop.taker == kNoStitch) return;
-        loops.emplace_back(s, c_.yarns.piece_of[loop.taker]);
+        if (loop.taker == kNoStitch) return;
+        std::uint32_t taker = 2 * c_.yarns.piece_of[loop.taker];
+        bool across = loop.kind == LoopKind::perpendicular && taker != own;
+        loops.emplace_back(s, taker + (across ? 1 : 0));
       }
-    const std::uint32_t own = section().yarn;
     if (std::none_of(loops.begin(), loops.end(), [&](const auto& l) { return l.second == own; }))
       return;  // the whole needle waits as it is
     for (std::uint32_t i = 0; i < loops.size(); ++i) {
@@ -452,7 +490,9 @@ class PatternBuilder {
     bool turns = g_.yarn_link[row_.back()] == YarnLink::turn;
     bool first_of_take_up = section().resumed && section().first_row == out_.rows.size();
     bool full_round = section().in_round && !turns && st_.previous_link != YarnLink::turn;
-    if (first_of_take_up || full_round) place_spare_needles();
+    bool picked_up = section().picks_up && section().first_row == out_.rows.size();
+    // After rows that turned, a rnd that works every st starts at the beginning of the rnd.
+    if (!picked_up && (first_of_take_up || (section().in_round && !turns))) place_spare_needles();
     PatternRow r;
     // In the rnd a row that turns is a short row; a rnd goes on around.
     r.round = section().in_round && !turns;
@@ -523,7 +563,8 @@ class PatternBuilder {
   void slip_from_spare_needle(StitchId s, const PatternRow& r) {
     auto taken = g_.loops_taken_by(s);
     for (std::size_t i = 0; i < taken.size(); ++i) {
-      if (g_.loops[taken[i]].kind != LoopKind::perpendicular) continue;
+      const Loop& loop = g_.loops[taken[i]];
+      if (loop.kind != LoopKind::perpendicular || picked_up_along_an_edge(loop)) continue;
       // Worked in the order taken off the needle: right to left seen from the RS on a RS row.
       std::size_t worked = (r.side == Side::rs) != out_.mirror ? taken.size() - 1 - i : i;
       if (worked > 1)
@@ -531,11 +572,27 @@ class PatternBuilder {
             fmt::format("{} works a loop of {} across a perpendicular edge third, "
                         "which is not covered yet",
                         g_.describe(s), g_.describe(g_.loops[taken[i]].maker)));
-      refuse_edge_loop_off_spare_needle(s, g_.loops[taken[i]].maker);
+      StitchId maker = g_.loops[taken[i]].maker;
+      if (holder_of_[maker] != 0)
+        put_holder_on_spare_needle(holder_of_[maker], maker);
+      else
+        refuse_edge_loop_off_spare_needle(s, maker);
       out_.ops.push_back(worked == 0 ? HandOp::from_spare : HandOp::from_spare_behind);
       ++st_.live;
       if (!section().in_round) ++st_.ahead;
     }
+  }
+
+  // Sts held for rows that work them one at a time go on a spare needle before the first of
+  // those rows, the one they take first at its tip.
+  void put_holder_on_spare_needle(std::uint32_t holder, StitchId first) {
+    if (holder_placed(holder)) return;
+    const Held& held = holders_[holder - 1];
+    PatternSection::Placement p{section_of(first), held.count, 0, first == held.last};
+    p.before_row = static_cast<std::uint32_t>(out_.rows.size());
+    p.holder = holder;
+    p.to_spare = true;
+    section().placements.push_back(p);
   }
 
   // The latest section of the yarn that worked `maker`.

@@ -47,6 +47,12 @@ struct PatternSection {
   bool set_aside = false;          // ends with its sts and yarn set aside, to be taken up again
   bool resumed = false;            // takes up a piece set aside
   std::uint32_t live_at_end = 0;
+  // A piece that starts on loops picked up along the right (or left) edge of another, one in
+  // each of its rows from `from_row` to `to_row` (0: the cast-on).
+  struct PickUp {
+    std::uint32_t section = 0, from_row = 0, to_row = 0;
+    bool right = true;
+  };
   // Sts of another section's spare needle (or its provisional cast-on's chain) placed into
   // the rnd before the row `before_row` works them (when this one is taken up, or in the
   // middle of its work), `after` sts from the beginning of the rnd, that needle's last st
@@ -57,6 +63,10 @@ struct PatternSection {
     bool chain = false;
     std::uint32_t before_row = 0;  // into HandPattern::rows
     std::uint32_t holder = 0;      // 1-based: the sts of that holder instead
+    // The holder's sts go on a spare needle instead, for rows that work them one at a time.
+    bool to_spare = false;
+    std::optional<PickUp> edge =
+        std::nullopt;  // loops picked up along the edge of section `section` instead
   };
   // Where the sts of one rnd go different ways (to the piece's next rnd, into another piece's
   // rnd, into a join), those the piece does not work itself are slipped to holders after it:
@@ -74,12 +84,6 @@ struct PatternSection {
     bool chain, from_last;
   };
   std::optional<Start> starts_from;
-  // A piece that starts on loops picked up along the right (or left) edge of another, one in
-  // each of its rows from `from_row` to `to_row` (0: the cast-on).
-  struct PickUp {
-    std::uint32_t section = 0, from_row = 0, to_row = 0;
-    bool right = true;
-  };
   std::optional<PickUp> picks_up;
   // A join: three-needle bind-off of two sections left live (front, back), with a new yarn.
   bool joins = false;

@@ -132,6 +132,7 @@ class SentenceReader {
     // "Place ... the first st cast on first" is no cast-on.
     if (c.eat("place")) return place(c);
     if (c.eat("slip")) return hold(c);
+    if (c.eat("put")) return to_spare(c);
     if (std::size_t at = find_ci(sentence, "cast on"); at != std::string_view::npos)
       return cast_on(Cursor(sentence.substr(at + 7)));
     if (c.eat("co")) return cast_on(c);
@@ -206,6 +207,42 @@ class SentenceReader {
     need(c.eat_any({"up", "down"}), c, "'up' or 'down'");
     need(c.eat("to"), c, "'to'");
     step.to_row = row_of_piece(c);
+    if (c.eat_char(',')) {
+      need_words(c, {"onto", "the", "needle"}, "', onto the needle'");
+      step.into_rnd = true;
+      step.last = place_in_rnd(c);
+    }
+    need(c.done(), c, "the end of the sentence");
+    add(step);
+  }
+
+  // "at the beginning of the rnd" (0) or "after the first 18 sts of the rnd".
+  std::uint32_t place_in_rnd(Cursor& c) {
+    std::uint32_t after = 0;
+    if (c.eat("after")) {
+      need_words(c, {"the", "first"}, "'after the first N sts'");
+      after = need_number(c, "how many sts come before them");
+      need(c.eat_any({"sts", "st"}), c, "'sts'");
+    } else {
+      need_words(c, {"at", "the", "beginning"}, "'at the beginning' or 'after the first N sts'");
+    }
+    need_words(c, {"of", "the", "rnd"}, "'of the rnd'");
+    return after;
+  }
+
+  // "Put the 10 sts of holder 2 on a spare needle, the first st of its last rnd at the tip".
+  void to_spare(Cursor& c) {
+    Step step{Step::Kind::to_spare, line_no_};
+    c.eat("the");
+    step.count = need_number(c, "the number of sts");
+    need_words(c, {"sts", "of", "holder"}, "'sts of holder N'");
+    step.number = need_number(c, "a holder number");
+    need_words(c, {"on", "a", "spare", "needle", ",", "the"}, "'on a spare needle, the'");
+    step.from_last[0] = c.eat("last");
+    need(step.from_last[0] || c.eat("first"), c, "'first' or 'last'");
+    need_words(c, {"st", "of", "its", "last"}, "'st of its last rnd'");
+    need(c.eat_any({"rnd", "row"}), c, "'rnd' or 'row'");
+    need_words(c, {"at", "the", "tip"}, "'at the tip'");
     need(c.done(), c, "the end of the sentence");
     add(step);
   }
@@ -281,14 +318,8 @@ class SentenceReader {
     step.number = need_number(c, step.holder[0] ? "a holder number" : "a piece number");
     if (step.provisional) need_words(c, {"'", "s", "chain"}, "'s chain' after the piece");
     need_words(c, {"on", "the", "needle"}, "'on the needle'");
-    if (c.eat("after")) {
-      need_words(c, {"the", "first"}, "'after the first N sts'");
-      step.last = need_number(c, "how many sts come before them");
-      need(c.eat_any({"sts", "st"}), c, "'sts'");
-    } else {
-      need_words(c, {"at", "the", "beginning"}, "'at the beginning' or 'after the first N sts'");
-    }
-    need_words(c, {"of", "the", "rnd", ",", "the"}, "'of the rnd, the first (or last) st'");
+    step.last = place_in_rnd(c);
+    need_words(c, {",", "the"}, "', the first (or last) st'");
     step.from_last[0] = c.eat("last");
     need(step.from_last[0] || c.eat("first"), c, "'first' or 'last'");
     need(c.eat("st"), c, "'st of its last rnd' or 'st cast on'");

@@ -61,6 +61,7 @@ struct Step {
     three_needle_bind_off,  // Piece <number> in front, Piece <last> behind, <count> pairs;
                             // from_last: which ends are at the tips (front, back)
     hold,                   // "Slip sts <from_row>–<to_row> of the rnd to holder <number>"
+    to_spare,               // "Put the <count> sts of holder <number> on a spare needle, ..."
   };
   Step(Kind step_kind, std::size_t line_no) : kind(step_kind), line(line_no) {}
   Kind kind;
@@ -80,6 +81,7 @@ struct Step {
   HandOp op = HandOp::k;
   // place (front), three_needle_bind_off: the number (and last) name a holder, not a piece.
   bool holder[2] = {false, false};
+  bool into_rnd = false;  // pick_up: onto the needle of the piece worked, after <last> sts
 };
 
 struct Script {
