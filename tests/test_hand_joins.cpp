@@ -196,6 +196,15 @@ TEST(HandPickUps, RejectsAPickUpThatCannotBeWorkedWithTheReason) {
   EXPECT_EQ(failure_of(piece + "Pick up 3 sts along the left edge of Piece 1, one in each row from "
                                "the cast-on up to Row 2.\nRow 1 (WS): BO all sts.\nFasten off.\n"),
             "");
+  // Into the rnd of a piece being worked, after its first 2 sts.
+  const std::string into_rnd =
+      "Pick up 2 sts along the left edge of Piece 1, one in each row from Row 1 up to Row 2, onto "
+      "the needle after the first 2 sts of the rnd.\n";
+  EXPECT_EQ(failure_of(piece + "Cast on 4 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\n" +
+                       into_rnd + "Rnd 2: Knit \u2014 6 sts.\nRnd 3: BO all sts.\nFasten off.\n"),
+            "");
+  EXPECT_EQ(failure_of(piece + "Cast on 4 sts.\nRow 1 (RS): Knit.\n" + into_rnd),
+            "p.md:7: Pick up along Piece 1 onto the needle: only into a piece worked in the rnd");
 }
 
 TEST(HandPieces, TheSweaterIsProvenInEveryFormat) {
@@ -292,6 +301,31 @@ TEST(HandPieces, RejectsSlippingToHoldersAndPlacingThemWrongWithTheReason) {
             "p.md:3: Slip sts to holder 1: it already holds sts");
   EXPECT_EQ(failure_of("Cast on 6 sts.\nRow 1 (RS): Knit.\n" + slip + "\n"),
             "p.md:3: Slip sts to holder 1: only from a piece worked in the rnd");
+}
+
+// A tube whose last 2 sts wait on a holder, put on a spare needle and worked one per rnd.
+std::string tube_taking_back_one_at_a_time(const std::string& slip, const std::string& put,
+                                           const std::string& rnd_3) {
+  return "Cast on 6 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\n" + slip + "\n" + put +
+         "\nRnd 2: Sl1 from spare, k2tog, k3.\n" + rnd_3 + "\nRnd 4: BO all sts.\nFasten off.\n";
+}
+
+TEST(HandPieces, RejectsPuttingAHolderOnASpareNeedleWrongWithTheReason) {
+  const std::string slip = "Slip sts 5\u20136 of the rnd to holder 1.";
+  const std::string put =
+      "Put the 2 sts of holder 1 on a spare needle, the first st of its last rnd at the tip.";
+  const std::string rnd_3 = "Rnd 3: Sl1 from spare, k2tog, k3.";
+  EXPECT_EQ(failure_of(tube_taking_back_one_at_a_time(slip, put, rnd_3)), "");
+  EXPECT_EQ(failure_of(tube_taking_back_one_at_a_time(
+                slip, std::regex_replace(put, std::regex("2 sts"), "3 sts"), rnd_3)),
+            "p.md:4: Put the sts of holder 1: the pattern says 3 sts, but it holds 2");
+  EXPECT_EQ(
+      failure_of(tube_taking_back_one_at_a_time(
+          "Slip sts 3\u20134 of the rnd to holder 2 and sts 5\u20136 to holder 1.",
+          put + "\n" + std::regex_replace(put, std::regex("holder 1"), "holder 2"), rnd_3)),
+      "p.md:5: Put the sts of holder 2 on a spare needle: the spare needle still holds 2 sts");
+  EXPECT_EQ(failure_of(tube_taking_back_one_at_a_time(slip, put, "Rnd 3: Knit.")),
+            "p.md:8: 1 st left on the spare needle, never worked");
 }
 
 std::string body_and_sleeve(const std::string& take_up) {

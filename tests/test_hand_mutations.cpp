@@ -395,10 +395,12 @@ TEST(HandMutations, PiecesSetAsideAndTakenUpRejectEveryEditThatChangesTheFabric)
 }
 
 // The three bars: sts slipped to holders, placed into other pieces' rnds (with a provisional
-// cast-on's sts and chain) and bound off together from holders.
+// cast-on's sts and chain) and bound off together from holders; the two bars: holders put on
+// a spare needle for rows that take their sts one at a time, edges picked up into a rnd.
 TEST(HandMutations, HoldersRejectEveryEditThatChangesTheFabric) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
   mutate_and_judge("three bars", compile_model("samples/three-bars/three-bars.yaml"));
+  mutate_and_judge("two bars", compile_model("samples/two-bars/two-bars.yaml"));
 }
 
 TEST(HandMutations, ShapedSheetsAndTubesRejectEveryEditThatChangesTheFabric) {
