@@ -337,10 +337,12 @@ class InstructionWriter {
 // What the front matter needs to know about the whole pattern.
 struct Totals {
   bool flat = false, round = false, joins = false;
-  bool partial_bind_off = false;  // a row binds off some of its sts
-  bool spare_needles = false;     // a piece waits on one
-  bool provisional = false;       // a provisional cast-on
-  bool picks_up = false;          // a piece starts on loops picked up along an edge
+  bool partial_bind_off = false;   // a row binds off some of its sts
+  bool spare_needles = false;      // a piece waits on one
+  bool provisional = false;        // a provisional cast-on
+  bool picks_up = false;           // a piece starts on loops picked up along an edge
+  bool picks_up_into_rnd = false;  // loops picked up along an edge go into a rnd
+  std::uint32_t holders = 0;
   std::uint32_t widest = 0, narrowest_round = 0;
   std::vector<bool> used = std::vector<bool>(kHandOpCount, false);
 };
@@ -352,11 +354,10 @@ Totals totals_of(const HandPattern& p) {
     t.joins = t.joins || s.joins;
     t.spare_needles = t.spare_needles || s.left_live || s.provisional || !s.holdings.empty();
     t.provisional = t.provisional || s.provisional;
-    t.picks_up = t.picks_up || s.picks_up.has_value() ||
-                 std::any_of(s.placements.begin(), s.placements.end(),
-                             [](const PatternSection::Placement& placed) {
-                               return placed.edge.has_value();
-                             });
+    for (const PatternSection::Placement& placed : s.placements)
+      t.picks_up_into_rnd = t.picks_up_into_rnd || placed.edge.has_value();
+    t.picks_up = t.picks_up || s.picks_up.has_value() || t.picks_up_into_rnd;
+    for (const PatternSection::Holding& h : s.holdings) t.holders = std::max(t.holders, h.holder);
     if (s.joins) continue;
     (s.in_round ? t.round : t.flat) = true;
     t.widest = std::max(t.widest, s.cast_on);
@@ -461,6 +462,9 @@ class FrontMatter {
                                            : ""));
     if (t_.spare_needles)
       items.push_back("A spare needle (or stitch holder) for each piece left to wait on one.");
+    if (t_.holders > 0)
+      items.push_back(fmt::format("{} stitch holders (or lengths of waste yarn), numbered 1 to {}.",
+                                  t_.holders, t_.holders));
     if (t_.joins) items.push_back("A third needle for the three-needle bind-off.");
     items.push_back("Tapestry needle for weaving in ends.");
     return items;
@@ -533,6 +537,19 @@ class FrontMatter {
           "**Picking up along an edge:** with the RS facing and a new yarn, put the outer loop "
           "of the edge st of each row named onto the needle, one row after the other (the loops "
           "are not knit: the next row works them, starting with the last one picked up).");
+    if (t_.picks_up_into_rnd)
+      items.push_back(
+          "**Picking up onto the needle of a rnd** (\"..., onto the needle after the first 18 sts "
+          "of the rnd\"): join no yarn; put the loops, picked up the same way, on the needle at "
+          "that place in the order picked up: the rnd works them in that order.");
+    if (t_.holders > 0)
+      items.push_back(
+          "**Holders:** \"Slip sts 10\u201318 of the rnd to holder 1\" counts the sts from the "
+          "BOR marker, as they are before any is slipped, and moves them in order to holder 1; "
+          "they wait there until the pattern places them on the needle, puts them on a spare "
+          "needle (for \"sl1 from spare\") or binds them off. \"Place\" puts a holder's sts (a "
+          "spare needle's, a chain's loops) on the needle where it says, the st it names "
+          "first.");
     if (t_.joins)
       items.push_back(
           "**Three-needle bind-off:** hold the two needles parallel, tips to the right; insert "
