@@ -106,7 +106,7 @@ class Mutator {
     out_.push_back({"repeat a line", joined(copy)});
     if (lines_[i].find("Pm and join") != std::string::npos)
       add("remove the marker", i, std::regex_replace(lines_[i], std::regex("Pm and join"), "Join"));
-    static const std::regex kMarkerOp(R"(, [ps]m\b|\b[ps]m, )");
+    static const std::regex kMarkerOp(R"(, [psr]m\b|\b[psr]m, )");
     for (auto it = std::sregex_iterator(lines_[i].begin(), lines_[i].end(), kMarkerOp);
          it != std::sregex_iterator(); ++it)
       add("drop a marker", i,
