@@ -44,4 +44,9 @@ StitchMesh expanding_mesh();
 // 9-12 the full row (right to left), 13-16 bind-off.
 StitchMesh short_row_mesh(StitchType turn = StitchType::sr4);
 
+// A knitted-on edging: a piece `width` sts wide knit for `rows` rows, each after the cast-on
+// taking one st of a cast-on column beside its left edge (a contracting perpendicular edge,
+// worked "Sl1 from spare, k2tog"), then bound off.
+StitchMesh edging_mesh(int width, int rows);
+
 }  // namespace skein::testing

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "driver/pipeline.hpp"
+#include "fixtures.hpp"
 #include "hand/pattern_document.hpp"
 #include "hand/pattern_model.hpp"
 #include "hand/pattern_writers.hpp"
@@ -134,6 +135,20 @@ TEST(HandMarkers, AMarkerADecreaseWouldCrossIsLeftOut) {
   EXPECT_EQ(line_of(text, "Row 1 (RS)"), "**Row 1 (RS):** K3, pm, k to end.");
   EXPECT_EQ(count(text, "pm"), 1u) << text;
   EXPECT_EQ(count(text, "rm"), 1u) << text;
+}
+
+// A knitted-on edging: the st beside the contracting edge is a mismatch group the schedule
+// marks, and a marker parts it from the body, as a publisher's edging reads.
+TEST(HandMarkers, AKnittedOnEdgingIsMarkedOffFromTheBody) {
+  Compilation c = compile_stitch_mesh(testing::edging_mesh(6, 4), "edging");
+  std::string text = testing::emit(c, "hand");
+  EXPECT_TRUE(hand::verify_pattern(text, "edging.md", &c).proven) << text;
+  EXPECT_EQ(line_of(text, "Row 1 (RS)"), "**Row 1 (RS):** Sl1 from spare, k2tog, pm, k to end.");
+  EXPECT_EQ(line_of(text, "Row 2 (WS)"),
+            "**Row 2 (WS):** P to m, sm, sl1 from spare behind, p2tog.");
+  EXPECT_EQ(line_of(text, "Row 4 (WS)"),
+            "**Row 4 (WS):** P to m, sm, sl1 from spare behind, p2tog.");
+  EXPECT_EQ(line_of(text, "Row 5 (RS)"), "**Row 5 (RS):** BO all sts.");
 }
 
 // The simulator holds short-row markers to what the pattern says: a count that runs past one,

@@ -373,6 +373,8 @@ TEST(HandMutations, PickUpsRejectEveryEditThatChangesTheFabric) {
                    compile_stitch_mesh(testing::expanding_mesh(), "expanding"));
   mutate_and_judge("contracting fixture (sl1 from spare)",
                    compile_stitch_mesh(testing::contracting_mesh(), "contracting"));
+  mutate_and_judge("knitted-on edging with markers",
+                   compile_stitch_mesh(testing::edging_mesh(6, 4), "edging"));
 }
 
 TEST(HandMutations, JoinsRejectEveryEditThatChangesTheFabric) {

@@ -25,9 +25,17 @@ std::uint32_t loops_made(HandOp op) {
   return op == HandOp::ds ? 1 : info(op).makes;
 }
 
-// Does the operation take a loop off the left needle (a marker there must be passed first)?
 bool takes_a_loop(HandOp op) {
   return loops_taken(op) > 0;
+}
+
+bool from_spare(HandOp op) {
+  return op == HandOp::from_spare || op == HandOp::from_spare_behind;
+}
+
+// Does the operation need the left needle's tip (a marker there is passed first)?
+bool passes(HandOp op) {
+  return takes_a_loop(op) || from_spare(op);
 }
 
 // The needle as one line of loops in the order RS rows work them: the markers on it, each by
@@ -102,6 +110,21 @@ class NeedleLine {
     loops_ = loops_ + makes - takes;
     passed_ = false;
     return kFits;
+  }
+
+  // Sl1 from spare: a st joins the left needle at its tip (`behind`: second, behind the st
+  // there); false when a marker is next, with no st to slip it behind.
+  bool insert_ahead(bool behind) {
+    wrap();
+    if (behind && ahead()) return false;
+    for (Marker& m : markers_)
+      if (m.gap > at_ || (m.gap == at_ && passed_ != forward_)) ++m.gap;
+    ++loops_;
+    if (!forward_) {
+      ++at_;
+      passed_ = passed_ && here() != markers_.end();
+    }
+    return true;
   }
 
   // w&t: the st wrapped goes back to the left needle; a marker placed just before it stays
@@ -259,7 +282,7 @@ class SectionPlanner {
   }
 
   static std::uint32_t follow(NeedleLine& line, HandOp op, bool bind_off) {
-    if (op == HandOp::from_spare || op == HandOp::from_spare_behind) return kOther;
+    if (from_spare(op)) return line.insert_ahead(op == HandOp::from_spare_behind) ? kFits : kOther;
     while (bind_off && takes_a_loop(op) && line.ahead()) line.remove();  // BO removes them
     std::uint32_t in_the_way = line.work(loops_taken(op), loops_made(op));
     if (op == HandOp::wt) line.unwork_wrapped();
@@ -286,7 +309,7 @@ class SectionPlanner {
           // A section marker where one of this pass's is: the latter is left out.
           if (auto mine = line.id_here(); mine && *mine != kOther) return *mine;
           if (!follow_marker_op(line, op)) return kOther;
-        } else if (takes_a_loop(op) && !r.bind_off) {
+        } else if (passes(op) && !r.bind_off) {
           pass_marker_ahead(line, i, out);
           if (op != HandOp::ds) place_targets_here(line, i, block, out);
         }

@@ -12,7 +12,7 @@ namespace skein::hand {
 
 // Rewrites the rows of each marked block with pm / sm / rm. A marker an operation would have
 // to cross (a decrease over it), or one at the edge of the needle or the beginning of the rnd,
-// is left out; sections that take sts from a spare needle one at a time get none.
+// is left out.
 void place_region_markers(HandPattern& pattern);
 
 }  // namespace skein::hand
