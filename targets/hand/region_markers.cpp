@@ -169,7 +169,7 @@ class NeedleLine {
   bool passed_ = false;  // the marker at the gap (if any) is behind the work
 };
 
-// Rows first..end (end included) that work marked sts, and the gaps where their marks are.
+// Rows first..end (end included) around marked sts, and the lowest and highest gap marked.
 struct Block {
   std::uint32_t first, end;
   std::uint32_t low = kFits, high = 0;
@@ -213,7 +213,6 @@ class SectionPlanner {
   // A block starts at a row with a usable mark and ends at the first row after it with no
   // mark at all that works every st and leaves no short-row turn to resolve (or at the
   // section's end).
-
   std::optional<std::vector<Block>> find_blocks() const {
     std::vector<Block> blocks;
     NeedleLine line = new_line();
@@ -231,7 +230,7 @@ class SectionPlanner {
           continue;
         }
         for (; mark != marks_[i].end() && mark->op == ordinal; ++mark) {
-          marked = marked || open;
+          marked = marked || open;  // any mark keeps the block going (a turn at the edge)
           if (!line.free_here() || r.bind_off || !at_a_short_row(*mark)) continue;
           if (!open) blocks.push_back({i, i});
           open = marked = true;
