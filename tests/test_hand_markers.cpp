@@ -16,6 +16,7 @@
 #include "hand/region_markers.hpp"
 #include "mesh/generate.hpp"
 #include "target_runner.hpp"
+#include "test_hand_plans.hpp"
 
 namespace skein {
 namespace {
@@ -135,6 +136,21 @@ TEST(HandMarkers, AMarkerADecreaseWouldCrossIsLeftOut) {
   EXPECT_EQ(line_of(text, "Row 1 (RS)"), "**Row 1 (RS):** K3, pm, k to end.");
   EXPECT_EQ(count(text, "pm"), 1u) << text;
   EXPECT_EQ(count(text, "rm"), 1u) << text;
+}
+
+// A crown's section markers and a region's markers on the needle at once: the region's mark
+// that falls where a section marker is gives none, the other is placed, slipped between the
+// section markers and removed, and the pattern still knits the model.
+TEST(HandMarkers, RegionMarkersKeepClearOfSectionMarkers) {
+  Compilation c = compile_stitch_mesh(
+      build_from_rows(testing::wedge_plan(6, 9, 3, 1, StitchType::k2tog), Layout::tube), "crown");
+  std::string before = markdown(hand::build_hand_pattern(c));
+  std::string text = markdown(testing::with_region_marks_in_a_crown(c));
+  EXPECT_TRUE(hand::verify_pattern(text, "crown.md", &c).proven) << text;
+  EXPECT_EQ(count(text, "pm"), count(before, "pm") + 1) << text;
+  EXPECT_EQ(count(text, "rm"), count(before, "rm") + 1) << text;
+  EXPECT_EQ(line_of(text, "Rnd 1"), "**Rnd 1:** K4, pm, k5, *pm, k9; rep from * to end.") << text;
+  EXPECT_EQ(line_of(text, "Rnd 3"), "**Rnd 3:** K to m, rm, [k to m, sm] 5 times, k to m.") << text;
 }
 
 // A knitted-on edging: the st beside the contracting edge is a mismatch group the schedule

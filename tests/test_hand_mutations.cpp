@@ -352,6 +352,11 @@ TEST(HandMutations, SectionMarkerPatternsRejectEveryEditThatChangesTheFabric) {
       compile_stitch_mesh(
           build_from_rows(testing::wedge_plan(6, 9, 3, 1, StitchType::k2tog), Layout::tube),
           "crown"));
+  Compilation crown = compile_stitch_mesh(
+      build_from_rows(testing::wedge_plan(6, 9, 3, 1, StitchType::k2tog), Layout::tube), "crown");
+  std::ostringstream marked;
+  hand::write_markdown(hand::make_document(testing::with_region_marks_in_a_crown(crown)), marked);
+  mutate_and_judge("crown with section and region markers", crown, marked.str());
   mutate_and_judge(
       "flat wedges with section markers",
       compile_stitch_mesh(
