@@ -146,6 +146,13 @@ StitchMesh short_row_mesh(StitchType turn) {
   return std::move(b).build();
 }
 
+std::size_t occurrences(std::string_view text, std::string_view what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string_view::npos; at = text.find(what, at + 1))
+    ++n;
+  return n;
+}
+
 StitchMesh edging_mesh(int width, int rows) {
   using T = StitchType;
   std::vector<Square> squares;
