@@ -8,6 +8,7 @@
 #include "common/error.hpp"
 #include "driver/pipeline.hpp"
 #include "hand/marker_plan.hpp"
+#include "hand/region_markers.hpp"
 
 namespace skein::hand {
 namespace {
@@ -172,8 +173,11 @@ class PatternBuilder {
           if (taken_up_[e.yarn]) take_up_section(e.yarn);
           end_section();
           break;
+        case EventKind::marker:
+          if (e.marker != MarkerKind::beginning_of_round) marked_[e.stitch] = e.marker;
+          break;
         default:
-          break;  // rows, turns and markers follow from the yarn links and the stitches
+          break;  // rows and turns follow from the yarn links and the stitches
       }
     }
     return std::move(out_);
@@ -508,6 +512,7 @@ class PatternBuilder {
     std::uint32_t takes = 0;
     for (StitchId s : row_) {
       number_of_[s] = r.number;
+      note_region_mark(s, r);
       append_ops(s, r);
       takes += info(g_.type[s]).loops_in;
       move_loops(s);
@@ -518,6 +523,14 @@ class PatternBuilder {
     r.sts_after = st_.live;
     out_.rows.push_back(r);
     if (full_round) hold_what_others_work(static_cast<std::uint32_t>(out_.rows.size() - 1));
+  }
+
+  // The schedule's mismatch and short-row markers go before the stitch's operations.
+  void note_region_mark(StitchId s, const PatternRow& r) {
+    if (marked_[s] == MarkerKind::none) return;
+    out_.region_marks.push_back({static_cast<std::uint32_t>(out_.rows.size()),
+                                 static_cast<std::uint32_t>(out_.ops.size()) - r.first_op,
+                                 marked_[s]});
   }
 
   // A row that turns with sts left beyond it says so; German short rows make the st it turned
@@ -731,6 +744,7 @@ class PatternBuilder {
   std::vector<std::vector<StitchId>> deferred_;                                    // per yarn
   std::vector<std::uint8_t> taken_up_;                                             // per yarn
   std::vector<std::uint8_t> unwritten_ = std::vector<std::uint8_t>(g_.size(), 0);  // deferred
+  std::vector<MarkerKind> marked_ = std::vector<MarkerKind>(g_.size(), MarkerKind::none);
   // Sts slipped to holders: per model stitch its holder (1-based, 0: none); per holder its
   // last st (in the order its rnd worked them) and how many it holds.
   std::vector<std::uint32_t> holder_of_ = std::vector<std::uint32_t>(g_.size(), 0);
@@ -747,6 +761,7 @@ HandPattern build_hand_pattern(const Compilation& c, TurnMethod turns) {
   check_supported(c);
   HandPattern pattern = PatternBuilder(c, turns).run();
   place_section_markers(pattern);
+  place_region_markers(pattern);
   return pattern;
 }
 
