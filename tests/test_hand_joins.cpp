@@ -218,7 +218,9 @@ TEST(HandPieces, TheSweaterIsProvenInEveryFormat) {
         "### Piece 1 (yarn 1), taken up again\n",
         "Take up Piece 1 again with its yarn. Place the 58 sts of Piece 2 on the needle at the "
         "beginning of the rnd, the first st of its last rnd first. Place the 58 sts of Piece 3 on "
-        "the needle after the first 106 sts of the rnd, the first st of its last rnd first.\n",
+        "the needle after the first 106 sts of the rnd, the first st of its last rnd first \u2014 "
+        "212 "
+        "sts.\n",
         "**Rnd 108:** K106, pm, k to end.\n"})
     EXPECT_NE(pattern.find(line), std::string::npos) << line;
   for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
@@ -245,13 +247,15 @@ TEST(HandPieces, TheThreeBarsAreProvenInEveryFormat) {
   expect_written_and_proven(
       "samples/three-bars/three-bars.yaml",
       {"Slip sts 1\u20139 of the rnd to holder 1, sts 10\u201318 to holder 2 and sts "
-       "19\u201327 to holder 3.\n\nLeave the 9 sts on the needle and set the yarn aside (do not "
+       "19\u201327 to holder 3 \u2014 9 sts.\n\nLeave the 9 sts on the needle and set the yarn "
+       "aside (do not "
        "cut it).\n",
        "Slip sts 10\u201318 of the rnd to holder 7, sts 19\u201327 to holder 8 and sts "
-       "28\u201336 to holder 9.\n\nPlace the 9 sts of Piece 3 on the needle after the first 9 "
+       "28\u201336 to holder 9 \u2014 9 sts.\n\nPlace the 9 sts of Piece 3 on the needle after the "
+       "first 9 "
        "sts of the rnd, the first st cast on first.\n",
        "Place the 9 sts of holder 2 on the needle after the first 27 sts of the rnd, the first "
-       "st of its last rnd first.\n",
+       "st of its last rnd first \u2014 36 sts.\n",
        "Take up Piece 2 again with its yarn. Place the 9 loops of Piece 3's chain on the needle "
        "at the beginning of the rnd, the last st cast on first.",
        "Three-needle bind-off: hold the pieces with RS together: holder 3 in front, the first st "
@@ -264,7 +268,8 @@ TEST(HandPieces, TheTwoBarsAreProvenInEveryFormat) {
   expect_written_and_proven(
       "samples/two-bars/two-bars.yaml",
       {"Slip sts 10\u201318 of the rnd to holder 4, sts 19\u201328 to holder 5 and sts "
-       "29\u201337 to holder 6.\n\nPut the 10 sts of holder 2 on a spare needle, the last st "
+       "29\u201337 to holder 6 \u2014 9 sts.\n\nPut the 10 sts of holder 2 on a spare needle, the "
+       "last st "
        "of its last rnd at the tip.\n\n**Row 24 (RS):** Sl1 from spare, ssk, k8, turn.\n",
        "Pick up 10 sts along the left edge of Piece 2, one in each row from Row 33 down to Row "
        "24, onto the needle after the first 18 sts of the rnd.\n",
@@ -299,6 +304,12 @@ TEST(HandPieces, RejectsSlippingToHoldersAndPlacingThemWrongWithTheReason) {
   EXPECT_EQ(failure_of(tube_with_holder(
                 "Slip sts 1\u20132 of the rnd to holder 1 and sts 3\u20134 to holder 1.", place)),
             "p.md:3: Slip sts to holder 1: it already holds sts");
+  EXPECT_EQ(
+      failure_of(tube_with_holder("Slip sts 3\u20134 of the rnd to holder 1 \u2014 5 sts.", place)),
+      "p.md:3: Slip sts to holders: the pattern says 5 sts, but 4 sts are on the needle");
+  EXPECT_EQ(failure_of(tube_with_holder(
+                slip, std::regex_replace(place, std::regex("first\\.$"), "first \u2014 5 sts."))),
+            "p.md:5: Place the sts: the pattern says 5 sts, but 6 sts are on the needle");
   EXPECT_EQ(failure_of("Cast on 6 sts.\nRow 1 (RS): Knit.\n" + slip + "\n"),
             "p.md:3: Slip sts to holder 1: only from a piece worked in the rnd");
 }

@@ -109,6 +109,7 @@ class NeedleSimulator {
         break;
       case Step::Kind::pick_up:
         pick_up(s);
+        check_printed_count(s, "Pick up");
         break;
       case Step::Kind::join_round:
         join(s.marker);
@@ -136,12 +137,14 @@ class NeedleSimulator {
         break;
       case Step::Kind::place:
         place(s);
+        check_printed_count(s, "Place the sts");
         break;
       case Step::Kind::three_needle_bind_off:
         three_needle_bind_off(s);
         break;
       case Step::Kind::hold:
         hold(s);
+        check_printed_count(s, "Slip sts to holders");
         break;
       case Step::Kind::to_spare:
         put_on_spare_needle(s);
@@ -288,6 +291,13 @@ class NeedleSimulator {
     if (n != pc_.live)
       fail(fmt::format("{}: the pattern says {}, but {} on the needle", what, sts(n),
                        pc_.live == 1 ? "1 st is" : fmt::format("{} sts are", pc_.live)));
+  }
+
+  // A count printed after a sentence that changes what is on the needle ("— 36 sts").
+  void check_printed_count(const Step& s, const char* what) {
+    if (!s.sts) return;
+    ++out_.counts_checked;
+    check_live(*s.sts, what);
   }
 
   // The piece waits, sts and yarn, until it is taken up again.

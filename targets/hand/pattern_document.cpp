@@ -117,7 +117,7 @@ class InstructionWriter {
     std::string text = fmt::format("Take up Piece {} again with its yarn.", sec.piece);
     for (const PatternSection::Placement& p : sec.placements)
       if (p.before_row == sec.first_row) text.append(" ").append(placement_text(p));
-    return text;
+    return with_count_after_placements(text, sec.first_row);
   }
 
   // "Place the 9 loops of Piece 3's chain on the needle after the first 9 sts of the rnd, the
@@ -148,16 +148,20 @@ class InstructionWriter {
   // "Slip sts 10–18 of the rnd to holder 1, sts 19–27 to holder 2 and sts 28–36 to holder 3."
   void write_holdings_after(std::uint32_t row) {
     std::vector<std::string> runs;
-    for (const PatternSection::Holding& h : p_.sections[section_].holdings)
-      if (h.after_row == row)
-        runs.push_back(fmt::format("sts {}{}{}{} to holder {}", h.first, knitspeak() ? "-" : kRange,
-                                   h.first + h.count - 1, runs.empty() ? " of the rnd" : "",
-                                   h.holder));
+    std::uint32_t held = 0;
+    for (const PatternSection::Holding& h : p_.sections[section_].holdings) {
+      if (h.after_row != row) continue;
+      held += h.count;
+      runs.push_back(fmt::format("sts {}{}{}{} to holder {}", h.first, knitspeak() ? "-" : kRange,
+                                 h.first + h.count - 1, runs.empty() ? " of the rnd" : "",
+                                 h.holder));
+    }
     if (runs.empty()) return;
     std::string text = "Slip " + runs.front();
     for (std::size_t i = 1; i < runs.size(); ++i)
       text.append(i + 1 == runs.size() ? " and " : ", ").append(runs[i]);
-    add(InstructionLine::Kind::setup, "", text + ".");
+    add(InstructionLine::Kind::setup, "",
+        fmt::format("{} {} {} sts.", text, kDash, p_.rows[row].sts_after - held));
   }
 
   bool holding_after(std::uint32_t row) const {
@@ -166,10 +170,27 @@ class InstructionWriter {
                        [&](const PatternSection::Holding& h) { return h.after_row == row; });
   }
 
-  // Placements into a rnd in the middle of a piece's work, written before the rnd.
+  // Placements into a rnd in the middle of a piece's work, written before the rnd; the last
+  // says how many sts the rnd then has.
   void write_placements_before(std::uint32_t row) {
+    std::vector<std::string> texts;
     for (const PatternSection::Placement& p : p_.sections[section_].placements)
-      if (p.before_row == row) add(InstructionLine::Kind::setup, "", placement_text(p));
+      if (p.before_row == row) texts.push_back(placement_text(p));
+    if (texts.empty()) return;
+    texts.back() = with_count_after_placements(texts.back(), row);
+    for (std::string& text : texts) add(InstructionLine::Kind::setup, "", std::move(text));
+  }
+
+  // "… first — 36 sts.": the count on the needle once the sts placed before `row` are there
+  // (a holder put on a spare needle adds none).
+  std::string with_count_after_placements(std::string text, std::uint32_t row) const {
+    const auto& placed = p_.sections[section_].placements;
+    bool adds = std::any_of(placed.begin(), placed.end(), [&](const PatternSection::Placement& p) {
+      return p.before_row == row && !p.to_spare;
+    });
+    if (!adds || text.empty() || text.back() != '.') return text;
+    text.pop_back();
+    return fmt::format("{} {} {} sts.", text, kDash, p_.rows[row].sts_before);
   }
 
   bool placement_before(std::uint32_t row) const {

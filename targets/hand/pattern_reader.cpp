@@ -212,8 +212,15 @@ class SentenceReader {
       step.into_rnd = true;
       step.last = place_in_rnd(c);
     }
-    need(c.done(), c, "the end of the sentence");
+    end_with_count(c, step);
     add(step);
+  }
+
+  // The end of a sentence that may print the count on the needle after it: "— 36 sts".
+  void end_with_count(Cursor& c, Step& step) {
+    std::string_view rest = c.rest();
+    step.sts = printed_count(rest);
+    if (!trim(rest).empty()) fail("expected the end of the sentence", rest);
   }
 
   // "at the beginning of the rnd" (0) or "after the first 18 sts of the rnd".
@@ -329,7 +336,8 @@ class SentenceReader {
       need_words(c, {"of", "its", "last"}, "'st of its last rnd' or 'st cast on'");
       need(c.eat_any({"rnd", "row"}), c, "'rnd' or 'row'");
     }
-    need(c.eat("first") && c.done(), c, "'first' and the end of the sentence");
+    need(c.eat("first"), c, "'first'");
+    end_with_count(c, step);
     add(step);
   }
 
@@ -349,7 +357,7 @@ class SentenceReader {
       step.number = need_number(c, "a holder number");
       runs.push_back(step);
     } while (c.eat_char(',') || c.eat("and"));
-    need(c.done(), c, "the end of the sentence");
+    end_with_count(c, runs.front());  // checked once the last run (given first) is slipped
     for (auto run = runs.rbegin(); run != runs.rend(); ++run) add(*run);
   }
 
