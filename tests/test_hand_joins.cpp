@@ -182,6 +182,45 @@ TEST(HandPickUps, TheContractingFixtureIsProvenInEveryFormat) {
             "meant?");
 }
 
+// A heel turn's decrease across the gap: the row decreases into the st beyond it on the left
+// needle (in the rnd, from the far end of the right one), or into the st at the tip of the
+// right needle slipped back ("sl1 back"); the beginning-of-rnd marker is removed there and
+// placed anew by the next rnd.
+TEST(HandGaps, ARowDecreasesAcrossTheGapIntoItsOwnNeedle) {
+  const std::string tube =
+      "Cast on 8 sts. Pm and join to work in the rnd, being careful not to twist.\nRnd 1: "
+      "Knit.\n";
+  EXPECT_EQ(failure_of(tube + "Row 2 (RS): Rm, sl1 back, k2tog, k2, turn — 7 sts.\nRow 3 (WS): Sl1 "
+                              "back, p2tog, p1, p2tog, turn — 5 sts.\nRnd 4: Pm, k to end.\nRnd 5: "
+                              "BO all sts.\nFasten off.\n"),
+            "");
+  EXPECT_EQ(failure_of(tube + "Row 2 (RS): Sl1 back, k2tog, k2, turn.\n"),
+            "p.md:3: Row 2 (RS): sl1 back: the tip of the right needle holds a marker, not a st");
+  EXPECT_EQ(failure_of("Cast on 3 sts.\nRow 1 (RS): Sl1 back, k3.\n"),
+            "p.md:2: Row 1 (RS): sl1 back: the tip of the right needle holds nothing, not a st");
+}
+
+// The loops of a provisional cast-on's chain are placed into a rnd like a spare needle's sts.
+TEST(HandGaps, AChainIsPlacedIntoTheRndLikeASpareNeedle) {
+  const std::string pieces =
+      "Cast on 3 sts with a provisional cast-on.\nLeave the 3 sts on a spare needle and cut the "
+      "yarn.\nCast on 4 sts. Pm and join to work in the rnd, being careful not to twist.\nRnd "
+      "1: Knit.\nLeave the 4 sts on the needle and set the yarn aside (do not cut it).\nTake up "
+      "Piece 2 again with its yarn. Place the 3 sts of Piece 1 on the needle at the beginning of "
+      "the rnd, the first st of its last row first.";
+  const std::string rest = "\nRnd 2: Knit — 10 sts.\nRnd 3: BO all sts.\nFasten off.\n";
+  EXPECT_EQ(failure_of(pieces +
+                       " Place the 3 loops of Piece 1's chain on the needle after the first 7 "
+                       "sts of the rnd, the last st cast on first." +
+                       rest),
+            "");
+  EXPECT_EQ(failure_of(pieces +
+                       " Place the 4 loops of Piece 1's chain on the needle after the first 7 "
+                       "sts of the rnd, the last st cast on first." +
+                       rest),
+            "p.md:6: Place the sts of Piece 1: the pattern says 4 sts, but its needle holds 3");
+}
+
 TEST(HandPickUps, RejectsAPickUpThatCannotBeWorkedWithTheReason) {
   const std::string piece =
       "Cast on 2 sts.\nRow 1 (RS): Knit.\nRow 2 (WS): BO all sts.\nFasten off.\n";

@@ -292,7 +292,8 @@ class NeedleSimulator {
   void place(const Step& s) {
     if (!active_ || !pc_.joined || pc_.bor == kNone)
       fail(fmt::format("Place the sts of Piece {}: only into a piece worked in the rnd", s.number));
-    std::vector<std::uint32_t> placed = spare_needle(s.number, s.from_last[0], "Place the sts");
+    std::vector<std::uint32_t> placed =
+        spare_needle(s.number, s.from_last[0], "Place the sts", s.provisional);
     if (placed.size() != s.count)
       fail(fmt::format("Place the sts of Piece {}: the pattern says {}, but its needle holds {}",
                        s.number, sts(s.count), placed.size()));
@@ -305,7 +306,7 @@ class NeedleSimulator {
     pc_.right.insert(pc_.right.end(), ring.begin(), ring.end());
     pc_.left.clear();
     pc_.live += s.count;
-    spare_needles_.erase({s.number, kNeedle});
+    spare_needles_.erase({s.number, s.provisional ? kChain : kNeedle});
   }
 
   // The loops around the needle from the beginning-of-round marker on (markers left out).
@@ -553,6 +554,20 @@ class NeedleSimulator {
     index_left_needle();
   }
 
+  // ... and a row that turns may work the last st of the left needle together with the first
+  // of the right one's far end (a decrease across a gap, on the other side of the needle).
+  void reach_around(std::uint32_t takes) {
+    if (!pc_.joined || row_round_ || left_loops_ >= takes || pc_.left.empty()) return;
+    std::size_t moved = 0;
+    while (left_loops_ + moved < takes && moved < pc_.right.size() &&
+           !is_marker_entry(pc_.right[moved]))
+      ++moved;
+    pc_.left.insert(pc_.left.begin(), pc_.right.rend() - static_cast<std::ptrdiff_t>(moved),
+                    pc_.right.rend());
+    pc_.right.erase(pc_.right.begin(), pc_.right.begin() + static_cast<std::ptrdiff_t>(moved));
+    index_left_needle();
+  }
+
   void end_row() {
     const char* what = row_round_ ? "rnd" : "row";
     if (!row_ended_ && pc_.joined && !row_round_)
@@ -713,8 +728,11 @@ class NeedleSimulator {
       case HandOp::from_spare_behind:
         slip_from_spare(op == HandOp::from_spare_behind);
         return;
+      case HandOp::slip_back:
+        slip_back();
+        return;
       case HandOp::pm:
-        pc_.right.push_back(new_marker());
+        place_marker();
         return;
       case HandOp::sm:
       case HandOp::rm: {
@@ -722,6 +740,7 @@ class NeedleSimulator {
           if (op == HandOp::rm) remove_bor();
           return;
         }
+        if (op == HandOp::rm && bor_just_slipped()) return remove_bor();
         if (pc_.left.empty() || !is_marker_entry(pc_.left.back()))
           fail(fmt::format("{}: the next thing on the left needle is {}, not a marker",
                            info(op).abbreviation, pc_.left.empty() ? "nothing" : "a st"));
@@ -785,6 +804,38 @@ class NeedleSimulator {
     ++pc_.live;
   }
 
+  // sl1 back: the st at the tip of the right needle (in the rnd, the last st of the left
+  // needle when the right one is empty: the needle has no end) goes back to the left needle.
+  void slip_back() {
+    bool wraps = pc_.joined && pc_.right.empty() && !pc_.left.empty();
+    std::vector<std::uint32_t>& from = wraps ? pc_.left : pc_.right;
+    std::uint32_t loop = wraps ? from.front() : (from.empty() ? kNone : from.back());
+    if (loop == kNone || is_marker_entry(loop))
+      fail(fmt::format("sl1 back: the tip of the right needle holds {}, not a st",
+                       loop == kNone ? "nothing" : "a marker"));
+    if (wraps) {
+      from.erase(from.begin());
+      index_left_needle();
+    } else {
+      from.pop_back();
+    }
+    push_left(loop);
+  }
+
+  // A row that goes on from the end of a rnd slips the beginning-of-round marker first; "rm"
+  // before any st removes it (a row that works across it, as "sl1 back" does).
+  bool bor_just_slipped() const {
+    return position_ == 0 && !pc_.right.empty() && pc_.right.back() == pc_.bor;
+  }
+
+  // In the rnd with no beginning-of-round marker (it was removed), the first marker placed in
+  // a rnd marks the new beginning.
+  void place_marker() {
+    std::uint32_t marker = new_marker();
+    pc_.right.push_back(marker);
+    if (row_round_ && pc_.bor == kNone && position_ == 0) pc_.bor = marker;
+  }
+
   // DS: first after a turn, the st worked last before it is pulled up into a double stitch
   // and slipped.
   void double_stitch() {
@@ -831,6 +882,7 @@ class NeedleSimulator {
 
   void stitch(HandOp op) {
     const HandOpInfo& oi = info(op);
+    reach_around(oi.takes);
     std::uint32_t ready = loops_to_marker();
     if (ready < oi.takes)
       fail(fmt::format("{} needs {}{}, {} left", oi.abbreviation, sts(oi.takes),

@@ -114,11 +114,16 @@ class InstructionWriter {
       const PatternSection& spare = p_.sections[p.section];
       std::string where = p.after == 0 ? "at the beginning of the rnd"
                                        : fmt::format("after the first {} sts of the rnd", p.after);
-      text += fmt::format(
-          " Place the {} sts of Piece {} on the needle {}, the {} st of its last "
-          "{} first.",
-          p.count, spare.piece, where, p.from_last ? "last" : "first",
-          spare.in_round ? "rnd" : "row");
+      if (p.chain)
+        text += fmt::format(
+            " Place the {} loops of Piece {}'s chain on the needle {}, the {} st cast on first.",
+            p.count, spare.piece, where, p.from_last ? "last" : "first");
+      else
+        text += fmt::format(
+            " Place the {} sts of Piece {} on the needle {}, the {} st of its last "
+            "{} first.",
+            p.count, spare.piece, where, p.from_last ? "last" : "first",
+            spare.in_round ? "rnd" : "row");
     }
     return text;
   }
@@ -411,7 +416,7 @@ class FrontMatter {
 
   std::vector<std::string> abbreviations() const {
     std::vector<std::string> items;
-    for (auto op = HandOp::k; op <= HandOp::from_spare_behind;
+    for (auto op = HandOp::k; op <= HandOp::slip_back;
          op = static_cast<HandOp>(static_cast<int>(op) + 1))
       if (uses(op) || (op == HandOp::pm && says("Pm ")))
         items.push_back(fmt::format("**{}**: {}", info(op).abbreviation, info(op).meaning));

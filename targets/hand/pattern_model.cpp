@@ -251,6 +251,7 @@ class PatternBuilder {
     join.joins = true;
     join.front = section_of(taken[0]);
     join.back = section_of(taken[1]);
+    refuse_join_of_placed_sts(row_.front(), join.front, join.back);
     for (int side : {0, 1}) {
       const PatternSection& piece = out_.sections[side == 0 ? join.front : join.back];
       join.from_last[side] = g_.loops[taken[side]].maker == piece.last_row_ends[1];
@@ -260,6 +261,19 @@ class PatternBuilder {
     join.pairs = static_cast<std::uint32_t>(row_.size());
     join.stitches += row_.size();
     row_.clear();
+  }
+
+  // The sts of a piece placed into another's rnd are bound off from that one's needle: a
+  // three-needle bind-off of one needle's sts folded in half, which is not written yet.
+  void refuse_join_of_placed_sts(StitchId s, std::uint32_t front, std::uint32_t back) const {
+    for (const PatternSection& sec : out_.sections)
+      for (const PatternSection::Placement& p : sec.placements)
+        if (p.section == front || p.section == back)
+          unsupported(fmt::format(
+              "{} binds off sts of Piece {} that were placed on the needle of Piece {} (a "
+              "three-needle bind-off of one needle's sts folded in half), which is not covered "
+              "yet",
+              g_.describe(s), out_.sections[p.section].piece, sec.piece));
   }
 
   void flush_row() {
@@ -355,24 +369,62 @@ class PatternBuilder {
   }
 
   // When a piece taken up again first works sts of pieces left on spare needles, the knitter
-  // places them into its rnd where they are worked.
+  // places them into its rnd where they are worked. A piece whose sts its rows take one by one
+  // across a perpendicular edge is placed too (they are then decreased into across a gap),
+  // unless the piece taken up is flat.
   void place_spare_needles() {
     std::uint32_t taken = 0;
     const std::uint32_t self = section_of_yarn_[section().yarn];
     for (StitchId s : row_)
       for (std::uint32_t l : g_.loops_taken_by(s)) {
-        if (g_.loops[l].kind == LoopKind::perpendicular) continue;  // one by one
-        std::uint32_t from = section_of_yarn_[c_.yarns.piece_of[g_.loops[l].maker]];
-        bool placed =
-            std::any_of(section().placements.begin(), section().placements.end(),
-                        [&](const PatternSection::Placement& p) { return p.section == from; });
-        if (from != self && !placed) {
-          const PatternSection& spare = out_.sections[from];
-          bool from_last = g_.loops[l].maker == spare.last_row_ends[1];
-          section().placements.push_back({from, spare.live_at_end, taken, from_last});
-          st_.live += spare.live_at_end;
-        }
+        const Loop& loop = g_.loops[l];
+        std::uint32_t from = section_of(loop.maker);
+        bool edge = loop.kind == LoopKind::perpendicular;
+        if (edge && (from == self || !places_edge_pieces())) continue;  // across the gap
+        if (from != self && !placed(from, is_chain_loop(loop))) place(loop, taken);
         ++taken;
+      }
+    place_pieces_worked_later();
+  }
+
+  // Pieces set aside with their sts live beside a piece worked in the rnd are placed into it.
+  bool places_edge_pieces() const { return out_.sections.back().in_round; }
+
+  static bool is_chain_loop(const Loop& l) {
+    return l.kind == LoopKind::split && l.maker_slot == 1;
+  }
+
+  bool placed(std::uint32_t from, bool chain) const {
+    const auto& placed = out_.sections.back().placements;
+    return std::any_of(placed.begin(), placed.end(), [&](const PatternSection::Placement& p) {
+      return p.section == from && p.chain == chain;
+    });
+  }
+
+  // Places the sts of the loop's piece (or its chain) after the first `after` sts of the rnd.
+  void place(const Loop& loop, std::uint32_t after) {
+    std::uint32_t from = section_of(loop.maker);
+    const PatternSection& spare = out_.sections[from];
+    bool chain = is_chain_loop(loop);
+    bool from_last = loop.maker == spare.last_row_ends[1];
+    std::uint32_t count = chain ? spare.cast_on : spare.live_at_end;
+    section().placements.push_back({from, count, after, from_last, chain});
+    st_.live += count;
+  }
+
+  // Pieces first worked by a later row of the piece taken up go on after those placed so far.
+  void place_pieces_worked_later() {
+    if (!places_edge_pieces()) return;
+    const std::uint32_t self = section_of_yarn_[section().yarn];
+    for (StitchId s : deferred_[section().yarn])
+      for (std::uint32_t l : g_.loops_taken_by(s)) {
+        const Loop& loop = g_.loops[l];
+        if (loop.maker == kNoStitch || section_of(loop.maker) == self ||
+            placed(section_of(loop.maker), is_chain_loop(loop)))
+          continue;
+        std::uint32_t after = 0;
+        for (const PatternSection::Placement& p : section().placements) after += p.count;
+        place(loop, after);
       }
   }
 
@@ -391,6 +443,7 @@ class PatternBuilder {
         std::all_of(row_.begin(), row_.end(), [&](StitchId s) { return g_.type[s] == T::bo; });
     if (st_.previous_link == YarnLink::turn) std::swap(st_.ahead, st_.behind);
     if (st_.double_stitch_next) slip_double_stitch();
+    if (r.round && st_.bor_removed) place_new_beginning_of_round();
     std::uint32_t takes = 0;
     for (StitchId s : row_) {
       number_of_[s] = r.number;
@@ -434,6 +487,11 @@ class PatternBuilder {
     st_.behind += t.loops_out;
   }
 
+  void place_new_beginning_of_round() {
+    out_.ops.push_back(HandOp::pm);
+    st_.bor_removed = false;
+  }
+
   void slip_double_stitch() {
     out_.ops.push_back(HandOp::ds);
     st_.double_stitch_next = false;
@@ -456,6 +514,10 @@ class PatternBuilder {
             fmt::format("{} works a loop of {} across a perpendicular edge third, "
                         "which is not covered yet",
                         g_.describe(s), g_.describe(g_.loops[taken[i]].maker)));
+      if (on_own_needle(g_.loops[taken[i]].maker)) {
+        decrease_across_gap(s, g_.loops[taken[i]].maker, worked);
+        continue;
+      }
       refuse_edge_loop_off_spare_needle(s, g_.loops[taken[i]].maker);
       out_.ops.push_back(worked == 0 ? HandOp::from_spare : HandOp::from_spare_behind);
       ++st_.live;
@@ -469,29 +531,46 @@ class PatternBuilder {
   }
 
   // Is the maker's st on the needle of the piece being worked: its own, one of a spare needle
-  // placed into its rnd, or one of the spare needle it started on?
-  bool on_own_needle(StitchId maker) const {
+  // (or a chain) placed into its rnd, or one of the spare needle it started on?
+  bool on_own_needle(StitchId maker, bool chain = false) const {
     std::uint32_t from = section_of(maker);
     const PatternSection& worked = out_.sections.back();
-    const auto& placed = worked.placements;
     return c_.yarns.piece_of[maker] == worked.yarn ||
-           (worked.starts_from && worked.starts_from->section == from) ||
-           std::any_of(placed.begin(), placed.end(),
-                       [&](const PatternSection::Placement& p) { return p.section == from; });
+           (worked.starts_from && worked.starts_from->section == from) || placed(from, chain);
   }
 
-  // "Sl1 from spare" takes the st from a piece waiting on a spare needle. A loop of the piece
-  // being worked is among the sts its own rows work (a heel turn's "ssk across the gap"), and
-  // one of a piece set aside waits on that piece's needle (a knitter would put it on a holder
-  // first): neither is written yet.
-  void refuse_edge_loop_off_spare_needle(StitchId s, StitchId maker) const {
-    bool own = on_own_needle(maker);
-    const PatternSection& from = out_.sections[section_of(maker)];
-    if (own || from.set_aside)
+  // A st of the piece's own needle across a gap (a heel turn's decrease): worked second, it is
+  // the next st on the left needle; worked first by the row's first st, it is the one at the
+  // tip of the right needle, slipped back ("sl1 back"). A row that goes on from the end of a
+  // rnd removes the beginning-of-rnd marker there first; the next rnd places a new one.
+  void decrease_across_gap(StitchId s, StitchId maker, std::size_t worked) {
+    if (worked == 1) return;
+    if (s != row_.front())
       unsupported(fmt::format(
-          "{} works a loop of {} across a perpendicular edge from the needle of Piece {}{}, "
-          "not from a spare needle, which is not covered yet",
-          g_.describe(s), g_.describe(maker), from.piece, own ? " itself" : ", set aside"));
+          "{} works a loop of {} across a perpendicular edge from its own needle first, but "
+          "not first in its row, where a knitter could slip it back from the right needle; "
+          "which is not covered yet",
+          g_.describe(s), g_.describe(maker)));
+    if (section().in_round && st_.previous_link == YarnLink::shift) {
+      out_.ops.push_back(HandOp::rm);
+      st_.bor_removed = true;
+    }
+    out_.ops.push_back(HandOp::slip_back);
+    if (section().in_round) return;
+    ++st_.ahead;
+    --st_.behind;
+  }
+
+  // "Sl1 from spare" takes the st from a piece waiting on a spare needle. One of a piece set
+  // aside waits on that piece's needle (a knitter would put it on a holder first): not written
+  // yet.
+  void refuse_edge_loop_off_spare_needle(StitchId s, StitchId maker) const {
+    const PatternSection& from = out_.sections[section_of(maker)];
+    if (from.set_aside)
+      unsupported(fmt::format(
+          "{} works a loop of {} across a perpendicular edge from the needle of Piece {}, set "
+          "aside, not from a spare needle, which is not covered yet",
+          g_.describe(s), g_.describe(maker), from.piece));
   }
 
   // Sts of another piece are placed into the rnd when a piece is taken up again; a row that
@@ -500,7 +579,7 @@ class PatternBuilder {
     for (std::uint32_t l : g_.loops_taken_by(s)) {
       const Loop& loop = g_.loops[l];
       if (loop.kind == LoopKind::perpendicular || loop.maker == kNoStitch ||
-          on_own_needle(loop.maker))
+          on_own_needle(loop.maker, is_chain_loop(loop)))
         continue;
       unsupported(fmt::format(
           "{} works a loop of {} (Piece {}) in the middle of the work, where its sts were not "
@@ -577,6 +656,7 @@ class PatternBuilder {
     std::uint32_t ahead = 0, behind = 0;  // loops on the left and right needle (flat pieces)
     bool double_stitch_next = false;
     bool cast_on_done = false;
+    bool bor_removed = false;  // by a row across the gap; the next rnd places a new one
     YarnLink previous_link = YarnLink::none;
   };
   Needle st_;

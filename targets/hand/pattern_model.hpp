@@ -47,11 +47,13 @@ struct PatternSection {
   bool set_aside = false;          // ends with its sts and yarn set aside, to be taken up again
   bool resumed = false;            // takes up a piece set aside
   std::uint32_t live_at_end = 0;
-  // Sts of another section's spare needle placed into the rnd when this one is taken up,
-  // `after` sts from the beginning of the rnd, that needle's last st first if `from_last`.
+  // Sts of another section's spare needle (or the loops of its provisional cast-on's chain)
+  // placed into the rnd when this one is taken up, `after` sts from the beginning of the rnd,
+  // that needle's last st (the last st cast on) first if `from_last`.
   struct Placement {
     std::uint32_t section, count, after;
     bool from_last;
+    bool chain = false;
   };
   std::vector<Placement> placements;
   bool provisional = false;  // its cast-on is a provisional one (a cast-on along a split)

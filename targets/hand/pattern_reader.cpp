@@ -129,6 +129,7 @@ class SentenceReader {
       Cursor rest(sentence.substr(18));
       return join_spare(rest);
     }
+    if (c.eat("place")) return place(c);  // may end "the last st cast on first"
     if (std::size_t at = find_ci(sentence, "cast on"); at != std::string_view::npos)
       return cast_on(Cursor(sentence.substr(at + 7)));
     if (c.eat("co")) return cast_on(c);
@@ -141,7 +142,6 @@ class SentenceReader {
     if (mentions(sentence, "fasten off")) return add({Step::Kind::fasten_off, line_no_});
     if (c.eat("leave")) return leave(c);
     if (c.eat("take") && c.eat("up")) return take_up(c);
-    if (c.eat("place")) return place(c);
     if (c.eat("pick") && c.eat("up")) return pick_up(c);
     if (c.eat("three-needle") && c.eat("bind-off")) return three_needle_bind_off(c);
     fail(
@@ -265,13 +265,17 @@ class SentenceReader {
   }
 
   // "Place the 58 sts of Piece 2 on the needle at the beginning of the rnd (or: after the
-  // first 106 sts of the rnd), the first st of its last rnd first".
+  // first 106 sts of the rnd), the first st of its last rnd first"; "Place the 7 loops of
+  // Piece 6's chain on the needle after the first 38 sts of the rnd, the last st cast on first".
   void place(Cursor& c) {
     Step step{Step::Kind::place, line_no_};
     c.eat("the");
     step.count = need_number(c, "the number of sts to place");
-    need_words(c, {"sts", "of", "piece"}, "'sts of Piece N'");
+    step.provisional = c.eat("loops");
+    need(step.provisional || c.eat("sts"), c, "'sts' or 'loops'");
+    need_words(c, {"of", "piece"}, "'of Piece N'");
     step.number = need_number(c, "a piece number");
+    if (step.provisional) need_words(c, {"'", "s", "chain"}, "'s chain' after the piece");
     need_words(c, {"on", "the", "needle"}, "'on the needle'");
     if (c.eat("after")) {
       need_words(c, {"the", "first"}, "'after the first N sts'");
@@ -283,8 +287,12 @@ class SentenceReader {
     need_words(c, {"of", "the", "rnd", ",", "the"}, "'of the rnd, the first (or last) st'");
     step.from_last[0] = c.eat("last");
     need(step.from_last[0] || c.eat("first"), c, "'first' or 'last'");
-    need_words(c, {"st", "of", "its", "last"}, "'st of its last rnd'");
-    need(c.eat_any({"rnd", "row"}), c, "'rnd' or 'row'");
+    if (step.provisional) {
+      need_words(c, {"st", "cast", "on"}, "'st cast on first'");
+    } else {
+      need_words(c, {"st", "of", "its", "last"}, "'st of its last rnd'");
+      need(c.eat_any({"rnd", "row"}), c, "'rnd' or 'row'");
+    }
     need(c.eat("first") && c.done(), c, "'first' and the end of the sentence");
     add(step);
   }
@@ -515,8 +523,12 @@ class SentenceReader {
       n.op = HandOp::wt;
       return n;
     }
-    if (c.eat("sl1") && c.eat("from")) {
-      need(c.eat("spare"), c, "'sl1 from spare'");
+    if (c.eat("sl1")) {
+      if (c.eat("back")) {
+        n.op = HandOp::slip_back;
+        return n;
+      }
+      need(c.eat("from") && c.eat("spare"), c, "'sl1 from spare' or 'sl1 back'");
       n.op = c.eat("behind") ? HandOp::from_spare_behind : HandOp::from_spare;
       return n;
     }

@@ -72,7 +72,7 @@ struct Step {
   std::optional<std::uint32_t> sts;  // the printed stitch count ("— 56 sts")
   std::uint32_t program = 0;         // into Script::programs
   bool from_last[2] = {false, false};
-  bool provisional = false;  // cast_on: with a provisional cast-on; join_spare: its chain
+  bool provisional = false;  // cast_on: with a provisional cast-on; join_spare, place: its chain
   bool own_yarn = false;     // three_needle_bind_off: with the front piece's yarn
   std::uint32_t from_row = 0, to_row = 0;  // pick_up: one st in each of these rows (provisional:
                                            // along the right edge)
