@@ -462,6 +462,7 @@ class FrontMatter {
           "**Picking up along an edge:** with the RS facing and a new yarn, put the outer loop "
           "of the edge st of each row named onto the needle, one row after the other (the loops "
           "are not knit: the next row works them, starting with the last one picked up).");
+    if (uses(HandOp::slip_back)) items.push_back(decreasing_across_a_gap_technique());
     if (t_.joins)
       items.push_back(
           "**Three-needle bind-off:** hold the two needles parallel, tips to the right; insert "
@@ -481,6 +482,18 @@ class FrontMatter {
           "cutting the yarn; the st left on the right needle is the first st of what follows "
           "(the first of the 40).");
     return items;
+  }
+
+  // Like a heel turn: the rows of a narrow band take one st of the sts waiting beside it at
+  // each end.
+  static std::string decreasing_across_a_gap_technique() {
+    return "**Decreasing across a gap** (as in turning a heel): a row that ends with a decrease "
+           "works its last st together with the first st beyond it on the left needle (past the "
+           "end of the left needle, around the needle's cable to the far end of the right one). "
+           "A row that begins with \"sl1 back\" slips the st at the tip of the right needle (in "
+           "the rnd, the last st before the gap) back to the left needle and works it together "
+           "with the row's first st. A row that starts at the beginning of the rnd removes the "
+           "BOR marker first (rm); the next rnd places it anew (pm).";
   }
 
   // The method the project chose, and how its turns are resolved later.
