@@ -112,8 +112,9 @@ TEST(HandTarget, SamplesNotCoveredYetNameWhatStopsThem) {
        "face 1831 (k2tog, row 59) works a loop of face 870 (k, row 24) across a perpendicular "
        "edge from the needle of Piece 1, set aside, not from a spare needle"},
       {"samples/letter-h/letter-h.yaml",
-       "extruded 3nbo on edge 395-30 (row 130) binds off sts of Piece 1 that were placed on the "
-       "needle of Piece 4 (a three-needle bind-off of one needle's sts folded in half)"},
+       "extruded 3nbo on edge 395-30 (row 130) binds off one needle's sts folded in half, but "
+       "its pairs do not go along the fold in one direction (after face 1449 (k, row 96) it "
+       "takes face 932 (k, row 129), not face 1380 (k, row 96))"},
       {"samples/letter-r/letter-r.yaml",
        "face 1328 (k, row 36) works a loop of face 1137 (k, row 34) across a perpendicular edge "
        "from its own needle first, but not first in its row"},

@@ -221,6 +221,31 @@ TEST(HandGaps, AChainIsPlacedIntoTheRndLikeASpareNeedle) {
             "p.md:6: Place the sts of Piece 1: the pattern says 4 sts, but its needle holds 3");
 }
 
+// A rnd closed by a three-needle bind-off: its sts folded in half on two needles, each run
+// counted round the needle from the first st of the last row.
+TEST(HandGaps, ARndFoldedInHalfIsBoundOffAndItsRunsAreChecked) {
+  auto pattern = [](const char* sts, const char* runs) {
+    return fmt::format(
+        "Cast on 6 sts. Pm and join to work in the rnd, being careful not to twist.\nRnd 1: "
+        "Knit.\nLeave the 6 sts on a spare needle and cut the yarn.\nThree-needle bind-off: "
+        "fold the {} sts of Piece 1 in half with RS together (count them round the needle from "
+        "the first st of its last row): {}; with a new yarn bind off all 3 pairs.\nFasten "
+        "off.\n",
+        sts, runs);
+  };
+  const char* cases[][3] = {
+      {"6", "sts 3 down to 1 in front, sts 4 up to 6 behind", ""},
+      {"6", "sts 3 down to 2 in front, sts 4 up to 6 behind",
+       "p.md:4: three-needle bind-off: 3 sts from st 3 down end at st 1, not 2"},
+      {"6", "sts 3 down to 1 in front, sts 3 up to 5 behind",
+       "p.md:4: three-needle bind-off: the front and back needles share sts"},
+      {"8", "sts 3 down to 1 in front, sts 4 up to 6 behind",
+       "p.md:4: three-needle bind-off: the pattern folds 8 sts, but Piece 1 has 6 sts"},
+  };
+  for (const auto& [sts, runs, failure] : cases)
+    EXPECT_EQ(failure_of(pattern(sts, runs)), failure) << runs;
+}
+
 TEST(HandPickUps, RejectsAPickUpThatCannotBeWorkedWithTheReason) {
   const std::string piece =
       "Cast on 2 sts.\nRow 1 (RS): Knit.\nRow 2 (WS): BO all sts.\nFasten off.\n";

@@ -294,6 +294,10 @@ class NeedleSimulator {
       fail(fmt::format("Place the sts of Piece {}: only into a piece worked in the rnd", s.number));
     std::vector<std::uint32_t> placed =
         spare_needle(s.number, s.from_last[0], "Place the sts", s.provisional);
+    if (s.from_row > placed.size())
+      fail(fmt::format("Place the sts of Piece {}: its needle holds no st {}", s.number,
+                       s.from_row));
+    if (s.from_row > 0) std::rotate(placed.begin(), placed.begin() + s.from_row - 1, placed.end());
     if (placed.size() != s.count)
       fail(fmt::format("Place the sts of Piece {}: the pattern says {}, but its needle holds {}",
                        s.number, sts(s.count), placed.size()));
@@ -319,22 +323,38 @@ class NeedleSimulator {
     return ring;
   }
 
-  // The piece's live sts wait on a spare needle, in the order its last row worked them.
+  // The piece's live sts wait on a spare needle, in the order its last row worked them (in
+  // the rnd, after a row that turned, going on round the needle with those it left).
   void leave(std::uint32_t n) {
     check_live(n, "Leave the sts");
     std::vector<std::uint32_t>& spare = spare_needles_[{pc_.number, kNeedle}];
     for (std::uint32_t entry : pc_.right)
       if (!is_marker_entry(entry)) spare.push_back(entry);
+    for (auto at = pc_.left.rbegin(); at != pc_.left.rend(); ++at)
+      if (!is_marker_entry(*at)) spare.push_back(*at);
+    start_at_last_row(spare);
     pc_.right.clear();
     pc_.left.clear();
     active_ = false;
     pc_.live = 0;
   }
 
+  // After a row that turned in the rnd the right needle holds sts of earlier rows behind those
+  // it worked: the ring starts at the row's first st.
+  void start_at_last_row(std::vector<std::uint32_t>& ring) {
+    const Fabric::RowWorked& last = fab().rows[row_];
+    if (!pc_.joined || last.round || last.first == kNoStitch) return;
+    auto at = std::find_if(ring.begin(), ring.end(), [&](std::uint32_t loop) {
+      return fab().loop_maker[loop] == last.first;
+    });
+    if (at != ring.end()) std::rotate(ring.begin(), at, ring.end());
+  }
+
   // Pairs the sts of two spare needles, each from the end the pattern puts at the tip, and
   // binds them off with a new yarn.
   // With its own yarn the front piece is the one being worked: its needle is the front one.
   void three_needle_bind_off(const Step& s) {
+    if (s.fold) return folded_bind_off(s);
     std::uint32_t front = s.number, back = s.last, pairs = s.count;
     if (s.own_yarn && (!active_ || pc_.number != front))
       fail(fmt::format("three-needle bind-off with its yarn: Piece {} is not being worked", front));
@@ -357,17 +377,62 @@ class NeedleSimulator {
     } else {
       start_piece();
     }
+    bind_off_pairs(f, b);
+    spare_needles_.erase({front, kNeedle});
+    spare_needles_.erase({back, kNeedle});
+  }
+
+  void bind_off_pairs(const std::vector<std::uint32_t>& f, const std::vector<std::uint32_t>& b) {
     fab().rows.push_back({0, 0, 0, false, Side::ws, true});
     row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
     facing_ = Side::ws;  // the front piece shows its WS: its loop is taken first
-    for (std::uint32_t i = 0; i < pairs; ++i) {
+    for (std::size_t i = 0; i < f.size(); ++i) {
       new_stitch(StitchType::tnbo);
       fab().taken.push_back(f[i]);
       fab().taken.push_back(b[i]);
       fab().taken_first.push_back(static_cast<std::uint32_t>(fab().taken.size()));
     }
-    spare_needles_.erase({front, kNeedle});
-    spare_needles_.erase({back, kNeedle});
+  }
+
+  // One piece's spare needle folded in half, counted round from the first st of its last row:
+  // each needle's run goes from its tip, down or up (round past either end), with a new yarn.
+  void folded_bind_off(const Step& s) {
+    if (active_ && pc_.live > 0)
+      fail(fmt::format("three-needle bind-off: the piece before still has {} on the needle",
+                       sts(pc_.live)));
+    std::vector<std::uint32_t> ring = spare_needle(s.number, false, "three-needle bind-off");
+    if (ring.size() != s.last)
+      fail(fmt::format("three-needle bind-off: the pattern folds {}, but Piece {} has {}",
+                       sts(s.last), s.number, sts(static_cast<std::uint32_t>(ring.size()))));
+    if (2 * s.count != ring.size())
+      fail(fmt::format("three-needle bind-off: {} pairs do not fold {} in half", s.count,
+                       sts(s.last)));
+    std::vector<std::uint32_t> f = folded_run(s, 0, ring), b = folded_run(s, 1, ring);
+    std::vector<std::uint32_t> all(f);
+    all.insert(all.end(), b.begin(), b.end());
+    std::sort(all.begin(), all.end());
+    if (std::adjacent_find(all.begin(), all.end()) != all.end())
+      fail("three-needle bind-off: the front and back needles share sts");
+    start_piece();
+    bind_off_pairs(f, b);
+    spare_needles_.erase({s.number, kNeedle});
+  }
+
+  std::vector<std::uint32_t> folded_run(const Step& s, int side,
+                                        const std::vector<std::uint32_t>& ring) const {
+    auto n = static_cast<std::uint32_t>(ring.size());
+    if (s.tip[side] < 1 || s.tip[side] > n)
+      fail(fmt::format("three-needle bind-off: Piece {} has no st {}", s.number, s.tip[side]));
+    std::vector<std::uint32_t> run;
+    std::uint32_t at = s.tip[side] - 1;
+    for (std::uint32_t i = 0; i < s.count; ++i) {
+      run.push_back(ring[at]);
+      if (i + 1 < s.count) at = s.from_last[side] ? (at + n - 1) % n : (at + 1) % n;
+    }
+    if (at + 1 != s.end[side])
+      fail(fmt::format("three-needle bind-off: {} sts from st {} {} end at st {}, not {}", s.count,
+                       s.tip[side], s.from_last[side] ? "down" : "up", at + 1, s.end[side]));
+    return run;
   }
 
   // The sts from the needle tip: the first or the last st of the piece's last row.

@@ -96,6 +96,7 @@ class InstructionWriter {
   }
 
   std::string three_needle_text(const PatternSection& sec) const {
+    if (sec.fold) return folded_needle_text(sec, *sec.fold);
     return fmt::format(
         "Three-needle bind-off: hold the pieces with RS together: Piece {} in front, the {} st "
         "of its last row at the needle tip; Piece {} behind, the {} st of its last row at the "
@@ -104,6 +105,23 @@ class InstructionWriter {
         p_.sections[sec.front].piece, sec.from_last[0] ? "last" : "first",
         p_.sections[sec.back].piece, sec.from_last[1] ? "last" : "first",
         sec.own_yarn ? "its" : "a new", sec.pairs);
+  }
+
+  // "Three-needle bind-off: fold the 42 sts of Piece 4 in half with RS together (count them
+  // round the needle from the first st of its last row): sts 35 down to 15 in front, sts 36 up
+  // to 14 behind; with a new yarn bind off all 21 pairs."
+  std::string folded_needle_text(const PatternSection& sec, const PatternSection::Fold& f) const {
+    auto run = [&](int side) {
+      std::uint32_t steps = sec.pairs - 1, n = f.sts;
+      std::uint32_t end = f.down[side] ? (f.tip[side] - 1 + n - steps % n) % n + 1
+                                       : (f.tip[side] - 1 + steps) % n + 1;
+      return fmt::format("sts {} {} to {}", f.tip[side], f.down[side] ? "down" : "up", end);
+    };
+    return fmt::format(
+        "Three-needle bind-off: fold the {} sts of Piece {} in half with RS together (count them "
+        "round the needle from the first st of its last row): {} in front, {} behind; with a "
+        "new yarn bind off all {} pairs.",
+        f.sts, p_.sections[sec.front].piece, run(0), run(1), sec.pairs);
   }
 
   // "Take up Piece 1 again with its yarn. Place the 58 sts of Piece 2 on the needle at the
@@ -119,11 +137,13 @@ class InstructionWriter {
             " Place the {} loops of Piece {}'s chain on the needle {}, the {} st cast on first.",
             p.count, spare.piece, where, p.from_last ? "last" : "first");
       else
-        text += fmt::format(
-            " Place the {} sts of Piece {} on the needle {}, the {} st of its last "
-            "{} first.",
-            p.count, spare.piece, where, p.from_last ? "last" : "first",
-            spare.in_round ? "rnd" : "row");
+        text +=
+            fmt::format(" Place the {} sts of Piece {} on the needle {}, {} of its last {} first.",
+                        p.count, spare.piece, where,
+                        p.start       ? fmt::format("st {}", p.start)
+                        : p.from_last ? "the last st"
+                                      : "the first st",
+                        spare.in_round ? "rnd" : "row");
     }
     return text;
   }

@@ -251,29 +251,110 @@ class PatternBuilder {
     join.joins = true;
     join.front = section_of(taken[0]);
     join.back = section_of(taken[1]);
-    refuse_join_of_placed_sts(row_.front(), join.front, join.back);
+    join.pairs = static_cast<std::uint32_t>(row_.size());
+    if (std::optional<std::uint32_t> holder = holder_of(join.front, join.back)) {
+      fold_needle(join, *holder);
+      join.stitches += row_.size();
+      row_.clear();
+      return;
+    }
     for (int side : {0, 1}) {
       const PatternSection& piece = out_.sections[side == 0 ? join.front : join.back];
       join.from_last[side] = g_.loops[taken[side]].maker == piece.last_row_ends[1];
     }
     join.own_yarn = join.front == section_of_yarn_[join.yarn];
     if (join.own_yarn) st_.live = 0;  // the front needle's sts are the ones bound off
-    join.pairs = static_cast<std::uint32_t>(row_.size());
     join.stitches += row_.size();
     row_.clear();
   }
 
-  // The sts of a piece placed into another's rnd are bound off from that one's needle: a
-  // three-needle bind-off of one needle's sts folded in half, which is not written yet.
-  void refuse_join_of_placed_sts(StitchId s, std::uint32_t front, std::uint32_t back) const {
-    for (const PatternSection& sec : out_.sections)
-      for (const PatternSection::Placement& p : sec.placements)
-        if (p.section == front || p.section == back)
+  // The section whose needle holds a section's sts: the one they were placed into, or its own.
+  std::uint32_t holding(std::uint32_t section) const {
+    for (std::uint32_t h = 0; h < out_.sections.size(); ++h)
+      for (const PatternSection::Placement& p : out_.sections[h].placements)
+        if (p.section == section) return h;
+    return section;
+  }
+
+  // When the sts of a join were placed into another piece's rnd, every pair is on that one
+  // needle: the join folds it in half. Pairs held by two needles, one of them another's, are
+  // not written yet.
+  std::optional<std::uint32_t> holder_of(std::uint32_t front, std::uint32_t back) const {
+    std::uint32_t pair[2] = {front, back};
+    bool placed = false;
+    std::uint32_t holder = holding(front);
+    for (StitchId s : row_)
+      for (std::uint32_t side : {0u, 1u}) {
+        std::uint32_t from = section_of(g_.loops[g_.loops_taken_by(s)[side]].maker);
+        placed = placed || holding(from) != from;
+        if (holding(from) != holder && placed)
           unsupported(fmt::format(
-              "{} binds off sts of Piece {} that were placed on the needle of Piece {} (a "
-              "three-needle bind-off of one needle's sts folded in half), which is not covered "
-              "yet",
-              g_.describe(s), out_.sections[p.section].piece, sec.piece));
+              "{} binds off sts of Piece {} and of Piece {} on two needles, one of them placed "
+              "into another piece's rnd, which is not covered yet",
+              g_.describe(s), out_.sections[pair[0]].piece, out_.sections[pair[1]].piece));
+      }
+    if (!placed) return std::nullopt;
+    return holder;
+  }
+
+  // Along a fold each needle's sts follow one another round the needle: where a run goes on
+  // along the row its sts came from, its next st must be that row's next one when that is
+  // bound off too (a run that jumps elsewhere would need a second bind-off).
+  void refuse_pairs_off_the_fold(const std::vector<StitchId>& side,
+                                 const std::vector<StitchId> (&run)[2]) const {
+    auto joined = [&](StitchId s) {
+      return std::find(run[0].begin(), run[0].end(), s) != run[0].end() ||
+             std::find(run[1].begin(), run[1].end(), s) != run[1].end();
+    };
+    for (std::size_t i = 1; i + 1 < side.size(); ++i) {
+      StitchId ahead = kNoStitch;
+      if (g_.yarn_next[side[i - 1]] == side[i]) ahead = g_.yarn_next[side[i]];
+      if (g_.yarn_next[side[i]] == side[i - 1])
+        for (const auto& other : run)
+          for (StitchId s : other)
+            if (g_.yarn_next[s] == side[i]) ahead = s;
+      if (ahead == kNoStitch || !joined(ahead) || ahead == side[i + 1]) continue;
+      unsupported(fmt::format(
+          "{} binds off one needle's sts folded in half, but its pairs do not go along the "
+          "fold in one direction (after {} it takes {}, not {}), so it cannot be worked as one "
+          "three-needle bind-off",
+          g_.describe(row_.front()), g_.describe(side[i]), g_.describe(side[i + 1]),
+          g_.describe(ahead)));
+    }
+  }
+
+  // The ring of the holder's sts starts at the first st of its last row and goes on the way
+  // that row went; the back needle's run of the ring holds it (or the front's), and the other
+  // run starts beside its tip, across the fold.
+  void fold_needle(PatternSection& join, std::uint32_t holder) {
+    const PatternSection& h = out_.sections[holder];
+    std::vector<StitchId> run[2];
+    for (StitchId s : row_)
+      for (std::uint32_t side : {0u, 1u})
+        run[side].push_back(g_.loops[g_.loops_taken_by(s)[side]].maker);
+    for (const auto& side : run) refuse_pairs_off_the_fold(side, run);
+    StitchId first = h.last_row_ends[0], second = g_.yarn_next[first];
+    PatternSection::Fold fold;
+    fold.sts = h.live_at_end;
+    for (std::uint32_t side : {1u, 0u}) {
+      auto at = std::find(run[side].begin(), run[side].end(), first);
+      if (at == run[side].end()) continue;
+      auto j = static_cast<std::uint32_t>(at - run[side].begin());
+      bool down = at != run[side].begin() && *(at - 1) == second;
+      std::uint32_t tip = down ? j : (fold.sts - j) % fold.sts;  // 0-based
+      std::uint32_t other = (down ? tip + 1 : tip + fold.sts - 1) % fold.sts;
+      fold.tip[side] = tip + 1;
+      fold.down[side] = down;
+      fold.tip[1 - side] = other + 1;
+      fold.down[1 - side] = !down;
+      join.front = holder;
+      join.fold = fold;
+      return;
+    }
+    unsupported(
+        fmt::format("{} binds off the sts of Piece {} folded in half, but not the first st "
+                    "of its last row, which is not covered yet",
+                    g_.describe(row_.front()), h.piece));
   }
 
   void flush_row() {
@@ -408,8 +489,24 @@ class PatternBuilder {
     bool chain = is_chain_loop(loop);
     bool from_last = loop.maker == spare.last_row_ends[1];
     std::uint32_t count = chain ? spare.cast_on : spare.live_at_end;
-    section().placements.push_back({from, count, after, from_last, chain});
+    std::uint32_t start = chain || from_last ? 0 : place_in_last_rnd(spare, loop.maker);
+    section().placements.push_back({from, count, after, from_last, chain, start});
     st_.live += count;
+  }
+
+  // A piece worked in the rnd is placed from the st first worked, wherever its last rnd
+  // began: that st's place in the rnd (1-based; 0 when it is the first).
+  std::uint32_t place_in_last_rnd(const PatternSection& spare, StitchId maker) const {
+    std::uint32_t at = 1;
+    for (StitchId s = spare.last_row_ends[0]; s != kNoStitch && s != maker; s = g_.yarn_next[s]) {
+      if (s == spare.last_row_ends[1] || !spare.in_round)
+        unsupported(
+            fmt::format("{} of Piece {} is worked first after it is placed, but it is "
+                        "not in its last rnd, which is not covered yet",
+                        g_.describe(maker), spare.piece));
+      ++at;
+    }
+    return at == 1 ? 0 : at;
   }
 
   // Pieces first worked by a later row of the piece taken up go on after those placed so far.
@@ -431,7 +528,7 @@ class PatternBuilder {
   void add_row() {
     if (section().resumed && section().first_row == out_.rows.size()) place_spare_needles();
     PatternRow r;
-    bool turns = g_.yarn_link[row_.back()] == YarnLink::turn;
+    bool turns = g_.yarn_link[row_.back()] == YarnLink::turn || ends_between_turns();
     // In the rnd a row that turns is a short row; a rnd goes on around.
     r.round = section().in_round && !turns;
     r.number =
@@ -456,6 +553,14 @@ class PatternBuilder {
     r.end_op = static_cast<std::uint32_t>(out_.ops.size());
     r.sts_after = st_.live;
     out_.rows.push_back(r);
+  }
+
+  // The last row of a yarn in the rnd that goes on from a turn leaves the sts beyond it on
+  // the needle: a row that turns (before its sts are left for a join), not a rnd.
+  bool ends_between_turns() const {
+    StitchId last = row_.back();
+    return out_.sections.back().in_round && g_.yarn_link[last] == YarnLink::none &&
+           st_.previous_link == YarnLink::turn && info(g_.type[last]).loops_out > 0;
   }
 
   // A row that turns with sts left beyond it says so; German short rows make the st it turned

@@ -54,6 +54,7 @@ struct PatternSection {
     std::uint32_t section, count, after;
     bool from_last;
     bool chain = false;
+    std::uint32_t start = 0;  // 1-based: from that st of its last rnd on, going round
   };
   std::vector<Placement> placements;
   bool provisional = false;  // its cast-on is a provisional one (a cast-on along a split)
@@ -77,6 +78,15 @@ struct PatternSection {
   bool from_last[2] = {false, false};  // which end of each last row starts: first or last st
   bool own_yarn = false;               // worked with the front piece's yarn, taken up again
   std::uint32_t pairs = 0;
+  // A join of one needle's sts folded in half (the sts of section `front`, counted 1-based
+  // round the needle from the first st of its last row): the front needle's from st `tip[0]`
+  // on, the back one's from `tip[1]`, each going down (towards st 1) or up.
+  struct Fold {
+    std::uint32_t sts = 0;
+    std::uint32_t tip[2] = {0, 0};
+    bool down[2] = {false, false};
+  };
+  std::optional<Fold> fold;
   // Model stitches: the first and last of the section's last row (or of its cast-on).
   std::uint32_t last_row_ends[2] = {0, 0};
 };

@@ -284,10 +284,18 @@ class SentenceReader {
     } else {
       need_words(c, {"at", "the", "beginning"}, "'at the beginning' or 'after the first N sts'");
     }
-    need_words(c, {"of", "the", "rnd", ",", "the"}, "'of the rnd, the first (or last) st'");
-    step.from_last[0] = c.eat("last");
-    need(step.from_last[0] || c.eat("first"), c, "'first' or 'last'");
-    if (step.provisional) {
+    need_words(c, {"of", "the", "rnd", ","}, "'of the rnd, the first (or last) st'");
+    c.eat("the");
+    if (c.eat("st")) {
+      step.from_row = need_number(c, "the st placed first");
+    } else {
+      step.from_last[0] = c.eat("last");
+      need(step.from_last[0] || c.eat("first"), c, "'first', 'last' or 'st N'");
+    }
+    if (step.from_row > 0) {
+      need_words(c, {"of", "its", "last"}, "'of its last rnd'");
+      need(c.eat_any({"rnd", "row"}), c, "'rnd' or 'row'");
+    } else if (step.provisional) {
       need_words(c, {"st", "cast", "on"}, "'st cast on first'");
     } else {
       need_words(c, {"st", "of", "its", "last"}, "'st of its last rnd'");
@@ -307,13 +315,18 @@ class SentenceReader {
   // pairs".
   void three_needle_bind_off(Cursor& c) {
     Step step{Step::Kind::three_needle_bind_off, line_no_};
-    need_words(c, {":", "hold", "the", "pieces", "with", "RS", "together", ":"},
-               "': hold the pieces with RS together:'");
-    step.number = needle_end(c, {"in", "front"}, step.from_last[0]);
-    need(c.eat_char(';'), c, "';' after the front piece");
-    step.last = needle_end(c, {"behind"}, step.from_last[1]);
-    if (c.eat_char('('))
-      while (!c.done() && !c.eat_char(')')) c.eat_char(c.peek());
+    need(c.eat_char(':'), c, "':'");
+    if (c.eat("fold")) {
+      folded_needle(c, step);
+    } else {
+      need_words(c, {"hold", "the", "pieces", "with", "RS", "together", ":"},
+                 "': hold the pieces with RS together:' or ': fold the N sts'");
+      step.number = needle_end(c, {"in", "front"}, step.from_last[0]);
+      need(c.eat_char(';'), c, "';' after the front piece");
+      step.last = needle_end(c, {"behind"}, step.from_last[1]);
+      if (c.eat_char('('))
+        while (!c.done() && !c.eat_char(')')) c.eat_char(c.peek());
+    }
     need_words(c, {";", "with"}, "'; with a new yarn' or '; with its yarn'");
     step.own_yarn = c.eat("its");
     if (!step.own_yarn) need_words(c, {"a", "new"}, "'a new yarn' or 'its yarn'");
@@ -321,6 +334,33 @@ class SentenceReader {
     step.count = need_number(c, "the number of pairs");
     need(c.eat_any({"pairs", "pair"}) && c.done(), c, "'pairs' and the end of the sentence");
     add(step);
+  }
+
+  // "... fold the 42 sts of Piece 4 in half with RS together (count them round the needle from
+  // the first st of its last row): sts 35 down to 15 in front, sts 36 up to 14 behind".
+  void folded_needle(Cursor& c, Step& step) {
+    step.fold = true;
+    c.eat("the");
+    step.last = need_number(c, "the number of sts folded");
+    need_words(c, {"sts", "of", "piece"}, "'sts of Piece N'");
+    step.number = need_number(c, "a piece number");
+    need_words(c, {"in", "half", "with", "RS", "together"}, "'in half with RS together'");
+    if (c.eat_char('('))
+      while (!c.done() && !c.eat_char(')')) c.eat_char(c.peek());
+    need(c.eat_char(':'), c, "':' before the needles' sts");
+    folded_run(c, step, 0, {"in", "front"});
+    need(c.eat_char(','), c, "',' after the front needle's sts");
+    folded_run(c, step, 1, {"behind"});
+  }
+
+  // "sts 35 down to 15 in front".
+  void folded_run(Cursor& c, Step& step, int side, std::initializer_list<std::string_view> where) {
+    need(c.eat("sts"), c, "'sts A down (or up) to B'");
+    step.tip[side] = need_number(c, "the st at the needle tip");
+    step.from_last[side] = c.eat("down");
+    need((step.from_last[side] || c.eat("up")) && c.eat("to"), c, "'down to' or 'up to'");
+    step.end[side] = need_number(c, "the last st of the needle");
+    need_words(c, where, "'in front' or 'behind'");
   }
 
   // "Piece 1 in front, the first st of its last row at the needle tip": the piece's number.
