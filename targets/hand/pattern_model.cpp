@@ -619,6 +619,7 @@ class PatternBuilder {
             fmt::format("{} works a loop of {} across a perpendicular edge third, "
                         "which is not covered yet",
                         g_.describe(s), g_.describe(g_.loops[taken[i]].maker)));
+      refuse_pick_up_in_the_work(s, g_.loops[taken[i]].maker);
       if (on_own_needle(g_.loops[taken[i]].maker)) {
         decrease_across_gap(s, g_.loops[taken[i]].maker, worked);
         continue;
@@ -642,6 +643,17 @@ class PatternBuilder {
     const PatternSection& worked = out_.sections.back();
     return c_.yarns.piece_of[maker] == worked.yarn ||
            (worked.starts_from && worked.starts_from->section == from) || placed(from, chain);
+  }
+
+  // An edge st that makes a loop across the edge besides its own (an expanding edge) gives
+  // it to be picked up; a row that picks it up and knits it in the middle of the work (a
+  // gusset's "pick up and knit") is not written yet.
+  void refuse_pick_up_in_the_work(StitchId s, StitchId maker) const {
+    if (g_.loops_made_by(maker).size() < 2) return;
+    unsupported(fmt::format(
+        "{} picks up a loop along the edge of {} (an expanding perpendicular edge) in the middle "
+        "of the work (a gusset's \"pick up and knit\"), which is not covered yet",
+        g_.describe(s), g_.describe(maker)));
   }
 
   // A st of the piece's own needle across a gap (a heel turn's decrease): worked second, it is
