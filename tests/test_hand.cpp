@@ -116,8 +116,9 @@ TEST(HandTarget, SamplesNotCoveredYetNameWhatStopsThem) {
        "its pairs do not go along the fold in one direction (after face 1449 (k, row 96) it "
        "takes face 932 (k, row 129), not face 1380 (k, row 96))"},
       {"samples/letter-r/letter-r.yaml",
-       "face 1328 (k, row 36) works a loop of face 1137 (k, row 34) across a perpendicular edge "
-       "from its own needle first, but not first in its row"},
+       "face 1327 (k, row 36) picks up a loop along the edge of face 1144 (k, row 35) (an "
+       "expanding perpendicular edge) in the middle of the work (a gusset's \"pick up and "
+       "knit\")"},
       {"samples/three-bars/three-bars.yaml",
        "(Piece 3) in the middle of the work, where its sts were not placed on the needle"},
   };

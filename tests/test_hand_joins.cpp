@@ -200,6 +200,20 @@ TEST(HandGaps, ARowDecreasesAcrossTheGapIntoItsOwnNeedle) {
             "p.md:2: Row 1 (RS): sl1 back: the tip of the right needle holds nothing, not a st");
 }
 
+TEST(HandGaps, TheHeelTurnIsProvenInEveryFormat) {
+  Compilation c = compile_knit_graph(testing::heel_turn_graph(), "heel turn");
+  ASSERT_TRUE(c.knittability.knittable) << check_report(c);
+  std::string pattern = emit(c, "hand");
+  for (const char* line : {"**Row 2 (RS):** Rm, k1, k2tog, turn — 5 sts.\n",
+                           "**Row 3 (WS):** Sl1 back, [p2tog] 2 times, turn — 3 sts.\n",
+                           "**Rnd 4:** Pm, k3.\n", "**Decreasing across a gap**"})
+    EXPECT_NE(pattern.find(line), std::string::npos) << line << "\n" << pattern;
+  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
+    VerifyReport report = verify(c, target, emit(c, target));
+    EXPECT_TRUE(report.proven) << target << ": " << report.summary;
+  }
+}
+
 // The loops of a provisional cast-on's chain are placed into a rnd like a spare needle's sts.
 TEST(HandGaps, AChainIsPlacedIntoTheRndLikeASpareNeedle) {
   const std::string pieces =

@@ -221,6 +221,8 @@ class Mutator {
       {"DS", {"k", "sm"}},
       {"kw", {"k", "pw"}},
       {"pw", {"p", "kw"}},
+      {"back", {"from spare"}},
+      {"Rm", {"Sm"}},
   };
 
   bool near_a_piece_heading(std::size_t i) const {  // blank lines between instructions
@@ -373,6 +375,11 @@ TEST(HandMutations, PickUpsRejectEveryEditThatChangesTheFabric) {
                    compile_stitch_mesh(testing::expanding_mesh(), "expanding"));
   mutate_and_judge("contracting fixture (sl1 from spare)",
                    compile_stitch_mesh(testing::contracting_mesh(), "contracting"));
+}
+
+TEST(HandMutations, DecreasesAcrossAGapRejectEveryEditThatChangesTheFabric) {
+  mutate_and_judge("heel turn (decreases across a gap)",
+                   compile_knit_graph(testing::heel_turn_graph(), "heel turn"));
 }
 
 TEST(HandMutations, JoinsRejectEveryEditThatChangesTheFabric) {

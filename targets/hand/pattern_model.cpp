@@ -90,7 +90,8 @@ class Handedness {
     for (StitchId s = 0; s < g_.size(); ++s) {
       auto taken = g_.loops_taken_by(s);
       for (std::size_t i = 1; i < taken.size(); ++i)
-        observe(g_.loops[taken[i - 1]].maker, g_.loops[taken[i]].maker);
+        if (!across_a_gap(taken[i - 1]) && !across_a_gap(taken[i]))
+          observe(g_.loops[taken[i - 1]].maker, g_.loops[taken[i]].maker);
       auto made = g_.loops_made_by(s);
       for (std::size_t i = 1; i < made.size(); ++i)
         observe(g_.loops[made[i - 1]].taker, g_.loops[made[i]].taker);
@@ -110,6 +111,12 @@ class Handedness {
         first_lr_[p] = reversed_[s];
       }
     }
+  }
+
+  // A loop taken across a perpendicular edge comes from beyond a gap (in the rnd, from across
+  // the beginning of the rnd): it is not side by side with the other in its row.
+  bool across_a_gap(std::uint32_t loop) const {
+    return g_.loops[loop].kind == LoopKind::perpendicular;
   }
 
   const KnitGraph& g_;
@@ -541,6 +548,7 @@ class PatternBuilder {
     if (st_.previous_link == YarnLink::turn) std::swap(st_.ahead, st_.behind);
     if (st_.double_stitch_next) slip_double_stitch();
     if (r.round && st_.bor_removed) place_new_beginning_of_round();
+    note_band_from_rnd(r);
     std::uint32_t takes = 0;
     for (StitchId s : row_) {
       number_of_[s] = r.number;
@@ -592,6 +600,12 @@ class PatternBuilder {
     st_.behind += t.loops_out;
   }
 
+  void note_band_from_rnd(const PatternRow& r) {
+    if (r.round) st_.band_from_rnd.reset();
+    if (!r.round && section().in_round && st_.previous_link == YarnLink::shift)
+      st_.band_from_rnd = std::pair{static_cast<std::uint32_t>(out_.rows.size()), r.first_op};
+  }
+
   void place_new_beginning_of_round() {
     out_.ops.push_back(HandOp::pm);
     st_.bor_removed = false;
@@ -608,7 +622,7 @@ class PatternBuilder {
   // A st that works a loop across a contracting perpendicular edge takes it from the piece
   // beside, waiting on a spare needle: slipped to the tip of the left needle, or behind the st
   // there when the st works it second.
-  void slip_from_spare_needle(StitchId s, const PatternRow& r) {
+  void slip_from_spare_needle(StitchId s, PatternRow& r) {
     auto taken = g_.loops_taken_by(s);
     for (std::size_t i = 0; i < taken.size(); ++i) {
       if (g_.loops[taken[i]].kind != LoopKind::perpendicular) continue;
@@ -621,7 +635,7 @@ class PatternBuilder {
                         g_.describe(s), g_.describe(g_.loops[taken[i]].maker)));
       refuse_pick_up_in_the_work(s, g_.loops[taken[i]].maker);
       if (on_own_needle(g_.loops[taken[i]].maker)) {
-        decrease_across_gap(s, g_.loops[taken[i]].maker, worked);
+        decrease_across_gap(s, g_.loops[taken[i]].maker, worked, r);
         continue;
       }
       refuse_edge_loop_off_spare_needle(s, g_.loops[taken[i]].maker);
@@ -660,7 +674,8 @@ class PatternBuilder {
   // the next st on the left needle; worked first by the row's first st, it is the one at the
   // tip of the right needle, slipped back ("sl1 back"). A row that goes on from the end of a
   // rnd removes the beginning-of-rnd marker there first; the next rnd places a new one.
-  void decrease_across_gap(StitchId s, StitchId maker, std::size_t worked) {
+  void decrease_across_gap(StitchId s, StitchId maker, std::size_t worked, PatternRow& r) {
+    remove_beginning_of_round(r);
     if (worked == 1) return;
     if (s != row_.front())
       unsupported(fmt::format(
@@ -668,14 +683,24 @@ class PatternBuilder {
           "not first in its row, where a knitter could slip it back from the right needle; "
           "which is not covered yet",
           g_.describe(s), g_.describe(maker)));
-    if (section().in_round && st_.previous_link == YarnLink::shift) {
-      out_.ops.push_back(HandOp::rm);
-      st_.bor_removed = true;
-    }
     out_.ops.push_back(HandOp::slip_back);
     if (section().in_round) return;
     ++st_.ahead;
     --st_.behind;
+  }
+
+  // A band worked back and forth from the end of a rnd starts at the beginning-of-rnd marker,
+  // which is then in its gap: the band's first row removes it (the next rnd places a new one).
+  void remove_beginning_of_round(PatternRow& r) {
+    if (st_.bor_removed || !st_.band_from_rnd) return;
+    auto [row, op] = *st_.band_from_rnd;
+    out_.ops.insert(out_.ops.begin() + op, HandOp::rm);
+    for (std::size_t i = row; i < out_.rows.size(); ++i) {
+      out_.rows[i].first_op += i > row;
+      ++out_.rows[i].end_op;
+    }
+    r.first_op += out_.rows.size() > row;
+    st_.bor_removed = true;
   }
 
   // "Sl1 from spare" takes the st from a piece waiting on a spare needle. One of a piece set
@@ -724,7 +749,7 @@ class PatternBuilder {
     return knit ? HandOp::kds : HandOp::pds;
   }
 
-  void append_ops(StitchId s, const PatternRow& r) {
+  void append_ops(StitchId s, PatternRow& r) {
     T type = g_.type[s];
     if (type == T::sr4) {
       out_.ops.push_back(out_.turns == TurnMethod::wrap_and_turn ? HandOp::wt
@@ -774,6 +799,8 @@ class PatternBuilder {
     bool double_stitch_next = false;
     bool cast_on_done = false;
     bool bor_removed = false;  // by a row across the gap; the next rnd places a new one
+    // The row (and its first op) that went on from the end of the last rnd.
+    std::optional<std::pair<std::uint32_t, std::uint32_t>> band_from_rnd;
     YarnLink previous_link = YarnLink::none;
   };
   Needle st_;
