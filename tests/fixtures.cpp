@@ -196,4 +196,27 @@ KnitGraph heel_turn_graph() {
   return g;
 }
 
+KnitGraph folded_tube_graph() {
+  using T = StitchType;
+  KnitGraph g;
+  g.source_name = "folded tube";
+  g.element = "face";
+  g.row_shape = {RowShape::closed, RowShape::closed, RowShape::open};
+  for (std::uint32_t r = 0; r < 2; ++r)
+    for (int i = 0; i < 6; ++i) g.add_stitch(r == 0 ? T::co : T::k, r, g.size(), 0);
+  for (int i = 0; i < 3; ++i) g.add_stitch(T::tnbo, 2, g.size(), 0);
+  for (StitchId s = 0; s + 1 < g.size(); ++s) {
+    if (s == 11) continue;  // the tube's yarn ends with its sts live
+    g.yarn_next[s] = s + 1;
+    g.yarn_link[s] = s == 5 || s == 11 ? YarnLink::shift : YarnLink::course;
+  }
+  for (StitchId i = 0; i < 6; ++i) g.loops.push_back({i, 6 + i, LoopKind::wale, 0, 0});
+  for (StitchId i = 0; i < 3; ++i) {
+    g.loops.push_back({8 - i, 12 + i, LoopKind::joined, 0, 0});  // front: a2, a1, a0
+    g.loops.push_back({9 + i, 12 + i, LoopKind::joined, 0, 1});  // back: a3, a4, a5
+  }
+  g.index_loops();
+  return g;
+}
+
 }  // namespace skein::testing

@@ -51,4 +51,8 @@ StitchMesh short_row_mesh(StitchType turn = StitchType::sr4);
 // a k2tog into a5, round the end of the needle); a rnd over the band and a4; a bind-off.
 KnitGraph heel_turn_graph();
 
+// A tube closed by a three-needle bind-off of its last rnd folded in half: 6 sts cast on in the
+// rnd, a rnd, and with a new yarn 3 pairs (a2 with a3, a1 with a4, a0 with a5).
+KnitGraph folded_tube_graph();
+
 }  // namespace skein::testing

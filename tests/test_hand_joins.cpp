@@ -214,6 +214,22 @@ TEST(HandGaps, TheHeelTurnIsProvenInEveryFormat) {
   }
 }
 
+TEST(HandGaps, AFoldedTubeIsProvenInEveryFormat) {
+  Compilation c = compile_knit_graph(testing::folded_tube_graph(), "folded tube");
+  ASSERT_TRUE(c.knittability.knittable) << check_report(c);
+  std::string pattern = emit(c, "hand");
+  EXPECT_NE(pattern.find("Three-needle bind-off: fold the 6 sts of Piece 1 in half with RS "
+                         "together (count them round the needle from the first st of its last "
+                         "rnd): sts 3 down to 1 in front, sts 4 up to 6 behind; with a new yarn "
+                         "bind off all 3 pairs.\n"),
+            std::string::npos)
+      << pattern;
+  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
+    VerifyReport report = verify(c, target, emit(c, target));
+    EXPECT_TRUE(report.proven) << target << ": " << report.summary;
+  }
+}
+
 // The loops of a provisional cast-on's chain are placed into a rnd like a spare needle's sts.
 TEST(HandGaps, AChainIsPlacedIntoTheRndLikeASpareNeedle) {
   const std::string pieces =

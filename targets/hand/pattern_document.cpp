@@ -117,11 +117,13 @@ class InstructionWriter {
                                        : (f.tip[side] - 1 + steps) % n + 1;
       return fmt::format("sts {} {} to {}", f.tip[side], f.down[side] ? "down" : "up", end);
     };
+    const PatternSection& held = p_.sections[sec.front];
+    bool rnd = held.end_row > held.first_row && p_.rows[held.end_row - 1].round;
     return fmt::format(
         "Three-needle bind-off: fold the {} sts of Piece {} in half with RS together (count them "
-        "round the needle from the first st of its last row): {} in front, {} behind; with a "
+        "round the needle from the first st of its last {}): {} in front, {} behind; with a "
         "new yarn bind off all {} pairs.",
-        f.sts, p_.sections[sec.front].piece, run(0), run(1), sec.pairs);
+        f.sts, held.piece, rnd ? "rnd" : "row", run(0), run(1), sec.pairs);
   }
 
   // "Take up Piece 1 again with its yarn. Place the 58 sts of Piece 2 on the needle at the

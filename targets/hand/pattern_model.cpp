@@ -300,7 +300,7 @@ class PatternBuilder {
               "into another piece's rnd, which is not covered yet",
               g_.describe(s), out_.sections[pair[0]].piece, out_.sections[pair[1]].piece));
       }
-    if (!placed) return std::nullopt;
+    if (!placed && front != back) return std::nullopt;
     return holder;
   }
 

@@ -344,10 +344,13 @@ class SentenceReader {
     step.last = need_number(c, "the number of sts folded");
     need_words(c, {"sts", "of", "piece"}, "'sts of Piece N'");
     step.number = need_number(c, "a piece number");
-    need_words(c, {"in", "half", "with", "RS", "together"}, "'in half with RS together'");
-    if (c.eat_char('('))
-      while (!c.done() && !c.eat_char(')')) c.eat_char(c.peek());
-    need(c.eat_char(':'), c, "':' before the needles' sts");
+    need_words(c,
+               {"in", "half", "with", "RS", "together", "(", "count", "them", "round", "the",
+                "needle", "from", "the", "first", "st", "of", "its", "last"},
+               "'in half with RS together (count them round the needle from the first st of its "
+               "last rnd)'");
+    need(c.eat_any({"rnd", "row"}) && c.eat_char(')') && c.eat_char(':'), c,
+         "'rnd):' or 'row):' before the needles' sts");
     folded_run(c, step, 0, {"in", "front"});
     need(c.eat_char(','), c, "',' after the front needle's sts");
     folded_run(c, step, 1, {"behind"});
