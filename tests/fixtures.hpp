@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "driver/pipeline.hpp"
@@ -54,5 +55,13 @@ KnitGraph heel_turn_graph();
 // A tube closed by a three-needle bind-off of its last rnd folded in half: 6 sts cast on in the
 // rnd, a rnd, and with a new yarn 3 pairs (a2 with a3, a1 with a4, a0 with a5).
 KnitGraph folded_tube_graph();
+
+// How often `what` occurs in `text`.
+std::size_t occurrences(std::string_view text, std::string_view what);
+
+// A knitted-on edging: a piece `width` sts wide knit for `rows` rows, each after the cast-on
+// taking one st of a cast-on column beside its left edge (a contracting perpendicular edge,
+// worked "Sl1 from spare, k2tog"), then bound off.
+StitchMesh edging_mesh(int width, int rows);
 
 }  // namespace skein::testing

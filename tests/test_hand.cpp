@@ -13,6 +13,7 @@
 #include "fixtures.hpp"
 #include "golden.hpp"
 #include "hand/hand_target.hpp"
+#include "hand/pattern_model.hpp"
 #include "hand/row_text.hpp"
 #include "mesh/generate.hpp"
 #include "target_runner.hpp"
@@ -49,7 +50,10 @@ TEST_P(HandSample, HtmlPageAndKnitSpeakRowsAreProvenToo) {
     EXPECT_TRUE(report.proven) << target << ": " << report.summary;
   }
   std::string html = emit(c, "hand-html");
-  EXPECT_NE(html.find("<svg"), std::string::npos);
+  hand::HandPattern pattern = hand::build_hand_pattern(c);
+  EXPECT_EQ(testing::occurrences(html, "<use href=\"#skein-model\"/>"), pattern.sections.size())
+      << "a schematic at the start of each section";
+  EXPECT_EQ(testing::occurrences(html, "<g id=\"skein-model\">"), 1u) << "the model drawn once";
   EXPECT_NE(html.find("@media print"), std::string::npos);
   EXPECT_EQ(html.find("<script"), std::string::npos);
   EXPECT_EQ(html.find("<link"), std::string::npos) << "self-contained";

@@ -106,7 +106,7 @@ class Mutator {
     out_.push_back({"repeat a line", joined(copy)});
     if (lines_[i].find("Pm and join") != std::string::npos)
       add("remove the marker", i, std::regex_replace(lines_[i], std::regex("Pm and join"), "Join"));
-    static const std::regex kMarkerOp(R"(, [ps]m\b|\b[ps]m, )");
+    static const std::regex kMarkerOp(R"(, [psr]m\b|\b[psr]m, )");
     for (auto it = std::sregex_iterator(lines_[i].begin(), lines_[i].end(), kMarkerOp);
          it != std::sregex_iterator(); ++it)
       add("drop a marker", i,
@@ -354,6 +354,11 @@ TEST(HandMutations, SectionMarkerPatternsRejectEveryEditThatChangesTheFabric) {
       compile_stitch_mesh(
           build_from_rows(testing::wedge_plan(6, 9, 3, 1, StitchType::k2tog), Layout::tube),
           "crown"));
+  Compilation crown = compile_stitch_mesh(
+      build_from_rows(testing::wedge_plan(6, 9, 3, 1, StitchType::k2tog), Layout::tube), "crown");
+  std::ostringstream marked;
+  hand::write_markdown(hand::make_document(testing::with_region_marks_in_a_crown(crown)), marked);
+  mutate_and_judge("crown with section and region markers", crown, marked.str());
   mutate_and_judge(
       "flat wedges with section markers",
       compile_stitch_mesh(
@@ -375,6 +380,8 @@ TEST(HandMutations, PickUpsRejectEveryEditThatChangesTheFabric) {
                    compile_stitch_mesh(testing::expanding_mesh(), "expanding"));
   mutate_and_judge("contracting fixture (sl1 from spare)",
                    compile_stitch_mesh(testing::contracting_mesh(), "contracting"));
+  mutate_and_judge("knitted-on edging with markers",
+                   compile_stitch_mesh(testing::edging_mesh(6, 4), "edging"));
 }
 
 TEST(HandMutations, DecreasesAcrossAGapRejectEveryEditThatChangesTheFabric) {

@@ -8,6 +8,7 @@
 #include "common/error.hpp"
 #include "driver/pipeline.hpp"
 #include "hand/marker_plan.hpp"
+#include "hand/region_markers.hpp"
 
 namespace skein::hand {
 namespace {
@@ -179,8 +180,11 @@ class PatternBuilder {
           if (taken_up_[e.yarn]) take_up_section(e.yarn);
           end_section();
           break;
+        case EventKind::marker:
+          if (e.marker != MarkerKind::beginning_of_round) marked_[e.stitch] = e.marker;
+          break;
         default:
-          break;  // rows, turns and markers follow from the yarn links and the stitches
+          break;  // rows and turns follow from the yarn links and the stitches
       }
     }
     return std::move(out_);
@@ -552,6 +556,7 @@ class PatternBuilder {
     std::uint32_t takes = 0;
     for (StitchId s : row_) {
       number_of_[s] = r.number;
+      note_region_mark(s, r);
       append_ops(s, r);
       takes += info(g_.type[s]).loops_in;
       move_loops(s);
@@ -569,6 +574,14 @@ class PatternBuilder {
     StitchId last = row_.back();
     return out_.sections.back().in_round && g_.yarn_link[last] == YarnLink::none &&
            st_.previous_link == YarnLink::turn && info(g_.type[last]).loops_out > 0;
+  }
+
+  // The schedule's mismatch and short-row markers go before the stitch's operations.
+  void note_region_mark(StitchId s, const PatternRow& r) {
+    if (marked_[s] == MarkerKind::none) return;
+    out_.region_marks.push_back({static_cast<std::uint32_t>(out_.rows.size()),
+                                 static_cast<std::uint32_t>(out_.ops.size()) - r.first_op,
+                                 marked_[s]});
   }
 
   // A row that turns with sts left beyond it says so; German short rows make the st it turned
@@ -812,6 +825,7 @@ class PatternBuilder {
   std::vector<std::vector<StitchId>> deferred_;                                    // per yarn
   std::vector<std::uint8_t> taken_up_;                                             // per yarn
   std::vector<std::uint8_t> unwritten_ = std::vector<std::uint8_t>(g_.size(), 0);  // deferred
+  std::vector<MarkerKind> marked_ = std::vector<MarkerKind>(g_.size(), MarkerKind::none);
 };
 
 }  // namespace
@@ -820,6 +834,7 @@ HandPattern build_hand_pattern(const Compilation& c, TurnMethod turns) {
   check_supported(c);
   HandPattern pattern = PatternBuilder(c, turns).run();
   place_section_markers(pattern);
+  place_region_markers(pattern);
   return pattern;
 }
 

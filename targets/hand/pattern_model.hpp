@@ -11,6 +11,7 @@
 
 #include "hand/hand_ops.hpp"
 #include "labeling/project.hpp"
+#include "schedule/schedule.hpp"
 
 namespace skein {
 struct Compilation;
@@ -102,6 +103,13 @@ struct HandPattern {
   std::vector<PatternSection> sections;
   std::vector<PatternRow> rows;
   std::vector<HandOp> ops;
+  // Where Algorithm 1's schedule puts a marker around a mismatch group or a short-row turn
+  // (paper §5.1): before the `op`-th operation of row `row`, counting no pm / sm / rm.
+  struct RegionMark {
+    std::uint32_t row, op;
+    MarkerKind kind;
+  };
+  std::vector<RegionMark> region_marks;
 
   std::span<const HandOp> ops_of(const PatternRow& row) const {
     return {ops.data() + row.first_op, ops.data() + row.end_op};
@@ -111,7 +119,8 @@ struct HandPattern {
 // Throws Error naming the stitch when the model needs something hand patterns do not cover
 // yet (joins with a side's own yarn, splits, perpendicular edges, held pieces, stitch graphs
 // without rows). Rows shaped alike get section
-// markers (marker_plan.hpp).
+// markers (marker_plan.hpp), mismatch groups and short rows region markers
+// (region_markers.hpp).
 HandPattern build_hand_pattern(const Compilation& compilation,
                                TurnMethod turns = TurnMethod::german);
 
