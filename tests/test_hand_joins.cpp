@@ -252,6 +252,24 @@ TEST(HandGaps, AChainIsPlacedIntoTheRndLikeASpareNeedle) {
             "p.md:6: Place the sts of Piece 1: the pattern says 4 sts, but its chain holds 3");
 }
 
+// A piece worked in the rnd is placed from the st the rnd works first: round its spare needle
+// from that st.
+TEST(HandGaps, APieceIsPlacedFromTheStItsRndWorksFirst) {
+  auto pattern = [](const char* first) {
+    return fmt::format(
+        "Cast on 4 sts. Pm and join to work in the rnd, being careful not to twist.\nRnd 1: "
+        "Knit.\nLeave the 4 sts on a spare needle and cut the yarn.\nCast on 4 sts. Pm and "
+        "join to work in the rnd, being careful not to twist.\nRnd 1: Knit.\nLeave the 4 sts "
+        "on the needle and set the yarn aside (do not cut it).\nTake up Piece 2 again with its "
+        "yarn. Place the 4 sts of Piece 1 on the needle after the first 4 sts of the rnd, {} "
+        "first \u2014 8 sts.\nRnd 2: Knit.\nRnd 3: BO all sts.\nFasten off.\n",
+        first);
+  };
+  EXPECT_EQ(failure_of(pattern("st 3 of its last rnd")), "");
+  EXPECT_EQ(failure_of(pattern("st 5 of its last rnd")),
+            "p.md:7: Place the sts of Piece 1: its needle holds no st 5");
+}
+
 // A rnd closed by a three-needle bind-off: its sts folded in half on two needles, each run
 // counted round the needle from the first st of the last row.
 TEST(HandGaps, ARndFoldedInHalfIsBoundOffAndItsRunsAreChecked) {
