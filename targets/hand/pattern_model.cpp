@@ -508,7 +508,7 @@ class PatternBuilder {
   }
 
   // A provisional cast-on st's second loop is its chain's (a mirror image keeps it: the two
-  // loops are below and above the cast-on, not side by side).
+  // loops are the two sides of the split, not side by side).
   static bool is_chain_loop(const Loop& l) {
     return l.kind == LoopKind::split && l.maker_slot == 1;
   }
