@@ -221,6 +221,8 @@ class Mutator {
       {"DS", {"k", "sm"}},
       {"kw", {"k", "pw"}},
       {"pw", {"p", "kw"}},
+      {"back", {"from spare"}},
+      {"Rm", {"Sm"}},
   };
 
   bool near_a_piece_heading(std::size_t i) const {  // blank lines between instructions
@@ -380,6 +382,13 @@ TEST(HandMutations, PickUpsRejectEveryEditThatChangesTheFabric) {
                    compile_stitch_mesh(testing::contracting_mesh(), "contracting"));
   mutate_and_judge("knitted-on edging with markers",
                    compile_stitch_mesh(testing::edging_mesh(6, 4), "edging"));
+}
+
+TEST(HandMutations, DecreasesAcrossAGapRejectEveryEditThatChangesTheFabric) {
+  mutate_and_judge("heel turn (decreases across a gap)",
+                   compile_knit_graph(testing::heel_turn_graph(), "heel turn"));
+  mutate_and_judge("folded tube (three-needle bind-off of a rnd)",
+                   compile_knit_graph(testing::folded_tube_graph(), "folded tube"));
 }
 
 TEST(HandMutations, JoinsRejectEveryEditThatChangesTheFabric) {
