@@ -252,6 +252,24 @@ TEST(HandGaps, AChainIsPlacedIntoTheRndLikeASpareNeedle) {
             "p.md:6: Place the sts of Piece 1: the pattern says 4 sts, but its chain holds 3");
 }
 
+// After a band across a gap removed the beginning-of-round marker, sts are placed counting
+// from where the next rnd starts (it places the new marker).
+TEST(HandGaps, AfterTheMarkerWasRemovedStsArePlacedFromWhereTheRndStarts) {
+  auto pattern = [](int after) {
+    return fmt::format(
+        "Cast on 4 sts. Pm and join to work in the rnd, being careful not to twist.\nRnd 1: "
+        "Knit.\nLeave the 4 sts on a spare needle and cut the yarn.\nCast on 6 sts. Pm and "
+        "join to work in the rnd, being careful not to twist.\nRnd 1: Knit.\nRow 2 (RS): Rm, "
+        "k1, k2tog, turn — 5 sts.\nRow 3 (WS): Sl1 back, [p2tog] 2 times, turn — 3 "
+        "sts.\nPlace the 4 sts of Piece 1 on the needle after the first {} sts of the rnd, the "
+        "first st of its last rnd first — 7 sts.\nRnd 4: Pm, k to end.\nRnd 5: BO all "
+        "sts.\nFasten off.\n",
+        after);
+  };
+  EXPECT_EQ(failure_of(pattern(2)), "");
+  EXPECT_EQ(failure_of(pattern(4)), "p.md:8: Place the sts of Piece 1: the rnd has only 3 sts");
+}
+
 // A piece worked in the rnd is placed from the st the rnd works first: round its spare needle
 // from that st.
 TEST(HandGaps, APieceIsPlacedFromTheStItsRndWorksFirst) {

@@ -81,7 +81,8 @@ TEST(Join, OwnYarnOfEitherSideNeedsNoExtraRow) {
 }
 
 // An extruded row runs along its group's edges as a knitter meets them: each stitch's edge
-// touches the next one's, also where the rnd beside a join starts in its middle (letter H).
+// touches the next one's, also where the rnd beside a join starts in its middle (letter H),
+// and every stitch has the same side first.
 TEST(Join, TheExtrudedRowFollowsTheChainOfEdges) {
   for (const char* sample : {"letter-h", "three-bars", "two-bars", "teapot"}) {
     std::string file = fmt::format("{}/samples/{}/{}.yaml", SKEIN_SOURCE_DIR, sample, sample);
@@ -95,6 +96,21 @@ TEST(Join, TheExtrudedRowFollowsTheChainOfEdges) {
       const MismatchEdge& b = g.mismatch_edges[g.extruded_at[next - g.first_extruded]];
       bool touch = std::ranges::find_first_of(a.vertex, b.vertex) != std::end(a.vertex);
       EXPECT_TRUE(touch) << sample << ": " << g.describe(s) << " then " << g.describe(next);
+      auto side_rows = [&](StitchId t) {  // the rows of its slot 0 and 1 loops' other stitch
+        bool join = g.type[t] == StitchType::tnbo;
+        auto loops = join ? g.loops_taken_by(t) : g.loops_made_by(t);
+        auto row = [&](std::uint32_t l) {
+          StitchId other = join ? g.loops[l].maker : g.loops[l].taker;
+          return other == kNoStitch ? ~0u : g.row[other];
+        };
+        return std::pair{row(loops[0]), row(loops[1])};
+      };
+      auto [a0, a1] = side_rows(s);
+      auto [b0, b1] = side_rows(next);
+      if (a0 != a1 && b0 != b1) {
+        EXPECT_EQ(a0, b0) << sample << ": " << g.describe(next)
+                          << " takes the other side first (one needle in front for all)";
+      }
       ++steps;
     }
     EXPECT_GT(steps, 5u) << sample;

@@ -126,16 +126,39 @@ class MismatchTransform {
     return next;
   }
 
+  // Which edges of a chain run against its first one: their loops are recorded from the other
+  // side of the edge, and the extruded stitch must take them the other way round so that every
+  // stitch of the row has the same side first (one needle in front of a three-needle bind-off).
+  std::vector<std::uint8_t> flipped_along_chain(const std::vector<std::uint32_t>& edges) const {
+    std::vector<std::uint8_t> flipped(edges.size(), 0);
+    auto vertex = [&](std::size_t i, int k) { return g_.mismatch_edges[edges[i]].vertex[k]; };
+    auto tail_shared = [&](std::size_t i, std::size_t j) {  // edge i's tail is on edge j
+      return vertex(i, 0) == vertex(j, 0) || vertex(i, 0) == vertex(j, 1);
+    };
+    auto touch = [&](std::size_t i, std::size_t j) {
+      return tail_shared(i, j) || vertex(i, 1) == vertex(j, 0) || vertex(i, 1) == vertex(j, 1);
+    };
+    for (std::size_t i = 1; i < edges.size(); ++i)
+      if (!touch(i, i - 1)) return std::vector<std::uint8_t>(edges.size(), 0);
+    if (edges.size() < 2) return flipped;
+    bool first_forward = !tail_shared(0, 1);
+    for (std::size_t i = 1; i < edges.size(); ++i)
+      flipped[i] = tail_shared(i, i - 1) != first_forward;
+    return flipped;
+  }
+
   // One extruded stitch per edge, on a new row and a new yarn piece along the group.
   void extrude(const std::vector<std::uint32_t>& edges, StitchType type) {
     std::uint32_t row = static_cast<std::uint32_t>(g_.row_shape.size());
     g_.row_shape.push_back(RowShape::open);
     StitchId previous = kNoStitch;
-    for (std::uint32_t e : edges) {
+    std::vector<std::uint8_t> flipped = flipped_along_chain(edges);
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+      std::uint32_t e = edges[i];
       StitchId t = g_.add_stitch(type, row, e, kExtruded | kBesideMismatch);
       g_.extruded_at.push_back(e);
       for (std::uint8_t side = 0; side < 2; ++side) {
-        Loop& l = g_.loops[g_.mismatch_edges[e].loop[side]];
+        Loop& l = g_.loops[g_.mismatch_edges[e].loop[side ^ flipped[i]]];
         if (type == StitchType::tnbo)
           l.taker = t, l.taker_slot = side;
         else

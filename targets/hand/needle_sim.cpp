@@ -319,9 +319,10 @@ class NeedleSimulator {
   }
 
   // The sts of a spare needle join the rnd of the piece being worked, after the first `last`
-  // sts from the beginning of the rnd.
+  // sts from the beginning of the rnd (or, when a row across a gap removed its marker, from
+  // where the next rnd starts).
   void place(const Step& s) {
-    if (!active_ || !pc_.joined || pc_.bor == kNone)
+    if (!active_ || !pc_.joined)
       fail(fmt::format("Place the sts of Piece {}: only into a piece worked in the rnd", s.number));
     std::vector<std::uint32_t> placed =
         s.holder[0] ? held(s.number, s.from_last[0], "Place the sts")
@@ -368,7 +369,8 @@ class NeedleSimulator {
   // still to come puts them on the right.
   void lay_out_from_bor(const std::vector<std::uint32_t>& ring) {
     std::vector<std::uint32_t>& needle = pc_.turn_before ? pc_.left : pc_.right;
-    needle.assign(1, pc_.bor);
+    needle.clear();
+    if (pc_.bor != kNone) needle.push_back(pc_.bor);
     needle.insert(needle.end(), ring.begin(), ring.end());
     (pc_.turn_before ? pc_.right : pc_.left).clear();
   }

@@ -346,6 +346,12 @@ class PatternBuilder {
   // run starts beside its tip, across the fold.
   void fold_needle(PatternSection& join, std::uint32_t holder) {
     const PatternSection& h = out_.sections[holder];
+    if (2 * row_.size() != h.live_at_end)
+      unsupported(fmt::format(
+          "{} binds off {} pairs from the needle of Piece {}, which holds {} sts: a "
+          "three-needle bind-off of a fold together with sts waiting elsewhere (on a holder) "
+          "is not covered yet",
+          g_.describe(row_.front()), row_.size(), h.piece, h.live_at_end));
     std::vector<StitchId> run[2];
     for (StitchId s : row_)
       for (std::uint32_t side : {0u, 1u})
