@@ -419,7 +419,7 @@ class NeedleSimulator {
     for (std::uint32_t n = s.number; n <= s.last; ++n) {
       if (pc_.defined.size() <= n) pc_.defined.resize(n + 1, kNone);
       pc_.defined[n] = s.program;
-      work_row(script_.programs[s.program], s.round, 0, n == s.number ? s.side : std::nullopt,
+      work_row(script_.programs[s.program], s.round, 0, n == s.number ? label_of(s) : std::nullopt,
                s.line);
     }
     check_count(s);
@@ -467,23 +467,32 @@ class NeedleSimulator {
           pc_.live == 1 ? "1 st is" : fmt::format("{} sts are", pc_.live))};
   }
 
+  // The side a written row says faces the knitter. A rnd without (WS) is worked with the RS
+  // facing; a flat row without a side follows from the turns.
+  static std::optional<Side> label_of(const Step& s) {
+    return s.round ? s.side.value_or(Side::rs) : s.side;
+  }
+
   // A row turns the work first when the one before ended at a turn (every flat row does);
-  // after a rnd, or a row that did not turn, the work goes on in the same direction.
-  Side facing_of(bool round, std::optional<Side> label) const {
-    if (!pc_.last_side) return round ? Side::rs : label.value_or(Side::rs);
+  // after a rnd, or a row that did not turn, the work goes on in the same direction. The first
+  // row of a piece says which side faces (a rnd (WS): the tube is worked inside out).
+  Side facing_of(std::optional<Side> label) const {
+    if (!pc_.last_side) return label.value_or(Side::rs);
     return pc_.turn_before ? other(*pc_.last_side) : *pc_.last_side;
   }
 
   void work_row(const Program& p, bool round, std::uint32_t repeat_of, std::optional<Side> label,
                 std::size_t line) {
-    Side facing = facing_of(round, label);
+    Side facing = facing_of(label);
     fab().rows.push_back({line, pc_.next_number, repeat_of, round, facing});
     row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
     in_row_ = true;
     row_round_ = round;
-    if (round && facing != Side::rs)
-      fail("the WS faces you (the work was turned): rnds are worked with the RS facing");
-    if (label && !round && *label != facing)
+    if (round && label == Side::rs && facing == Side::ws)
+      fail(
+          "the WS faces you (the work was turned): a rnd worked with the WS facing is "
+          "labelled (WS)");
+    if (label && *label != facing)
       fail(fmt::format("labelled {}, but the {} faces you: {}", side_name(*label),
                        side_name(facing),
                        !pc_.joined       ? "every row turns the work"

@@ -91,8 +91,16 @@ class InstructionWriter {
     if (sec.picks_up) return pick_up_text(*sec.picks_up, sec.cast_on);
     std::string text = fmt::format("Cast on {}{}.", sts(sec.cast_on),
                                    sec.provisional ? " with a provisional cast-on" : "");
-    if (sec.in_round) text += " Pm and join to work in the rnd, being careful not to twist.";
+    if (sec.in_round)
+      text +=
+          fmt::format(" Pm and join to work in the rnd{}, being careful not to twist.",
+                      starts_inside_out(sec) ? " with the WS facing (the tube inside out)" : "");
     return text;
+  }
+
+  bool starts_inside_out(const PatternSection& sec) const {
+    return sec.first_row < sec.end_row && p_.rows[sec.first_row].round &&
+           p_.rows[sec.first_row].side == Side::ws;
   }
 
   std::string three_needle_text(const PatternSection& sec) const {
@@ -160,7 +168,7 @@ class InstructionWriter {
 
   std::string label(const PatternRow& r) const {
     std::string word = rows_word(r.round, false);
-    if (r.round) return fmt::format("{} {}", word, r.number);
+    if (r.round && r.side == Side::rs) return fmt::format("{} {}", word, r.number);
     return fmt::format("{} {} ({})", word, r.number, side_name(r.side));
   }
 
@@ -195,8 +203,9 @@ class InstructionWriter {
       auto [period, times] = best_block(i, end);
       std::uint32_t last = i + period * times - 1;
       const PatternRow& r = p_.rows[i];
-      // The first flat row of a piece keeps its label: it says which side is the RS.
-      bool sided = !r.round && i == first;
+      // The first row of a piece keeps its label: it says which side is the RS (a rnd worked
+      // with the WS facing says WS).
+      bool sided = (!r.round || r.side == Side::ws) && i == first;
       if (times > 1 && period == 1 && (texts_[i] == "Knit" || texts_[i] == "Purl") &&
           !knitspeak() && !sided) {
         add(InstructionLine::Kind::repeat, "", work_even_text(r, p_.rows[last], first, i));
@@ -444,6 +453,12 @@ class FrontMatter {
           "with the cast-on edge untwisted, place the BOR marker and knit the first "
           "cast-on stitch with the working yarn. The marker then sits at the start of "
           "every round: slip it as you come to it.");
+    if (p_.ws_rounds)
+      items.push_back(
+          "**Rounds worked with the WS facing** (\"Rnd 30 (WS)\"): the tube is worked inside "
+          "out, around in the usual direction with the WS facing you (the wrong side of the "
+          "piece shows outside); a st that shows as a knit on the RS is purled. When such rnds "
+          "follow rows that end with the WS facing, go on around without turning.");
     if (p_.short_rows) items.push_back(short_rows_technique());
     if (t_.provisional)
       items.push_back(

@@ -119,27 +119,27 @@ class Handedness {
   std::vector<std::uint8_t> first_lr_;  // per piece
 };
 
-// Hand knitting works every round right to left with the RS facing. When the model's rounds
-// run the other way, the pattern knits the mirror image.
-bool needs_mirror(const Compilation& c, const Handedness& hand) {
+// Hand knitting works every round right to left with the side facing the knitter. When most
+// of the model's rounds run the other way seen from the RS, the pattern knits the mirror image;
+// the rounds that still run left to right are worked with the WS facing.
+bool needs_mirror(const Compilation& c, const Handedness& hand, Rounds rounds) {
+  if (rounds == Rounds::ws_facing) return false;
   const KnitGraph& g = c.knit;
-  std::int8_t mirror = -1;
+  std::uint64_t left_to_right = 0, closed = 0;
   for (StitchId s = 0; s < g.size(); ++s) {
     if (g.row_shape[g.row[s]] != RowShape::closed) continue;
-    std::int8_t lr = hand.left_to_right(s) ? 1 : 0;
-    if (mirror >= 0 && mirror != lr)
-      unsupported(fmt::format("the rounds of {} run both ways seen from the RS (see {})",
-                              g.source_name, g.describe(s)));
-    mirror = lr;
+    ++closed;
+    left_to_right += hand.left_to_right(s);
   }
-  return mirror == 1;
+  return 2 * left_to_right > closed;
 }
 
 class PatternBuilder {
  public:
-  PatternBuilder(const Compilation& c, TurnMethod turns) : c_(c), g_(c.knit), hand_(c) {
+  PatternBuilder(const Compilation& c, TurnMethod turns, Rounds rounds)
+      : c_(c), g_(c.knit), hand_(c) {
     out_.source = c.input;
-    out_.mirror = needs_mirror(c, hand_);
+    out_.mirror = needs_mirror(c, hand_, rounds);
     out_.turns = turns;
   }
 
@@ -385,6 +385,7 @@ class PatternBuilder {
     r.number =
         static_cast<std::uint32_t>(out_.rows.size()) - section().first_row + section().first_number;
     r.side = (hand_.left_to_right(row_.front()) != out_.mirror) ? Side::ws : Side::rs;
+    out_.ws_rounds = out_.ws_rounds || (r.round && r.side == Side::ws);
     r.first_op = static_cast<std::uint32_t>(out_.ops.size());
     r.sts_before = st_.live;
     r.bind_off =
@@ -592,9 +593,9 @@ class PatternBuilder {
 
 }  // namespace
 
-HandPattern build_hand_pattern(const Compilation& c, TurnMethod turns) {
+HandPattern build_hand_pattern(const Compilation& c, TurnMethod turns, Rounds rounds) {
   check_supported(c);
-  HandPattern pattern = PatternBuilder(c, turns).run();
+  HandPattern pattern = PatternBuilder(c, turns, rounds).run();
   place_section_markers(pattern);
   return pattern;
 }
