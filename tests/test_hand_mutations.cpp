@@ -346,6 +346,26 @@ TEST(HandMutations, WrapAndTurnShortRowsRejectEveryEditThatChangesTheFabric) {
   }
 }
 
+// Rounds that run left to right worked with the WS facing (the tube inside out), not mirrored.
+TEST(HandMutations, RndsWorkedWithTheWSFacingRejectEveryEditThatChangesTheFabric) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  auto inside_out = [](const Compilation& c) {
+    std::ostringstream out;
+    hand::write_markdown(hand::make_document(hand::build_hand_pattern(c, hand::TurnMethod::german,
+                                                                      hand::Rounds::ws_facing)),
+                         out);
+    return out.str();
+  };
+  Compilation hat = compile_model("samples/hat/hat.obj");
+  mutate_and_judge("hat (rnds with the WS facing)", hat, inside_out(hat));
+  RandomShaping shaping;
+  shaping.purl = 0.3;
+  shaping.increase = shaping.decrease = 0.1;
+  Compilation tube =
+      compile_stitch_mesh(build_from_rows(random_rows(14, 6, shaping, 3), Layout::tube), "tube");
+  mutate_and_judge("random tube (rnds with the WS facing)", tube, inside_out(tube));
+}
+
 TEST(HandMutations, SectionMarkerPatternsRejectEveryEditThatChangesTheFabric) {
   mutate_and_judge(
       "crown with section markers",
