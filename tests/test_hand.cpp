@@ -114,6 +114,11 @@ TEST(HandTarget, SamplesNotCoveredYetNameWhatStopsThem) {
       {"samples/letter-h/letter-h.yaml", "from the needle of Piece 1 itself"},
       {"samples/three-bars/three-bars.yaml",
        "(Piece 3) in the middle of the work, where its sts were not placed on the needle"},
+      {"samples/three-bars-own/three-bars-own.yaml",
+       "face 640 (3nbo, row 24) is a three-needle bind-off in the middle of the work"},
+      {"samples/teapot/teapot.yaml",
+       "yarn 2 starts with face 1321 (k, row 25), neither with a cast-on nor on the sts of a "
+       "cast-on along a split"},
   };
   for (const auto& [sample, named] : cases) {
     std::string error = emit_error(compile_model(sample));
