@@ -35,6 +35,11 @@ StitchMesh join_mesh(MismatchYarn::Kind yarn = MismatchYarn::Kind::by_default,
                      bool own_upper = false);
 StitchMesh split_mesh(MismatchYarn::Kind yarn = MismatchYarn::Kind::by_default,
                       bool own_upper = false);
+// A split in the middle of a row, worked with the upper piece's own yarn: a sheet 5 sts wide
+// binds off its middle 3 sts (Row 1) and casts them on again provisionally in Row 2 (the
+// opening of a pocket); a second piece hangs from the cast-on's chain, 2 rows knit downwards.
+// With `rs_row`, a plain row comes first, so that the cast-on is worked in the other direction.
+StitchMesh mid_row_split_mesh(bool rs_row = false);
 StitchMesh contracting_mesh();
 StitchMesh expanding_mesh();
 

@@ -388,6 +388,12 @@ TEST(HandMutations, SplitsRejectEveryEditThatChangesTheFabric) {
                           "split sheets"));
 }
 
+TEST(HandMutations, ProvisionalCastOnsInARowRejectEveryEditThatChangesTheFabric) {
+  for (bool rs_row : {false, true})
+    mutate_and_judge(rs_row ? "cast-on in a RS row" : "cast-on in a WS row",
+                     compile_stitch_mesh(testing::mid_row_split_mesh(rs_row), "mid-row split"));
+}
+
 TEST(HandMutations, PickUpsRejectEveryEditThatChangesTheFabric) {
   mutate_and_judge("expanding fixture (pick-up)",
                    compile_stitch_mesh(testing::expanding_mesh(), "expanding"));

@@ -155,13 +155,29 @@ class NeedleSimulator {
     fab().rows.push_back({0, 0, 0, false, Side::rs});
     row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
     facing_ = provisional ? Side::ws : Side::rs;  // the needle's loop first, seen from the RS
-    for (std::uint32_t i = 0; i < n; ++i) {
-      std::uint32_t x = new_stitch(provisional ? StitchType::sco : StitchType::co);
-      fab().taken_first.push_back(static_cast<std::uint32_t>(fab().taken.size()));
-      pc_.right.push_back(new_loop(x));
-      if (provisional) spare_needles_[{pc_.number, kChain}].push_back(new_loop(x));
-    }
+    for (std::uint32_t i = 0; i < n; ++i) cast_on_st(provisional);
     pc_.live = n;
+  }
+
+  // One st cast on onto the right needle; a provisional one also makes the loop of its
+  // waste-yarn chain, which waits on a spare needle for the other side of the split.
+  void cast_on_st(bool provisional) {
+    std::uint32_t x = new_stitch(provisional ? StitchType::sco : StitchType::co);
+    fab().taken_first.push_back(static_cast<std::uint32_t>(fab().taken.size()));
+    pc_.right.push_back(new_loop(x));
+    if (provisional) spare_needles_[{pc_.number, kChain}].push_back(new_loop(x));
+  }
+
+  // "CO 3 sts with a provisional cast-on" in the middle of a row: as a provisional cast-on of
+  // its own, the needle's loop first seen from the RS; the chain joins the piece's chain.
+  void provisional_cast_on_in_row() {
+    Side facing = facing_;
+    facing_ = Side::ws;
+    cast_on_st(true);
+    facing_ = facing;
+    ++pc_.live;
+    row_last_stitch_ = pc_.last_stitch;
+    last_make_.reset();
   }
 
   // A new piece worked from loops picked up along an edge of a finished piece, one in each
@@ -721,6 +737,9 @@ class NeedleSimulator {
       case HandOp::from_spare:
       case HandOp::from_spare_behind:
         slip_from_spare(op == HandOp::from_spare_behind);
+        return;
+      case HandOp::provisional_co:
+        provisional_cast_on_in_row();
         return;
       case HandOp::pm:
         pc_.right.push_back(new_marker());

@@ -148,7 +148,7 @@ class InstructionWriter {
   std::string join_spare_text(const PatternSection::Start& start) const {
     const PatternSection& spare = p_.sections[start.section];
     return fmt::format("Join a new yarn to the {} {} of Piece {}{}, the {} st cast on at the tip.",
-                       spare.cast_on, start.chain ? "loops" : "sts", spare.piece,
+                       start.count, start.chain ? "loops" : "sts", spare.piece,
                        start.chain ? "'s chain" : "", start.from_last ? "last" : "first");
   }
 
@@ -288,7 +288,7 @@ Totals totals_of(const HandPattern& p) {
   for (const PatternSection& s : p.sections) {
     t.joins = t.joins || s.joins;
     t.spare_needles = t.spare_needles || s.left_live || s.provisional;
-    t.provisional = t.provisional || s.provisional;
+    t.provisional = t.provisional || s.provisional || s.row_chain > 0;
     t.picks_up = t.picks_up || s.picks_up.has_value();
     if (s.joins) continue;
     (s.in_round ? t.round : t.flat) = true;
@@ -466,7 +466,9 @@ class FrontMatter {
           "few sts longer than needed; with the working yarn pick up and knit 1 st through the "
           "back bump of each chain st. The sts on the needle are one side of the split; where "
           "the pattern works \"the loops of its chain\", unzip the waste yarn and put the live "
-          "loops on a needle: they are the other side.");
+          "loops on a needle: they are the other side. In the middle of a row (\"CO 3 sts with "
+          "a provisional cast-on\") pick up and knit the sts through the chain onto the right "
+          "needle and go on with the row.");
     if (t_.picks_up)
       items.push_back(
           "**Picking up along an edge:** with the RS facing and a new yarn, put the outer loop "

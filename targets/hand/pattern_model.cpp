@@ -338,9 +338,29 @@ class PatternBuilder {
                       section().yarn + 1, g_.describe(row_.front())));
     std::uint32_t from = section_of_yarn_[c_.yarns.piece_of[first.maker]];
     const PatternSection& spare = out_.sections[from];
-    section().starts_from =
-        PatternSection::Start{from, first.maker_slot == 1, first.maker == spare.last_row_ends[1]};
-    st_.live = st_.ahead = spare.cast_on;
+    bool chain = first.maker_slot == 1;
+    bool in_row = chain && !spare.provisional;  // the chain of a cast-on in one of its rows
+    std::uint32_t count = in_row ? spare.row_chain : spare.cast_on;
+    StitchId last = in_row ? spare.row_chain_ends[1] : spare.last_row_ends[1];
+    section().starts_from = PatternSection::Start{from, chain, first.maker == last, count};
+    st_.live = st_.ahead = count;
+  }
+
+  // A provisional cast-on in the middle of a row: the st goes on the needle, the loop of its
+  // chain waits for the piece on the other side of the split.
+  void cast_on_in_row(StitchId s) {
+    PatternSection& sec = section();
+    bool next_to_last = !out_.ops.empty() && out_.ops.back() == HandOp::provisional_co &&
+                        sec.row_chain > 0 && g_.yarn_next[sec.row_chain_ends[1]] == s;
+    if (sec.provisional || (sec.row_chain > 0 && !next_to_last))
+      unsupported(
+          fmt::format("{} is a second provisional cast-on of yarn {}, which is not "
+                      "covered yet (one chain per piece)",
+                      g_.describe(s), sec.yarn + 1));
+    if (sec.row_chain == 0) sec.row_chain_ends[0] = s;
+    sec.row_chain_ends[1] = s;
+    ++sec.row_chain;
+    out_.ops.push_back(HandOp::provisional_co);
   }
 
   // The first and last st of the row that stay live (not bound off): the ends a spare needle
@@ -426,13 +446,15 @@ class PatternBuilder {
   // ends at the edge when none is ahead). A wrapped st goes back to the left needle.
   void move_loops(StitchId s) {
     const StitchTypeInfo& t = info(g_.type[s]);
-    st_.live = st_.live + t.loops_out - t.loops_in;
+    // A provisional cast-on's chain loop is not on the needle.
+    std::uint32_t out = g_.type[s] == T::sco ? 1 : t.loops_out;
+    st_.live = st_.live + out - t.loops_in;
     if (section().in_round || (g_.type[s] == T::sr4 && out_.turns == TurnMethod::wrap_and_turn))
       return;
     if (st_.ahead < t.loops_in)
       unsupported(fmt::format("{} works past the end of the needle", g_.describe(s)));
     st_.ahead -= t.loops_in;
-    st_.behind += t.loops_out;
+    st_.behind += out;
   }
 
   void slip_double_stitch() {
@@ -545,8 +567,9 @@ class PatternBuilder {
                         g_.describe(s), g_.describe(g_.loops[l].maker)));
     bool first_row = out_.rows.size() == section().first_row;
     if (!(section().picks_up && first_row)) slip_from_spare_needle(s, r);
+    if (type == T::sco) return cast_on_in_row(s);
     // A cast-on (or a three-needle bind-off) between worked sts of one row.
-    if (type == T::co || type == T::sco || type == T::tnbo)
+    if (type == T::co || type == T::tnbo)
       unsupported(fmt::format("{} is a {} in the middle of the work, which is not covered yet",
                               g_.describe(s), info(type).name));
     refuse_loop_of_a_piece_not_placed(s);

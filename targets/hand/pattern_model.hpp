@@ -66,7 +66,12 @@ struct PatternSection {
   struct Start {
     std::uint32_t section;
     bool chain, from_last;
+    std::uint32_t count;
   };
+  // A provisional cast-on in the middle of one of its rows ("CO 3 sts with a provisional
+  // cast-on"): how many sts, and the model stitches cast on first and last (its chain's ends).
+  std::uint32_t row_chain = 0;
+  std::uint32_t row_chain_ends[2] = {0, 0};
   std::optional<Start> starts_from;
   // A piece that starts on loops picked up along the right (or left) edge of another, one in
   // each of its rows from `from_row` to `to_row` (0: the cast-on).

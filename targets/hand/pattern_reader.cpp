@@ -522,6 +522,7 @@ class SentenceReader {
     }
     std::string_view w = c.word();
     if (starts_with_ci(w, "bo") && w.size() == 2) return bind_off(c);
+    if (starts_with_ci(w, "co") && w.size() == 2) return provisional_cast_on(c);
     if ((w.size() == 4 && (starts_with_ci(w, "knit") || starts_with_ci(w, "purl")))) {
       n.op = lower(w[0]) == 'k' ? HandOp::k : HandOp::p;
       n.until.kind = Until::Kind::end;
@@ -562,6 +563,16 @@ class SentenceReader {
     c.eat("rem");
     n.times = need_number(c, "how many sts to bind off");
     need(c.eat_any({"sts", "st"}), c, "'sts' after the number");
+    return n;
+  }
+
+  // "CO 3 sts with a provisional cast-on": onto the right needle, in the middle of a row.
+  Node provisional_cast_on(Cursor& c) {
+    Node n;
+    n.op = HandOp::provisional_co;
+    n.times = need_number(c, "how many sts to cast on");
+    need(c.eat_any({"sts", "st"}), c, "'sts' after the number");
+    need_words(c, {"with", "a", "provisional", "cast-on"}, "'with a provisional cast-on'");
     return n;
   }
 
