@@ -117,8 +117,8 @@ TEST(HandTarget, SamplesNotCoveredYetNameWhatStopsThem) {
       {"samples/three-bars-own/three-bars-own.yaml",
        "face 640 (3nbo, row 24) is a three-needle bind-off in the middle of the work"},
       {"samples/teapot/teapot.yaml",
-       "yarn 2 starts with face 1321 (k, row 25), neither with a cast-on nor on the sts of a "
-       "cast-on along a split"},
+       "yarn 2 starts with face 1321 (k, row 25) on the sts of Piece 1 (the first: face 246 (k, "
+       "row 9)) that it leaves on its needle; putting them on a holder"},
   };
   for (const auto& [sample, named] : cases) {
     std::string error = emit_error(compile_model(sample));

@@ -331,7 +331,8 @@ class PatternBuilder {
   // One side of a split: the loops wait on a spare needle (or on the provisional cast-on's
   // chain: the loops' second slot).
   void start_from_spare_needle(const Loop& first) {
-    if (first.maker == kNoStitch || g_.type[first.maker] != T::sco)
+    if (first.maker != kNoStitch && g_.type[first.maker] != T::sco) refuse_start_on_live_sts(first);
+    if (first.maker == kNoStitch)
       unsupported(
           fmt::format("yarn {} starts with {}, neither with a cast-on nor on the sts of a "
                       "cast-on along a split",
@@ -344,6 +345,16 @@ class PatternBuilder {
     StitchId last = in_row ? spare.row_chain_ends[1] : spare.last_row_ends[1];
     section().starts_from = PatternSection::Start{from, chain, first.maker == last, count};
     st_.live = st_.ahead = count;
+  }
+
+  // A new yarn that starts on sts another piece worked and left on its needle (a body whose
+  // sts are shared out between pieces) would need them put on a holder first.
+  [[noreturn]] void refuse_start_on_live_sts(const Loop& first) const {
+    unsupported(fmt::format(
+        "yarn {} starts with {} on the sts of Piece {} (the first: {}) that it leaves on its "
+        "needle; putting them on a holder to join a new yarn to them is not covered yet",
+        out_.sections.back().yarn + 1, g_.describe(row_.front()),
+        out_.sections[section_of(first.maker)].piece, g_.describe(first.maker)));
   }
 
   // A provisional cast-on in the middle of a row: the st goes on the needle, the loop of its
