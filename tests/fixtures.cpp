@@ -1,6 +1,7 @@
 #include "fixtures.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "common/error.hpp"
 #include "mesh/generate.hpp"
@@ -113,6 +114,39 @@ StitchMesh mid_row_split_mesh(bool rs_row) {
     Vec3 c = mesh.position[mesh.head(mesh.halfedge(e))];
     if (a.y != y + 2 || c.y != y + 2 || std::min(a.x, c.x) < 1 || std::max(a.x, c.x) > 4) continue;
     auto above = static_cast<std::uint32_t>(split_row + std::min(a.x, c.x));
+    mesh.mismatch_yarn[e] = {MismatchYarn::Kind::own, Face(above)};
+  }
+  return mesh;
+}
+
+StitchMesh mid_round_split_mesh() {
+  using T = StitchType;
+  CornerBuilder b("<mid-round split>");
+  auto around = [&](float x, float y, float width, T type) {  // x = width is x = 0 again
+    auto at = [&](float u) { return u >= width ? u - width : u; };
+    b.face({{at(x), y}, {at(x + 1), y}, {at(x + 1), y + 1}, {at(x), y + 1}}, "boti", type);
+  };
+  for (float x = 0; x < 6; ++x) around(x, 0, 6, T::co);
+  around(0, 1, 6, T::k);
+  b.face({{1, 1}, {2, 1}, {2, 1.8f}, {1, 2}}, "boti", T::bo);
+  b.face({{2, 1}, {3, 1}, {3, 1.8f}, {2, 1.8f}}, "boti", T::bo);
+  b.face({{3, 1}, {4, 1}, {4, 2}, {3, 1.8f}}, "boti", T::bo);
+  for (float x = 4; x < 6; ++x) around(x, 1, 6, T::k);
+  for (float x = 0; x < 6; ++x) around(x, 2, 6, T::k);  // faces 12-17
+  for (float x = 0; x < 4; ++x) around(x, 3, 6, T::k);
+  b.face({{4, 3}, {5, 3}, {0, 3}, {0, 4}, {4, 4}}, "bboti", T::k2tog);
+  for (float x = 0; x < 5; ++x) around(x, 4, 5, T::bo);
+  for (float x = 1; x < 4; ++x)
+    b.face({{x, 1.5f}, {x + 1, 1.5f}, {x + 1, 2}, {x, 2}}, "tibo", T::k);
+  for (float x = 1; x < 4; ++x)
+    b.face({{x, 1.2f}, {x + 1, 1.2f}, {x + 1, 1.5f}, {x, 1.5f}}, "tobi", T::bo);
+  StitchMesh mesh = std::move(b).build();
+  for (Edge e : mesh.edges()) {
+    Vec3 a = mesh.position[mesh.tail(mesh.halfedge(e))];
+    Vec3 c = mesh.position[mesh.head(mesh.halfedge(e))];
+    if (a.x == 0 && c.x == 0 && std::abs(a.y - c.y) == 1) mesh.shift_path[e] = 1;  // the seam
+    if (a.y != 2 || c.y != 2 || std::min(a.x, c.x) < 1 || std::max(a.x, c.x) > 4) continue;
+    auto above = static_cast<std::uint32_t>(12 + std::min(a.x, c.x));
     mesh.mismatch_yarn[e] = {MismatchYarn::Kind::own, Face(above)};
   }
   return mesh;

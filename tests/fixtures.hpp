@@ -40,6 +40,10 @@ StitchMesh split_mesh(MismatchYarn::Kind yarn = MismatchYarn::Kind::by_default,
 // opening of a pocket); a second piece hangs from the cast-on's chain, 2 rows knit downwards.
 // With `rs_row`, a plain row comes first, so that the cast-on is worked in the other direction.
 StitchMesh mid_row_split_mesh(bool rs_row = false);
+// The same in the round: a tube 6 sts around binds off 3 sts in Rnd 1, casts them on again
+// provisionally in Rnd 2 (an afterthought thumb's opening) and decreases across the seam in
+// Rnd 3 (a k2tog: its rnds run left to right); a second piece hangs from the chain.
+StitchMesh mid_round_split_mesh();
 StitchMesh contracting_mesh();
 StitchMesh expanding_mesh();
 

@@ -392,6 +392,8 @@ TEST(HandMutations, ProvisionalCastOnsInARowRejectEveryEditThatChangesTheFabric)
   for (bool rs_row : {false, true})
     mutate_and_judge(rs_row ? "cast-on in a RS row" : "cast-on in a WS row",
                      compile_stitch_mesh(testing::mid_row_split_mesh(rs_row), "mid-row split"));
+  mutate_and_judge("cast-on in a rnd (mirrored)",
+                   compile_stitch_mesh(testing::mid_round_split_mesh(), "mid-round split"));
 }
 
 TEST(HandMutations, PickUpsRejectEveryEditThatChangesTheFabric) {

@@ -3,10 +3,14 @@
 // on its chain; written, proven in every format, and the simulator's reasons for rejecting it.
 #include <gtest/gtest.h>
 
+#include <sstream>
 #include <string>
 
 #include "driver/pipeline.hpp"
 #include "fixtures.hpp"
+#include "hand/pattern_document.hpp"
+#include "hand/pattern_model.hpp"
+#include "hand/pattern_writers.hpp"
 #include "target_runner.hpp"
 
 namespace skein {
@@ -33,6 +37,31 @@ TEST(HandRowCastOn, AProvisionalCastOnInTheMiddleOfARowIsWrittenAndProven) {
                                  << pattern;
     }
   }
+}
+
+// In the round, mirrored (its rnds run left to right), and with those rnds worked with the WS
+// facing instead: the cast-on's needle and chain loops are not side by side, a mirror keeps
+// them.
+TEST(HandRowCastOn, AProvisionalCastOnInTheMiddleOfARndIsProvenMirroredAndInsideOut) {
+  Compilation c = compile_stitch_mesh(testing::mid_round_split_mesh(), "mid-round split");
+  std::string pattern = emit(c, "hand");
+  EXPECT_NE(pattern.find("**Rnd 2:** K1, CO 3 sts with a provisional cast-on, k2 "),
+            std::string::npos)
+      << pattern;
+  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
+    VerifyReport report = verify(c, target, emit(c, target));
+    EXPECT_TRUE(report.proven) << target << ": " << report.summary << "\n" << pattern;
+    EXPECT_NE(report.summary.find("mirror image"), std::string::npos) << report.summary;
+  }
+  std::ostringstream inside_out;
+  hand::write_markdown(hand::make_document(hand::build_hand_pattern(c, hand::TurnMethod::german,
+                                                                    hand::Rounds::ws_facing)),
+                       inside_out);
+  EXPECT_NE(inside_out.str().find("**Rnd 2 (WS):** P1, CO 3 sts with a provisional cast-on, p2 "),
+            std::string::npos)
+      << inside_out.str();
+  VerifyReport report = verify(c, "hand", inside_out.str());
+  EXPECT_TRUE(report.proven) << report.summary << "\n" << inside_out.str();
 }
 
 TEST(HandRowCastOn, ProvesAndRejectsHandWrittenOnes) {
