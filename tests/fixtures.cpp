@@ -152,6 +152,31 @@ StitchMesh mid_round_split_mesh() {
   return mesh;
 }
 
+StitchMesh mid_row_join_mesh() {
+  using T = StitchType;
+  CornerBuilder b("<mid-row join>");
+  for (float x = 0; x < 5; ++x) b.square(x, 0, "boti", T::co);
+  for (float x = 0; x < 5; ++x) b.square(x, 1, "bito", T::k);  // faces 5-9
+  for (float x = 0; x < 2; ++x) b.square(x, 2, "boti", T::k);
+  for (float x = 0; x < 2; ++x) b.square(x, 3, "bito", T::bo);
+  // The second piece, wales down to the join line; its side beside the first piece's last
+  // rows is moved off x = 2, so that they share no edge.
+  auto side = [](float x) { return x == 2 ? 2.1f : x; };
+  for (float x = 2; x < 5; ++x)
+    b.face({{x, 2}, {x + 1, 2}, {x + 1, 3}, {side(x), 3}}, "tibo", T::k);
+  for (float x = 2; x < 5; ++x)
+    b.face({{side(x), 3}, {x + 1, 3}, {x + 1, 4}, {side(x), 4}}, "tobi", T::co);
+  StitchMesh mesh = std::move(b).build();
+  for (Edge e : mesh.edges()) {
+    Vec3 a = mesh.position[mesh.tail(mesh.halfedge(e))];
+    Vec3 c = mesh.position[mesh.head(mesh.halfedge(e))];
+    if (a.y != 2 || c.y != 2 || std::min(a.x, c.x) < 2) continue;
+    mesh.mismatch_yarn[e] = {MismatchYarn::Kind::own,
+                             Face(static_cast<std::uint32_t>(5 + std::min(a.x, c.x)))};
+  }
+  return mesh;
+}
+
 // A column knit upwards (x0), and beside it two cast-on stitches whose wales point left, at
 // the column: their loops are consumed through the column's wale edges.
 StitchMesh contracting_mesh() {

@@ -44,6 +44,10 @@ StitchMesh mid_row_split_mesh(bool rs_row = false);
 // provisionally in Rnd 2 (an afterthought thumb's opening) and decreases across the seam in
 // Rnd 3 (a k2tog: its rnds run left to right); a second piece hangs from the chain.
 StitchMesh mid_round_split_mesh();
+// A three-needle bind-off in the middle of a row, with the lower piece's own yarn: a sheet 5
+// sts wide binds off 3 of its sts in Row 1 with the 3 of a second piece (wales down, knit first
+// and left on a spare needle), and goes on with the other 2.
+StitchMesh mid_row_join_mesh();
 StitchMesh contracting_mesh();
 StitchMesh expanding_mesh();
 

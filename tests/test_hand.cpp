@@ -115,7 +115,8 @@ TEST(HandTarget, SamplesNotCoveredYetNameWhatStopsThem) {
       {"samples/three-bars/three-bars.yaml",
        "(Piece 3) in the middle of the work, where its sts were not placed on the needle"},
       {"samples/three-bars-own/three-bars-own.yaml",
-       "face 640 (3nbo, row 24) is a three-needle bind-off in the middle of the work"},
+       "Rnd 23 of Piece 1 binds off 9 of the 36 sts of Piece 2 (set aside with its yarn) with a "
+       "three-needle bind-off from face 640 (3nbo, row 24) on"},
       {"samples/teapot/teapot.yaml",
        "yarn 2 starts with face 1321 (k, row 25) on the sts of Piece 1 (the first: face 246 (k, "
        "row 9)) that it leaves on its needle; putting them on a holder"},

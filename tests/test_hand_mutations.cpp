@@ -396,6 +396,11 @@ TEST(HandMutations, ProvisionalCastOnsInARowRejectEveryEditThatChangesTheFabric)
                    compile_stitch_mesh(testing::mid_round_split_mesh(), "mid-round split"));
 }
 
+TEST(HandMutations, ThreeNeedleBindOffsInARowRejectEveryEditThatChangesTheFabric) {
+  mutate_and_judge("three-needle bind-off in a row",
+                   compile_stitch_mesh(testing::mid_row_join_mesh(), "mid-row join"));
+}
+
 TEST(HandMutations, PickUpsRejectEveryEditThatChangesTheFabric) {
   mutate_and_judge("expanding fixture (pick-up)",
                    compile_stitch_mesh(testing::expanding_mesh(), "expanding"));

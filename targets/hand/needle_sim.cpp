@@ -140,6 +140,9 @@ class NeedleSimulator {
       case Step::Kind::three_needle_bind_off:
         three_needle_bind_off(s);
         break;
+      case Step::Kind::hold_behind:
+        hold_behind(s);
+        break;
     }
   }
 
@@ -386,6 +389,18 @@ class NeedleSimulator {
   }
 
   // The sts from the needle tip: the first or the last st of the piece's last row.
+  // A spare needle held behind the work for "3-needle BO" in the rows that follow, from the
+  // end the sentence names.
+  void hold_behind(const Step& s) {
+    if (!active_) fail(fmt::format("Hold the sts of Piece {}: no piece is being worked", s.number));
+    std::vector<std::uint32_t> held = spare_needle(s.number, s.from_last[0], "Hold the sts");
+    if (held.size() != s.count)
+      fail(fmt::format("Hold the sts of Piece {}: the pattern says {}, but its needle holds {}",
+                       s.number, sts(s.count), held.size()));
+    held_behind_.insert(held_behind_.end(), held.begin(), held.end());
+    spare_needles_.erase({s.number, kNeedle});
+  }
+
   std::vector<std::uint32_t> spare_needle(std::uint32_t piece, bool from_last, const char* what,
                                           bool chain = false) const {
     auto at = spare_needles_.find({piece, chain ? kChain : kNeedle});
@@ -587,6 +602,9 @@ class NeedleSimulator {
     if (!row_ended_ && !pc_.left.empty())
       fail(fmt::format("a marker is left at the end of the {}: slip it (sm) or remove it (rm)",
                        what));
+    if (!held_behind_.empty())
+      fail(fmt::format("{} held behind the needle left unworked at the end of the {}",
+                       sts(static_cast<std::uint32_t>(held_behind_.size())), what));
     if (!pending_.empty())
       fail(fmt::format("{} with no st worked in the {} to go with it",
                        info(pending_.front().op).abbreviation, what));
@@ -741,6 +759,9 @@ class NeedleSimulator {
       case HandOp::provisional_co:
         provisional_cast_on_in_row();
         return;
+      case HandOp::tnbo:
+        three_needle_bind_off_st();
+        return;
       case HandOp::pm:
         pc_.right.push_back(new_marker());
         return;
@@ -769,6 +790,29 @@ class NeedleSimulator {
     else
       stitch(op);
     if (op == HandOp::wt) wrap_and_turn();
+  }
+
+  // "3-needle BO": the next st and the first st held behind it knit together and bound off;
+  // as in a three-needle bind-off of whole pieces, the front loop first seen from the RS.
+  void three_needle_bind_off_st() {
+    if (held_behind_.empty()) fail("3-needle BO: no sts are held behind the needle");
+    if (loops_to_marker() == 0)
+      fail(fmt::format("3-needle BO needs 1 st{}, 0 left",
+                       marker_ahead() ? " before the marker" : ""));
+    check_turn_loop(HandOp::tnbo, pc_.left.back());
+    Side facing = facing_;
+    facing_ = Side::ws;
+    std::uint32_t x = new_stitch(StitchType::tnbo);
+    facing_ = facing;
+    fab().taken.push_back(pc_.left.back());
+    fab().taken.push_back(held_behind_.front());
+    fab().taken_first.push_back(static_cast<std::uint32_t>(fab().taken.size()));
+    pc_.left.pop_back();
+    --left_loops_;
+    held_behind_.erase(held_behind_.begin());
+    --pc_.live;
+    row_last_stitch_ = x;
+    last_make_.reset();
   }
 
   // w&t: the st just slipped and wrapped goes back to the left needle, and the work turns.
@@ -977,6 +1021,7 @@ class NeedleSimulator {
   // (and with a provisional cast-on, the loops of its chain).
   static constexpr std::uint32_t kNeedle = 0, kChain = 1;
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> spare_needles_;
+  std::vector<std::uint32_t> held_behind_;  // for "3-needle BO", the next at the front
 
   // Per loop: whether a short row turned at it, and how.
   static constexpr std::uint8_t kPlainLoop = 0, kWrapped = 1, kDouble = 2;

@@ -86,6 +86,20 @@ class InstructionWriter {
   bool knitspeak() const { return dialect_ == Dialect::knitspeak; }
 
   std::string setup_text(const PatternSection& sec) const {
+    return first_setup_text(sec) + hold_text(sec);
+  }
+
+  // " Hold the 3 sts of Piece 2 behind the needle, the first st of its last row at the tip."
+  std::string hold_text(const PatternSection& sec) const {
+    std::string text;
+    for (const PatternSection::Hold& h : sec.holds)
+      text += fmt::format(
+          " Hold the {} of Piece {} behind the needle, the {} st of its last row at the tip.",
+          sts(h.count), p_.sections[h.section].piece, h.from_last ? "last" : "first");
+    return text;
+  }
+
+  std::string first_setup_text(const PatternSection& sec) const {
     if (sec.resumed) return take_up_text(sec);
     if (sec.starts_from) return join_spare_text(*sec.starts_from);
     if (sec.picks_up) return pick_up_text(*sec.picks_up, sec.cast_on);
@@ -481,6 +495,14 @@ class FrontMatter {
           "of the back needle, knit them together; *knit the next pair together the same way, "
           "pass the first st on the right needle over the second; rep from * until all pairs "
           "are worked; cut the yarn and pull it through the last loop.");
+    if (uses(HandOp::tnbo))
+      items.push_back(
+          "**Three-needle bind-off in a row** (\"3-needle BO 3 sts\"): hold the spare needle "
+          "named behind the left needle, parallel to it; *knit the first st of the left needle "
+          "together with the first st of the back needle, and pass the st before it on the "
+          "right needle (if any) over it; rep from * as many times as said. As when binding off "
+          "part of a row, the st left on the right needle is passed over the first st worked "
+          "after it.");
     if (uses(HandOp::bo))
       items.push_back(
           "**Binding off (BO):** work 2 sts as they appear, *pass the first st on the "

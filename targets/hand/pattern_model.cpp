@@ -347,6 +347,54 @@ class PatternBuilder {
     st_.live = st_.ahead = count;
   }
 
+  // A three-needle bind-off in a row, worked with this piece's yarn: its st in front, the other
+  // piece's held behind on its spare needle (said before the row, so only in a piece's first
+  // row, as when it is taken up again to join another). The held st comes onto the needle.
+  void bind_off_with_held_st(StitchId s) {
+    auto taken = g_.loops_taken_by(s);
+    StitchId behind = g_.loops[taken[1]].maker;
+    PatternSection& sec = section();
+    if (c_.yarns.piece_of[g_.loops[taken[0]].maker] != sec.yarn)
+      unsupported(
+          fmt::format("{} is a three-needle bind-off in a row with this piece's st "
+                      "behind, which is not covered yet",
+                      g_.describe(s)));
+    if (out_.rows.size() != sec.first_row)
+      unsupported(
+          fmt::format("{} is a three-needle bind-off in the middle of the work, not in "
+                      "the first row after the piece is taken up, which is not covered "
+                      "yet",
+                      g_.describe(s)));
+    const std::uint32_t from = section_of(behind);
+    bool continues =
+        !sec.holds.empty() && sec.holds.back().section == from && out_.ops.back() == HandOp::tnbo;
+    if (!continues) {
+      const PatternSection& spare = out_.sections[from];
+      sec.holds.push_back({from, 0, behind == spare.last_row_ends[1], s});
+    }
+    ++sec.holds.back().count;
+    out_.ops.push_back(HandOp::tnbo);
+    ++st_.live;
+    if (!sec.in_round) ++st_.ahead;
+  }
+
+  // Every st of a piece held behind is bound off in the row (the rest of a spare needle would
+  // need a holder of its own).
+  void refuse_held_sts_left(const PatternRow& r) const {
+    for (const PatternSection::Hold& h : out_.sections.back().holds) {
+      const PatternSection& spare = out_.sections[h.section];
+      if (!spare.left_live || spare.live_at_end != h.count)
+        unsupported(fmt::format(
+            "{} {} of Piece {} binds off {} of the {} sts of Piece {} ({}) with a three-needle "
+            "bind-off from {} on; holding only some of a piece's sts behind, and the others on "
+            "holders for the pieces that work them, is not covered yet",
+            r.round ? "Rnd" : "Row", r.number, out_.sections.back().piece, h.count,
+            spare.live_at_end, spare.piece,
+            spare.set_aside ? "set aside with its yarn" : "on a spare needle",
+            g_.describe(h.first)));
+    }
+  }
+
   // A new yarn that starts on sts another piece worked and left on its needle (a body whose
   // sts are shared out between pieces) would need them put on a holder first.
   [[noreturn]] void refuse_start_on_live_sts(const Loop& first) const {
@@ -392,7 +440,9 @@ class PatternBuilder {
     const std::uint32_t self = section_of_yarn_[section().yarn];
     for (StitchId s : row_)
       for (std::uint32_t l : g_.loops_taken_by(s)) {
-        if (g_.loops[l].kind == LoopKind::perpendicular) continue;  // one by one
+        // Taken one by one, or held behind for a three-needle bind-off.
+        if (g_.loops[l].kind == LoopKind::perpendicular || g_.loops[l].kind == LoopKind::joined)
+          continue;
         std::uint32_t from = section_of_yarn_[c_.yarns.piece_of[g_.loops[l].maker]];
         bool placed =
             std::any_of(section().placements.begin(), section().placements.end(),
@@ -427,9 +477,10 @@ class PatternBuilder {
     for (StitchId s : row_) {
       number_of_[s] = r.number;
       append_ops(s, r);
-      takes += info(g_.type[s]).loops_in;
+      takes += info(g_.type[s]).loops_in - (g_.type[s] == T::tnbo);  // one is held behind
       move_loops(s);
     }
+    refuse_held_sts_left(r);
     end_row(r, turns, takes);
     check_make_one_has_a_strand(r);
     r.end_op = static_cast<std::uint32_t>(out_.ops.size());
@@ -579,8 +630,9 @@ class PatternBuilder {
     bool first_row = out_.rows.size() == section().first_row;
     if (!(section().picks_up && first_row)) slip_from_spare_needle(s, r);
     if (type == T::sco) return cast_on_in_row(s);
-    // A cast-on (or a three-needle bind-off) between worked sts of one row.
-    if (type == T::co || type == T::tnbo)
+    if (type == T::tnbo) return bind_off_with_held_st(s);
+    // A cast-on between worked sts of one row.
+    if (type == T::co)
       unsupported(fmt::format("{} is a {} in the middle of the work, which is not covered yet",
                               g_.describe(s), info(type).name));
     refuse_loop_of_a_piece_not_placed(s);

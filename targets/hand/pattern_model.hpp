@@ -72,6 +72,14 @@ struct PatternSection {
   // cast-on"): how many sts, and the model stitches cast on first and last (its chain's ends).
   std::uint32_t row_chain = 0;
   std::uint32_t row_chain_ends[2] = {0, 0};
+  // Pieces left on spare needles held behind the needle for "3-needle BO" in its first row
+  // (a three-needle bind-off with its own yarn in the middle of a row), in the order worked.
+  struct Hold {
+    std::uint32_t section = 0, count = 0;
+    bool from_last = false;   // its last row's last st at the tip
+    std::uint32_t first = 0;  // the model stitch that binds off its first st
+  };
+  std::vector<Hold> holds;
   std::optional<Start> starts_from;
   // A piece that starts on loops picked up along the right (or left) edge of another, one in
   // each of its rows from `from_row` to `to_row` (0: the cast-on).

@@ -144,6 +144,7 @@ class SentenceReader {
     if (c.eat("place")) return place(c);
     if (c.eat("pick") && c.eat("up")) return pick_up(c);
     if (c.eat("three-needle") && c.eat("bind-off")) return three_needle_bind_off(c);
+    if (c.eat("hold")) return hold_behind(c);
     fail(
         "expected a row ('Row 3 (RS): ...', 'Rnd 5: ...'), 'Cast on N sts', 'Pm and join to "
         "work in the rnd', 'Rep Rows 3\u20134 N more times', 'Knit every rnd until N rnds in "
@@ -328,6 +329,18 @@ class SentenceReader {
     c.eat("needle");
     need(c.eat("tip"), c, "'tip'");
     return piece;
+  }
+
+  // "Hold the 3 sts of Piece 2 behind the needle, the first st of its last row at the tip":
+  // for "3-needle BO" in the next row.
+  void hold_behind(Cursor& c) {
+    Step step{Step::Kind::hold_behind, line_no_};
+    c.eat("the");
+    step.count = need_number(c, "the number of sts to hold");
+    need_words(c, {"sts", "of"}, "'sts of Piece N'");
+    step.number = needle_end(c, {"behind", "the", "needle"}, step.from_last[0]);
+    need(c.done(), c, "the end of the sentence");
+    add(step);
   }
 
   // "Row 3 (RS): ...", "Rnds 2–16: ...".
@@ -515,6 +528,7 @@ class SentenceReader {
       n.op = HandOp::wt;
       return n;
     }
+    if (c.eat("3-needle")) return three_needle_bind_off_sts(c);  // '-' would end a word
     if (c.eat("sl1") && c.eat("from")) {
       need(c.eat("spare"), c, "'sl1 from spare'");
       n.op = c.eat("behind") ? HandOp::from_spare_behind : HandOp::from_spare;
@@ -561,6 +575,16 @@ class SentenceReader {
       return n;
     }
     c.eat("rem");
+    n.times = need_number(c, "how many sts to bind off");
+    need(c.eat_any({"sts", "st"}), c, "'sts' after the number");
+    return n;
+  }
+
+  // "3-needle BO 3 sts": each with the next st held behind.
+  Node three_needle_bind_off_sts(Cursor& c) {
+    Node n;
+    n.op = HandOp::tnbo;
+    need(c.eat("BO"), c, "'3-needle BO N sts'");
     n.times = need_number(c, "how many sts to bind off");
     need(c.eat_any({"sts", "st"}), c, "'sts' after the number");
     return n;

@@ -60,6 +60,8 @@ struct Step {
     pick_up,                // "Pick up <count> sts along the right edge of Piece <number>, ..."
     three_needle_bind_off,  // Piece <number> in front, Piece <last> behind, <count> pairs;
                             // from_last: which ends are at the tips (front, back)
+    hold_behind,            // "Hold the <count> sts of Piece <number> behind the needle, the
+                            // first (from_last[0]: last) st of its last row at the tip"
   };
   Step(Kind step_kind, std::size_t line_no) : kind(step_kind), line(line_no) {}
   Kind kind;
