@@ -498,11 +498,11 @@ class FrontMatter {
     if (uses(HandOp::tnbo))
       items.push_back(
           "**Three-needle bind-off in a row** (\"3-needle BO 3 sts\"): hold the spare needle "
-          "named behind the left needle, parallel to it; *knit the first st of the left needle "
-          "together with the first st of the back needle, and pass the st before it on the "
-          "right needle (if any) over it; rep from * as many times as said. As when binding off "
-          "part of a row, the st left on the right needle is passed over the first st worked "
-          "after it.");
+          "named behind the left needle, parallel to it. *Knit the first st of the left needle "
+          "together with the first st of the back needle; if there is a st before it on the "
+          "right needle, pass that one over it; rep from * as many times as said. Work the next "
+          "st as the pattern says and pass the last pair over it: it is the first st of what "
+          "follows (as when binding off part of a row).");
     if (uses(HandOp::bo))
       items.push_back(
           "**Binding off (BO):** work 2 sts as they appear, *pass the first st on the "
