@@ -241,4 +241,22 @@ StitchMesh short_row_mesh(StitchType turn) {
   return std::move(b).build();
 }
 
+std::size_t occurrences(std::string_view text, std::string_view what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string_view::npos; at = text.find(what, at + 1))
+    ++n;
+  return n;
+}
+
+StitchMesh edging_mesh(int width, int rows) {
+  using T = StitchType;
+  std::vector<Square> squares;
+  for (int y = 0; y <= rows + 1; ++y) {
+    T type = y == 0 ? T::co : y == rows + 1 ? T::bo : T::k;
+    for (int x = 0; x < width; ++x) squares.push_back({x, y, type, y % 2 ? "bito" : "boti"});
+  }
+  for (int y = 1; y <= rows; ++y) squares.push_back({width, y, T::co, "ibot"});
+  return grid_mesh(width + 1, rows + 2, squares);
+}
+
 }  // namespace skein::testing

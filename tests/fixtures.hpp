@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "driver/pipeline.hpp"
@@ -56,5 +57,13 @@ StitchMesh expanding_mesh();
 // bind-off. Faces: 0-3 cast-on, 4-5 first short row, 6 the short-row face, 7-8 second short row,
 // 9-12 the full row (right to left), 13-16 bind-off.
 StitchMesh short_row_mesh(StitchType turn = StitchType::sr4);
+
+// How often `what` occurs in `text`.
+std::size_t occurrences(std::string_view text, std::string_view what);
+
+// A knitted-on edging: a piece `width` sts wide knit for `rows` rows, each after the cast-on
+// taking one st of a cast-on column beside its left edge (a contracting perpendicular edge,
+// worked "Sl1 from spare, k2tog"), then bound off.
+StitchMesh edging_mesh(int width, int rows);
 
 }  // namespace skein::testing

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <regex>
 #include <sstream>
 
 #include "builtin_targets.hpp"
@@ -195,6 +196,15 @@ TEST(HandPickUps, RejectsAPickUpThatCannotBeWorkedWithTheReason) {
   EXPECT_EQ(failure_of(piece + "Pick up 3 sts along the left edge of Piece 1, one in each row from "
                                "the cast-on up to Row 2.\nRow 1 (WS): BO all sts.\nFasten off.\n"),
             "");
+  // Into the rnd of a piece being worked, after its first 2 sts.
+  const std::string into_rnd =
+      "Pick up 2 sts along the left edge of Piece 1, one in each row from Row 1 up to Row 2, onto "
+      "the needle after the first 2 sts of the rnd.\n";
+  EXPECT_EQ(failure_of(piece + "Cast on 4 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\n" +
+                       into_rnd + "Rnd 2: Knit \u2014 6 sts.\nRnd 3: BO all sts.\nFasten off.\n"),
+            "");
+  EXPECT_EQ(failure_of(piece + "Cast on 4 sts.\nRow 1 (RS): Knit.\n" + into_rnd),
+            "p.md:7: Pick up along Piece 1 onto the needle: only into a piece worked in the rnd");
 }
 
 TEST(HandPieces, TheSweaterIsProvenInEveryFormat) {
@@ -208,13 +218,125 @@ TEST(HandPieces, TheSweaterIsProvenInEveryFormat) {
         "### Piece 1 (yarn 1), taken up again\n",
         "Take up Piece 1 again with its yarn. Place the 58 sts of Piece 2 on the needle at the "
         "beginning of the rnd, the first st of its last rnd first. Place the 58 sts of Piece 3 on "
-        "the needle after the first 106 sts of the rnd, the first st of its last rnd first.\n",
+        "the needle after the first 106 sts of the rnd, the first st of its last rnd first \u2014 "
+        "212 "
+        "sts.\n",
         "**Rnd 108:** K106, pm, k to end.\n"})
     EXPECT_NE(pattern.find(line), std::string::npos) << line;
   for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
     VerifyReport report = verify(c, target, emit(c, target));
     EXPECT_TRUE(report.proven) << target << ": " << report.summary;
   }
+}
+
+// A sample's hand pattern holds these lines and is proven in every format.
+void expect_written_and_proven(const char* sample, std::initializer_list<const char*> lines) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  Compilation c = compile_model(sample);
+  std::string pattern = emit(c, "hand");
+  for (const char* line : lines) EXPECT_NE(pattern.find(line), std::string::npos) << line;
+  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
+    VerifyReport report = verify(c, target, emit(c, target));
+    EXPECT_TRUE(report.proven) << sample << ", " << target << ": " << report.summary;
+  }
+}
+
+// Three arms knit towards the centre, where their sts go four ways: into each arm beyond it
+// (with the sts of two provisional cast-ons) and into two three-needle bind-offs.
+TEST(HandPieces, TheThreeBarsAreProvenInEveryFormat) {
+  expect_written_and_proven(
+      "samples/three-bars/three-bars.yaml",
+      {"Slip sts 1\u20139 of the rnd to holder 1, sts 10\u201318 to holder 2 and sts "
+       "19\u201327 to holder 3 \u2014 9 sts.\n\nLeave the 9 sts on the needle and set the yarn "
+       "aside (do not "
+       "cut it).\n",
+       "Slip sts 10\u201318 of the rnd to holder 7, sts 19\u201327 to holder 8 and sts "
+       "28\u201336 to holder 9 \u2014 9 sts.\n\nPlace the 9 sts of Piece 3 on the needle after the "
+       "first 9 "
+       "sts of the rnd, the first st cast on first.\n",
+       "Place the 9 sts of holder 2 on the needle after the first 27 sts of the rnd, the first "
+       "st of its last rnd first \u2014 36 sts.\n",
+       "Take up Piece 2 again with its yarn. Place the 9 loops of Piece 3's chain on the needle "
+       "at the beginning of the rnd, the last st cast on first.",
+       "Three-needle bind-off: hold the pieces with RS together: holder 3 in front, the first st "
+       "of its last row at the needle tip; holder 9 behind,"});
+}
+
+// Two bars knit towards each other: each ends in a flat face that works the other's sts one
+// at a time from a holder put on a spare needle, and the rnds beyond pick up along its edge.
+TEST(HandPieces, TheTwoBarsAreProvenInEveryFormat) {
+  expect_written_and_proven(
+      "samples/two-bars/two-bars.yaml",
+      {"Slip sts 10\u201318 of the rnd to holder 4, sts 19\u201328 to holder 5 and sts "
+       "29\u201337 to holder 6 \u2014 9 sts.\n\nPut the 10 sts of holder 2 on a spare needle, the "
+       "last st "
+       "of its last rnd at the tip.\n\n**Row 24 (RS):** Sl1 from spare, ssk, k8, turn.\n",
+       "Pick up 10 sts along the left edge of Piece 2, one in each row from Row 33 down to Row "
+       "24, onto the needle after the first 18 sts of the rnd.\n",
+       "holder 6 in front, the last st of its last row at the needle tip; holder 3 behind, the "
+       "first st"});
+}
+
+// A tube whose sts 3-4 wait on a holder for a rnd and are placed back.
+std::string tube_with_holder(const std::string& slip, const std::string& place) {
+  return "Cast on 6 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\n" + slip +
+         "\nRnd 2: Knit.\n" + place + "\nRnd 3: BO all sts.\nFasten off.\n";
+}
+
+TEST(HandPieces, RejectsSlippingToHoldersAndPlacingThemWrongWithTheReason) {
+  const std::string slip = "Slip sts 3\u20134 of the rnd to holder 1.";
+  const std::string place =
+      "Place the 2 sts of holder 1 on the needle after the first 2 sts of the rnd, the first st of "
+      "its last rnd first.";
+  EXPECT_EQ(failure_of(tube_with_holder(slip, place)), "");
+  EXPECT_EQ(failure_of(tube_with_holder(slip, "")),
+            "p.md:7: the sts of holder 1 are left on it, never worked");
+  EXPECT_EQ(failure_of(tube_with_holder(
+                slip, std::regex_replace(place, std::regex("2 sts of"), "3 sts of"))),
+            "p.md:5: Place the sts of holder 1: the pattern says 3 sts, but it holds 2");
+  EXPECT_EQ(failure_of(tube_with_holder(
+                slip, std::regex_replace(place, std::regex("holder 1"), "holder 2"))),
+            "p.md:5: Place the sts: holder 2 holds no sts");
+  EXPECT_EQ(failure_of(tube_with_holder("Slip sts 5\u20138 of the rnd to holder 1.", place)),
+            "p.md:3: Slip sts 5\u20138 to holder 1: the rnd has only 6 sts");
+  EXPECT_EQ(failure_of(tube_with_holder("Slip sts 0\u20131 of the rnd to holder 1.", place)),
+            "p.md:3: Slip sts to holder 1: the sts count from 1");
+  EXPECT_EQ(failure_of(tube_with_holder(
+                "Slip sts 1\u20132 of the rnd to holder 1 and sts 3\u20134 to holder 1.", place)),
+            "p.md:3: Slip sts to holder 1: it already holds sts");
+  EXPECT_EQ(
+      failure_of(tube_with_holder("Slip sts 3\u20134 of the rnd to holder 1 \u2014 5 sts.", place)),
+      "p.md:3: Slip sts to holders: the pattern says 5 sts, but 4 sts are on the needle");
+  EXPECT_EQ(failure_of(tube_with_holder(
+                slip, std::regex_replace(place, std::regex("first\\.$"), "first \u2014 5 sts."))),
+            "p.md:5: Place the sts: the pattern says 5 sts, but 6 sts are on the needle");
+  EXPECT_EQ(failure_of("Cast on 6 sts.\nRow 1 (RS): Knit.\n" + slip + "\n"),
+            "p.md:3: Slip sts to holder 1: only from a piece worked in the rnd");
+}
+
+// A tube whose last 2 sts wait on a holder, put on a spare needle and worked one per rnd.
+std::string tube_taking_back_one_at_a_time(const std::string& slip, const std::string& put,
+                                           const std::string& rnd_3) {
+  return "Cast on 6 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\n" + slip + "\n" + put +
+         "\nRnd 2: Sl1 from spare, k2tog, k3.\n" + rnd_3 + "\nRnd 4: BO all sts.\nFasten off.\n";
+}
+
+TEST(HandPieces, RejectsPuttingAHolderOnASpareNeedleWrongWithTheReason) {
+  const std::string slip = "Slip sts 5\u20136 of the rnd to holder 1.";
+  const std::string put =
+      "Put the 2 sts of holder 1 on a spare needle, the first st of its last rnd at the tip.";
+  const std::string rnd_3 = "Rnd 3: Sl1 from spare, k2tog, k3.";
+  EXPECT_EQ(failure_of(tube_taking_back_one_at_a_time(slip, put, rnd_3)), "");
+  EXPECT_EQ(failure_of(tube_taking_back_one_at_a_time(
+                slip, std::regex_replace(put, std::regex("2 sts"), "3 sts"), rnd_3)),
+            "p.md:4: Put the sts of holder 1: the pattern says 3 sts, but it holds 2");
+  EXPECT_EQ(
+      failure_of(tube_taking_back_one_at_a_time(
+          "Slip sts 3\u20134 of the rnd to holder 2 and sts 5\u20136 to holder 1.",
+          put + "\n" + std::regex_replace(put, std::regex("holder 1"), "holder 2"), rnd_3)),
+      "p.md:5: Put the sts of holder 2 on a spare needle: the spare needle still holds 2 sts");
+  EXPECT_EQ(failure_of(tube_taking_back_one_at_a_time(slip, put, "Rnd 3: Knit.")),
+            "p.md:8: 1 st left on the spare needle, never worked");
 }
 
 std::string body_and_sleeve(const std::string& take_up) {
@@ -242,6 +364,41 @@ TEST(HandPieces, RejectsSettingAsideAndTakingUpWrongWithTheReason) {
             "p.md:7: Place the sts of Piece 2: the rnd has only 8 sts");
   EXPECT_EQ(failure_of(body_and_sleeve("")),
             "p.md:7: Rnd: no sts are on the needle (take up Piece 1 again first)");
+}
+
+// A provisional cast-on (Piece 1) whose sts or chain a tube (Piece 2) places into a rnd in
+// the middle of its work; the other side is worked by Piece 3.
+std::string tube_taking_in(const std::string& place, const std::string& other_side) {
+  return "Cast on 2 sts with a provisional cast-on.\n"
+         "Leave the 2 sts on a spare needle and cut the yarn.\n"
+         "Cast on 4 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\n" +
+         place + "\nRnd 2: Knit \u2014 6 sts.\nRnd 3: BO all sts.\nFasten off.\n" + other_side +
+         "Row 1 (RS): BO all sts.\nFasten off.\n";
+}
+
+TEST(HandPieces, PlacesASpareNeedleOrAChainIntoARndInTheMiddleOfTheWork) {
+  const std::string chain_side =
+      "Join a new yarn to the 2 loops of Piece 1's chain, the first st cast on at the tip.\n";
+  const std::string needle_side =
+      "Join a new yarn to the 2 sts of Piece 1, the first st cast on at the tip.\n";
+  EXPECT_EQ(failure_of(tube_taking_in("Place the 2 sts of Piece 1 on the needle after the first 2 "
+                                      "sts of the rnd, the first st cast on first.",
+                                      chain_side)),
+            "");
+  EXPECT_EQ(failure_of(tube_taking_in("Place the 2 loops of Piece 1's chain on the needle at the "
+                                      "beginning of the rnd, the last st cast on first.",
+                                      needle_side)),
+            "");
+  EXPECT_EQ(failure_of(tube_taking_in("Place the 3 loops of Piece 1's chain on the needle at the "
+                                      "beginning of the rnd, the last st cast on first.",
+                                      needle_side)),
+            "p.md:5: Place the sts of Piece 1: the pattern says 3 sts, but its chain holds 2");
+  EXPECT_EQ(failure_of(tube_taking_in("Place the 2 loops of Piece 1's chain on the needle at the "
+                                      "beginning of the rnd, the last st cast on first.",
+                                      chain_side)),
+            "p.md:9: Join a new yarn: the chain of Piece 1 is not waiting on a spare needle");
+  EXPECT_EQ(failure_of(tube_taking_in("", needle_side)),
+            "p.md:6: Rnd 2: the pattern says 6 sts, but 4 sts are on the needle");
 }
 
 }  // namespace

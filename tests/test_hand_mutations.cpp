@@ -106,7 +106,7 @@ class Mutator {
     out_.push_back({"repeat a line", joined(copy)});
     if (lines_[i].find("Pm and join") != std::string::npos)
       add("remove the marker", i, std::regex_replace(lines_[i], std::regex("Pm and join"), "Join"));
-    static const std::regex kMarkerOp(R"(, [ps]m\b|\b[ps]m, )");
+    static const std::regex kMarkerOp(R"(, [psr]m\b|\b[psr]m, )");
     for (auto it = std::sregex_iterator(lines_[i].begin(), lines_[i].end(), kMarkerOp);
          it != std::sregex_iterator(); ++it)
       add("drop a marker", i,
@@ -372,6 +372,11 @@ TEST(HandMutations, SectionMarkerPatternsRejectEveryEditThatChangesTheFabric) {
       compile_stitch_mesh(
           build_from_rows(testing::wedge_plan(6, 9, 3, 1, StitchType::k2tog), Layout::tube),
           "crown"));
+  Compilation crown = compile_stitch_mesh(
+      build_from_rows(testing::wedge_plan(6, 9, 3, 1, StitchType::k2tog), Layout::tube), "crown");
+  std::ostringstream marked;
+  hand::write_markdown(hand::make_document(testing::with_region_marks_in_a_crown(crown)), marked);
+  mutate_and_judge("crown with section and region markers", crown, marked.str());
   mutate_and_judge(
       "flat wedges with section markers",
       compile_stitch_mesh(
@@ -392,13 +397,16 @@ TEST(HandMutations, ProvisionalCastOnsInARowRejectEveryEditThatChangesTheFabric)
   for (bool rs_row : {false, true})
     mutate_and_judge(rs_row ? "cast-on in a RS row" : "cast-on in a WS row",
                      compile_stitch_mesh(testing::mid_row_split_mesh(rs_row), "mid-row split"));
-  mutate_and_judge("cast-on in a rnd (mirrored)",
+  mutate_and_judge("cast-on in a rnd (worked with the WS facing)",
                    compile_stitch_mesh(testing::mid_round_split_mesh(), "mid-round split"));
 }
 
 TEST(HandMutations, ThreeNeedleBindOffsInARowRejectEveryEditThatChangesTheFabric) {
   mutate_and_judge("three-needle bind-off in a row",
                    compile_stitch_mesh(testing::mid_row_join_mesh(), "mid-row join"));
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  mutate_and_judge("three bars with their own yarns",
+                   compile_model("samples/three-bars-own/three-bars-own.yaml"));
 }
 
 TEST(HandMutations, PickUpsRejectEveryEditThatChangesTheFabric) {
@@ -406,6 +414,8 @@ TEST(HandMutations, PickUpsRejectEveryEditThatChangesTheFabric) {
                    compile_stitch_mesh(testing::expanding_mesh(), "expanding"));
   mutate_and_judge("contracting fixture (sl1 from spare)",
                    compile_stitch_mesh(testing::contracting_mesh(), "contracting"));
+  mutate_and_judge("knitted-on edging with markers",
+                   compile_stitch_mesh(testing::edging_mesh(6, 4), "edging"));
 }
 
 TEST(HandMutations, JoinsRejectEveryEditThatChangesTheFabric) {
@@ -425,6 +435,15 @@ TEST(HandMutations, PiecesSetAsideAndTakenUpRejectEveryEditThatChangesTheFabric)
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
   Compilation c = compile_model("samples/sweater/sweater.yaml");
   mutate_and_judge("sweater (lines near the pieces)", c, hand_pattern(c), true);
+}
+
+// The three bars: sts slipped to holders, placed into other pieces' rnds (with a provisional
+// cast-on's sts and chain) and bound off together from holders; the two bars: holders put on
+// a spare needle for rows that take their sts one at a time, edges picked up into a rnd.
+TEST(HandMutations, HoldersRejectEveryEditThatChangesTheFabric) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  mutate_and_judge("three bars", compile_model("samples/three-bars/three-bars.yaml"));
+  mutate_and_judge("two bars", compile_model("samples/two-bars/two-bars.yaml"));
 }
 
 TEST(HandMutations, ShapedSheetsAndTubesRejectEveryEditThatChangesTheFabric) {

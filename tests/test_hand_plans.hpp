@@ -4,6 +4,8 @@
 
 #include <cstdint>
 
+#include "hand/pattern_model.hpp"
+#include "hand/region_markers.hpp"
 #include "mesh/generate.hpp"
 
 namespace skein::testing {
@@ -37,6 +39,18 @@ inline RowPlan wedge_plan(std::uint32_t sections, std::uint32_t wedge, std::uint
   }
   plan.emplace_back(sections * wedge, StitchType::bo);
   return plan;
+}
+
+// The hand pattern of a crown (a tube of wedge_plan, with section markers) whose first two rnds
+// the schedule would mark beside a mismatch group before their 5th and 9th sts: region markers
+// among section markers (the 9th st's mark falls on a section marker and gives none).
+inline hand::HandPattern with_region_marks_in_a_crown(const Compilation& crown) {
+  hand::HandPattern p = hand::build_hand_pattern(crown);
+  for (std::uint32_t row : {0u, 1u})
+    for (std::uint32_t op : {4u, 8u})
+      p.region_marks.push_back({row, op, MarkerKind::mismatch_begin});
+  hand::place_region_markers(p);
+  return p;
 }
 
 }  // namespace skein::testing

@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
+
+#include <filesystem>
 
 #include "driver/pipeline.hpp"
 #include "fixtures.hpp"
@@ -27,6 +30,25 @@ TEST(HandRowJoin, AThreeNeedleBindOffInTheMiddleOfARowIsWrittenAndProven) {
   EXPECT_EQ(testing::unproven_hand_formats(c), "") << pattern;
 }
 
+// Three arms knit towards the centre with their own yarns: each arm's last rnd is shared out
+// 9 by 9 (holders), Piece 1 binds off two runs of its rnd with held sts, and each arm beyond
+// casts on 9 sts provisionally in the middle of its first rnd.
+TEST(HandRowJoin, TheThreeBarsWithTheirOwnYarnsAreProvenInEveryFormat) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  Compilation c = compile_model("samples/three-bars-own/three-bars-own.yaml");
+  std::string pattern = emit(c, "hand");
+  for (const char* line :
+       {"Take up Piece 1 again with its yarn. Hold the 9 sts of holder 2 behind the needle, the "
+        "last st of its last row at the tip. Hold the 9 sts of holder 6 behind the needle, the "
+        "last st of its last row at the tip.\n",
+        "**Rnd 23:** *3-needle BO 9 sts, k9; rep from * to end \u2014 18 sts.\n",
+        "**Rnd 24:** K9, CO 9 sts with a provisional cast-on, k to end \u2014 36 sts.\n",
+        "Place the 9 loops of Piece 1's chain on the needle after the first 18 sts of the rnd, "
+        "the last st cast on first \u2014 36 sts.\n"})
+    EXPECT_NE(pattern.find(line), std::string::npos) << line << "\n" << pattern;
+  EXPECT_EQ(testing::unproven_hand_formats(c), "") << pattern;
+}
+
 TEST(HandRowJoin, RejectsAThreeNeedleBindOffWorkedWrongWithTheReason) {
   const std::string spare =
       "Cast on 3 sts.\nRow 1 (RS): Knit.\nLeave the 3 sts on a spare needle and cut the yarn.\n"
@@ -35,16 +57,16 @@ TEST(HandRowJoin, RejectsAThreeNeedleBindOffWorkedWrongWithTheReason) {
       spare +
       "Hold the 3 sts of Piece 1 behind the needle, the first st of its last row at the "
       "tip.\n";
-  EXPECT_EQ(failure_of(held + "Row 1 (RS): 3-needle BO 3 sts, k2.\nRow 2 (WS): BO all sts.\n"
-                              "Fasten off.\n"),
-            "");
-  EXPECT_EQ(failure_of(spare + "Row 1 (RS): 3-needle BO 3 sts, k2.\n"),
-            "p.md:5: Row 1 (RS): 3-needle BO: no sts are held behind the needle");
-  EXPECT_EQ(failure_of(held + "Row 1 (RS): 3-needle BO 2 sts, k3.\n"),
-            "p.md:6: Row 1 (RS): 1 st held behind the needle left unworked at the end of the row");
-  EXPECT_EQ(failure_of(spare + "Hold the 4 sts of Piece 1 behind the needle, the first st of its "
-                               "last row at the tip.\n"),
-            "p.md:5: Hold the sts of Piece 1: the pattern says 4 sts, but its needle holds 3");
+  const std::pair<std::string, std::string> cases[] = {
+      {held + "Row 1 (RS): 3-needle BO 3 sts, k2.\nRow 2 (WS): BO all sts.\nFasten off.\n", ""},
+      {spare + "Row 1 (RS): 3-needle BO 3 sts, k2.\n",
+       "p.md:5: Row 1 (RS): 3-needle BO: no sts are held behind the needle"},
+      {held + "Row 1 (RS): 3-needle BO 2 sts, k3.\n",
+       "p.md:6: Row 1 (RS): 1 st held behind the needle left unworked at the end of the row"},
+      {spare + "Hold the 4 sts of Piece 1 behind the needle, the first st of its last row at the "
+               "tip.\n",
+       "p.md:5: Hold the sts of Piece 1: the pattern says 4 sts, but its needle holds 3"}};
+  for (const auto& [pattern, failure] : cases) EXPECT_EQ(failure_of(pattern), failure) << pattern;
 }
 
 }  // namespace

@@ -10,23 +10,12 @@
 #include "common/atomic_file.hpp"
 #include "labeling/stitch_generation.hpp"
 #include "mesh/obj_format.hpp"
+#include "render/view.hpp"
 
 namespace skein {
 namespace {
 
-struct Point {
-  double x, y, depth;
-};
-
-// Orthographic camera from the front (+z), a little to the right and above.
-Point project(Vec3 p) {
-  constexpr double yaw = 0.35, pitch = 0.3;
-  double x = p.x * std::cos(yaw) - p.z * std::sin(yaw);
-  double z = p.x * std::sin(yaw) + p.z * std::cos(yaw);
-  double y = p.y * std::cos(pitch) - z * std::sin(pitch);
-  double depth = p.y * std::sin(pitch) + z * std::cos(pitch);
-  return {x, -y, depth};
-}
+using Point = ViewPoint;
 
 struct Colour {
   const char* fill;

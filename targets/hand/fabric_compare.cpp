@@ -100,14 +100,10 @@ class Comparison {
       return differ(x, fmt::format("it takes {} loop(s), the model's stitch {}", taken.size(),
                                    model_taken.size()));
     for (std::size_t i = 0; i < taken.size(); ++i) {
-      // A three-needle bind-off's loops are one in front of the other: a mirror keeps them.
-      bool reversed = mirror_ && g_.type[s] != StitchType::tnbo;
-      const Loop& want_loop = g_.loops[model_taken[reversed ? taken.size() - 1 - i : i]];
+      const Loop& want_loop = g_.loops[model_taken[mirror_ ? taken.size() - 1 - i : i]];
       std::uint32_t maker = f_.loop_maker[taken[i]];
       std::uint32_t slot = f_.rs_slot(taken[i]);
-      // A provisional cast-on's two loops are the needle's and the chain's, not side by side:
-      // a mirror keeps them.
-      if (mirror_ && f_.type[maker] != StitchType::sco) slot = f_.made[maker] - 1 - slot;
+      if (mirror_) slot = f_.made[maker] - 1 - slot;
       if (model_of_[maker] != want_loop.maker || slot != want_loop.maker_slot)
         return differ(
             x, fmt::format("its {} loop from the left comes from {} (loop {}), the model's "

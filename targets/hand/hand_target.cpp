@@ -59,9 +59,11 @@ class HandTarget : public Target {
       case Format::markdown:
         write_markdown(doc, out);
         break;
-      case Format::html:
-        write_html(doc, pattern, gauge, out);
+      case Format::html: {
+        std::optional<CellPicture> picture = picture_of_pieces(c);
+        write_html(doc, pattern, picture ? &*picture : nullptr, out);
         break;
+      }
       case Format::knitspeak:
         write_knitspeak(doc, out);
         break;

@@ -1,5 +1,5 @@
 // A self-contained HTML page that prints well: the document, an SVG schematic of the model at
-// the start of each piece with that piece highlighted, and a chart for pieces whose stitches
+// the start of each piece with that piece in colour, and a chart for pieces whose stitches
 // form a pattern of knits and purls. Every instruction stays on one line of the file, so the
 // hand simulator reads the page line for line as it reads the markdown.
 #include <fmt/format.h>
@@ -7,12 +7,14 @@
 #include <algorithm>
 #include <ostream>
 
+#include "driver/pipeline.hpp"
 #include "hand/pattern_writers.hpp"
 
 namespace skein::hand {
 namespace {
 
-constexpr double kSchematicPx = 280;  // the longer side of a schematic
+constexpr double kSchematicPx = 280;            // the longer side of a schematic
+constexpr std::uint32_t kSchematicCells = 140;  // ... in cells of the model's picture
 constexpr std::uint32_t kChartWidest = 60;
 constexpr std::uint32_t kChartRows = 80;
 constexpr int kCellPx = 12;
@@ -70,65 +72,60 @@ std::string inline_html(std::string_view text) {
   return out;
 }
 
-// Each piece drawn row by row, as wide as its stitches at the gauge; the piece being worked in
-// colour, the others grey, rows that change the count darker.
+// The model as a grid of cells (cell_picture.hpp), drawn once in grey and used by every figure;
+// each figure draws the cells of the piece being worked over it in colour, in three shades by
+// how squarely the stitches face the viewer.
 class Schematic {
  public:
-  Schematic(const HandPattern& p, const Gauge& gauge) : p_(p) {
-    for (const PatternSection& s : p.sections) {
-      std::uint32_t widest = s.cast_on;
-      for (std::uint32_t r = s.first_row; r < s.end_row; ++r)
-        widest = std::max(widest, p.rows[r].sts_before);
-      width_cm_ += widest * 10.0 / gauge.sts_per_10cm + (width_cm_ > 0 ? gap_cm_ : 0);
-      widest_.push_back(widest);
-      height_cm_ = std::max(height_cm_, (s.end_row - s.first_row) * 10.0 / gauge.rows_per_10cm);
-    }
-    px_per_cm_ = kSchematicPx / std::max({width_cm_, height_cm_, 1.0});
-    stitch_px_ = px_per_cm_ * 10.0 / gauge.sts_per_10cm;
-    row_px_ = px_per_cm_ * 10.0 / gauge.rows_per_10cm;
-  }
+  explicit Schematic(const CellPicture& picture)
+      : pic_(picture), cell_px_(kSchematicPx / std::max({picture.columns, picture.rows, 1u})) {}
 
-  std::string svg(std::uint32_t highlighted) const {
-    double w = width_cm_ * px_per_cm_ + 20, h = height_cm_ * px_per_cm_ + 40;
+  template <class Shown>
+  std::string svg(Shown shown, bool first) const {
+    double w = pic_.columns * cell_px_, h = pic_.rows * cell_px_;
     std::string out = fmt::format(
         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{:.0f}\" height=\"{:.0f}\" "
         "viewBox=\"0 0 {:.0f} {:.0f}\" role=\"img\">\n",
         w, h, w, h);
-    double x = 10;
-    for (std::uint32_t s = 0; s < p_.sections.size(); ++s) {
-      out += piece(s, x, h - 25, s == highlighted);
-      x += widest_[s] * stitch_px_ + gap_cm_ * px_per_cm_;
-    }
+    if (first)
+      out += "<defs><g id=\"skein-model\">\n" + cells([](std::uint32_t) { return true; }, kGrey) +
+             "</g></defs>\n";
+    out += "<use href=\"#skein-model\"/>\n";
+    out += cells(shown, kLit);
     return out + "</svg>\n";
   }
 
  private:
-  std::string piece(std::uint32_t s, double left, double bottom, bool lit) const {
-    const PatternSection& sec = p_.sections[s];
-    double centre = left + widest_[s] * stitch_px_ / 2;
+  static constexpr const char* kGrey[3] = {"#dedede", "#c8c8c8", "#ababab"};
+  static constexpr const char* kLit[3] = {"#7fb8b2", "#4f9690", "#2f6f73"};
+
+  // One rectangle per run of cells of one shade in a row of the grid.
+  template <class Chosen>
+  std::string cells(Chosen chosen, const char* const (&colours)[3]) const {
     std::string out;
-    for (std::uint32_t r = sec.first_row; r < sec.end_row; ++r) {
-      const PatternRow& row = p_.rows[r];
-      double y = bottom - (r - sec.first_row + 1) * row_px_;
-      double w = row.sts_before * stitch_px_;
-      bool shaping = row.sts_before != row.sts_after && !row.bind_off;
-      const char* fill = lit ? (shaping ? "#2f6f73" : "#7fb8b2") : (shaping ? "#999" : "#ccc");
-      out += fmt::format(
-          "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" "
-          "fill=\"{}\"/>\n",
-          centre - w / 2, y, w, row_px_ + 0.3, fill);
+    for (std::uint32_t r = 0; r < pic_.rows; ++r) {
+      for (std::uint32_t c = 0; c < pic_.columns;) {
+        std::size_t i = std::size_t{r} * pic_.columns + c;
+        if (pic_.label[i] == CellPicture::kEmpty || !chosen(pic_.label[i])) {
+          ++c;
+          continue;
+        }
+        std::uint32_t end = c + 1;
+        while (end < pic_.columns && pic_.label[i + end - c] != CellPicture::kEmpty &&
+               chosen(pic_.label[i + end - c]) && pic_.shade[i + end - c] == pic_.shade[i])
+          ++end;
+        out += fmt::format(
+            "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"{}\"/>\n",
+            c * cell_px_, r * cell_px_, (end - c) * cell_px_ + 0.2, cell_px_ + 0.2,
+            colours[pic_.shade[i]]);
+        c = end;
+      }
     }
-    out += fmt::format(
-        "<text x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"11\" text-anchor=\"middle\">"
-        "{} {} sts</text>\n",
-        centre, bottom + 14, sec.in_round ? "CO (around)" : "CO", sec.cast_on);
     return out;
   }
 
-  const HandPattern& p_;
-  std::vector<std::uint32_t> widest_;
-  double gap_cm_ = 4, width_cm_ = 0, height_cm_ = 0;
-  double px_per_cm_ = 1, stitch_px_ = 1, row_px_ = 1;
+  const CellPicture& pic_;
+  double cell_px_;
 };
 
 // The RS view of a row's stitches, left to right, when every one is a knit or a purl.
@@ -207,9 +204,49 @@ void instruction(const InstructionLine& line, std::ostream& out) {
   }
 }
 
+// Which part of its piece a stitch is in: before the piece is first set aside, or after (the
+// section that takes it up again).
+std::vector<std::uint8_t> after_first_hold(const Compilation& c) {
+  std::vector<std::uint8_t> after(c.knit.size(), 0), held(c.yarns.size(), 0);
+  for (const Event& e : c.schedule.events) {
+    if (e.kind == EventKind::hold) held[e.yarn] = 1;
+    if (e.kind == EventKind::stitch) after[e.stitch] = held[e.yarn];
+  }
+  return after;
+}
+
+// The cells of the section worked: its piece's, and of that piece only the part before or
+// after it was set aside when it was.
+bool shows_section(const HandPattern& p, const PatternSection& s, std::uint32_t label) {
+  if (label / 2 != s.yarn) return false;
+  bool taken_up = std::any_of(p.sections.begin(), p.sections.end(), [&](const PatternSection& o) {
+    return o.yarn == s.yarn && o.resumed;
+  });
+  return !taken_up || (label % 2 == 1) == s.resumed;
+}
+
 }  // namespace
 
-void write_html(const PatternDocument& doc, const HandPattern& pattern, const Gauge& gauge,
+std::optional<CellPicture> picture_of_pieces(const Compilation& c) {
+  if (!c.mesh) return std::nullopt;
+  const KnitGraph& g = c.knit;
+  std::vector<std::uint8_t> after = after_first_hold(c);
+  auto label = [&](StitchId s) { return 2 * c.yarns.piece_of[s] + after[s]; };
+  std::vector<std::uint32_t> face_label(c.mesh->num_faces(), CellPicture::kEmpty);
+  std::vector<LabelledPoint> on_edges;
+  for (StitchId s = 0; s < g.size(); ++s) {
+    if (s < g.first_extruded) {
+      face_label[g.source[s]] = label(s);
+      continue;
+    }
+    const MismatchEdge& e = g.mismatch_edges[g.extruded_at[s - g.first_extruded]];
+    Vec3 a = c.mesh->position[Vertex(e.vertex[0])], b = c.mesh->position[Vertex(e.vertex[1])];
+    on_edges.push_back({{(a.x + b.x) / 2, (a.y + b.y) / 2, (a.z + b.z) / 2}, label(s)});
+  }
+  return picture_cells(*c.mesh, face_label, on_edges, kSchematicCells);
+}
+
+void write_html(const PatternDocument& doc, const HandPattern& pattern, const CellPicture* picture,
                 std::ostream& out) {
   out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>"
       << escaped(doc.title) << "</title>\n"
@@ -222,20 +259,26 @@ void write_html(const PatternDocument& doc, const HandPattern& pattern, const Ga
     out << "</ul>\n";
   }
   out << "<h2>" << kInstructionsHeading << "</h2>\n";
-  Schematic schematic(pattern, gauge);
+  bool first_figure = true;
   for (const InstructionLine& line : doc.instructions) {
     instruction(line, out);
     if (line.kind != InstructionLine::Kind::setup) continue;
     const PatternSection& s = pattern.sections[line.section];
-    out << "<figure>\n"
-        << schematic.svg(line.section)
-        << fmt::format(
-               "<figcaption>Schematic{}: rows bottom to top, as wide as their stitches "
-               "at the gauge{}; darker rows change the stitch count.</figcaption>\n",
-               pattern.sections.size() > 1 ? fmt::format(" (piece {} highlighted)", s.piece) : "",
-               s.in_round ? " (rounds drawn flat: the width is the circumference)" : "")
-        << "</figure>\n"
-        << chart(pattern, s);
+    if (picture) {
+      out << "<figure>\n"
+          << Schematic(*picture).svg(
+                 [&](std::uint32_t label) { return shows_section(pattern, s, label); },
+                 first_figure)
+          << fmt::format(
+                 "<figcaption>Schematic: the model seen from the front and a little above{}."
+                 "</figcaption>\n",
+                 pattern.sections.size() > 1
+                     ? fmt::format(", piece {} (this section) in colour", s.piece)
+                     : "")
+          << "</figure>\n";
+      first_figure = false;
+    }
+    out << chart(pattern, s);
   }
   out << "<h2>" << kFinishingHeading << "</h2>\n";
   for (const std::string& item : doc.finishing) out << "<p>" << inline_html(item) << "</p>\n";

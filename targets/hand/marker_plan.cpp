@@ -149,18 +149,7 @@ class Planner {
     return p_.ops_of(p_.rows[row]);
   }
 
-  void rebuild_ops() {
-    std::vector<HandOp> all;
-    all.reserve(p_.ops.size());
-    for (std::uint32_t r = 0; r < p_.rows.size(); ++r) {
-      auto row_ops = ops(r);
-      std::uint32_t first = static_cast<std::uint32_t>(all.size());
-      all.insert(all.end(), row_ops.begin(), row_ops.end());
-      p_.rows[r].first_op = first;
-      p_.rows[r].end_op = static_cast<std::uint32_t>(all.size());
-    }
-    p_.ops = std::move(all);
-  }
+  void rebuild_ops() { rewrite_rows(p_, rewritten_); }
 
   HandPattern& p_;
   std::vector<std::optional<std::vector<HandOp>>> rewritten_;
@@ -170,6 +159,21 @@ class Planner {
 
 void place_section_markers(HandPattern& pattern) {
   Planner(pattern).run();
+}
+
+void rewrite_rows(HandPattern& pattern,
+                  const std::vector<std::optional<std::vector<HandOp>>>& rewritten) {
+  std::vector<HandOp> all;
+  all.reserve(pattern.ops.size());
+  for (std::uint32_t r = 0; r < pattern.rows.size(); ++r) {
+    auto row_ops =
+        rewritten[r] ? std::span<const HandOp>(*rewritten[r]) : pattern.ops_of(pattern.rows[r]);
+    std::uint32_t first = static_cast<std::uint32_t>(all.size());
+    all.insert(all.end(), row_ops.begin(), row_ops.end());
+    pattern.rows[r].first_op = first;
+    pattern.rows[r].end_op = static_cast<std::uint32_t>(all.size());
+  }
+  pattern.ops = std::move(all);
 }
 
 }  // namespace skein::hand

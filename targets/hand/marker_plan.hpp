@@ -4,6 +4,9 @@
 // block (paper §5.1: repeat until a marker rather than count).
 #pragma once
 
+#include <optional>
+#include <vector>
+
 #include "hand/pattern_model.hpp"
 
 namespace skein::hand {
@@ -11,5 +14,9 @@ namespace skein::hand {
 // Rewrites the rows of each section with pm / sm / rm where a group of at least two shaped
 // rows, each the same unit worked the same number of times, keeps its sections aligned.
 void place_section_markers(HandPattern& pattern);
+
+// Gives each row with new operations (`rewritten[r]`) those, the others keeping theirs.
+void rewrite_rows(HandPattern& pattern,
+                  const std::vector<std::optional<std::vector<HandOp>>>& rewritten);
 
 }  // namespace skein::hand

@@ -109,6 +109,7 @@ class NeedleSimulator {
         break;
       case Step::Kind::pick_up:
         pick_up(s);
+        check_printed_count(s, "Pick up");
         break;
       case Step::Kind::join_round:
         join(s.marker);
@@ -136,12 +137,20 @@ class NeedleSimulator {
         break;
       case Step::Kind::place:
         place(s);
+        check_printed_count(s, "Place the sts");
         break;
       case Step::Kind::three_needle_bind_off:
         three_needle_bind_off(s);
         break;
       case Step::Kind::hold_behind:
         hold_behind(s);
+        break;
+      case Step::Kind::hold:
+        hold(s);
+        check_printed_count(s, "Slip sts to holders");
+        break;
+      case Step::Kind::to_spare:
+        put_on_spare_needle(s);
         break;
     }
   }
@@ -186,7 +195,7 @@ class NeedleSimulator {
   // A new piece worked from loops picked up along an edge of a finished piece, one in each
   // of its rows: the loop of the st at that edge, the last one picked up at the needle tip.
   void pick_up(const Step& s) {
-    if (active_ && pc_.live > 0)
+    if (!s.into_rnd && active_ && pc_.live > 0)
       fail(fmt::format("Pick up: the piece before still has {} on the needle", sts(pc_.live)));
     std::vector<std::uint32_t> rows = rows_of_piece(s.number);
     std::uint32_t low = std::min(s.from_row, s.to_row), high = std::max(s.from_row, s.to_row);
@@ -197,6 +206,7 @@ class NeedleSimulator {
     if (high - low + 1 != s.count)
       fail(fmt::format("Pick up: the pattern says {}, but there are {} rows from {} to {}",
                        sts(s.count), high - low + 1, low, high));
+    if (s.into_rnd) return pick_up_into_rnd(s, rows);
     start_piece();
     fab().rows.push_back({0, 0, 0, false, Side::rs});
     row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
@@ -205,6 +215,20 @@ class NeedleSimulator {
       pc_.right.push_back(pick_up_loop(rows, n, s.provisional));
     }
     pc_.live = s.count;
+  }
+
+  // Loops picked up along another piece's edge go into the rnd of the piece worked, the first
+  // picked up worked first.
+  void pick_up_into_rnd(const Step& s, const std::vector<std::uint32_t>& rows) {
+    if (!active_ || !pc_.joined || pc_.bor == kNone)
+      fail(fmt::format(
+          "Pick up along Piece {} onto the needle: only into a piece worked in the rnd", s.number));
+    std::vector<std::uint32_t> loops;
+    for (std::uint32_t i = 0; i < s.count; ++i) {
+      std::uint32_t n = s.from_row <= s.to_row ? s.from_row + i : s.from_row - i;
+      loops.push_back(pick_up_loop(rows, n, s.provisional));
+    }
+    insert_into_rnd(loops, s.last, fmt::format("Pick up along Piece {}", s.number));
   }
 
   // Per row number of a piece (0: its cast-on), the row worked (kNone: none with stitches).
@@ -288,6 +312,13 @@ class NeedleSimulator {
                        pc_.live == 1 ? "1 st is" : fmt::format("{} sts are", pc_.live)));
   }
 
+  // A count printed after a sentence that changes what is on the needle ("— 36 sts").
+  void check_printed_count(const Step& s, const char* what) {
+    if (!s.sts) return;
+    ++out_.counts_checked;
+    check_live(*s.sts, what);
+  }
+
   // The piece waits, sts and yarn, until it is taken up again.
   void set_aside(std::uint32_t n) {
     check_live(n, "Leave the sts");
@@ -311,26 +342,96 @@ class NeedleSimulator {
   void place(const Step& s) {
     if (!active_ || !pc_.joined || pc_.bor == kNone)
       fail(fmt::format("Place the sts of Piece {}: only into a piece worked in the rnd", s.number));
-    std::vector<std::uint32_t> placed = spare_needle(s.number, s.from_last[0], "Place the sts");
+    std::vector<std::uint32_t> placed =
+        s.holder[0] ? held(s.number, s.from_last[0], "Place the sts")
+                    : spare_needle(s.number, s.from_last[0], "Place the sts", s.provisional);
     if (placed.size() != s.count)
-      fail(fmt::format("Place the sts of Piece {}: the pattern says {}, but its needle holds {}",
-                       s.number, sts(s.count), placed.size()));
+      fail(fmt::format("Place the sts of {} {}: the pattern says {}, but {} holds {}",
+                       s.holder[0] ? "holder" : "Piece", s.number, sts(s.count),
+                       s.holder[0]     ? "it"
+                       : s.provisional ? "its chain"
+                                       : "its needle",
+                       placed.size()));
+    insert_into_rnd(
+        placed, s.last,
+        fmt::format("Place the sts of {} {}", s.holder[0] ? "holder" : "Piece", s.number));
+    if (s.holder[0])
+      holders_.erase(s.number);
+    else
+      spare_needles_.erase({s.number, s.provisional ? kChain : kNeedle});
+  }
+
+  // The loops go into the rnd after its first `after` sts, from the beginning-of-round marker.
+  void insert_into_rnd(const std::vector<std::uint32_t>& loops, std::uint32_t after,
+                       const std::string& what) {
     std::vector<std::uint32_t> ring = ring_from_bor();
-    if (s.last > ring.size())
-      fail(fmt::format("Place the sts of Piece {}: the rnd has only {}", s.number,
+    if (after > ring.size())
+      fail(fmt::format("{}: the rnd has only {}", what,
                        sts(static_cast<std::uint32_t>(ring.size()))));
-    ring.insert(ring.begin() + s.last, placed.begin(), placed.end());
-    pc_.right.assign(1, pc_.bor);
-    pc_.right.insert(pc_.right.end(), ring.begin(), ring.end());
-    pc_.left.clear();
-    pc_.live += s.count;
-    spare_needles_.erase({s.number, kNeedle});
+    ring.insert(ring.begin() + after, loops.begin(), loops.end());
+    lay_out_from_bor(ring);
+    pc_.live += static_cast<std::uint32_t>(loops.size());
+  }
+
+  // The loops of the rnd, the beginning-of-round marker first, go on the right needle, so that
+  // the next rnd starts at the marker; after a row that turned, on the left one, where the turn
+  // still to come puts them on the right.
+  void lay_out_from_bor(const std::vector<std::uint32_t>& ring) {
+    std::vector<std::uint32_t>& needle = pc_.turn_before ? pc_.left : pc_.right;
+    needle.assign(1, pc_.bor);
+    needle.insert(needle.end(), ring.begin(), ring.end());
+    (pc_.turn_before ? pc_.right : pc_.left).clear();
+  }
+
+  // A holder's sts go on the spare needle that "sl1 from spare" takes from.
+  void put_on_spare_needle(const Step& s) {
+    if (!spare_for_rows_.empty())
+      fail(
+          fmt::format("Put the sts of holder {} on a spare needle: the spare needle still holds {}",
+                      s.number, sts(static_cast<std::uint32_t>(spare_for_rows_.size()))));
+    std::vector<std::uint32_t> loops = held(s.number, s.from_last[0], "Put the sts");
+    if (loops.size() != s.count)
+      fail(fmt::format("Put the sts of holder {}: the pattern says {}, but it holds {}", s.number,
+                       sts(s.count), loops.size()));
+    holders_.erase(s.number);
+    spare_for_rows_ = std::move(loops);
+  }
+
+  // Sts A–B of the rnd, counted from the beginning-of-round marker, go to a holder of their
+  // own (the reader gives the runs of one sentence last first, so the counts stay true).
+  void hold(const Step& s) {
+    if (!active_ || !pc_.joined || pc_.bor == kNone)
+      fail(fmt::format("Slip sts to holder {}: only from a piece worked in the rnd", s.number));
+    if (holders_.contains(s.number))
+      fail(fmt::format("Slip sts to holder {}: it already holds sts", s.number));
+    if (s.from_row == 0) fail(fmt::format("Slip sts to holder {}: the sts count from 1", s.number));
+    std::vector<std::uint32_t> ring = ring_from_bor();
+    if (s.to_row > ring.size())
+      fail(fmt::format("Slip sts {}\u2013{} to holder {}: the rnd has only {}", s.from_row,
+                       s.to_row, s.number, sts(static_cast<std::uint32_t>(ring.size()))));
+    auto first = ring.begin() + (s.from_row - 1), end = ring.begin() + s.to_row;
+    holders_[s.number].assign(first, end);
+    ring.erase(first, end);
+    lay_out_from_bor(ring);
+    pc_.live -= s.to_row - s.from_row + 1;
+  }
+
+  // A holder's sts from the needle tip: the first or the last st of the run slipped to it.
+  std::vector<std::uint32_t> held(std::uint32_t holder, bool from_last, const char* what) const {
+    auto at = holders_.find(holder);
+    if (at == holders_.end()) fail(fmt::format("{}: holder {} holds no sts", what, holder));
+    std::vector<std::uint32_t> loops = at->second;
+    if (from_last) std::reverse(loops.begin(), loops.end());
+    return loops;
   }
 
   // The loops around the needle from the beginning-of-round marker on (markers left out).
+  // A turn still to come (after a row that turned) swaps the needles first.
   std::vector<std::uint32_t> ring_from_bor() const {
-    std::vector<std::uint32_t> ring(pc_.left.rbegin(), pc_.left.rend());
-    ring.insert(ring.end(), pc_.right.begin(), pc_.right.end());
+    const std::vector<std::uint32_t>& ahead = pc_.turn_before ? pc_.right : pc_.left;
+    const std::vector<std::uint32_t>& behind = pc_.turn_before ? pc_.left : pc_.right;
+    std::vector<std::uint32_t> ring(ahead.rbegin(), ahead.rend());
+    ring.insert(ring.end(), behind.begin(), behind.end());
     auto at = std::find(ring.begin(), ring.end(), pc_.bor);
     std::rotate(ring.begin(), at, ring.end());
     std::erase_if(ring, is_marker_entry);
@@ -361,8 +462,12 @@ class NeedleSimulator {
     else if (active_ && pc_.live > 0)
       fail(fmt::format("three-needle bind-off: the piece before still has {} on the needle",
                        sts(pc_.live)));
-    std::vector<std::uint32_t> f = spare_needle(front, s.from_last[0], "three-needle bind-off");
-    std::vector<std::uint32_t> b = spare_needle(back, s.from_last[1], "three-needle bind-off");
+    auto needle = [&](int side) {
+      std::uint32_t n = side == 0 ? front : back;
+      return s.holder[side] ? held(n, s.from_last[side], "three-needle bind-off")
+                            : spare_needle(n, s.from_last[side], "three-needle bind-off");
+    };
+    std::vector<std::uint32_t> f = needle(0), b = needle(1);
     if (f.size() != b.size())
       fail(fmt::format("three-needle bind-off: {} on front needle, {} on back", sts(f.size()),
                        b.size()));
@@ -384,8 +489,13 @@ class NeedleSimulator {
       fab().taken.push_back(b[i]);
       fab().taken_first.push_back(static_cast<std::uint32_t>(fab().taken.size()));
     }
-    spare_needles_.erase({front, kNeedle});
-    spare_needles_.erase({back, kNeedle});
+    for (int side : {0, 1}) {
+      std::uint32_t n = side == 0 ? front : back;
+      if (s.holder[side])
+        holders_.erase(n);
+      else
+        spare_needles_.erase({n, kNeedle});
+    }
   }
 
   // The sts from the needle tip: the first or the last st of the piece's last row.
@@ -393,12 +503,18 @@ class NeedleSimulator {
   // end the sentence names.
   void hold_behind(const Step& s) {
     if (!active_) fail(fmt::format("Hold the sts of Piece {}: no piece is being worked", s.number));
-    std::vector<std::uint32_t> held = spare_needle(s.number, s.from_last[0], "Hold the sts");
-    if (held.size() != s.count)
-      fail(fmt::format("Hold the sts of Piece {}: the pattern says {}, but its needle holds {}",
-                       s.number, sts(s.count), held.size()));
-    held_behind_.insert(held_behind_.end(), held.begin(), held.end());
-    spare_needles_.erase({s.number, kNeedle});
+    const char* what = s.holder[0] ? "holder" : "Piece";
+    std::vector<std::uint32_t> sts_held =
+        s.holder[0] ? held(s.number, s.from_last[0], "Hold the sts")
+                    : spare_needle(s.number, s.from_last[0], "Hold the sts");
+    if (sts_held.size() != s.count)
+      fail(fmt::format("Hold the sts of {} {}: the pattern says {}, but its needle holds {}", what,
+                       s.number, sts(s.count), sts_held.size()));
+    held_behind_.insert(held_behind_.end(), sts_held.begin(), sts_held.end());
+    if (s.holder[0])
+      holders_.erase(s.number);
+    else
+      spare_needles_.erase({s.number, kNeedle});
   }
 
   std::vector<std::uint32_t> spare_needle(std::uint32_t piece, bool from_last, const char* what,
@@ -423,6 +539,12 @@ class NeedleSimulator {
                       spare_needles_.begin()->first.second == kChain ? "chain" : "sts",
                       spare_needles_.begin()->first.first,
                       spare_needles_.begin()->first.second == kChain ? "is" : "are")};
+    if (!spare_for_rows_.empty())
+      throw StepFailure{fmt::format("{} left on the spare needle, never worked",
+                                    sts(static_cast<std::uint32_t>(spare_for_rows_.size())))};
+    if (!holders_.empty())
+      throw StepFailure{fmt::format("the sts of holder {} are left on it, never worked",
+                                    holders_.begin()->first)};
     if (active_ && pc_.live > 0)
       throw StepFailure{fmt::format("the pattern ends with {} still on the needle", sts(pc_.live))};
   }
@@ -838,7 +960,7 @@ class NeedleSimulator {
   // The next st of the one piece waiting on a spare needle (in the order its last row worked
   // them) joins the work at the tip of the left needle.
   void slip_from_spare(bool behind) {
-    if (spare_needles_.size() != 1)
+    if (spare_for_rows_.empty() && spare_needles_.size() != 1)
       fail(fmt::format("sl1 from spare: {} pieces wait on spare needles; which one is meant?",
                        spare_needles_.size()));
     std::uint32_t first = kNone;
@@ -849,11 +971,13 @@ class NeedleSimulator {
       pc_.left.pop_back();
       --left_loops_;
     }
-    std::vector<std::uint32_t>& spare = spare_needles_.begin()->second;
+    // The spare needle a holder was put on, or else the one piece waiting on a spare needle.
+    bool holder = !spare_for_rows_.empty();
+    std::vector<std::uint32_t>& spare = holder ? spare_for_rows_ : spare_needles_.begin()->second;
     push_left(spare.front());
     if (behind) push_left(first);
     spare.erase(spare.begin());
-    if (spare.empty()) spare_needles_.clear();
+    if (spare.empty() && !holder) spare_needles_.clear();
     ++pc_.live;
   }
 
@@ -1022,6 +1146,8 @@ class NeedleSimulator {
   static constexpr std::uint32_t kNeedle = 0, kChain = 1;
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> spare_needles_;
   std::vector<std::uint32_t> held_behind_;  // for "3-needle BO", the next at the front
+  std::map<std::uint32_t, std::vector<std::uint32_t>> holders_;  // by holder number
+  std::vector<std::uint32_t> spare_for_rows_;  // a holder's sts that sl1 from spare takes
 
   // Per loop: whether a short row turned at it, and how.
   static constexpr std::uint8_t kPlainLoop = 0, kWrapped = 1, kDouble = 2;

@@ -93,9 +93,12 @@ class InstructionWriter {
   std::string hold_text(const PatternSection& sec) const {
     std::string text;
     for (const PatternSection::Hold& h : sec.holds)
-      text += fmt::format(
-          " Hold the {} of Piece {} behind the needle, the {} st of its last row at the tip.",
-          sts(h.count), p_.sections[h.section].piece, h.from_last ? "last" : "first");
+      text +=
+          fmt::format(" Hold the {} of {} behind the needle, the {} st of its last row at the tip.",
+                      sts(h.count),
+                      h.holder ? fmt::format("holder {}", h.holder)
+                               : fmt::format("Piece {}", p_.sections[h.section].piece),
+                      h.from_last ? "last" : "first");
     return text;
   }
 
@@ -119,41 +122,121 @@ class InstructionWriter {
 
   std::string three_needle_text(const PatternSection& sec) const {
     return fmt::format(
-        "Three-needle bind-off: hold the pieces with RS together: Piece {} in front, the {} st "
-        "of its last row at the needle tip; Piece {} behind, the {} st of its last row at the "
+        "Three-needle bind-off: hold the pieces with RS together: {} in front, the {} st "
+        "of its last row at the needle tip; {} behind, the {} st of its last row at the "
         "tip (slide the sts to the other end of a needle if need be); with {} yarn bind off "
         "all {} pairs.",
-        p_.sections[sec.front].piece, sec.from_last[0] ? "last" : "first",
-        p_.sections[sec.back].piece, sec.from_last[1] ? "last" : "first",
-        sec.own_yarn ? "its" : "a new", sec.pairs);
+        joined_needle(sec, 0), sec.from_last[0] ? "last" : "first", joined_needle(sec, 1),
+        sec.from_last[1] ? "last" : "first", sec.own_yarn ? "its" : "a new", sec.pairs);
+  }
+
+  // "Piece 1", or "holder 3" where the sts wait on one.
+  std::string joined_needle(const PatternSection& sec, int side) const {
+    if (sec.holders[side] != 0) return fmt::format("holder {}", sec.holders[side]);
+    return fmt::format("Piece {}", p_.sections[side == 0 ? sec.front : sec.back].piece);
   }
 
   // "Take up Piece 1 again with its yarn. Place the 58 sts of Piece 2 on the needle at the
   // beginning of the rnd, the first st of its last rnd first."
   std::string take_up_text(const PatternSection& sec) const {
     std::string text = fmt::format("Take up Piece {} again with its yarn.", sec.piece);
-    for (const PatternSection::Placement& p : sec.placements) {
-      const PatternSection& spare = p_.sections[p.section];
-      std::string where = p.after == 0 ? "at the beginning of the rnd"
-                                       : fmt::format("after the first {} sts of the rnd", p.after);
-      text += fmt::format(
-          " Place the {} sts of Piece {} on the needle {}, the {} st of its last "
-          "{} first.",
-          p.count, spare.piece, where, p.from_last ? "last" : "first",
-          spare.in_round ? "rnd" : "row");
+    for (const PatternSection::Placement& p : sec.placements)
+      if (p.before_row == sec.first_row) text.append(" ").append(placement_text(p));
+    return with_count_after_placements(text, sec.first_row);
+  }
+
+  // "Place the 9 loops of Piece 3's chain on the needle after the first 9 sts of the rnd, the
+  // first st cast on first."
+  std::string placement_text(const PatternSection::Placement& p) const {
+    const PatternSection& spare = p_.sections[p.section];
+    std::string where = p.after == 0 ? "at the beginning of the rnd"
+                                     : fmt::format("after the first {} sts of the rnd", p.after);
+    if (p.edge)  // "Pick up 10 sts along ..., onto the needle after the first 18 sts of the rnd."
+      return fmt::format("{}, onto the needle {}.", pick_up_words(*p.edge, p.count), where);
+    if (p.to_spare)
+      return fmt::format(
+          "Put the {} sts of holder {} on a spare needle, the {} st of its last rnd "
+          "at the tip.",
+          p.count, p.holder, p.from_last ? "last" : "first");
+    bool cast_on = p.holder == 0 && (p.chain || spare.first_row == spare.end_row);
+    std::string which = cast_on          ? "cast on"
+                        : spare.in_round ? "of its last rnd"
+                                         : "of its last row";
+    std::string from = p.holder != 0
+                           ? fmt::format("holder {}", p.holder)
+                           : fmt::format("Piece {}{}", spare.piece, p.chain ? "'s chain" : "");
+    return fmt::format("Place the {} {} of {} on the needle {}, the {} st {} first.", p.count,
+                       p.chain ? "loops" : "sts", from, where, p.from_last ? "last" : "first",
+                       which);
+  }
+
+  // "Slip sts 10–18 of the rnd to holder 1, sts 19–27 to holder 2 and sts 28–36 to holder 3."
+  void write_holdings_after(std::uint32_t row) {
+    std::vector<std::string> runs;
+    std::uint32_t held = 0;
+    for (const PatternSection::Holding& h : p_.sections[section_].holdings) {
+      if (h.after_row != row) continue;
+      held += h.count;
+      runs.push_back(fmt::format("sts {}{}{}{} to holder {}", h.first, knitspeak() ? "-" : kRange,
+                                 h.first + h.count - 1, runs.empty() ? " of the rnd" : "",
+                                 h.holder));
     }
-    return text;
+    if (runs.empty()) return;
+    std::string text = "Slip " + runs.front();
+    for (std::size_t i = 1; i < runs.size(); ++i)
+      text.append(i + 1 == runs.size() ? " and " : ", ").append(runs[i]);
+    add(InstructionLine::Kind::setup, "",
+        fmt::format("{} {} {} sts.", text, kDash, p_.rows[row].sts_after - held));
+  }
+
+  bool holding_after(std::uint32_t row) const {
+    const auto& held = p_.sections[section_].holdings;
+    return std::any_of(held.begin(), held.end(),
+                       [&](const PatternSection::Holding& h) { return h.after_row == row; });
+  }
+
+  // Placements into a rnd in the middle of a piece's work, written before the rnd; the last
+  // says how many sts the rnd then has.
+  void write_placements_before(std::uint32_t row) {
+    std::vector<std::string> texts;
+    for (const PatternSection::Placement& p : p_.sections[section_].placements)
+      if (p.before_row == row) texts.push_back(placement_text(p));
+    if (texts.empty()) return;
+    texts.back() = with_count_after_placements(texts.back(), row);
+    for (std::string& text : texts) add(InstructionLine::Kind::setup, "", std::move(text));
+  }
+
+  // "… first — 36 sts.": the count on the needle once the sts placed before `row` are there
+  // (a holder put on a spare needle adds none).
+  std::string with_count_after_placements(std::string text, std::uint32_t row) const {
+    const auto& placed = p_.sections[section_].placements;
+    bool adds = std::any_of(placed.begin(), placed.end(), [&](const PatternSection::Placement& p) {
+      return p.before_row == row && !p.to_spare;
+    });
+    if (!adds || text.empty() || text.back() != '.') return text;
+    text.pop_back();
+    return fmt::format("{} {} {} sts.", text, kDash, p_.rows[row].sts_before);
+  }
+
+  bool placement_before(std::uint32_t row) const {
+    const auto& placed = p_.sections[section_].placements;
+    return std::any_of(placed.begin(), placed.end(),
+                       [&](const PatternSection::Placement& p) { return p.before_row == row; });
   }
 
   // "Pick up 3 sts along the right edge of Piece 1, one in each row from Row 2 down to the
   // cast-on."
   std::string pick_up_text(const PatternSection::PickUp& p, std::uint32_t count) const {
+    return pick_up_words(p, count) + ".";
+  }
+
+  std::string pick_up_words(const PatternSection::PickUp& p, std::uint32_t count) const {
     auto row = [](std::uint32_t n) {
       return n == 0 ? std::string("the cast-on") : fmt::format("Row {}", n);
     };
     return fmt::format(
         "Pick up {} along the {} edge of Piece {}, one in each row from {} {} "
-        "to {}.",
+        "to {}",
         sts(count), p.right ? "right" : "left", p_.sections[p.section].piece, row(p.from_row),
         p.from_row <= p.to_row ? "up" : "down", row(p.to_row));
   }
@@ -212,8 +295,21 @@ class InstructionWriter {
     return true;
   }
 
+  // Rows are written in runs between the placements that come before some of them.
   void write_rows(std::uint32_t first, std::uint32_t end) {
     for (std::uint32_t i = first; i < end;) {
+      std::uint32_t stop = i + 1;
+      while (stop < end && !placement_before(stop) && !holding_after(stop - 1)) ++stop;
+      // A piece taken up again places its first ones as it is taken up.
+      if (i != first || !p_.sections[section_].resumed) write_placements_before(i);
+      write_row_run(first, i, stop);
+      write_holdings_after(stop - 1);
+      i = stop;
+    }
+  }
+
+  void write_row_run(std::uint32_t first, std::uint32_t from, std::uint32_t end) {
+    for (std::uint32_t i = from; i < end;) {
       auto [period, times] = best_block(i, end);
       std::uint32_t last = i + period * times - 1;
       const PatternRow& r = p_.rows[i];
@@ -288,10 +384,12 @@ class InstructionWriter {
 // What the front matter needs to know about the whole pattern.
 struct Totals {
   bool flat = false, round = false, joins = false;
-  bool partial_bind_off = false;  // a row binds off some of its sts
-  bool spare_needles = false;     // a piece waits on one
-  bool provisional = false;       // a provisional cast-on
-  bool picks_up = false;          // a piece starts on loops picked up along an edge
+  bool partial_bind_off = false;   // a row binds off some of its sts
+  bool spare_needles = false;      // a piece waits on one
+  bool provisional = false;        // a provisional cast-on
+  bool picks_up = false;           // a piece starts on loops picked up along an edge
+  bool picks_up_into_rnd = false;  // loops picked up along an edge go into a rnd
+  std::uint32_t holders = 0;
   std::uint32_t widest = 0, narrowest_round = 0;
   std::vector<bool> used = std::vector<bool>(kHandOpCount, false);
 };
@@ -301,9 +399,12 @@ Totals totals_of(const HandPattern& p) {
   t.narrowest_round = ~0u;
   for (const PatternSection& s : p.sections) {
     t.joins = t.joins || s.joins;
-    t.spare_needles = t.spare_needles || s.left_live || s.provisional;
+    t.spare_needles = t.spare_needles || s.left_live || s.provisional || !s.holdings.empty();
     t.provisional = t.provisional || s.provisional || s.row_chain > 0;
-    t.picks_up = t.picks_up || s.picks_up.has_value();
+    for (const PatternSection::Placement& placed : s.placements)
+      t.picks_up_into_rnd = t.picks_up_into_rnd || placed.edge.has_value();
+    t.picks_up = t.picks_up || s.picks_up.has_value() || t.picks_up_into_rnd;
+    for (const PatternSection::Holding& h : s.holdings) t.holders = std::max(t.holders, h.holder);
     if (s.joins) continue;
     (s.in_round ? t.round : t.flat) = true;
     t.widest = std::max(t.widest, s.cast_on);
@@ -408,6 +509,9 @@ class FrontMatter {
                                            : ""));
     if (t_.spare_needles)
       items.push_back("A spare needle (or stitch holder) for each piece left to wait on one.");
+    if (t_.holders > 0)
+      items.push_back(fmt::format("{} stitch holders (or lengths of waste yarn), numbered 1 to {}.",
+                                  t_.holders, t_.holders));
     if (t_.joins) items.push_back("A third needle for the three-needle bind-off.");
     items.push_back("Tapestry needle for weaving in ends.");
     return items;
@@ -488,6 +592,19 @@ class FrontMatter {
           "**Picking up along an edge:** with the RS facing and a new yarn, put the outer loop "
           "of the edge st of each row named onto the needle, one row after the other (the loops "
           "are not knit: the next row works them, starting with the last one picked up).");
+    if (t_.picks_up_into_rnd)
+      items.push_back(
+          "**Picking up onto the needle of a rnd** (\"..., onto the needle after the first 18 sts "
+          "of the rnd\"): join no yarn; put the loops, picked up the same way, on the needle at "
+          "that place in the order picked up: the rnd works them in that order.");
+    if (t_.holders > 0)
+      items.push_back(
+          "**Holders:** \"Slip sts 10\u201318 of the rnd to holder 1\" counts the sts from the "
+          "BOR marker, as they are before any is slipped, and moves them in order to holder 1; "
+          "they wait there until the pattern places them on the needle, puts them on a spare "
+          "needle (for \"sl1 from spare\") or binds them off. \"Place\" puts a holder's sts (a "
+          "spare needle's, a chain's loops) on the needle where it says, the st it names "
+          "first.");
     if (t_.joins)
       items.push_back(
           "**Three-needle bind-off:** hold the two needles parallel, tips to the right; insert "
@@ -502,7 +619,8 @@ class FrontMatter {
           "together with the first st of the back needle; if there is a st before it on the "
           "right needle, pass that one over it; rep from * as many times as said. Work the next "
           "st as the pattern says and pass the last pair over it: it is the first st of what "
-          "follows (as when binding off part of a row).");
+          "follows (as when binding off part of a row). With more than one needle held, bind "
+          "off from them in the order they were held.");
     if (uses(HandOp::bo))
       items.push_back(
           "**Binding off (BO):** work 2 sts as they appear, *pass the first st on the "

@@ -8,6 +8,7 @@
 #include "common/error.hpp"
 #include "driver/pipeline.hpp"
 #include "hand/marker_plan.hpp"
+#include "hand/region_markers.hpp"
 
 namespace skein::hand {
 namespace {
@@ -119,11 +120,25 @@ class Handedness {
   std::vector<std::uint8_t> first_lr_;  // per piece
 };
 
+// A provisional cast-on (or a three-needle bind-off) in the middle of a row: its needle's loop
+// (its front loop) is the row's own. The mirror image of a model swaps a cast-on's needle and
+// chain (a join's front and back), which a row worked on from both sides cannot follow, so
+// such a model is not mirrored: its left-to-right rnds are worked with the WS facing.
+bool works_two_sides_in_a_row(const KnitGraph& g) {
+  for (StitchId s = 0; s < g.size(); ++s) {
+    StitchId next = g.yarn_next[s];
+    if (next == kNoStitch || g.yarn_link[s] != YarnLink::course) continue;
+    for (T both_sided : {T::sco, T::tnbo})
+      if ((g.type[s] == both_sided) != (g.type[next] == both_sided)) return true;
+  }
+  return false;
+}
+
 // Hand knitting works every round right to left with the side facing the knitter. When most
 // of the model's rounds run the other way seen from the RS, the pattern knits the mirror image;
 // the rounds that still run left to right are worked with the WS facing.
 bool needs_mirror(const Compilation& c, const Handedness& hand, Rounds rounds) {
-  if (rounds == Rounds::ws_facing) return false;
+  if (rounds == Rounds::ws_facing || works_two_sides_in_a_row(c.knit)) return false;
   const KnitGraph& g = c.knit;
   std::uint64_t left_to_right = 0, closed = 0;
   for (StitchId s = 0; s < g.size(); ++s) {
@@ -172,8 +187,11 @@ class PatternBuilder {
           if (taken_up_[e.yarn]) take_up_section(e.yarn);
           end_section();
           break;
+        case EventKind::marker:
+          if (e.marker != MarkerKind::beginning_of_round) marked_[e.stitch] = e.marker;
+          break;
         default:
-          break;  // rows, turns and markers follow from the yarn links and the stitches
+          break;  // rows and turns follow from the yarn links and the stitches
       }
     }
     return std::move(out_);
@@ -248,12 +266,18 @@ class PatternBuilder {
     auto section_of = [&](std::uint32_t loop) {
       return section_of_yarn_[c_.yarns.piece_of[g_.loops[loop].maker]];
     };
+    // The mirror image swaps the loops' order: its front piece is the model's second.
+    const std::uint32_t front = out_.mirror ? 1 : 0;
     join.joins = true;
-    join.front = section_of(taken[0]);
-    join.back = section_of(taken[1]);
+    join.front = section_of(taken[front]);
+    join.back = section_of(taken[1 - front]);
     for (int side : {0, 1}) {
       const PatternSection& piece = out_.sections[side == 0 ? join.front : join.back];
-      join.from_last[side] = g_.loops[taken[side]].maker == piece.last_row_ends[1];
+      StitchId maker = g_.loops[taken[side == 0 ? front : 1 - front]].maker;
+      join.holders[side] = holder_of_[maker];
+      join.from_last[side] =
+          maker == (join.holders[side] != 0 ? holders_[join.holders[side] - 1].last
+                                            : piece.last_row_ends[1]);
     }
     join.own_yarn = join.front == section_of_yarn_[join.yarn];
     if (join.own_yarn) st_.live = 0;  // the front needle's sts are the ones bound off
@@ -339,12 +363,17 @@ class PatternBuilder {
                       section().yarn + 1, g_.describe(row_.front())));
     std::uint32_t from = section_of_yarn_[c_.yarns.piece_of[first.maker]];
     const PatternSection& spare = out_.sections[from];
-    bool chain = first.maker_slot == 1;
-    bool in_row = chain && !spare.provisional;  // the chain of a cast-on in one of its rows
-    std::uint32_t count = in_row ? spare.row_chain : spare.cast_on;
-    StitchId last = in_row ? spare.row_chain_ends[1] : spare.last_row_ends[1];
+    bool chain = (first.maker_slot == 1) != out_.mirror;  // as in place_spare_needles
+    auto [count, last] = cast_on_sts(spare, chain);
     section().starts_from = PatternSection::Start{from, chain, first.maker == last, count};
     st_.live = st_.ahead = count;
+  }
+
+  // The sts of a provisional cast-on on the needle or on its chain (of the piece's cast-on, or
+  // of a cast-on in one of its rows): how many, and the last cast on.
+  static std::pair<std::uint32_t, StitchId> cast_on_sts(const PatternSection& spare, bool chain) {
+    if (chain && !spare.provisional) return {spare.row_chain, spare.row_chain_ends[1]};
+    return {spare.cast_on, spare.last_row_ends[1]};
   }
 
   // A three-needle bind-off in a row, worked with this piece's yarn: its st in front, the other
@@ -365,12 +394,12 @@ class PatternBuilder {
                       "the first row after the piece is taken up, which is not covered "
                       "yet",
                       g_.describe(s)));
-    const std::uint32_t from = section_of(behind);
-    bool continues =
-        !sec.holds.empty() && sec.holds.back().section == from && out_.ops.back() == HandOp::tnbo;
+    const std::uint32_t from = section_of(behind), holder = holder_of_[behind];
+    bool continues = !sec.holds.empty() && sec.holds.back().section == from &&
+                     sec.holds.back().holder == holder && out_.ops.back() == HandOp::tnbo;
     if (!continues) {
-      const PatternSection& spare = out_.sections[from];
-      sec.holds.push_back({from, 0, behind == spare.last_row_ends[1], s});
+      StitchId last = holder ? holders_[holder - 1].last : out_.sections[from].last_row_ends[1];
+      sec.holds.push_back({from, 0, behind == last, s, holder});
     }
     ++sec.holds.back().count;
     out_.ops.push_back(HandOp::tnbo);
@@ -383,15 +412,16 @@ class PatternBuilder {
   void refuse_held_sts_left(const PatternRow& r) const {
     for (const PatternSection::Hold& h : out_.sections.back().holds) {
       const PatternSection& spare = out_.sections[h.section];
-      if (!spare.left_live || spare.live_at_end != h.count)
-        unsupported(fmt::format(
-            "{} {} of Piece {} binds off {} of the {} sts of Piece {} ({}) with a three-needle "
-            "bind-off from {} on; holding only some of a piece's sts behind, and the others on "
-            "holders for the pieces that work them, is not covered yet",
-            r.round ? "Rnd" : "Row", r.number, out_.sections.back().piece, h.count,
-            spare.live_at_end, spare.piece,
-            spare.set_aside ? "set aside with its yarn" : "on a spare needle",
-            g_.describe(h.first)));
+      if (h.holder ? holders_[h.holder - 1].count == h.count
+                   : spare.left_live && spare.live_at_end == h.count)
+        continue;
+      unsupported(fmt::format(
+          "{} {} of Piece {} binds off {} of the {} sts of Piece {} ({}) with a three-needle "
+          "bind-off from {} on; holding only some of a piece's sts behind, and the others on "
+          "holders for the pieces that work them, is not covered yet",
+          r.round ? "Rnd" : "Row", r.number, out_.sections.back().piece, h.count, spare.live_at_end,
+          spare.piece, spare.set_aside ? "set aside with its yarn" : "on a spare needle",
+          g_.describe(h.first)));
     }
   }
 
@@ -433,34 +463,145 @@ class PatternBuilder {
     section().last_row_ends[1] = *last;
   }
 
-  // When a piece taken up again first works sts of pieces left on spare needles, the knitter
-  // places them into its rnd where they are worked.
+  // When a rnd (the first of a piece taken up again, or one in the middle of a piece's work)
+  // works sts of pieces left on spare needles, or the loops of a provisional cast-on's chain,
+  // the knitter first places them into the rnd where they are worked.
   void place_spare_needles() {
     std::uint32_t taken = 0;
     const std::uint32_t self = section_of_yarn_[section().yarn];
     for (StitchId s : row_)
       for (std::uint32_t l : g_.loops_taken_by(s)) {
-        // Taken one by one, or held behind for a three-needle bind-off.
-        if (g_.loops[l].kind == LoopKind::perpendicular || g_.loops[l].kind == LoopKind::joined)
-          continue;
-        std::uint32_t from = section_of_yarn_[c_.yarns.piece_of[g_.loops[l].maker]];
-        bool placed =
-            std::any_of(section().placements.begin(), section().placements.end(),
-                        [&](const PatternSection::Placement& p) { return p.section == from; });
-        if (from != self && !placed) {
-          const PatternSection& spare = out_.sections[from];
-          bool from_last = g_.loops[l].maker == spare.last_row_ends[1];
-          section().placements.push_back({from, spare.live_at_end, taken, from_last});
-          st_.live += spare.live_at_end;
+        const Loop& loop = g_.loops[l];
+        if (picked_up_along_an_edge(loop)) pick_up_into_the_rnd(loop, taken++);
+        // Taken one by one or picked up, or held behind for a three-needle bind-off.
+        if (loop.kind == LoopKind::perpendicular || loop.kind == LoopKind::joined) continue;
+        std::uint32_t from = section_of(loop.maker);
+        // The chain's loop is the cast-on st's second (the first in the mirror image).
+        bool chain = loop.kind == LoopKind::split && (loop.maker_slot == 1) != out_.mirror;
+        if (std::uint32_t holder = holder_of_[loop.maker]; holder != 0) {
+          if (!holder_placed(holder)) place_holder(holder, loop, taken);
+        } else if (from != self && placeable(from, chain)) {
+          place_spare_needle(from, chain, loop, taken);
         }
         ++taken;
       }
   }
 
+  // An edge st of another piece that makes a loop across a perpendicular edge besides its own
+  // (paper §3.2: an expanding edge) gives a loop to pick up.
+  bool picked_up_along_an_edge(const Loop& loop) const {
+    return loop.kind == LoopKind::perpendicular && g_.loops_made_by(loop.maker).size() > 1 &&
+           c_.yarns.piece_of[loop.maker] != out_.sections.back().yarn;
+  }
+
+  // Consecutive loops picked up along one edge are one pick-up, in the order the rnd works
+  // them: one in each row of the piece beside.
+  void pick_up_into_the_rnd(const Loop& loop, std::uint32_t after) {
+    auto& placed = section().placements;
+    std::uint32_t row = number_of_[loop.maker];
+    std::uint32_t before_row = static_cast<std::uint32_t>(out_.rows.size());
+    if (!placed.empty() && placed.back().edge && placed.back().before_row == before_row &&
+        placed.back().after + placed.back().count == after &&
+        placed.back().section == section_of(loop.maker)) {
+      ++placed.back().count;
+      placed.back().edge->to_row = row;
+    } else {
+      PatternSection::Placement p{section_of(loop.maker), 1, after, false};
+      p.before_row = before_row;
+      // The edge seen from the RS: the loop across it is the maker's last (right) or first;
+      // the mirror image swaps them.
+      auto made = g_.loops_made_by(loop.maker);
+      bool right = (g_.loops[made.front()].kind != LoopKind::perpendicular) != out_.mirror;
+      p.edge = PatternSection::PickUp{p.section, row, row, right};
+      placed.push_back(p);
+    }
+    ++st_.live;
+  }
+
+  // A spare needle (or chain) not yet on this piece's needle: one set aside waits on its own.
+  bool placeable(std::uint32_t from, bool chain) const {
+    const PatternSection& spare = out_.sections[from];
+    const auto& placed = out_.sections.back().placements;
+    bool done = std::any_of(placed.begin(), placed.end(), [&](const PatternSection::Placement& p) {
+      return p.section == from && p.chain == chain && p.holder == 0;
+    });
+    const auto& start = out_.sections.back().starts_from;
+    bool started_on = start && start->section == from && start->chain == chain;
+    return !done && !started_on && !spare.set_aside && (spare.left_live || chain);
+  }
+
+  void place_spare_needle(std::uint32_t from, bool chain, const Loop& loop, std::uint32_t after) {
+    const PatternSection& spare = out_.sections[from];
+    auto [cast_on, last] = cast_on_sts(spare, chain);
+    PatternSection::Placement p{from, chain ? cast_on : spare.live_at_end, after,
+                                loop.maker == (chain ? last : spare.last_row_ends[1])};
+    p.chain = chain;
+    p.before_row = static_cast<std::uint32_t>(out_.rows.size());
+    section().placements.push_back(p);
+    st_.live += p.count;
+  }
+
+  bool holder_placed(std::uint32_t holder) const {
+    const auto& placed = out_.sections.back().placements;
+    return std::any_of(placed.begin(), placed.end(),
+                       [&](const PatternSection::Placement& p) { return p.holder == holder; });
+  }
+
+  void place_holder(std::uint32_t holder, const Loop& loop, std::uint32_t after) {
+    const Held& held = holders_[holder - 1];
+    PatternSection::Placement p{section_of(loop.maker), held.count, after, loop.maker == held.last};
+    p.before_row = static_cast<std::uint32_t>(out_.rows.size());
+    p.holder = holder;
+    section().placements.push_back(p);
+    st_.live += p.count;
+  }
+
+  // Where a rnd's sts go different ways and the piece works some of them itself, the runs
+  // that other pieces (or joins) work are slipped to holders after it: the piece's needle
+  // keeps its own (those it works across a gap too). A run another piece works one st at a
+  // time across a perpendicular edge is a holder of its own.
+  void hold_what_others_work(std::uint32_t row) {
+    const std::uint32_t own = 3 * section().yarn;
+    // maker, taker's yarn (x3; +1 across an edge, +2 bound off with a three-needle bind-off)
+    std::vector<std::pair<StitchId, std::uint32_t>> loops;
+    for (StitchId s : row_)
+      for (std::uint32_t l : g_.loops_made_by(s)) {
+        const Loop& loop = g_.loops[l];
+        if (loop.taker == kNoStitch) return;
+        if (loop.kind == LoopKind::split) continue;  // on a provisional cast-on's chain
+        std::uint32_t taker = 3 * c_.yarns.piece_of[loop.taker];
+        bool across = loop.kind == LoopKind::perpendicular && taker != own;
+        bool joined = loop.kind == LoopKind::joined && taker != own;
+        loops.emplace_back(s, taker + (across ? 1 : joined ? 2 : 0));
+      }
+    if (std::none_of(loops.begin(), loops.end(), [&](const auto& l) { return l.second == own; }))
+      return;  // the whole needle waits as it is
+    for (std::uint32_t i = 0; i < loops.size(); ++i) {
+      if (loops[i].second == own) continue;
+      std::uint32_t end = i;
+      while (end < loops.size() && loops[end].second == loops[i].second) ++end;
+      hold(row, loops, i, end);
+      i = end - 1;
+    }
+  }
+
+  void hold(std::uint32_t row, const std::vector<std::pair<StitchId, std::uint32_t>>& loops,
+            std::uint32_t first, std::uint32_t end) {
+    holders_.push_back({loops[end - 1].first, end - first});
+    auto holder = static_cast<std::uint32_t>(holders_.size());
+    for (std::uint32_t i = first; i < end; ++i) holder_of_[loops[i].first] = holder;
+    section().holdings.push_back({row, first + 1, end - first, holder});
+    st_.live -= end - first;
+  }
+
   void add_row() {
-    if (section().resumed && section().first_row == out_.rows.size()) place_spare_needles();
-    PatternRow r;
     bool turns = g_.yarn_link[row_.back()] == YarnLink::turn;
+    bool first_of_take_up = section().resumed && section().first_row == out_.rows.size();
+    bool full_round = section().in_round && !turns && st_.previous_link != YarnLink::turn;
+    bool picked_up = section().picks_up && section().first_row == out_.rows.size();
+    // After rows that turned, a rnd that works every st starts at the beginning of the rnd.
+    if (!picked_up && (first_of_take_up || (section().in_round && !turns))) place_spare_needles();
+    PatternRow r;
     // In the rnd a row that turns is a short row; a rnd goes on around.
     r.round = section().in_round && !turns;
     r.number =
@@ -476,6 +617,7 @@ class PatternBuilder {
     std::uint32_t takes = 0;
     for (StitchId s : row_) {
       number_of_[s] = r.number;
+      note_region_mark(s, r);
       append_ops(s, r);
       takes += info(g_.type[s]).loops_in - (g_.type[s] == T::tnbo);  // one is held behind
       move_loops(s);
@@ -486,6 +628,15 @@ class PatternBuilder {
     r.end_op = static_cast<std::uint32_t>(out_.ops.size());
     r.sts_after = st_.live;
     out_.rows.push_back(r);
+    if (full_round) hold_what_others_work(static_cast<std::uint32_t>(out_.rows.size() - 1));
+  }
+
+  // The schedule's mismatch and short-row markers go before the stitch's operations.
+  void note_region_mark(StitchId s, const PatternRow& r) {
+    if (marked_[s] == MarkerKind::none) return;
+    out_.region_marks.push_back({static_cast<std::uint32_t>(out_.rows.size()),
+                                 static_cast<std::uint32_t>(out_.ops.size()) - r.first_op,
+                                 marked_[s]});
   }
 
   // A row that turns with sts left beyond it says so; German short rows make the st it turned
@@ -533,7 +684,8 @@ class PatternBuilder {
   void slip_from_spare_needle(StitchId s, const PatternRow& r) {
     auto taken = g_.loops_taken_by(s);
     for (std::size_t i = 0; i < taken.size(); ++i) {
-      if (g_.loops[taken[i]].kind != LoopKind::perpendicular) continue;
+      const Loop& loop = g_.loops[taken[i]];
+      if (loop.kind != LoopKind::perpendicular || picked_up_along_an_edge(loop)) continue;
       // Worked in the order taken off the needle: right to left seen from the RS on a RS row.
       std::size_t worked = (r.side == Side::rs) != out_.mirror ? taken.size() - 1 - i : i;
       if (worked > 1)
@@ -541,11 +693,27 @@ class PatternBuilder {
             fmt::format("{} works a loop of {} across a perpendicular edge third, "
                         "which is not covered yet",
                         g_.describe(s), g_.describe(g_.loops[taken[i]].maker)));
-      refuse_edge_loop_off_spare_needle(s, g_.loops[taken[i]].maker);
+      StitchId maker = g_.loops[taken[i]].maker;
+      if (holder_of_[maker] != 0)
+        put_holder_on_spare_needle(holder_of_[maker], maker);
+      else
+        refuse_edge_loop_off_spare_needle(s, maker);
       out_.ops.push_back(worked == 0 ? HandOp::from_spare : HandOp::from_spare_behind);
       ++st_.live;
       if (!section().in_round) ++st_.ahead;
     }
+  }
+
+  // Sts held for rows that work them one at a time go on a spare needle before the first of
+  // those rows, the one they take first at its tip.
+  void put_holder_on_spare_needle(std::uint32_t holder, StitchId first) {
+    if (holder_placed(holder)) return;
+    const Held& held = holders_[holder - 1];
+    PatternSection::Placement p{section_of(first), held.count, 0, first == held.last};
+    p.before_row = static_cast<std::uint32_t>(out_.rows.size());
+    p.holder = holder;
+    p.to_spare = true;
+    section().placements.push_back(p);
   }
 
   // The latest section of the yarn that worked `maker`.
@@ -556,6 +724,7 @@ class PatternBuilder {
   // Is the maker's st on the needle of the piece being worked: its own, one of a spare needle
   // placed into its rnd, or one of the spare needle it started on?
   bool on_own_needle(StitchId maker) const {
+    if (holder_of_[maker] != 0) return holder_placed(holder_of_[maker]);
     std::uint32_t from = section_of(maker);
     const PatternSection& worked = out_.sections.back();
     const auto& placed = worked.placements;
@@ -579,18 +748,28 @@ class PatternBuilder {
           g_.describe(s), g_.describe(maker), from.piece, own ? " itself" : ", set aside"));
   }
 
-  // Sts of another piece are placed into the rnd when a piece is taken up again; a row that
-  // works them anywhere else would need them placed there first, which is not written yet.
+  // Sts of another piece's spare needle are placed into a rnd that works them. A piece set
+  // aside keeps its sts on its own needle with those it works later (a knitter would slip the
+  // others to a holder first), and a row that is no whole rnd has no place for them: neither
+  // is written yet.
   void refuse_loop_of_a_piece_not_placed(StitchId s) const {
     for (std::uint32_t l : g_.loops_taken_by(s)) {
       const Loop& loop = g_.loops[l];
       if (loop.kind == LoopKind::perpendicular || loop.maker == kNoStitch ||
           on_own_needle(loop.maker))
         continue;
+      const PatternSection& from = out_.sections[section_of(loop.maker)];
+      if (from.set_aside)
+        unsupported(fmt::format(
+            "{} works a loop of {} off the needle of Piece {}, set aside with sts it works "
+            "itself later; a knitter would first slip the sts other pieces take to holders, "
+            "which is not covered yet",
+            g_.describe(s), g_.describe(loop.maker), from.piece));
       unsupported(fmt::format(
-          "{} works a loop of {} (Piece {}) in the middle of the work, where its sts were not "
-          "placed on the needle (that is written only when a piece is taken up again)",
-          g_.describe(s), g_.describe(loop.maker), out_.sections[section_of(loop.maker)].piece));
+          "{} works a loop of {} (Piece {}) in a row that is not a whole rnd, where its sts "
+          "cannot be placed on the needle (that is written only before a rnd), which is not "
+          "covered yet",
+          g_.describe(s), g_.describe(loop.maker), from.piece));
     }
   }
 
@@ -675,6 +854,15 @@ class PatternBuilder {
   std::vector<std::vector<StitchId>> deferred_;                                    // per yarn
   std::vector<std::uint8_t> taken_up_;                                             // per yarn
   std::vector<std::uint8_t> unwritten_ = std::vector<std::uint8_t>(g_.size(), 0);  // deferred
+  std::vector<MarkerKind> marked_ = std::vector<MarkerKind>(g_.size(), MarkerKind::none);
+  // Sts slipped to holders: per model stitch its holder (1-based, 0: none); per holder its
+  // last st (in the order its rnd worked them) and how many it holds.
+  std::vector<std::uint32_t> holder_of_ = std::vector<std::uint32_t>(g_.size(), 0);
+  struct Held {
+    StitchId last;
+    std::uint32_t count;
+  };
+  std::vector<Held> holders_;
 };
 
 }  // namespace
@@ -683,6 +871,7 @@ HandPattern build_hand_pattern(const Compilation& c, TurnMethod turns, Rounds ro
   check_supported(c);
   HandPattern pattern = PatternBuilder(c, turns, rounds).run();
   place_section_markers(pattern);
+  place_region_markers(pattern);
   return pattern;
 }
 

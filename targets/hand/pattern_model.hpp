@@ -11,6 +11,7 @@
 
 #include "hand/hand_ops.hpp"
 #include "labeling/project.hpp"
+#include "schedule/schedule.hpp"
 
 namespace skein {
 struct Compilation;
@@ -53,12 +54,34 @@ struct PatternSection {
   bool set_aside = false;          // ends with its sts and yarn set aside, to be taken up again
   bool resumed = false;            // takes up a piece set aside
   std::uint32_t live_at_end = 0;
-  // Sts of another section's spare needle placed into the rnd when this one is taken up,
-  // `after` sts from the beginning of the rnd, that needle's last st first if `from_last`.
+  // A piece that starts on loops picked up along the right (or left) edge of another, one in
+  // each of its rows from `from_row` to `to_row` (0: the cast-on).
+  struct PickUp {
+    std::uint32_t section = 0, from_row = 0, to_row = 0;
+    bool right = true;
+  };
+  // Sts of another section's spare needle (or its provisional cast-on's chain) placed into
+  // the rnd before the row `before_row` works them (when this one is taken up, or in the
+  // middle of its work), `after` sts from the beginning of the rnd, that needle's last st
+  // first if `from_last`.
   struct Placement {
     std::uint32_t section, count, after;
     bool from_last;
+    bool chain = false;
+    std::uint32_t before_row = 0;  // into HandPattern::rows
+    std::uint32_t holder = 0;      // 1-based: the sts of that holder instead
+    // The holder's sts go on a spare needle instead, for rows that work them one at a time.
+    bool to_spare = false;
+    std::optional<PickUp> edge =
+        std::nullopt;  // loops picked up along the edge of section `section` instead
   };
+  // Where the sts of one rnd go different ways (to the piece's next rnd, into another piece's
+  // rnd, into a join), those the piece does not work itself are slipped to holders after it:
+  // `count` sts from the `first` (1-based, from the beginning of the rnd) to holder `holder`.
+  struct Holding {
+    std::uint32_t after_row, first, count, holder;
+  };
+  std::vector<Holding> holdings;
   std::vector<Placement> placements;
   bool provisional = false;  // its cast-on is a provisional one (a cast-on along a split)
   // A piece that starts on the sts of another's provisional cast-on: the sts on its needle,
@@ -76,23 +99,19 @@ struct PatternSection {
   // (a three-needle bind-off with its own yarn in the middle of a row), in the order worked.
   struct Hold {
     std::uint32_t section = 0, count = 0;
-    bool from_last = false;   // its last row's last st at the tip
-    std::uint32_t first = 0;  // the model stitch that binds off its first st
+    bool from_last = false;    // its last row's last st at the tip
+    std::uint32_t first = 0;   // the model stitch that binds off its first st
+    std::uint32_t holder = 0;  // the holder its sts were slipped to (0: its spare needle)
   };
   std::vector<Hold> holds;
   std::optional<Start> starts_from;
-  // A piece that starts on loops picked up along the right (or left) edge of another, one in
-  // each of its rows from `from_row` to `to_row` (0: the cast-on).
-  struct PickUp {
-    std::uint32_t section = 0, from_row = 0, to_row = 0;
-    bool right = true;
-  };
   std::optional<PickUp> picks_up;
   // A join: three-needle bind-off of two sections left live (front, back), with a new yarn.
   bool joins = false;
   std::uint32_t front = 0, back = 0;   // section indices
   bool from_last[2] = {false, false};  // which end of each last row starts: first or last st
   bool own_yarn = false;               // worked with the front piece's yarn, taken up again
+  std::uint32_t holders[2] = {0, 0};   // 1-based: the front (back) sts wait on that holder
   std::uint32_t pairs = 0;
   // Model stitches: the first and last of the section's last row (or of its cast-on).
   std::uint32_t last_row_ends[2] = {0, 0};
@@ -110,6 +129,13 @@ struct HandPattern {
   std::vector<PatternSection> sections;
   std::vector<PatternRow> rows;
   std::vector<HandOp> ops;
+  // Where Algorithm 1's schedule puts a marker around a mismatch group or a short-row turn
+  // (paper §5.1): before the `op`-th operation of row `row`, counting no pm / sm / rm.
+  struct RegionMark {
+    std::uint32_t row, op;
+    MarkerKind kind;
+  };
+  std::vector<RegionMark> region_marks;
 
   std::span<const HandOp> ops_of(const PatternRow& row) const {
     return {ops.data() + row.first_op, ops.data() + row.end_op};
@@ -119,7 +145,8 @@ struct HandPattern {
 // Throws Error naming the stitch when the model needs something hand patterns do not cover
 // yet (joins with a side's own yarn, splits, perpendicular edges, held pieces, stitch graphs
 // without rows). Rows shaped alike get section
-// markers (marker_plan.hpp).
+// markers (marker_plan.hpp), mismatch groups and short rows region markers
+// (region_markers.hpp).
 HandPattern build_hand_pattern(const Compilation& compilation,
                                TurnMethod turns = TurnMethod::german,
                                Rounds rounds = Rounds::mirror_most);

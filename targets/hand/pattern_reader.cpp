@@ -129,6 +129,10 @@ class SentenceReader {
       Cursor rest(sentence.substr(18));
       return join_spare(rest);
     }
+    // "Place ... the first st cast on first" is no cast-on.
+    if (c.eat("place")) return place(c);
+    if (c.eat("slip")) return hold(c);
+    if (c.eat("put")) return to_spare(c);
     if (std::size_t at = find_ci(sentence, "cast on"); at != std::string_view::npos)
       return cast_on(Cursor(sentence.substr(at + 7)));
     if (c.eat("co")) return cast_on(c);
@@ -141,7 +145,6 @@ class SentenceReader {
     if (mentions(sentence, "fasten off")) return add({Step::Kind::fasten_off, line_no_});
     if (c.eat("leave")) return leave(c);
     if (c.eat("take") && c.eat("up")) return take_up(c);
-    if (c.eat("place")) return place(c);
     if (c.eat("pick") && c.eat("up")) return pick_up(c);
     if (c.eat("three-needle") && c.eat("bind-off")) return three_needle_bind_off(c);
     if (c.eat("hold")) return hold_behind(c);
@@ -205,6 +208,49 @@ class SentenceReader {
     need(c.eat_any({"up", "down"}), c, "'up' or 'down'");
     need(c.eat("to"), c, "'to'");
     step.to_row = row_of_piece(c);
+    if (c.eat_char(',')) {
+      need_words(c, {"onto", "the", "needle"}, "', onto the needle'");
+      step.into_rnd = true;
+      step.last = place_in_rnd(c);
+    }
+    end_with_count(c, step);
+    add(step);
+  }
+
+  // The end of a sentence that may print the count on the needle after it: "— 36 sts".
+  void end_with_count(Cursor& c, Step& step) {
+    std::string_view rest = c.rest();
+    step.sts = printed_count(rest);
+    if (!trim(rest).empty()) fail("expected the end of the sentence", rest);
+  }
+
+  // "at the beginning of the rnd" (0) or "after the first 18 sts of the rnd".
+  std::uint32_t place_in_rnd(Cursor& c) {
+    std::uint32_t after = 0;
+    if (c.eat("after")) {
+      need_words(c, {"the", "first"}, "'after the first N sts'");
+      after = need_number(c, "how many sts come before them");
+      need(c.eat_any({"sts", "st"}), c, "'sts'");
+    } else {
+      need_words(c, {"at", "the", "beginning"}, "'at the beginning' or 'after the first N sts'");
+    }
+    need_words(c, {"of", "the", "rnd"}, "'of the rnd'");
+    return after;
+  }
+
+  // "Put the 10 sts of holder 2 on a spare needle, the first st of its last rnd at the tip".
+  void to_spare(Cursor& c) {
+    Step step{Step::Kind::to_spare, line_no_};
+    c.eat("the");
+    step.count = need_number(c, "the number of sts");
+    need_words(c, {"sts", "of", "holder"}, "'sts of holder N'");
+    step.number = need_number(c, "a holder number");
+    need_words(c, {"on", "a", "spare", "needle", ",", "the"}, "'on a spare needle, the'");
+    step.from_last[0] = c.eat("last");
+    need(step.from_last[0] || c.eat("first"), c, "'first' or 'last'");
+    need_words(c, {"st", "of", "its", "last"}, "'st of its last rnd'");
+    need(c.eat_any({"rnd", "row"}), c, "'rnd' or 'row'");
+    need_words(c, {"at", "the", "tip"}, "'at the tip'");
     need(c.done(), c, "the end of the sentence");
     add(step);
   }
@@ -265,29 +311,55 @@ class SentenceReader {
     add(step);
   }
 
-  // "Place the 58 sts of Piece 2 on the needle at the beginning of the rnd (or: after the
-  // first 106 sts of the rnd), the first st of its last rnd first".
+  // "Place the 58 sts of Piece 2 (or: the 9 loops of Piece 3's chain) on the needle at the
+  // beginning of the rnd (or: after the first 106 sts of the rnd), the first st of its last
+  // rnd (or: the first st cast on) first".
   void place(Cursor& c) {
     Step step{Step::Kind::place, line_no_};
     c.eat("the");
     step.count = need_number(c, "the number of sts to place");
-    need_words(c, {"sts", "of", "piece"}, "'sts of Piece N'");
-    step.number = need_number(c, "a piece number");
+    step.provisional = c.eat("loops");
+    need(step.provisional || c.eat("sts"), c, "'sts' or 'loops'");
+    need(c.eat("of"), c, "'of Piece N' or 'of holder N'");
+    step.holder[0] = !step.provisional && c.eat("holder");
+    need(step.holder[0] || c.eat("piece"), c, "'of Piece N' or 'of holder N'");
+    step.number = need_number(c, step.holder[0] ? "a holder number" : "a piece number");
+    if (step.provisional) need_words(c, {"'", "s", "chain"}, "'s chain' after the piece");
     need_words(c, {"on", "the", "needle"}, "'on the needle'");
-    if (c.eat("after")) {
-      need_words(c, {"the", "first"}, "'after the first N sts'");
-      step.last = need_number(c, "how many sts come before them");
-      need(c.eat_any({"sts", "st"}), c, "'sts'");
-    } else {
-      need_words(c, {"at", "the", "beginning"}, "'at the beginning' or 'after the first N sts'");
-    }
-    need_words(c, {"of", "the", "rnd", ",", "the"}, "'of the rnd, the first (or last) st'");
+    step.last = place_in_rnd(c);
+    need_words(c, {",", "the"}, "', the first (or last) st'");
     step.from_last[0] = c.eat("last");
     need(step.from_last[0] || c.eat("first"), c, "'first' or 'last'");
-    need_words(c, {"st", "of", "its", "last"}, "'st of its last rnd'");
-    need(c.eat_any({"rnd", "row"}), c, "'rnd' or 'row'");
-    need(c.eat("first") && c.done(), c, "'first' and the end of the sentence");
+    need(c.eat("st"), c, "'st of its last rnd' or 'st cast on'");
+    if (c.eat("cast")) {
+      need(c.eat("on"), c, "'st cast on'");
+    } else {
+      need_words(c, {"of", "its", "last"}, "'st of its last rnd' or 'st cast on'");
+      need(c.eat_any({"rnd", "row"}), c, "'rnd' or 'row'");
+    }
+    need(c.eat("first"), c, "'first'");
+    end_with_count(c, step);
     add(step);
+  }
+
+  // "Slip sts 10–18 of the rnd to holder 1, sts 19–27 to holder 2 and sts 28–36 to holder 3":
+  // the sts are counted in the rnd as it is before any is slipped, so the last run goes first.
+  void hold(Cursor& c) {
+    std::vector<Step> runs;
+    do {
+      Step step{Step::Kind::hold, line_no_};
+      need(c.eat("sts"), c, "'sts A–B'");
+      step.from_row = need_number(c, "the first st to hold");
+      need(c.eat(kEnDash) || c.eat("-"), c, "'–' between the first and the last st");
+      step.to_row = need_number(c, "the last st to hold");
+      if (step.to_row < step.from_row) fail("expected the sts in increasing order", c.rest());
+      if (runs.empty()) need_words(c, {"of", "the", "rnd"}, "'of the rnd'");
+      need_words(c, {"to", "holder"}, "'to holder N'");
+      step.number = need_number(c, "a holder number");
+      runs.push_back(step);
+    } while (c.eat_char(',') || c.eat("and"));
+    end_with_count(c, runs.front());  // checked once the last run (given first) is slipped
+    for (auto run = runs.rbegin(); run != runs.rend(); ++run) add(*run);
   }
 
   void need_words(Cursor& c, std::initializer_list<std::string_view> words, const char* expected) {
@@ -302,9 +374,9 @@ class SentenceReader {
     Step step{Step::Kind::three_needle_bind_off, line_no_};
     need_words(c, {":", "hold", "the", "pieces", "with", "RS", "together", ":"},
                "': hold the pieces with RS together:'");
-    step.number = needle_end(c, {"in", "front"}, step.from_last[0]);
+    step.number = needle_end(c, {"in", "front"}, step.from_last[0], step.holder[0]);
     need(c.eat_char(';'), c, "';' after the front piece");
-    step.last = needle_end(c, {"behind"}, step.from_last[1]);
+    step.last = needle_end(c, {"behind"}, step.from_last[1], step.holder[1]);
     if (c.eat_char('('))
       while (!c.done() && !c.eat_char(')')) c.eat_char(c.peek());
     need_words(c, {";", "with"}, "'; with a new yarn' or '; with its yarn'");
@@ -316,11 +388,13 @@ class SentenceReader {
     add(step);
   }
 
-  // "Piece 1 in front, the first st of its last row at the needle tip": the piece's number.
+  // "Piece 1 (or: holder 3) in front, the first st of its last row at the needle tip": the
+  // piece's (or holder's) number.
   std::uint32_t needle_end(Cursor& c, std::initializer_list<std::string_view> where,
-                           bool& from_last) {
-    need(c.eat("piece"), c, "'Piece N'");
-    std::uint32_t piece = need_number(c, "a piece number");
+                           bool& from_last, bool& holder) {
+    holder = c.eat("holder");
+    need(holder || c.eat("piece"), c, "'Piece N' or 'holder N'");
+    std::uint32_t piece = need_number(c, holder ? "a holder number" : "a piece number");
     need_words(c, where, "'in front' or 'behind' after the piece");
     need_words(c, {",", "the"}, "', the first (or last) st of its last row'");
     from_last = c.eat("last");
@@ -338,7 +412,7 @@ class SentenceReader {
     c.eat("the");
     step.count = need_number(c, "the number of sts to hold");
     need_words(c, {"sts", "of"}, "'sts of Piece N'");
-    step.number = needle_end(c, {"behind", "the", "needle"}, step.from_last[0]);
+    step.number = needle_end(c, {"behind", "the", "needle"}, step.from_last[0], step.holder[0]);
     need(c.done(), c, "the end of the sentence");
     add(step);
   }

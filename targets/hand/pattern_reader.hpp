@@ -60,6 +60,8 @@ struct Step {
     pick_up,                // "Pick up <count> sts along the right edge of Piece <number>, ..."
     three_needle_bind_off,  // Piece <number> in front, Piece <last> behind, <count> pairs;
                             // from_last: which ends are at the tips (front, back)
+    hold,                   // "Slip sts <from_row>–<to_row> of the rnd to holder <number>"
+    to_spare,               // "Put the <count> sts of holder <number> on a spare needle, ..."
     hold_behind,            // "Hold the <count> sts of Piece <number> behind the needle, the
                             // first (from_last[0]: last) st of its last row at the tip"
   };
@@ -74,11 +76,14 @@ struct Step {
   std::optional<std::uint32_t> sts;  // the printed stitch count ("— 56 sts")
   std::uint32_t program = 0;         // into Script::programs
   bool from_last[2] = {false, false};
-  bool provisional = false;  // cast_on: with a provisional cast-on; join_spare: its chain
+  bool provisional = false;  // cast_on: with a provisional cast-on; join_spare, place: its chain
   bool own_yarn = false;     // three_needle_bind_off: with the front piece's yarn
   std::uint32_t from_row = 0, to_row = 0;  // pick_up: one st in each of these rows (provisional:
                                            // along the right edge)
   HandOp op = HandOp::k;
+  // place (front), three_needle_bind_off: the number (and last) name a holder, not a piece.
+  bool holder[2] = {false, false};
+  bool into_rnd = false;  // pick_up: onto the needle of the piece worked, after <last> sts
 };
 
 struct Script {
