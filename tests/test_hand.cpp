@@ -114,8 +114,8 @@ TEST(HandTarget, SamplesNotCoveredYetNameWhatStopsThem) {
   const std::pair<const char*, const char*> cases[] = {
       {"samples/letter-h/letter-h.yaml", "from the needle of Piece 1 itself"},
       {"samples/teapot/teapot.yaml",
-       "yarn 2 starts with face 1321 (k, row 25) on the sts of Piece 1 (the first: face 246 (k, "
-       "row 9)) that it leaves on its needle; putting them on a holder"},
+       "face 1909 (k, row 34) works a loop of face 1761 (k, row 33) across a perpendicular edge "
+       "from the needle of Piece 2 itself"},
   };
   for (const auto& [sample, named] : cases) {
     std::string error = emit_error(compile_model(sample));

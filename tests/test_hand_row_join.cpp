@@ -49,6 +49,26 @@ TEST(HandRowJoin, TheThreeBarsWithTheirOwnYarnsAreProvenInEveryFormat) {
   EXPECT_EQ(testing::unproven_hand_formats(c), "") << pattern;
 }
 
+// A tube that goes on as two flaps: sts 1-3 slipped to a holder, the tube set aside, a new
+// yarn joined to the holder's sts (as the teapot's body's second strip starts).
+TEST(HandRowJoin, ProvesAndRejectsANewYarnJoinedToAHoldersSts) {
+  const std::string tube =
+      "Cast on 6 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\n"
+      "Slip sts 1\u20133 of the rnd to holder 1 \u2014 3 sts.\n"
+      "Leave the 3 sts on the needle and set the yarn aside (do not cut it).\n";
+  const std::string rest =
+      "Row 1 (RS): BO all sts.\nFasten off.\nTake up Piece 1 again with "
+      "its yarn.\nRnd 2: BO all sts.\nFasten off.\n";
+  EXPECT_EQ(failure_of(tube +
+                       "Join a new yarn to the 3 sts of holder 1, the first st of its last "
+                       "rnd at the tip.\n" +
+                       rest),
+            "");
+  EXPECT_EQ(failure_of(tube + "Join a new yarn to the 4 sts of holder 1, the first st of its last "
+                              "rnd at the tip.\n"),
+            "p.md:5: Join a new yarn: the pattern says 4 sts, but the holder holds 3");
+}
+
 TEST(HandRowJoin, RejectsAThreeNeedleBindOffWorkedWrongWithTheReason) {
   const std::string spare =
       "Cast on 3 sts.\nRow 1 (RS): Knit.\nLeave the 3 sts on a spare needle and cut the yarn.\n"

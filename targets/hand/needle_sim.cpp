@@ -266,11 +266,15 @@ class NeedleSimulator {
       fail(fmt::format("Join a new yarn: the piece before still has {} on the needle",
                        sts(pc_.live)));
     std::vector<std::uint32_t> loops =
-        spare_needle(s.number, s.from_last[0], "Join a new yarn", s.provisional);
+        s.holder[0] ? held(s.number, s.from_last[0], "Join a new yarn")
+                    : spare_needle(s.number, s.from_last[0], "Join a new yarn", s.provisional);
     if (loops.size() != s.count)
-      fail(fmt::format("Join a new yarn: the pattern says {}, but the needle holds {}",
-                       sts(s.count), loops.size()));
-    spare_needles_.erase({s.number, s.provisional ? kChain : kNeedle});
+      fail(fmt::format("Join a new yarn: the pattern says {}, but the {} holds {}", sts(s.count),
+                       s.holder[0] ? "holder" : "needle", loops.size()));
+    if (s.holder[0])
+      holders_.erase(s.number);
+    else
+      spare_needles_.erase({s.number, s.provisional ? kChain : kNeedle});
     start_piece();
     fab().rows.push_back({0, 0, 0, false, Side::rs});
     row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);

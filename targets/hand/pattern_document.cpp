@@ -244,6 +244,11 @@ class InstructionWriter {
   // "Join a new yarn to the 3 loops of Piece 1's chain, the first st cast on at the tip."
   std::string join_spare_text(const PatternSection::Start& start) const {
     const PatternSection& spare = p_.sections[start.section];
+    if (start.holder)
+      return fmt::format(
+          "Join a new yarn to the {} of holder {}, the {} st of its last {} at the tip.",
+          sts(start.count), start.holder, start.from_last ? "last" : "first",
+          spare.in_round ? "rnd" : "row");
     return fmt::format("Join a new yarn to the {} {} of Piece {}{}, the {} st cast on at the tip.",
                        start.count, start.chain ? "loops" : "sts", spare.piece,
                        start.chain ? "'s chain" : "", start.from_last ? "last" : "first");

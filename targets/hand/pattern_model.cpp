@@ -212,8 +212,7 @@ class PatternBuilder {
     s.yarn = yarn;
     s.piece = ++pieces_;
     s.first_row = s.end_row = static_cast<std::uint32_t>(out_.rows.size());
-    st_.live = 0;
-    st_.cast_on_done = false;
+    st_ = Needle{};  // a new yarn: nothing of the piece before
   }
 
   // The yarn waits for another piece: its sts stay on the needle.
@@ -355,7 +354,10 @@ class PatternBuilder {
   // One side of a split: the loops wait on a spare needle (or on the provisional cast-on's
   // chain: the loops' second slot).
   void start_from_spare_needle(const Loop& first) {
-    if (first.maker != kNoStitch && g_.type[first.maker] != T::sco) refuse_start_on_live_sts(first);
+    if (first.maker != kNoStitch && g_.type[first.maker] != T::sco) {
+      if (holder_of_[first.maker] == 0) refuse_start_on_live_sts(first);
+      return start_from_holder(first);
+    }
     if (first.maker == kNoStitch)
       unsupported(
           fmt::format("yarn {} starts with {}, neither with a cast-on nor on the sts of a "
@@ -425,14 +427,26 @@ class PatternBuilder {
     }
   }
 
+  // A new yarn joined to sts another piece slipped to a holder (a body that goes on as two
+  // flaps): the holder's first or last st at the tip.
+  void start_from_holder(const Loop& first) {
+    std::uint32_t holder = holder_of_[first.maker];
+    const Held& held = holders_[holder - 1];
+    section().starts_from = PatternSection::Start{section_of(first.maker), false,
+                                                  first.maker == held.last, held.count, holder};
+    st_.live = st_.ahead = held.count;
+  }
+
   // A new yarn that starts on sts another piece worked and left on its needle (a body whose
   // sts are shared out between pieces) would need them put on a holder first.
   [[noreturn]] void refuse_start_on_live_sts(const Loop& first) const {
+    std::uint32_t holder = holder_of_[first.maker];
     unsupported(fmt::format(
-        "yarn {} starts with {} on the sts of Piece {} (the first: {}) that it leaves on its "
-        "needle; putting them on a holder to join a new yarn to them is not covered yet",
+        "yarn {} starts with {} on the sts of Piece {} (the first: {}){}; joining a new yarn to "
+        "sts another piece leaves is not covered yet",
         out_.sections.back().yarn + 1, g_.describe(row_.front()),
-        out_.sections[section_of(first.maker)].piece, g_.describe(first.maker)));
+        out_.sections[section_of(first.maker)].piece, g_.describe(first.maker),
+        holder ? fmt::format(", slipped to holder {}", holder) : " left on its needle"));
   }
 
   // A provisional cast-on in the middle of a row: the st goes on the needle, the loop of its
@@ -724,7 +738,9 @@ class PatternBuilder {
   // Is the maker's st on the needle of the piece being worked: its own, one of a spare needle
   // placed into its rnd, or one of the spare needle it started on?
   bool on_own_needle(StitchId maker) const {
-    if (holder_of_[maker] != 0) return holder_placed(holder_of_[maker]);
+    const auto& start = out_.sections.back().starts_from;
+    if (holder_of_[maker] != 0)
+      return holder_placed(holder_of_[maker]) || (start && start->holder == holder_of_[maker]);
     std::uint32_t from = section_of(maker);
     const PatternSection& worked = out_.sections.back();
     const auto& placed = worked.placements;

@@ -90,6 +90,7 @@ struct PatternSection {
     std::uint32_t section;
     bool chain, from_last;
     std::uint32_t count;
+    std::uint32_t holder = 0;  // the sts another piece slipped to this holder
   };
   // A provisional cast-on in the middle of one of its rows ("CO 3 sts with a provisional
   // cast-on"): how many sts, and the model stitches cast on first and last (its chain's ends).

@@ -270,13 +270,22 @@ class SentenceReader {
     step.count = need_number(c, "the number of sts");
     step.provisional = c.eat("loops");
     need(step.provisional || c.eat("sts"), c, "'sts' or 'loops'");
-    need_words(c, {"of", "piece"}, "'of Piece N'");
-    step.number = need_number(c, "a piece number");
+    need(c.eat("of"), c, "'of Piece N' or 'of holder N'");
+    step.holder[0] = !step.provisional && c.eat("holder");
+    need(step.holder[0] || c.eat("piece"), c, "'of Piece N' or 'of holder N'");
+    step.number = need_number(c, step.holder[0] ? "a holder number" : "a piece number");
     if (step.provisional) need_words(c, {"'", "s", "chain"}, "'s chain' after the piece");
     need_words(c, {",", "the"}, "', the first (or last) st cast on'");
     step.from_last[0] = c.eat("last");
     need(step.from_last[0] || c.eat("first"), c, "'first' or 'last'");
-    need_words(c, {"st", "cast", "on", "at", "the", "tip"}, "'st cast on at the tip'");
+    need(c.eat("st"), c, "'st cast on at the tip' or 'st of its last rnd at the tip'");
+    if (step.holder[0]) {
+      need_words(c, {"of", "its", "last"}, "'of its last rnd'");
+      need(c.eat_any({"rnd", "row"}), c, "'rnd' or 'row'");
+    } else {
+      need_words(c, {"cast", "on"}, "'st cast on at the tip'");
+    }
+    need_words(c, {"at", "the", "tip"}, "'at the tip'");
     need(c.done(), c, "the end of the sentence");
     add(step);
   }
