@@ -260,3 +260,76 @@ StitchMesh edging_mesh(int width, int rows) {
 }
 
 }  // namespace skein::testing
+
+namespace skein::testing {
+
+KnitGraph heel_turn_graph() {
+  using T = StitchType;
+  KnitGraph g;
+  g.source_name = "heel turn";
+  g.element = "face";
+  g.row_shape = {RowShape::closed, RowShape::closed, RowShape::open,
+                 RowShape::open,   RowShape::closed, RowShape::closed};
+  auto row_of = [&](std::initializer_list<T> types, std::uint32_t row) {
+    std::vector<StitchId> made;
+    for (T t : types) made.push_back(g.add_stitch(t, row, g.size(), 0));
+    return made;
+  };
+  auto c = row_of({T::co, T::co, T::co, T::co, T::co, T::co}, 0);
+  auto a = row_of({T::k, T::k, T::k, T::k, T::k, T::k}, 1);
+  auto b = row_of({T::k, T::k2tog}, 2);      // b0 over a0; b1 over a1 and a2
+  auto d = row_of({T::k2tog, T::k2tog}, 3);  // d1 (a3, b1) first, then d0 (b0, a5)
+  auto e = row_of({T::k, T::k, T::k}, 4);    // over d0, d1, a4
+  auto f = row_of({T::bo, T::bo, T::bo}, 5);
+  const StitchId yarn[] = {c[0], c[1], c[2], c[3], c[4], c[5], a[0], a[1], a[2], a[3], a[4],
+                           a[5], b[0], b[1], d[1], d[0], e[0], e[1], e[2], f[0], f[1], f[2]};
+  for (std::size_t i = 0; i + 1 < std::size(yarn); ++i) {
+    g.yarn_next[yarn[i]] = yarn[i + 1];
+    g.yarn_link[yarn[i]] = YarnLink::course;
+  }
+  for (StitchId end_of_round : {c[5], a[5], e[2]}) g.yarn_link[end_of_round] = YarnLink::shift;
+  for (StitchId turn : {b[1], d[0]}) g.yarn_link[turn] = YarnLink::turn;
+  auto loop = [&](StitchId maker, StitchId taker, std::uint8_t slot, LoopKind kind) {
+    g.loops.push_back({maker, taker, kind, 0, slot});
+  };
+  const LoopKind w = LoopKind::wale, across = LoopKind::perpendicular;
+  for (int i = 0; i < 6; ++i) loop(c[i], a[i], 0, w);
+  loop(a[0], b[0], 0, w);
+  loop(a[2], b[1], 0, across);  // rows run right to left seen from the RS: a2 is left of a1
+  loop(a[1], b[1], 1, w);
+  loop(a[3], d[1], 0, across);
+  loop(b[1], d[1], 1, w);
+  loop(b[0], d[0], 0, w);
+  loop(a[5], d[0], 1, across);
+  loop(d[0], e[0], 0, w);
+  loop(d[1], e[1], 0, w);
+  loop(a[4], e[2], 0, w);
+  for (int i = 0; i < 3; ++i) loop(e[i], f[i], 0, w);
+  g.index_loops();
+  return g;
+}
+
+KnitGraph folded_tube_graph() {
+  using T = StitchType;
+  KnitGraph g;
+  g.source_name = "folded tube";
+  g.element = "face";
+  g.row_shape = {RowShape::closed, RowShape::closed, RowShape::open};
+  for (std::uint32_t r = 0; r < 2; ++r)
+    for (int i = 0; i < 6; ++i) g.add_stitch(r == 0 ? T::co : T::k, r, g.size(), 0);
+  for (int i = 0; i < 3; ++i) g.add_stitch(T::tnbo, 2, g.size(), 0);
+  for (StitchId s = 0; s + 1 < g.size(); ++s) {
+    if (s == 11) continue;  // the tube's yarn ends with its sts live
+    g.yarn_next[s] = s + 1;
+    g.yarn_link[s] = s == 5 || s == 11 ? YarnLink::shift : YarnLink::course;
+  }
+  for (StitchId i = 0; i < 6; ++i) g.loops.push_back({i, 6 + i, LoopKind::wale, 0, 0});
+  for (StitchId i = 0; i < 3; ++i) {
+    g.loops.push_back({8 - i, 12 + i, LoopKind::joined, 0, 0});  // front: a2, a1, a0
+    g.loops.push_back({9 + i, 12 + i, LoopKind::joined, 0, 1});  // back: a3, a4, a5
+  }
+  g.index_loops();
+  return g;
+}
+
+}  // namespace skein::testing

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "driver/pipeline.hpp"
+#include "knitgraph/knit_graph.hpp"
 #include "mesh/stitch_mesh.hpp"
 
 namespace skein::testing {
@@ -57,6 +58,16 @@ StitchMesh expanding_mesh();
 // bind-off. Faces: 0-3 cast-on, 4-5 first short row, 6 the short-row face, 7-8 second short row,
 // 9-12 the full row (right to left), 13-16 bind-off.
 StitchMesh short_row_mesh(StitchType turn = StitchType::sr4);
+
+// A heel turn on a tube, as a knit graph: 6 sts cast on in the rnd and a rnd (a0..a5); a band
+// over a0 and a1 worked back and forth that decreases across the gap into the sts beside it
+// (a row ends with a k2tog into a2; the row back starts with a3 slipped back and ends with
+// a k2tog into a5, round the end of the needle); a rnd over the band and a4; a bind-off.
+KnitGraph heel_turn_graph();
+
+// A tube closed by a three-needle bind-off of its last rnd folded in half: 6 sts cast on in the
+// rnd, a rnd, and with a new yarn 3 pairs (a2 with a3, a1 with a4, a0 with a5).
+KnitGraph folded_tube_graph();
 
 // How often `what` occurs in `text`.
 std::size_t occurrences(std::string_view text, std::string_view what);

@@ -112,10 +112,16 @@ TEST(HandTarget, StitchesNotCoveredYetAreNamed) {
 TEST(HandTarget, SamplesNotCoveredYetNameWhatStopsThem) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
   const std::pair<const char*, const char*> cases[] = {
-      {"samples/letter-h/letter-h.yaml", "from the needle of Piece 1 itself"},
+      {"samples/letter-h/letter-h.yaml",
+       "binds off one needle's sts folded in half, but its pairs do not go along the fold in one "
+       "direction (after face 1449 (k, row 96) it takes face"},
+      {"samples/letter-r/letter-r.yaml",
+       "face 1327 (k, row 36) picks up a loop along the edge of face 1144 (k, row 35) (an "
+       "expanding perpendicular edge) in the middle of the work (a gusset's \"pick up and "
+       "knit\")"},
       {"samples/teapot/teapot.yaml",
-       "face 1909 (k, row 34) works a loop of face 1761 (k, row 33) across a perpendicular edge "
-       "from the needle of Piece 2 itself"},
+       "face 1909 (k, row 34) picks up a loop along the edge of face 1761 (k, row 33) (an "
+       "expanding perpendicular edge) in the middle of the work"},
   };
   for (const auto& [sample, named] : cases) {
     std::string error = emit_error(compile_model(sample));

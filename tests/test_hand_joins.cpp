@@ -183,6 +183,118 @@ TEST(HandPickUps, TheContractingFixtureIsProvenInEveryFormat) {
             "meant?");
 }
 
+// A heel turn's decrease across the gap: the row decreases into the st beyond it on the left
+// needle (in the rnd, from the far end of the right one), or into the st at the tip of the
+// right needle slipped back ("sl1 back"); the beginning-of-rnd marker is removed there and
+// placed anew by the next rnd.
+TEST(HandGaps, ARowDecreasesAcrossTheGapIntoItsOwnNeedle) {
+  const std::string tube =
+      "Cast on 8 sts. Pm and join to work in the rnd, being careful not to twist.\nRnd 1: "
+      "Knit.\n";
+  EXPECT_EQ(failure_of(tube + "Row 2 (RS): Rm, sl1 back, k2tog, k2, turn — 7 sts.\nRow 3 (WS): Sl1 "
+                              "back, p2tog, p1, p2tog, turn — 5 sts.\nRnd 4: Pm, k to end.\nRnd 5: "
+                              "BO all sts.\nFasten off.\n"),
+            "");
+  EXPECT_EQ(failure_of(tube + "Row 2 (RS): Sl1 back, k2tog, k2, turn.\n"),
+            "p.md:3: Row 2 (RS): sl1 back: the tip of the right needle holds a marker, not a st");
+  EXPECT_EQ(failure_of("Cast on 3 sts.\nRow 1 (RS): Sl1 back, k3.\n"),
+            "p.md:2: Row 1 (RS): sl1 back: the tip of the right needle holds nothing, not a st");
+}
+
+TEST(HandGaps, TheHeelTurnIsProvenInEveryFormat) {
+  Compilation c = compile_knit_graph(testing::heel_turn_graph(), "heel turn");
+  ASSERT_TRUE(c.knittability.knittable) << check_report(c);
+  std::string pattern = emit(c, "hand");
+  for (const char* line : {"**Row 2 (RS):** Rm, k1, k2tog, turn — 5 sts.\n",
+                           "**Row 3 (WS):** Sl1 back, [p2tog] 2 times, turn — 3 sts.\n",
+                           "**Rnd 4:** Pm, k3.\n", "**Decreasing across a gap**"})
+    EXPECT_NE(pattern.find(line), std::string::npos) << line << "\n" << pattern;
+  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
+    VerifyReport report = verify(c, target, emit(c, target));
+    EXPECT_TRUE(report.proven) << target << ": " << report.summary;
+  }
+}
+
+TEST(HandGaps, AFoldedTubeIsProvenInEveryFormat) {
+  Compilation c = compile_knit_graph(testing::folded_tube_graph(), "folded tube");
+  ASSERT_TRUE(c.knittability.knittable) << check_report(c);
+  std::string pattern = emit(c, "hand");
+  EXPECT_NE(pattern.find("Three-needle bind-off: fold the 6 sts of Piece 1 in half with RS "
+                         "together (count them round the needle from the first st of its last "
+                         "rnd): sts 3 down to 1 in front, sts 4 up to 6 behind; with a new yarn "
+                         "bind off all 3 pairs.\n"),
+            std::string::npos)
+      << pattern;
+  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
+    VerifyReport report = verify(c, target, emit(c, target));
+    EXPECT_TRUE(report.proven) << target << ": " << report.summary;
+  }
+}
+
+// The loops of a provisional cast-on's chain are placed into a rnd like a spare needle's sts.
+TEST(HandGaps, AChainIsPlacedIntoTheRndLikeASpareNeedle) {
+  const std::string pieces =
+      "Cast on 3 sts with a provisional cast-on.\nLeave the 3 sts on a spare needle and cut the "
+      "yarn.\nCast on 4 sts. Pm and join to work in the rnd, being careful not to twist.\nRnd "
+      "1: Knit.\nLeave the 4 sts on the needle and set the yarn aside (do not cut it).\nTake up "
+      "Piece 2 again with its yarn. Place the 3 sts of Piece 1 on the needle at the beginning of "
+      "the rnd, the first st of its last row first.";
+  const std::string rest = "\nRnd 2: Knit — 10 sts.\nRnd 3: BO all sts.\nFasten off.\n";
+  EXPECT_EQ(failure_of(pieces +
+                       " Place the 3 loops of Piece 1's chain on the needle after the first 7 "
+                       "sts of the rnd, the last st cast on first." +
+                       rest),
+            "");
+  EXPECT_EQ(failure_of(pieces +
+                       " Place the 4 loops of Piece 1's chain on the needle after the first 7 "
+                       "sts of the rnd, the last st cast on first." +
+                       rest),
+            "p.md:6: Place the sts of Piece 1: the pattern says 4 sts, but its chain holds 3");
+}
+
+// A piece worked in the rnd is placed from the st the rnd works first: round its spare needle
+// from that st.
+TEST(HandGaps, APieceIsPlacedFromTheStItsRndWorksFirst) {
+  auto pattern = [](const char* first) {
+    return fmt::format(
+        "Cast on 4 sts. Pm and join to work in the rnd, being careful not to twist.\nRnd 1: "
+        "Knit.\nLeave the 4 sts on a spare needle and cut the yarn.\nCast on 4 sts. Pm and "
+        "join to work in the rnd, being careful not to twist.\nRnd 1: Knit.\nLeave the 4 sts "
+        "on the needle and set the yarn aside (do not cut it).\nTake up Piece 2 again with its "
+        "yarn. Place the 4 sts of Piece 1 on the needle after the first 4 sts of the rnd, {} "
+        "first \u2014 8 sts.\nRnd 2: Knit.\nRnd 3: BO all sts.\nFasten off.\n",
+        first);
+  };
+  EXPECT_EQ(failure_of(pattern("st 3 of its last rnd")), "");
+  EXPECT_EQ(failure_of(pattern("st 5 of its last rnd")),
+            "p.md:7: Place the sts of Piece 1: its needle holds no st 5");
+}
+
+// A rnd closed by a three-needle bind-off: its sts folded in half on two needles, each run
+// counted round the needle from the first st of the last row.
+TEST(HandGaps, ARndFoldedInHalfIsBoundOffAndItsRunsAreChecked) {
+  auto pattern = [](const char* sts, const char* runs) {
+    return fmt::format(
+        "Cast on 6 sts. Pm and join to work in the rnd, being careful not to twist.\nRnd 1: "
+        "Knit.\nLeave the 6 sts on a spare needle and cut the yarn.\nThree-needle bind-off: "
+        "fold the {} sts of Piece 1 in half with RS together (count them round the needle from "
+        "the first st of its last row): {}; with a new yarn bind off all 3 pairs.\nFasten "
+        "off.\n",
+        sts, runs);
+  };
+  const char* cases[][3] = {
+      {"6", "sts 3 down to 1 in front, sts 4 up to 6 behind", ""},
+      {"6", "sts 3 down to 2 in front, sts 4 up to 6 behind",
+       "p.md:4: three-needle bind-off: 3 sts from st 3 down end at st 1, not 2"},
+      {"6", "sts 3 down to 1 in front, sts 3 up to 5 behind",
+       "p.md:4: three-needle bind-off: the front and back needles share sts"},
+      {"8", "sts 3 down to 1 in front, sts 4 up to 6 behind",
+       "p.md:4: three-needle bind-off: the pattern folds 8 sts, but Piece 1 has 6 sts"},
+  };
+  for (const auto& [sts, runs, failure] : cases)
+    EXPECT_EQ(failure_of(pattern(sts, runs)), failure) << runs;
+}
+
 TEST(HandPickUps, RejectsAPickUpThatCannotBeWorkedWithTheReason) {
   const std::string piece =
       "Cast on 2 sts.\nRow 1 (RS): Knit.\nRow 2 (WS): BO all sts.\nFasten off.\n";
@@ -273,8 +385,10 @@ TEST(HandPieces, TheTwoBarsAreProvenInEveryFormat) {
        "of its last rnd at the tip.\n\n**Row 24 (RS):** Sl1 from spare, ssk, k8, turn.\n",
        "Pick up 10 sts along the left edge of Piece 2, one in each row from Row 33 down to Row "
        "24, onto the needle after the first 18 sts of the rnd.\n",
-       "holder 6 in front, the last st of its last row at the needle tip; holder 3 behind, the "
-       "first st"});
+       "Place the 9 loops of Piece 3's chain on the needle after the first 9 sts of the rnd, the "
+       "last st cast on first.\n",
+       "holder 3 in front, the first st of its last row at the needle tip; holder 6 behind, the "
+       "last st"});
 }
 
 // A tube whose sts 3-4 wait on a holder for a rnd and are placed back.

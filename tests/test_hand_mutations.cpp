@@ -221,6 +221,8 @@ class Mutator {
       {"DS", {"k", "sm"}},
       {"kw", {"k", "pw"}},
       {"pw", {"p", "kw"}},
+      {"back", {"from spare"}},
+      {"Rm", {"Sm"}},
   };
 
   bool near_a_piece_heading(std::size_t i) const {  // blank lines between instructions
@@ -397,7 +399,7 @@ TEST(HandMutations, ProvisionalCastOnsInARowRejectEveryEditThatChangesTheFabric)
   for (bool rs_row : {false, true})
     mutate_and_judge(rs_row ? "cast-on in a RS row" : "cast-on in a WS row",
                      compile_stitch_mesh(testing::mid_row_split_mesh(rs_row), "mid-row split"));
-  mutate_and_judge("cast-on in a rnd (worked with the WS facing)",
+  mutate_and_judge("cast-on in a rnd (mirrored)",
                    compile_stitch_mesh(testing::mid_round_split_mesh(), "mid-round split"));
 }
 
@@ -416,6 +418,13 @@ TEST(HandMutations, PickUpsRejectEveryEditThatChangesTheFabric) {
                    compile_stitch_mesh(testing::contracting_mesh(), "contracting"));
   mutate_and_judge("knitted-on edging with markers",
                    compile_stitch_mesh(testing::edging_mesh(6, 4), "edging"));
+}
+
+TEST(HandMutations, DecreasesAcrossAGapRejectEveryEditThatChangesTheFabric) {
+  mutate_and_judge("heel turn (decreases across a gap)",
+                   compile_knit_graph(testing::heel_turn_graph(), "heel turn"));
+  mutate_and_judge("folded tube (three-needle bind-off of a rnd)",
+                   compile_knit_graph(testing::folded_tube_graph(), "folded tube"));
 }
 
 TEST(HandMutations, JoinsRejectEveryEditThatChangesTheFabric) {

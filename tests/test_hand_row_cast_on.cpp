@@ -3,10 +3,14 @@
 // on its chain; written, proven in every format, and the simulator's reasons for rejecting it.
 #include <gtest/gtest.h>
 
+#include <sstream>
 #include <string>
 
 #include "driver/pipeline.hpp"
 #include "fixtures.hpp"
+#include "hand/pattern_document.hpp"
+#include "hand/pattern_model.hpp"
+#include "hand/pattern_writers.hpp"
 #include "target_runner.hpp"
 
 namespace skein {
@@ -31,17 +35,24 @@ TEST(HandRowCastOn, AProvisionalCastOnInTheMiddleOfARowIsWrittenAndProven) {
   }
 }
 
-// In the round: the mirror image would swap the cast-on's needle and chain, which the rnd
-// worked on from the needle cannot follow, so its left-to-right rnds are worked with the WS
-// facing instead, and the pattern is proven as the model itself.
-TEST(HandRowCastOn, AProvisionalCastOnInTheMiddleOfARndIsWorkedInsideOutNotMirrored) {
+// In the round, mirrored (its rnds run left to right; the mirror keeps the cast-on's needle
+// and chain, the two sides of the split), and with those rnds worked with the WS facing.
+TEST(HandRowCastOn, AProvisionalCastOnInTheMiddleOfARndIsProvenMirroredAndInsideOut) {
   Compilation c = compile_stitch_mesh(testing::mid_round_split_mesh(), "mid-round split");
   std::string pattern = emit(c, "hand");
-  EXPECT_NE(pattern.find("**Rnd 2 (WS):** P1, CO 3 sts with a provisional cast-on, "),
-            std::string::npos)
+  EXPECT_NE(pattern.find("**Rnd 2:** K1, CO 3 sts with a provisional cast-on, "), std::string::npos)
       << pattern;
   EXPECT_EQ(testing::unproven_hand_formats(c), "") << pattern;
-  EXPECT_EQ(verify(c, "hand", pattern).summary.find("mirror image"), std::string::npos);
+  EXPECT_NE(verify(c, "hand", pattern).summary.find("mirror image"), std::string::npos);
+  std::ostringstream inside_out;
+  hand::write_markdown(hand::make_document(hand::build_hand_pattern(c, hand::TurnMethod::german,
+                                                                    hand::Rounds::ws_facing)),
+                       inside_out);
+  EXPECT_NE(inside_out.str().find("**Rnd 2 (WS):** P1, CO 3 sts with a provisional cast-on, "),
+            std::string::npos)
+      << inside_out.str();
+  VerifyReport report = verify(c, "hand", inside_out.str());
+  EXPECT_TRUE(report.proven) << report.summary << "\n" << inside_out.str();
 }
 
 TEST(HandRowCastOn, ProvesAndRejectsHandWrittenOnes) {

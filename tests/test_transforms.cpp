@@ -1,7 +1,9 @@
 // The knittable transforms (paper §3.2): one small mesh per mismatched direction and option,
 // each compiled, checked, scheduled and proven by the schedule simulator.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <sstream>
 
@@ -75,6 +77,27 @@ TEST(Join, OwnYarnOfEitherSideNeedsNoExtraRow) {
     std::uint32_t own_row = c.knit.row[upper ? 6 : 3];
     for (StitchId s = 0; s < c.knit.size(); ++s)
       EXPECT_EQ(c.knit.type[s] == T::tnbo, c.knit.row[s] == own_row) << c.knit.describe(s);
+  }
+}
+
+// An extruded row runs along its group's edges as a knitter meets them: each stitch's edge
+// touches the next one's, also where the rnd beside a join starts in its middle (letter H).
+TEST(Join, TheExtrudedRowFollowsTheChainOfEdges) {
+  for (const char* sample : {"letter-h", "three-bars", "two-bars", "teapot"}) {
+    std::string file = fmt::format("{}/samples/{}/{}.yaml", SKEIN_SOURCE_DIR, sample, sample);
+    Compilation c = compile_model(file);
+    const KnitGraph& g = c.knit;
+    std::uint32_t steps = 0;
+    for (StitchId s = g.first_extruded; s < g.size(); ++s) {
+      StitchId next = g.yarn_next[s];
+      if (next == kNoStitch) continue;
+      const MismatchEdge& a = g.mismatch_edges[g.extruded_at[s - g.first_extruded]];
+      const MismatchEdge& b = g.mismatch_edges[g.extruded_at[next - g.first_extruded]];
+      bool touch = std::ranges::find_first_of(a.vertex, b.vertex) != std::end(a.vertex);
+      EXPECT_TRUE(touch) << sample << ": " << g.describe(s) << " then " << g.describe(next);
+      ++steps;
+    }
+    EXPECT_GT(steps, 5u) << sample;
   }
 }
 

@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <numeric>
+#include <unordered_map>
 
 #include "common/error.hpp"
 
@@ -46,6 +48,7 @@ class MismatchTransform {
   void transform(std::uint32_t grp, std::vector<std::uint32_t>& edges) {
     const MismatchGroup& group = g_.groups[grp];
     sort_along_yarn(edges);
+    order_along_chain(edges);
     bool extra = group.yarn == MismatchYarnUse::extra;
     switch (group.kind) {
       case MismatchKind::join:
@@ -72,6 +75,55 @@ class MismatchTransform {
     std::sort(edges.begin(), edges.end(), [&](std::uint32_t a, std::uint32_t b) {
       return order_[side_stitch(loop_of(a))] < order_[side_stitch(loop_of(b))];
     });
+  }
+
+  // The edges as a knitter meets them along the group's chain of touching edges, walked from
+  // the end where it goes on with the yarn (from the lowest along the yarn, for a ring). A
+  // chain across a shift-path (a join whose rnd starts in its middle) stays one run this way,
+  // where the yarn's order alone would part it in two. A group whose edges are not one chain
+  // or ring keeps the yarn's order.
+  void order_along_chain(std::vector<std::uint32_t>& edges) const {
+    std::vector<std::array<std::uint32_t, 2>> next = touching(edges);
+    if (next.empty()) return;
+    auto ends = [&](std::uint32_t i) { return next[i][1] == kNoGroup; };
+    std::uint32_t start = 0;
+    for (std::uint32_t i = edges.size(); i-- > 0;)  // the lowest end that goes on upwards
+      if (ends(i) && (next[i][0] == kNoGroup || next[i][0] > i)) start = i;
+    std::vector<std::uint32_t> chain;
+    for (std::uint32_t at = start, from = kNoGroup;
+         at != kNoGroup && chain.size() < edges.size();) {
+      chain.push_back(edges[at]);
+      std::uint32_t to = next[at][0] == from ? next[at][1] : next[at][0];
+      if (from == kNoGroup && !ends(at)) to = std::min(next[at][0], next[at][1]);  // a ring
+      from = at, at = to;
+    }
+    if (chain.size() == edges.size()) edges = std::move(chain);
+  }
+
+  // Per edge (by index into `edges`), the edges that share a vertex with it, the missing one
+  // last; empty when a vertex has three edges or an edge touches none.
+  std::vector<std::array<std::uint32_t, 2>> touching(
+      const std::vector<std::uint32_t>& edges) const {
+    std::unordered_map<std::uint32_t, std::array<std::uint32_t, 2>> at_vertex;
+    for (std::uint32_t i = 0; i < edges.size(); ++i)
+      for (std::uint32_t v : g_.mismatch_edges[edges[i]].vertex) {
+        auto [it, fresh] = at_vertex.try_emplace(v, std::array{i, kNoGroup});
+        if (fresh) continue;
+        if (it->second[1] != kNoGroup) return {};
+        it->second[1] = i;
+      }
+    std::vector<std::array<std::uint32_t, 2>> next(edges.size(), {kNoGroup, kNoGroup});
+    for (const auto& [v, pair] : at_vertex) {
+      if (pair[1] == kNoGroup) continue;
+      for (int k : {0, 1}) {
+        auto& n = next[pair[k]];
+        (n[0] == kNoGroup ? n[0] : n[1]) = pair[1 - k];
+      }
+    }
+    if (edges.size() > 1 &&
+        std::any_of(next.begin(), next.end(), [](const auto& n) { return n[0] == kNoGroup; }))
+      return {};
+    return next;
   }
 
   // One extruded stitch per edge, on a new row and a new yarn piece along the group.

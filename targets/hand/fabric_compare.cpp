@@ -100,10 +100,11 @@ class Comparison {
       return differ(x, fmt::format("it takes {} loop(s), the model's stitch {}", taken.size(),
                                    model_taken.size()));
     for (std::size_t i = 0; i < taken.size(); ++i) {
-      const Loop& want_loop = g_.loops[model_taken[mirror_ ? taken.size() - 1 - i : i]];
+      bool flip_taken = mirror_ && g_.type[s] != StitchType::tnbo;
+      const Loop& want_loop = g_.loops[model_taken[flip_taken ? taken.size() - 1 - i : i]];
       std::uint32_t maker = f_.loop_maker[taken[i]];
       std::uint32_t slot = f_.rs_slot(taken[i]);
-      if (mirror_) slot = f_.made[maker] - 1 - slot;
+      if (mirror_ && !sides_of_a_split(f_.type[maker])) slot = f_.made[maker] - 1 - slot;
       if (model_of_[maker] != want_loop.maker || slot != want_loop.maker_slot)
         return differ(
             x, fmt::format("its {} loop from the left comes from {} (loop {}), the model's "
@@ -113,6 +114,10 @@ class Comparison {
     }
     return std::nullopt;
   }
+
+  // A three-needle bind-off's loops are front and back, a provisional cast-on's the two sides
+  // of its split: a mirror keeps them (it swaps left and right only).
+  static bool sides_of_a_split(StitchType type) { return type == StitchType::sco; }
 
   const Fabric& f_;
   const KnitGraph& g_;

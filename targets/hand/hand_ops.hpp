@@ -62,8 +62,12 @@ enum class HandOp : std::uint8_t {
   // the next st waiting on the spare needle goes onto the left needle, to be worked next.
   from_spare,
   from_spare_behind,  // ... behind the first st of the left needle (worked second)
+  // A row that decreases across a gap into a st of its own needle worked before it (a heel
+  // turn's st on the other side of the gap): that st goes back from the right needle's tip to
+  // the left needle's, to be worked next.
+  slip_back,
 };
-inline constexpr std::size_t kHandOpCount = static_cast<std::size_t>(HandOp::from_spare_behind) + 1;
+inline constexpr std::size_t kHandOpCount = static_cast<std::size_t>(HandOp::slip_back) + 1;
 
 struct HandOpInfo {
   HandOp op;

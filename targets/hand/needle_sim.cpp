@@ -349,6 +349,7 @@ class NeedleSimulator {
     std::vector<std::uint32_t> placed =
         s.holder[0] ? held(s.number, s.from_last[0], "Place the sts")
                     : spare_needle(s.number, s.from_last[0], "Place the sts", s.provisional);
+    start_at(placed, s);
     if (placed.size() != s.count)
       fail(fmt::format("Place the sts of {} {}: the pattern says {}, but {} holds {}",
                        s.holder[0] ? "holder" : "Piece", s.number, sts(s.count),
@@ -363,6 +364,14 @@ class NeedleSimulator {
       holders_.erase(s.number);
     else
       spare_needles_.erase({s.number, s.provisional ? kChain : kNeedle});
+  }
+
+  // "..., st 16 of its last rnd first": the placed sts go round from that one.
+  void start_at(std::vector<std::uint32_t>& placed, const Step& s) const {
+    if (s.from_row > placed.size())
+      fail(fmt::format("Place the sts of Piece {}: its needle holds no st {}", s.number,
+                       s.from_row));
+    if (s.from_row > 0) std::rotate(placed.begin(), placed.begin() + s.from_row - 1, placed.end());
   }
 
   // The loops go into the rnd after its first `after` sts, from the beginning-of-round marker.
@@ -442,22 +451,38 @@ class NeedleSimulator {
     return ring;
   }
 
-  // The piece's live sts wait on a spare needle, in the order its last row worked them.
+  // The piece's live sts wait on a spare needle, in the order its last row worked them (in
+  // the rnd, after a row that turned, going on round the needle with those it left).
   void leave(std::uint32_t n) {
     check_live(n, "Leave the sts");
     std::vector<std::uint32_t>& spare = spare_needles_[{pc_.number, kNeedle}];
     for (std::uint32_t entry : pc_.right)
       if (!is_marker_entry(entry)) spare.push_back(entry);
+    for (auto at = pc_.left.rbegin(); at != pc_.left.rend(); ++at)
+      if (!is_marker_entry(*at)) spare.push_back(*at);
+    start_at_last_row(spare);
     pc_.right.clear();
     pc_.left.clear();
     active_ = false;
     pc_.live = 0;
   }
 
+  // After a row that turned in the rnd the right needle holds sts of earlier rows behind those
+  // it worked: the ring starts at the row's first st.
+  void start_at_last_row(std::vector<std::uint32_t>& ring) {
+    const Fabric::RowWorked& last = fab().rows[row_];
+    if (!pc_.joined || last.round || last.first == kNoStitch) return;
+    auto at = std::find_if(ring.begin(), ring.end(), [&](std::uint32_t loop) {
+      return fab().loop_maker[loop] == last.first;
+    });
+    if (at != ring.end()) std::rotate(ring.begin(), at, ring.end());
+  }
+
   // Pairs the sts of two spare needles, each from the end the pattern puts at the tip, and
   // binds them off with a new yarn.
   // With its own yarn the front piece is the one being worked: its needle is the front one.
   void three_needle_bind_off(const Step& s) {
+    if (s.fold) return folded_bind_off(s);
     std::uint32_t front = s.number, back = s.last, pairs = s.count;
     if (s.own_yarn && (!active_ || pc_.number != front))
       fail(fmt::format("three-needle bind-off with its yarn: Piece {} is not being worked", front));
@@ -484,15 +509,7 @@ class NeedleSimulator {
     } else {
       start_piece();
     }
-    fab().rows.push_back({0, 0, 0, false, Side::ws, true});
-    row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
-    facing_ = Side::ws;  // the front piece shows its WS: its loop is taken first
-    for (std::uint32_t i = 0; i < pairs; ++i) {
-      new_stitch(StitchType::tnbo);
-      fab().taken.push_back(f[i]);
-      fab().taken.push_back(b[i]);
-      fab().taken_first.push_back(static_cast<std::uint32_t>(fab().taken.size()));
-    }
+    bind_off_pairs(f, b);
     for (int side : {0, 1}) {
       std::uint32_t n = side == 0 ? front : back;
       if (s.holder[side])
@@ -500,6 +517,59 @@ class NeedleSimulator {
       else
         spare_needles_.erase({n, kNeedle});
     }
+  }
+
+  void bind_off_pairs(const std::vector<std::uint32_t>& f, const std::vector<std::uint32_t>& b) {
+    fab().rows.push_back({0, 0, 0, false, Side::ws, true});
+    row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
+    facing_ = Side::ws;  // the front piece shows its WS: its loop is taken first
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      new_stitch(StitchType::tnbo);
+      fab().taken.push_back(f[i]);
+      fab().taken.push_back(b[i]);
+      fab().taken_first.push_back(static_cast<std::uint32_t>(fab().taken.size()));
+    }
+  }
+
+  // One piece's spare needle folded in half, counted round from the first st of its last row:
+  // each needle's run goes from its tip, down or up (round past either end), with a new yarn.
+  void folded_bind_off(const Step& s) {
+    if (active_ && pc_.live > 0)
+      fail(fmt::format("three-needle bind-off: the piece before still has {} on the needle",
+                       sts(pc_.live)));
+    std::vector<std::uint32_t> ring = spare_needle(s.number, false, "three-needle bind-off");
+    if (ring.size() != s.last)
+      fail(fmt::format("three-needle bind-off: the pattern folds {}, but Piece {} has {}",
+                       sts(s.last), s.number, sts(static_cast<std::uint32_t>(ring.size()))));
+    if (2 * s.count != ring.size())
+      fail(fmt::format("three-needle bind-off: {} pairs do not fold {} in half", s.count,
+                       sts(s.last)));
+    std::vector<std::uint32_t> f = folded_run(s, 0, ring), b = folded_run(s, 1, ring);
+    std::vector<std::uint32_t> all(f);
+    all.insert(all.end(), b.begin(), b.end());
+    std::sort(all.begin(), all.end());
+    if (std::adjacent_find(all.begin(), all.end()) != all.end())
+      fail("three-needle bind-off: the front and back needles share sts");
+    start_piece();
+    bind_off_pairs(f, b);
+    spare_needles_.erase({s.number, kNeedle});
+  }
+
+  std::vector<std::uint32_t> folded_run(const Step& s, int side,
+                                        const std::vector<std::uint32_t>& ring) const {
+    auto n = static_cast<std::uint32_t>(ring.size());
+    if (s.tip[side] < 1 || s.tip[side] > n)
+      fail(fmt::format("three-needle bind-off: Piece {} has no st {}", s.number, s.tip[side]));
+    std::vector<std::uint32_t> run;
+    std::uint32_t at = s.tip[side] - 1;
+    for (std::uint32_t i = 0; i < s.count; ++i) {
+      run.push_back(ring[at]);
+      if (i + 1 < s.count) at = s.from_last[side] ? (at + n - 1) % n : (at + 1) % n;
+    }
+    if (at + 1 != s.end[side])
+      fail(fmt::format("three-needle bind-off: {} sts from st {} {} end at st {}, not {}", s.count,
+                       s.tip[side], s.from_last[side] ? "down" : "up", at + 1, s.end[side]));
+    return run;
   }
 
   // The sts from the needle tip: the first or the last st of the piece's last row.
@@ -719,6 +789,20 @@ class NeedleSimulator {
     index_left_needle();
   }
 
+  // ... and a row that turns may work the last st of the left needle together with the first
+  // of the right one's far end (a decrease across a gap, on the other side of the needle).
+  void reach_around(std::uint32_t takes) {
+    if (!pc_.joined || row_round_ || left_loops_ >= takes || pc_.left.empty()) return;
+    std::size_t moved = 0;
+    while (left_loops_ + moved < takes && moved < pc_.right.size() &&
+           !is_marker_entry(pc_.right[moved]))
+      ++moved;
+    pc_.left.insert(pc_.left.begin(), pc_.right.rend() - static_cast<std::ptrdiff_t>(moved),
+                    pc_.right.rend());
+    pc_.right.erase(pc_.right.begin(), pc_.right.begin() + static_cast<std::ptrdiff_t>(moved));
+    index_left_needle();
+  }
+
   void end_row() {
     const char* what = row_round_ ? "rnd" : "row";
     if (!row_ended_ && pc_.joined && !row_round_)
@@ -888,8 +972,11 @@ class NeedleSimulator {
       case HandOp::tnbo:
         three_needle_bind_off_st();
         return;
+      case HandOp::slip_back:
+        slip_back();
+        return;
       case HandOp::pm:
-        pc_.right.push_back(new_marker());
+        place_marker();
         return;
       case HandOp::sm:
       case HandOp::rm: {
@@ -897,6 +984,7 @@ class NeedleSimulator {
           if (op == HandOp::rm) remove_bor();
           return;
         }
+        if (op == HandOp::rm && bor_just_slipped()) return remove_bor();
         if (pc_.left.empty() || !is_marker_entry(pc_.left.back()))
           fail(fmt::format("{}: the next thing on the left needle is {}, not a marker",
                            info(op).abbreviation, pc_.left.empty() ? "nothing" : "a st"));
@@ -985,6 +1073,38 @@ class NeedleSimulator {
     ++pc_.live;
   }
 
+  // sl1 back: the st at the tip of the right needle (in the rnd, the last st of the left
+  // needle when the right one is empty: the needle has no end) goes back to the left needle.
+  void slip_back() {
+    bool wraps = pc_.joined && pc_.right.empty() && !pc_.left.empty();
+    std::vector<std::uint32_t>& from = wraps ? pc_.left : pc_.right;
+    std::uint32_t loop = wraps ? from.front() : (from.empty() ? kNone : from.back());
+    if (loop == kNone || is_marker_entry(loop))
+      fail(fmt::format("sl1 back: the tip of the right needle holds {}, not a st",
+                       loop == kNone ? "nothing" : "a marker"));
+    if (wraps) {
+      from.erase(from.begin());
+      index_left_needle();
+    } else {
+      from.pop_back();
+    }
+    push_left(loop);
+  }
+
+  // A row that goes on from the end of a rnd slips the beginning-of-round marker first; "rm"
+  // before any st removes it (a row that works across it, as "sl1 back" does).
+  bool bor_just_slipped() const {
+    return position_ == 0 && !pc_.right.empty() && pc_.right.back() == pc_.bor;
+  }
+
+  // In the rnd with no beginning-of-round marker (it was removed), the first marker placed in
+  // a rnd marks the new beginning.
+  void place_marker() {
+    std::uint32_t marker = new_marker();
+    pc_.right.push_back(marker);
+    if (row_round_ && pc_.bor == kNone && position_ == 0) pc_.bor = marker;
+  }
+
   // DS: first after a turn, the st worked last before it is pulled up into a double stitch
   // and slipped.
   void double_stitch() {
@@ -1031,6 +1151,7 @@ class NeedleSimulator {
 
   void stitch(HandOp op) {
     const HandOpInfo& oi = info(op);
+    reach_around(oi.takes);
     std::uint32_t ready = loops_to_marker();
     if (ready < oi.takes)
       fail(fmt::format("{} needs {}{}, {} left", oi.abbreviation, sts(oi.takes),

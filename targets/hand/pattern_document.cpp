@@ -121,6 +121,7 @@ class InstructionWriter {
   }
 
   std::string three_needle_text(const PatternSection& sec) const {
+    if (sec.fold) return folded_needle_text(sec, *sec.fold);
     return fmt::format(
         "Three-needle bind-off: hold the pieces with RS together: {} in front, the {} st "
         "of its last row at the needle tip; {} behind, the {} st of its last row at the "
@@ -136,17 +137,47 @@ class InstructionWriter {
     return fmt::format("Piece {}", p_.sections[side == 0 ? sec.front : sec.back].piece);
   }
 
+  // "Three-needle bind-off: fold the 42 sts of Piece 4 in half with RS together (count them
+  // round the needle from the first st of its last row): sts 35 down to 15 in front, sts 36 up
+  // to 14 behind; with a new yarn bind off all 21 pairs."
+  std::string folded_needle_text(const PatternSection& sec, const PatternSection::Fold& f) const {
+    auto run = [&](int side) {
+      std::uint32_t steps = sec.pairs - 1, n = f.sts;
+      std::uint32_t end = f.down[side] ? (f.tip[side] - 1 + n - steps % n) % n + 1
+                                       : (f.tip[side] - 1 + steps) % n + 1;
+      return fmt::format("sts {} {} to {}", f.tip[side], f.down[side] ? "down" : "up", end);
+    };
+    const PatternSection& held = p_.sections[sec.front];
+    bool rnd = held.end_row > held.first_row && p_.rows[held.end_row - 1].round;
+    return fmt::format(
+        "Three-needle bind-off: fold the {} sts of Piece {} in half with RS together (count them "
+        "round the needle from the first st of its last {}): {} in front, {} behind; with a "
+        "new yarn bind off all {} pairs.",
+        f.sts, held.piece, rnd ? "rnd" : "row", run(0), run(1), sec.pairs);
+  }
+
   // "Take up Piece 1 again with its yarn. Place the 58 sts of Piece 2 on the needle at the
   // beginning of the rnd, the first st of its last rnd first."
   std::string take_up_text(const PatternSection& sec) const {
     std::string text = fmt::format("Take up Piece {} again with its yarn.", sec.piece);
-    for (const PatternSection::Placement& p : sec.placements)
-      if (p.before_row == sec.first_row) text.append(" ").append(placement_text(p));
+    for (const std::string& placed : placement_texts_before(sec.first_row))
+      text.append(" ").append(placed);
     return with_count_after_placements(text, sec.first_row);
   }
 
+  // What is placed before `row`: holders put on a spare needle first, as they add no st to the
+  // rnd, so that the count can follow the last sentence.
+  std::vector<std::string> placement_texts_before(std::uint32_t row) const {
+    std::vector<std::string> texts;
+    for (bool to_spare : {true, false})
+      for (const PatternSection::Placement& p : p_.sections[section_].placements)
+        if (p.before_row == row && p.to_spare == to_spare) texts.push_back(placement_text(p));
+    return texts;
+  }
+
   // "Place the 9 loops of Piece 3's chain on the needle after the first 9 sts of the rnd, the
-  // first st cast on first."
+  // first st cast on first." A piece worked in the rnd is placed from the st its rnd works
+  // first: "..., st 16 of its last rnd first."
   std::string placement_text(const PatternSection::Placement& p) const {
     const PatternSection& spare = p_.sections[p.section];
     std::string where = p.after == 0 ? "at the beginning of the rnd"
@@ -165,9 +196,11 @@ class InstructionWriter {
     std::string from = p.holder != 0
                            ? fmt::format("holder {}", p.holder)
                            : fmt::format("Piece {}{}", spare.piece, p.chain ? "'s chain" : "");
-    return fmt::format("Place the {} {} of {} on the needle {}, the {} st {} first.", p.count,
-                       p.chain ? "loops" : "sts", from, where, p.from_last ? "last" : "first",
-                       which);
+    std::string first = p.start != 0
+                            ? fmt::format("st {} {}", p.start, which)
+                            : fmt::format("the {} st {}", p.from_last ? "last" : "first", which);
+    return fmt::format("Place the {} {} of {} on the needle {}, {} first.", p.count,
+                       p.chain ? "loops" : "sts", from, where, first);
   }
 
   // "Slip sts 10–18 of the rnd to holder 1, sts 19–27 to holder 2 and sts 28–36 to holder 3."
@@ -198,9 +231,7 @@ class InstructionWriter {
   // Placements into a rnd in the middle of a piece's work, written before the rnd; the last
   // says how many sts the rnd then has.
   void write_placements_before(std::uint32_t row) {
-    std::vector<std::string> texts;
-    for (const PatternSection::Placement& p : p_.sections[section_].placements)
-      if (p.before_row == row) texts.push_back(placement_text(p));
+    std::vector<std::string> texts = placement_texts_before(row);
     if (texts.empty()) return;
     texts.back() = with_count_after_placements(texts.back(), row);
     for (std::string& text : texts) add(InstructionLine::Kind::setup, "", std::move(text));
@@ -543,7 +574,7 @@ class FrontMatter {
 
   std::vector<std::string> abbreviations() const {
     std::vector<std::string> items;
-    for (auto op = HandOp::k; op <= HandOp::from_spare_behind;
+    for (auto op = HandOp::k; op <= HandOp::slip_back;
          op = static_cast<HandOp>(static_cast<int>(op) + 1))
       if (uses(op) || (op == HandOp::pm && says("Pm ")))
         items.push_back(fmt::format("**{}**: {}", info(op).abbreviation, info(op).meaning));
@@ -610,6 +641,7 @@ class FrontMatter {
           "needle (for \"sl1 from spare\") or binds them off. \"Place\" puts a holder's sts (a "
           "spare needle's, a chain's loops) on the needle where it says, the st it names "
           "first.");
+    if (uses(HandOp::slip_back)) items.push_back(decreasing_across_a_gap_technique());
     if (t_.joins)
       items.push_back(
           "**Three-needle bind-off:** hold the two needles parallel, tips to the right; insert "
@@ -638,6 +670,18 @@ class FrontMatter {
           "cutting the yarn; the st left on the right needle is the first st of what follows "
           "(the first of the 40).");
     return items;
+  }
+
+  // Like a heel turn: the rows of a narrow band take one st of the sts waiting beside it at
+  // each end.
+  static std::string decreasing_across_a_gap_technique() {
+    return "**Decreasing across a gap** (as in turning a heel): a row that ends with a decrease "
+           "works its last st together with the first st beyond it on the left needle (past the "
+           "end of the left needle, around the needle's cable to the far end of the right one). "
+           "A row that begins with \"sl1 back\" slips the st at the tip of the right needle (in "
+           "the rnd, the last st before the gap) back to the left needle and works it together "
+           "with the row's first st. A row that starts at the beginning of the rnd removes the "
+           "BOR marker first (rm); the next rnd places it anew (pm).";
   }
 
   // The method the project chose, and how its turns are resolved later.

@@ -91,7 +91,8 @@ class Handedness {
     for (StitchId s = 0; s < g_.size(); ++s) {
       auto taken = g_.loops_taken_by(s);
       for (std::size_t i = 1; i < taken.size(); ++i)
-        observe(g_.loops[taken[i - 1]].maker, g_.loops[taken[i]].maker);
+        if (!across_a_gap(taken[i - 1]) && !across_a_gap(taken[i]))
+          observe(g_.loops[taken[i - 1]].maker, g_.loops[taken[i]].maker);
       auto made = g_.loops_made_by(s);
       for (std::size_t i = 1; i < made.size(); ++i)
         observe(g_.loops[made[i - 1]].taker, g_.loops[made[i]].taker);
@@ -113,6 +114,12 @@ class Handedness {
     }
   }
 
+  // A loop taken across a perpendicular edge comes from beyond a gap (in the rnd, from across
+  // the beginning of the rnd): it is not side by side with the other in its row.
+  bool across_a_gap(std::uint32_t loop) const {
+    return g_.loops[loop].kind == LoopKind::perpendicular;
+  }
+
   const KnitGraph& g_;
   const YarnPieces& y_;
   std::vector<std::uint32_t> pos_;      // index along its yarn piece
@@ -120,25 +127,11 @@ class Handedness {
   std::vector<std::uint8_t> first_lr_;  // per piece
 };
 
-// A provisional cast-on (or a three-needle bind-off) in the middle of a row: its needle's loop
-// (its front loop) is the row's own. The mirror image of a model swaps a cast-on's needle and
-// chain (a join's front and back), which a row worked on from both sides cannot follow, so
-// such a model is not mirrored: its left-to-right rnds are worked with the WS facing.
-bool works_two_sides_in_a_row(const KnitGraph& g) {
-  for (StitchId s = 0; s < g.size(); ++s) {
-    StitchId next = g.yarn_next[s];
-    if (next == kNoStitch || g.yarn_link[s] != YarnLink::course) continue;
-    for (T both_sided : {T::sco, T::tnbo})
-      if ((g.type[s] == both_sided) != (g.type[next] == both_sided)) return true;
-  }
-  return false;
-}
-
 // Hand knitting works every round right to left with the side facing the knitter. When most
 // of the model's rounds run the other way seen from the RS, the pattern knits the mirror image;
 // the rounds that still run left to right are worked with the WS facing.
 bool needs_mirror(const Compilation& c, const Handedness& hand, Rounds rounds) {
-  if (rounds == Rounds::ws_facing || works_two_sides_in_a_row(c.knit)) return false;
+  if (rounds == Rounds::ws_facing) return false;
   const KnitGraph& g = c.knit;
   std::uint64_t left_to_right = 0, closed = 0;
   for (StitchId s = 0; s < g.size(); ++s) {
@@ -265,14 +258,19 @@ class PatternBuilder {
     auto section_of = [&](std::uint32_t loop) {
       return section_of_yarn_[c_.yarns.piece_of[g_.loops[loop].maker]];
     };
-    // The mirror image swaps the loops' order: its front piece is the model's second.
-    const std::uint32_t front = out_.mirror ? 1 : 0;
     join.joins = true;
-    join.front = section_of(taken[front]);
-    join.back = section_of(taken[1 - front]);
+    join.front = section_of(taken[0]);
+    join.back = section_of(taken[1]);
+    join.pairs = static_cast<std::uint32_t>(row_.size());
+    if (std::optional<std::uint32_t> holder = needle_folded_for(join.front, join.back)) {
+      fold_needle(join, *holder);
+      join.stitches += row_.size();
+      row_.clear();
+      return;
+    }
     for (int side : {0, 1}) {
       const PatternSection& piece = out_.sections[side == 0 ? join.front : join.back];
-      StitchId maker = g_.loops[taken[side == 0 ? front : 1 - front]].maker;
+      StitchId maker = g_.loops[taken[side]].maker;
       join.holders[side] = holder_of_[maker];
       join.from_last[side] =
           maker == (join.holders[side] != 0 ? holders_[join.holders[side] - 1].last
@@ -280,9 +278,100 @@ class PatternBuilder {
     }
     join.own_yarn = join.front == section_of_yarn_[join.yarn];
     if (join.own_yarn) st_.live = 0;  // the front needle's sts are the ones bound off
-    join.pairs = static_cast<std::uint32_t>(row_.size());
     join.stitches += row_.size();
     row_.clear();
+  }
+
+  // The section whose needle holds a section's sts: the one its spare needle was placed into,
+  // or its own.
+  std::uint32_t holding(std::uint32_t section) const {
+    for (std::uint32_t h = 0; h < out_.sections.size(); ++h)
+      for (const PatternSection::Placement& p : out_.sections[h].placements)
+        if (p.section == section && !p.chain && p.holder == 0 && !p.edge) return h;
+    return section;
+  }
+
+  // When the sts of a join were placed into another piece's rnd, every pair is on that one
+  // needle: the join folds it in half. Pairs held by two needles, one of them another's, are
+  // not written yet. Sts slipped to holders wait on needles of their own.
+  std::optional<std::uint32_t> needle_folded_for(std::uint32_t front, std::uint32_t back) const {
+    for (std::uint32_t l : g_.loops_taken_by(row_.front()))
+      if (holder_of_[g_.loops[l].maker] != 0) return std::nullopt;
+    std::uint32_t pair[2] = {front, back};
+    bool placed = false;
+    std::uint32_t holder = holding(front);
+    for (StitchId s : row_)
+      for (std::uint32_t side : {0u, 1u}) {
+        std::uint32_t from = section_of(g_.loops[g_.loops_taken_by(s)[side]].maker);
+        placed = placed || holding(from) != from;
+        if (holding(from) != holder && placed)
+          unsupported(fmt::format(
+              "{} binds off sts of Piece {} and of Piece {} on two needles, one of them placed "
+              "into another piece's rnd, which is not covered yet",
+              g_.describe(s), out_.sections[pair[0]].piece, out_.sections[pair[1]].piece));
+      }
+    if (!placed && front != back) return std::nullopt;
+    return holder;
+  }
+
+  // Along a fold each needle's sts follow one another round the needle: where a run goes on
+  // along the row its sts came from, its next st must be that row's next one when that is
+  // bound off too (a run that jumps elsewhere would need a second bind-off).
+  void refuse_pairs_off_the_fold(const std::vector<StitchId>& side,
+                                 const std::vector<StitchId> (&run)[2]) const {
+    auto joined = [&](StitchId s) {
+      return std::find(run[0].begin(), run[0].end(), s) != run[0].end() ||
+             std::find(run[1].begin(), run[1].end(), s) != run[1].end();
+    };
+    for (std::size_t i = 1; i + 1 < side.size(); ++i) {
+      StitchId ahead = kNoStitch;
+      if (g_.yarn_next[side[i - 1]] == side[i]) ahead = g_.yarn_next[side[i]];
+      if (g_.yarn_next[side[i]] == side[i - 1])
+        for (const auto& other : run)
+          for (StitchId s : other)
+            if (g_.yarn_next[s] == side[i]) ahead = s;
+      if (ahead == kNoStitch || !joined(ahead) || ahead == side[i + 1]) continue;
+      unsupported(fmt::format(
+          "{} binds off one needle's sts folded in half, but its pairs do not go along the "
+          "fold in one direction (after {} it takes {}, not {}), so it cannot be worked as one "
+          "three-needle bind-off",
+          g_.describe(row_.front()), g_.describe(side[i]), g_.describe(side[i + 1]),
+          g_.describe(ahead)));
+    }
+  }
+
+  // The ring of the holder's sts starts at the first st of its last row and goes on the way
+  // that row went; the back needle's run of the ring holds it (or the front's), and the other
+  // run starts beside its tip, across the fold.
+  void fold_needle(PatternSection& join, std::uint32_t holder) {
+    const PatternSection& h = out_.sections[holder];
+    std::vector<StitchId> run[2];
+    for (StitchId s : row_)
+      for (std::uint32_t side : {0u, 1u})
+        run[side].push_back(g_.loops[g_.loops_taken_by(s)[side]].maker);
+    for (const auto& side : run) refuse_pairs_off_the_fold(side, run);
+    StitchId first = h.last_row_ends[0], second = g_.yarn_next[first];
+    PatternSection::Fold fold;
+    fold.sts = h.live_at_end;
+    for (std::uint32_t side : {1u, 0u}) {
+      auto at = std::find(run[side].begin(), run[side].end(), first);
+      if (at == run[side].end()) continue;
+      auto j = static_cast<std::uint32_t>(at - run[side].begin());
+      bool down = at != run[side].begin() && *(at - 1) == second;
+      std::uint32_t tip = down ? j : (fold.sts - j) % fold.sts;  // 0-based
+      std::uint32_t other = (down ? tip + 1 : tip + fold.sts - 1) % fold.sts;
+      fold.tip[side] = tip + 1;
+      fold.down[side] = down;
+      fold.tip[1 - side] = other + 1;
+      fold.down[1 - side] = !down;
+      join.front = holder;
+      join.fold = fold;
+      return;
+    }
+    unsupported(
+        fmt::format("{} binds off the sts of Piece {} folded in half, but not the first st "
+                    "of its last row, which is not covered yet",
+                    g_.describe(row_.front()), h.piece));
   }
 
   void flush_row() {
@@ -365,7 +454,7 @@ class PatternBuilder {
                       section().yarn + 1, g_.describe(row_.front())));
     std::uint32_t from = section_of_yarn_[c_.yarns.piece_of[first.maker]];
     const PatternSection& spare = out_.sections[from];
-    bool chain = (first.maker_slot == 1) != out_.mirror;  // as in place_spare_needles
+    bool chain = is_chain_loop(first);
     auto [count, last] = cast_on_sts(spare, chain);
     section().starts_from = PatternSection::Start{from, chain, first.maker == last, count};
     st_.live = st_.ahead = count;
@@ -479,7 +568,10 @@ class PatternBuilder {
 
   // When a rnd (the first of a piece taken up again, or one in the middle of a piece's work)
   // works sts of pieces left on spare needles, or the loops of a provisional cast-on's chain,
-  // the knitter first places them into the rnd where they are worked.
+  // the knitter first places them into the rnd where they are worked. When a piece is taken up
+  // in the rnd, pieces whose sts its rows take one by one across a perpendicular edge are
+  // placed too (beside the band that then decreases into them across a gap), and those first
+  // worked by its later rows after them.
   void place_spare_needles() {
     std::uint32_t taken = 0;
     const std::uint32_t self = section_of_yarn_[section().yarn];
@@ -487,17 +579,78 @@ class PatternBuilder {
       for (std::uint32_t l : g_.loops_taken_by(s)) {
         const Loop& loop = g_.loops[l];
         if (picked_up_along_an_edge(loop)) pick_up_into_the_rnd(loop, taken++);
-        // Taken one by one or picked up, or held behind for a three-needle bind-off.
-        if (loop.kind == LoopKind::perpendicular || loop.kind == LoopKind::joined) continue;
+        if (loop.kind == LoopKind::joined) continue;  // held behind for a three-needle bind-off
         std::uint32_t from = section_of(loop.maker);
-        // The chain's loop is the cast-on st's second (the first in the mirror image).
-        bool chain = loop.kind == LoopKind::split && (loop.maker_slot == 1) != out_.mirror;
+        if (loop.kind == LoopKind::perpendicular && !placed_beside_a_band(loop, from == self))
+          continue;  // one by one, picked up, or across the gap
+        bool chain = is_chain_loop(loop);
         if (std::uint32_t holder = holder_of_[loop.maker]; holder != 0) {
           if (!holder_placed(holder)) place_holder(holder, loop, taken);
         } else if (from != self && placeable(from, chain)) {
-          place_spare_needle(from, chain, loop, taken);
+          place_spare_needle(loop, taken);
         }
         ++taken;
+      }
+    place_pieces_worked_later();
+  }
+
+  // The first row of a piece taken up in the rnd places the pieces beside its band too.
+  bool takes_up_in_the_rnd() const {
+    const PatternSection& worked = out_.sections.back();
+    return worked.in_round && worked.resumed && worked.first_row == out_.rows.size();
+  }
+
+  // A loop across a perpendicular edge from another piece (not picked up, not held) whose sts
+  // go beside the band of a piece taken up in the rnd.
+  bool placed_beside_a_band(const Loop& loop, bool own) const {
+    return !own && takes_up_in_the_rnd() && holder_of_[loop.maker] == 0 &&
+           !picked_up_along_an_edge(loop);
+  }
+
+  // A provisional cast-on st's second loop is its chain's (a mirror image keeps it: the two
+  // loops are the two sides of the split, not side by side).
+  static bool is_chain_loop(const Loop& l) {
+    return l.kind == LoopKind::split && l.maker_slot == 1;
+  }
+
+  // A spare needle's sts (or a chain's loops) already placed on this piece's needle.
+  bool placed(std::uint32_t from, bool chain) const {
+    const auto& placed = out_.sections.back().placements;
+    return std::any_of(placed.begin(), placed.end(), [&](const PatternSection::Placement& p) {
+      return p.section == from && p.chain == chain && p.holder == 0 && !p.edge;
+    });
+  }
+
+  // A piece worked in the rnd is placed from the st first worked, wherever its last rnd
+  // began: that st's place in the rnd (1-based; 0 when it is the first).
+  std::uint32_t place_in_last_rnd(const PatternSection& spare, StitchId maker) const {
+    std::uint32_t at = 1;
+    for (StitchId s = spare.last_row_ends[0]; s != kNoStitch && s != maker; s = g_.yarn_next[s]) {
+      if (s == spare.last_row_ends[1] || !spare.in_round)
+        unsupported(
+            fmt::format("{} of Piece {} is worked first after it is placed, but it is "
+                        "not in its last rnd, which is not covered yet",
+                        g_.describe(maker), spare.piece));
+      ++at;
+    }
+    return at == 1 ? 0 : at;
+  }
+
+  // Pieces first worked by a later row of the band the piece taken up starts with go on after
+  // those placed so far (a whole rnd places what it works itself).
+  void place_pieces_worked_later() {
+    if (!takes_up_in_the_rnd()) return;
+    const std::uint32_t self = section_of_yarn_[section().yarn];
+    for (StitchId s : band_of_the_take_up())
+      for (std::uint32_t l : g_.loops_taken_by(s)) {
+        const Loop& loop = g_.loops[l];
+        if (loop.maker == kNoStitch || section_of(loop.maker) == self ||
+            holder_of_[loop.maker] != 0 || picked_up_along_an_edge(loop) ||
+            !placeable(section_of(loop.maker), is_chain_loop(loop)))
+          continue;
+        std::uint32_t after = 0;
+        for (const PatternSection::Placement& p : section().placements) after += p.count;
+        place_spare_needle(loop, after);
       }
   }
 
@@ -532,24 +685,38 @@ class PatternBuilder {
     ++st_.live;
   }
 
+  // The sts of the piece taken up, from its first row up to the first whole rnd after it.
+  std::vector<StitchId> band_of_the_take_up() const {
+    const std::vector<StitchId>& all = deferred_[out_.sections.back().yarn];
+    std::size_t row_start = 0;
+    for (std::size_t i = 0; i < all.size(); ++i) {
+      if (g_.type[all[i]] == T::tnbo || g_.yarn_link[all[i]] == YarnLink::course) continue;
+      if (row_start > 0 && g_.yarn_link[all[i]] != YarnLink::turn)
+        return {all.begin(), all.begin() + static_cast<std::ptrdiff_t>(row_start)};
+      row_start = i + 1;
+    }
+    return all;
+  }
+
   // A spare needle (or chain) not yet on this piece's needle: one set aside waits on its own.
   bool placeable(std::uint32_t from, bool chain) const {
     const PatternSection& spare = out_.sections[from];
-    const auto& placed = out_.sections.back().placements;
-    bool done = std::any_of(placed.begin(), placed.end(), [&](const PatternSection::Placement& p) {
-      return p.section == from && p.chain == chain && p.holder == 0;
-    });
     const auto& start = out_.sections.back().starts_from;
     bool started_on = start && start->section == from && start->chain == chain;
-    return !done && !started_on && !spare.set_aside && (spare.left_live || chain);
+    return !placed(from, chain) && !started_on && !spare.set_aside && (spare.left_live || chain);
   }
 
-  void place_spare_needle(std::uint32_t from, bool chain, const Loop& loop, std::uint32_t after) {
+  // Places the sts of the loop's piece (or its chain) after the first `after` sts of the rnd,
+  // from the st the rnd works first.
+  void place_spare_needle(const Loop& loop, std::uint32_t after) {
+    std::uint32_t from = section_of(loop.maker);
     const PatternSection& spare = out_.sections[from];
+    bool chain = is_chain_loop(loop);
     auto [cast_on, last] = cast_on_sts(spare, chain);
     PatternSection::Placement p{from, chain ? cast_on : spare.live_at_end, after,
                                 loop.maker == (chain ? last : spare.last_row_ends[1])};
     p.chain = chain;
+    p.start = chain || p.from_last ? 0 : place_in_last_rnd(spare, loop.maker);
     p.before_row = static_cast<std::uint32_t>(out_.rows.size());
     section().placements.push_back(p);
     st_.live += p.count;
@@ -609,7 +776,7 @@ class PatternBuilder {
   }
 
   void add_row() {
-    bool turns = g_.yarn_link[row_.back()] == YarnLink::turn;
+    bool turns = g_.yarn_link[row_.back()] == YarnLink::turn || ends_between_turns();
     bool first_of_take_up = section().resumed && section().first_row == out_.rows.size();
     bool full_round = section().in_round && !turns && st_.previous_link != YarnLink::turn;
     bool picked_up = section().picks_up && section().first_row == out_.rows.size();
@@ -628,6 +795,8 @@ class PatternBuilder {
         std::all_of(row_.begin(), row_.end(), [&](StitchId s) { return g_.type[s] == T::bo; });
     if (st_.previous_link == YarnLink::turn) std::swap(st_.ahead, st_.behind);
     if (st_.double_stitch_next) slip_double_stitch();
+    if (r.round && st_.bor_removed) place_new_beginning_of_round();
+    note_band_from_rnd(r);
     std::uint32_t takes = 0;
     for (StitchId s : row_) {
       number_of_[s] = r.number;
@@ -643,6 +812,14 @@ class PatternBuilder {
     r.sts_after = st_.live;
     out_.rows.push_back(r);
     if (full_round) hold_what_others_work(static_cast<std::uint32_t>(out_.rows.size() - 1));
+  }
+
+  // The last row of a yarn in the rnd that goes on from a turn leaves the sts beyond it on
+  // the needle: a row that turns (before its sts are left for a join), not a rnd.
+  bool ends_between_turns() const {
+    StitchId last = row_.back();
+    return out_.sections.back().in_round && g_.yarn_link[last] == YarnLink::none &&
+           st_.previous_link == YarnLink::turn && info(g_.type[last]).loops_out > 0;
   }
 
   // The schedule's mismatch and short-row markers go before the stitch's operations.
@@ -684,6 +861,17 @@ class PatternBuilder {
     st_.behind += out;
   }
 
+  void note_band_from_rnd(const PatternRow& r) {
+    if (r.round) st_.band_from_rnd.reset();
+    if (!r.round && section().in_round && st_.previous_link == YarnLink::shift)
+      st_.band_from_rnd = std::pair{static_cast<std::uint32_t>(out_.rows.size()), r.first_op};
+  }
+
+  void place_new_beginning_of_round() {
+    out_.ops.push_back(HandOp::pm);
+    st_.bor_removed = false;
+  }
+
   void slip_double_stitch() {
     out_.ops.push_back(HandOp::ds);
     st_.double_stitch_next = false;
@@ -695,7 +883,7 @@ class PatternBuilder {
   // A st that works a loop across a contracting perpendicular edge takes it from the piece
   // beside, waiting on a spare needle: slipped to the tip of the left needle, or behind the st
   // there when the st works it second.
-  void slip_from_spare_needle(StitchId s, const PatternRow& r) {
+  void slip_from_spare_needle(StitchId s, PatternRow& r) {
     auto taken = g_.loops_taken_by(s);
     for (std::size_t i = 0; i < taken.size(); ++i) {
       const Loop& loop = g_.loops[taken[i]];
@@ -707,7 +895,12 @@ class PatternBuilder {
             fmt::format("{} works a loop of {} across a perpendicular edge third, "
                         "which is not covered yet",
                         g_.describe(s), g_.describe(g_.loops[taken[i]].maker)));
-      StitchId maker = g_.loops[taken[i]].maker;
+      StitchId maker = loop.maker;
+      refuse_pick_up_in_the_work(s, maker);
+      if (holder_of_[maker] == 0 && on_own_needle(maker)) {
+        decrease_across_gap(s, maker, worked, r);
+        continue;
+      }
       if (holder_of_[maker] != 0)
         put_holder_on_spare_needle(holder_of_[maker], maker);
       else
@@ -736,32 +929,72 @@ class PatternBuilder {
   }
 
   // Is the maker's st on the needle of the piece being worked: its own, one of a spare needle
-  // placed into its rnd, or one of the spare needle it started on?
-  bool on_own_needle(StitchId maker) const {
+  // (or a chain) placed into its rnd, a holder placed there (or the one it started on), or
+  // one of the spare needle it started on?
+  bool on_own_needle(StitchId maker, bool chain = false) const {
     const auto& start = out_.sections.back().starts_from;
     if (holder_of_[maker] != 0)
       return holder_placed(holder_of_[maker]) || (start && start->holder == holder_of_[maker]);
     std::uint32_t from = section_of(maker);
     const PatternSection& worked = out_.sections.back();
-    const auto& placed = worked.placements;
     return c_.yarns.piece_of[maker] == worked.yarn ||
-           (worked.starts_from && worked.starts_from->section == from) ||
-           std::any_of(placed.begin(), placed.end(),
-                       [&](const PatternSection::Placement& p) { return p.section == from; });
+           (worked.starts_from && worked.starts_from->section == from) || placed(from, chain);
   }
 
-  // "Sl1 from spare" takes the st from a piece waiting on a spare needle. A loop of the piece
-  // being worked is among the sts its own rows work (a heel turn's "ssk across the gap"), and
-  // one of a piece set aside waits on that piece's needle (a knitter would put it on a holder
-  // first): neither is written yet.
-  void refuse_edge_loop_off_spare_needle(StitchId s, StitchId maker) const {
-    bool own = on_own_needle(maker);
-    const PatternSection& from = out_.sections[section_of(maker)];
-    if (own || from.set_aside)
+  // An edge st that makes a loop across the edge besides its own (an expanding edge) gives
+  // it to be picked up; a row that picks it up and knits it in the middle of the work (a
+  // gusset's "pick up and knit") is not written yet.
+  void refuse_pick_up_in_the_work(StitchId s, StitchId maker) const {
+    if (g_.loops_made_by(maker).size() < 2) return;
+    unsupported(fmt::format(
+        "{} picks up a loop along the edge of {} (an expanding perpendicular edge) in the middle "
+        "of the work (a gusset's \"pick up and knit\"), which is not covered yet",
+        g_.describe(s), g_.describe(maker)));
+  }
+
+  // A st of the piece's own needle across a gap (a heel turn's decrease): worked second, it is
+  // the next st on the left needle; worked first by the row's first st, it is the one at the
+  // tip of the right needle, slipped back ("sl1 back"). A row that goes on from the end of a
+  // rnd removes the beginning-of-rnd marker there first; the next rnd places a new one.
+  void decrease_across_gap(StitchId s, StitchId maker, std::size_t worked, PatternRow& r) {
+    remove_beginning_of_round(r);
+    if (worked == 1) return;
+    if (s != row_.front())
       unsupported(fmt::format(
-          "{} works a loop of {} across a perpendicular edge from the needle of Piece {}{}, "
-          "not from a spare needle, which is not covered yet",
-          g_.describe(s), g_.describe(maker), from.piece, own ? " itself" : ", set aside"));
+          "{} works a loop of {} across a perpendicular edge from its own needle first, but "
+          "not first in its row, where a knitter could slip it back from the right needle; "
+          "which is not covered yet",
+          g_.describe(s), g_.describe(maker)));
+    out_.ops.push_back(HandOp::slip_back);
+    if (section().in_round) return;
+    ++st_.ahead;
+    --st_.behind;
+  }
+
+  // A band worked back and forth from the end of a rnd starts at the beginning-of-rnd marker,
+  // which is then in its gap: the band's first row removes it (the next rnd places a new one).
+  void remove_beginning_of_round(PatternRow& r) {
+    if (st_.bor_removed || !st_.band_from_rnd) return;
+    auto [row, op] = *st_.band_from_rnd;
+    out_.ops.insert(out_.ops.begin() + op, HandOp::rm);
+    for (std::size_t i = row; i < out_.rows.size(); ++i) {
+      out_.rows[i].first_op += i > row;
+      ++out_.rows[i].end_op;
+    }
+    r.first_op += out_.rows.size() > row;
+    st_.bor_removed = true;
+  }
+
+  // "Sl1 from spare" takes the st from a piece waiting on a spare needle. One of a piece set
+  // aside waits on that piece's needle (a knitter would put it on a holder first): not written
+  // yet.
+  void refuse_edge_loop_off_spare_needle(StitchId s, StitchId maker) const {
+    const PatternSection& from = out_.sections[section_of(maker)];
+    if (from.set_aside)
+      unsupported(fmt::format(
+          "{} works a loop of {} across a perpendicular edge from the needle of Piece {}, set "
+          "aside, not from a spare needle, which is not covered yet",
+          g_.describe(s), g_.describe(maker), from.piece));
   }
 
   // Sts of another piece's spare needle are placed into a rnd that works them. A piece set
@@ -772,7 +1005,7 @@ class PatternBuilder {
     for (std::uint32_t l : g_.loops_taken_by(s)) {
       const Loop& loop = g_.loops[l];
       if (loop.kind == LoopKind::perpendicular || loop.maker == kNoStitch ||
-          on_own_needle(loop.maker))
+          on_own_needle(loop.maker, is_chain_loop(loop)))
         continue;
       const PatternSection& from = out_.sections[section_of(loop.maker)];
       if (from.set_aside)
@@ -808,7 +1041,7 @@ class PatternBuilder {
     return knit ? HandOp::kds : HandOp::pds;
   }
 
-  void append_ops(StitchId s, const PatternRow& r) {
+  void append_ops(StitchId s, PatternRow& r) {
     T type = g_.type[s];
     if (type == T::sr4) {
       out_.ops.push_back(out_.turns == TurnMethod::wrap_and_turn ? HandOp::wt
@@ -859,6 +1092,9 @@ class PatternBuilder {
     std::uint32_t ahead = 0, behind = 0;  // loops on the left and right needle (flat pieces)
     bool double_stitch_next = false;
     bool cast_on_done = false;
+    bool bor_removed = false;  // by a row across the gap; the next rnd places a new one
+    // The row (and its first op) that went on from the end of the last rnd.
+    std::optional<std::pair<std::uint32_t, std::uint32_t>> band_from_rnd;
     YarnLink previous_link = YarnLink::none;
   };
   Needle st_;

@@ -63,7 +63,7 @@ struct PatternSection {
   // Sts of another section's spare needle (or its provisional cast-on's chain) placed into
   // the rnd before the row `before_row` works them (when this one is taken up, or in the
   // middle of its work), `after` sts from the beginning of the rnd, that needle's last st
-  // first if `from_last`.
+  // first if `from_last` (from st `start` of its last rnd, going round, if that is not 0).
   struct Placement {
     std::uint32_t section, count, after;
     bool from_last;
@@ -73,7 +73,8 @@ struct PatternSection {
     // The holder's sts go on a spare needle instead, for rows that work them one at a time.
     bool to_spare = false;
     std::optional<PickUp> edge =
-        std::nullopt;  // loops picked up along the edge of section `section` instead
+        std::nullopt;         // loops picked up along the edge of section `section` instead
+    std::uint32_t start = 0;  // 1-based: from that st of its last rnd on, going round
   };
   // Where the sts of one rnd go different ways (to the piece's next rnd, into another piece's
   // rnd, into a join), those the piece does not work itself are slipped to holders after it:
@@ -114,6 +115,15 @@ struct PatternSection {
   bool own_yarn = false;               // worked with the front piece's yarn, taken up again
   std::uint32_t holders[2] = {0, 0};   // 1-based: the front (back) sts wait on that holder
   std::uint32_t pairs = 0;
+  // A join of one needle's sts folded in half (the sts of section `front`, counted 1-based
+  // round the needle from the first st of its last row): the front needle's from st `tip[0]`
+  // on, the back one's from `tip[1]`, each going down (towards st 1) or up.
+  struct Fold {
+    std::uint32_t sts = 0;
+    std::uint32_t tip[2] = {0, 0};
+    bool down[2] = {false, false};
+  };
+  std::optional<Fold> fold;
   // Model stitches: the first and last of the section's last row (or of its cast-on).
   std::uint32_t last_row_ends[2] = {0, 0};
 };

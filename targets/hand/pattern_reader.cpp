@@ -322,7 +322,7 @@ class SentenceReader {
 
   // "Place the 58 sts of Piece 2 (or: the 9 loops of Piece 3's chain) on the needle at the
   // beginning of the rnd (or: after the first 106 sts of the rnd), the first st of its last
-  // rnd (or: the first st cast on) first".
+  // rnd (or: the first st cast on; st 16 of its last rnd) first".
   void place(Cursor& c) {
     Step step{Step::Kind::place, line_no_};
     c.eat("the");
@@ -336,7 +336,22 @@ class SentenceReader {
     if (step.provisional) need_words(c, {"'", "s", "chain"}, "'s chain' after the piece");
     need_words(c, {"on", "the", "needle"}, "'on the needle'");
     step.last = place_in_rnd(c);
-    need_words(c, {",", "the"}, "', the first (or last) st'");
+    need(c.eat_char(','), c, "', the first (or last) st' or ', st N'");
+    if (c.eat("st")) {
+      step.from_row = need_number(c, "the st placed first");
+      need_words(c, {"of", "its", "last"}, "'st N of its last rnd'");
+      need(c.eat_any({"rnd", "row"}), c, "'rnd' or 'row'");
+    } else {
+      place_first_or_last(c, step);
+    }
+    need(c.eat("first"), c, "'first'");
+    end_with_count(c, step);
+    add(step);
+  }
+
+  // "the first (or last) st of its last rnd" or "the first (or last) st cast on".
+  void place_first_or_last(Cursor& c, Step& step) {
+    need(c.eat("the"), c, "'the first (or last) st'");
     step.from_last[0] = c.eat("last");
     need(step.from_last[0] || c.eat("first"), c, "'first' or 'last'");
     need(c.eat("st"), c, "'st of its last rnd' or 'st cast on'");
@@ -346,9 +361,6 @@ class SentenceReader {
       need_words(c, {"of", "its", "last"}, "'st of its last rnd' or 'st cast on'");
       need(c.eat_any({"rnd", "row"}), c, "'rnd' or 'row'");
     }
-    need(c.eat("first"), c, "'first'");
-    end_with_count(c, step);
-    add(step);
   }
 
   // "Slip sts 10–18 of the rnd to holder 1, sts 19–27 to holder 2 and sts 28–36 to holder 3":
@@ -381,13 +393,18 @@ class SentenceReader {
   // pairs".
   void three_needle_bind_off(Cursor& c) {
     Step step{Step::Kind::three_needle_bind_off, line_no_};
-    need_words(c, {":", "hold", "the", "pieces", "with", "RS", "together", ":"},
-               "': hold the pieces with RS together:'");
-    step.number = needle_end(c, {"in", "front"}, step.from_last[0], step.holder[0]);
-    need(c.eat_char(';'), c, "';' after the front piece");
-    step.last = needle_end(c, {"behind"}, step.from_last[1], step.holder[1]);
-    if (c.eat_char('('))
-      while (!c.done() && !c.eat_char(')')) c.eat_char(c.peek());
+    need(c.eat_char(':'), c, "':'");
+    if (c.eat("fold")) {
+      folded_needle(c, step);
+    } else {
+      need_words(c, {"hold", "the", "pieces", "with", "RS", "together", ":"},
+                 "': hold the pieces with RS together:' or ': fold the N sts'");
+      step.number = needle_end(c, {"in", "front"}, step.from_last[0], step.holder[0]);
+      need(c.eat_char(';'), c, "';' after the front piece");
+      step.last = needle_end(c, {"behind"}, step.from_last[1], step.holder[1]);
+      if (c.eat_char('('))
+        while (!c.done() && !c.eat_char(')')) c.eat_char(c.peek());
+    }
     need_words(c, {";", "with"}, "'; with a new yarn' or '; with its yarn'");
     step.own_yarn = c.eat("its");
     if (!step.own_yarn) need_words(c, {"a", "new"}, "'a new yarn' or 'its yarn'");
@@ -395,6 +412,36 @@ class SentenceReader {
     step.count = need_number(c, "the number of pairs");
     need(c.eat_any({"pairs", "pair"}) && c.done(), c, "'pairs' and the end of the sentence");
     add(step);
+  }
+
+  // "... fold the 42 sts of Piece 4 in half with RS together (count them round the needle from
+  // the first st of its last row): sts 35 down to 15 in front, sts 36 up to 14 behind".
+  void folded_needle(Cursor& c, Step& step) {
+    step.fold = true;
+    c.eat("the");
+    step.last = need_number(c, "the number of sts folded");
+    need_words(c, {"sts", "of", "piece"}, "'sts of Piece N'");
+    step.number = need_number(c, "a piece number");
+    need_words(c,
+               {"in", "half", "with", "RS", "together", "(", "count", "them", "round", "the",
+                "needle", "from", "the", "first", "st", "of", "its", "last"},
+               "'in half with RS together (count them round the needle from the first st of its "
+               "last rnd)'");
+    need(c.eat_any({"rnd", "row"}) && c.eat_char(')') && c.eat_char(':'), c,
+         "'rnd):' or 'row):' before the needles' sts");
+    folded_run(c, step, 0, {"in", "front"});
+    need(c.eat_char(','), c, "',' after the front needle's sts");
+    folded_run(c, step, 1, {"behind"});
+  }
+
+  // "sts 35 down to 15 in front".
+  void folded_run(Cursor& c, Step& step, int side, std::initializer_list<std::string_view> where) {
+    need(c.eat("sts"), c, "'sts A down (or up) to B'");
+    step.tip[side] = need_number(c, "the st at the needle tip");
+    step.from_last[side] = c.eat("down");
+    need((step.from_last[side] || c.eat("up")) && c.eat("to"), c, "'down to' or 'up to'");
+    step.end[side] = need_number(c, "the last st of the needle");
+    need_words(c, where, "'in front' or 'behind'");
   }
 
   // "Piece 1 (or: holder 3) in front, the first st of its last row at the needle tip": the
@@ -612,8 +659,12 @@ class SentenceReader {
       return n;
     }
     if (c.eat("3-needle")) return three_needle_bind_off_sts(c);  // '-' would end a word
-    if (c.eat("sl1") && c.eat("from")) {
-      need(c.eat("spare"), c, "'sl1 from spare'");
+    if (c.eat("sl1")) {
+      if (c.eat("back")) {
+        n.op = HandOp::slip_back;
+        return n;
+      }
+      need(c.eat("from") && c.eat("spare"), c, "'sl1 from spare' or 'sl1 back'");
       n.op = c.eat("behind") ? HandOp::from_spare_behind : HandOp::from_spare;
       return n;
     }

@@ -79,11 +79,16 @@ struct Step {
   bool provisional = false;  // cast_on: with a provisional cast-on; join_spare, place: its chain
   bool own_yarn = false;     // three_needle_bind_off: with the front piece's yarn
   std::uint32_t from_row = 0, to_row = 0;  // pick_up: one st in each of these rows (provisional:
-                                           // along the right edge)
+                                           // along the right edge); place: from_row, the st
+                                           // placed first (1-based, 0: the first or last)
   HandOp op = HandOp::k;
   // place (front), three_needle_bind_off: the number (and last) name a holder, not a piece.
   bool holder[2] = {false, false};
   bool into_rnd = false;  // pick_up: onto the needle of the piece worked, after <last> sts
+  // three_needle_bind_off of one needle folded in half (Piece <number>, <last> sts): each
+  // needle's run from its tip to its end, counted round the needle; from_last: going down.
+  bool fold = false;
+  std::uint32_t tip[2] = {0, 0}, end[2] = {0, 0};
 };
 
 struct Script {
