@@ -215,6 +215,23 @@ TEST(HandGaps, TheHeelTurnIsProvenInEveryFormat) {
   }
 }
 
+// A gusset: the rnd after a flap picks up a st in each of the flap's rows along both edges.
+TEST(HandGaps, AGussetIsProvenInEveryFormat) {
+  Compilation c = compile_knit_graph(testing::gusset_graph(), "gusset");
+  ASSERT_TRUE(c.knittability.knittable) << check_report(c);
+  std::string pattern = emit(c, "hand");
+  for (const char* line :
+       {"**Row 3 (WS):** P3, turn.\n\nPick up 2 sts along the left edge of Piece 1, one in each "
+        "row from Row 3 down to Row 2, onto the needle after the first 3 sts of the rnd.\n\n",
+        "Pick up 2 sts along the right edge of Piece 1, one in each row from Row 2 up to Row 3, "
+        "onto the needle after the first 8 sts of the rnd — 10 sts.\n\n**Rnd 4:** Knit.\n"})
+    EXPECT_NE(pattern.find(line), std::string::npos) << line << "\n" << pattern;
+  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
+    VerifyReport report = verify(c, target, emit(c, target));
+    EXPECT_TRUE(report.proven) << target << ": " << report.summary;
+  }
+}
+
 TEST(HandGaps, AFoldedTubeIsProvenInEveryFormat) {
   Compilation c = compile_knit_graph(testing::folded_tube_graph(), "folded tube");
   ASSERT_TRUE(c.knittability.knittable) << check_report(c);
