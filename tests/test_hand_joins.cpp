@@ -232,6 +232,19 @@ TEST(HandGaps, AGussetIsProvenInEveryFormat) {
   }
 }
 
+// A flap's edge st gives one loop: picked up along the same edge twice, it is refused.
+TEST(HandGaps, AFlapsEdgeIsPickedUpOnce) {
+  const std::string flap =
+      "Cast on 6 sts. Pm and join to work in the rnd, being careful not to twist.\nRnd 1: "
+      "Knit.\nRow 2 (RS): K3, turn.\nRow 3 (WS): P3, turn.\nPick up 2 sts along the left edge "
+      "of Piece 1, one in each row from Row 3 down to Row 2, onto the needle after the first 3 "
+      "sts of the rnd.\n";
+  EXPECT_EQ(failure_of(flap + "Pick up 2 sts along the left edge of Piece 1, one in each row "
+                              "from Row 2 up to Row 3, onto the needle after the first 8 sts of "
+                              "the rnd — 10 sts.\n"),
+            "p.md:6: Pick up: Row 2 (RS), st 3 (k) already gave a st");
+}
+
 TEST(HandGaps, AFoldedTubeIsProvenInEveryFormat) {
   Compilation c = compile_knit_graph(testing::folded_tube_graph(), "folded tube");
   ASSERT_TRUE(c.knittability.knittable) << check_report(c);
