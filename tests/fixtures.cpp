@@ -309,6 +309,61 @@ KnitGraph heel_turn_graph() {
   return g;
 }
 
+KnitGraph gusset_graph() {
+  using T = StitchType;
+  KnitGraph g;
+  g.source_name = "gusset";
+  g.element = "face";
+  g.row_shape = {RowShape::closed, RowShape::closed, RowShape::open,
+                 RowShape::open,   RowShape::closed, RowShape::closed};
+  auto row_of = [&](std::size_t n, T type, std::uint32_t row) {
+    std::vector<StitchId> made;
+    for (std::size_t i = 0; i < n; ++i) made.push_back(g.add_stitch(type, row, g.size(), 0));
+    return made;
+  };
+  auto c = row_of(6, T::co, 0);
+  auto a = row_of(6, T::k, 1);
+  auto b = row_of(3, T::k, 2);
+  auto d = row_of(3, T::k, 3);  // worked d2, d1, d0
+  // In the order worked: over d0..d2, picked up from d2 and b2, over a3..a5, from b0 and d0.
+  auto e = row_of(10, T::k, 4);
+  auto f = row_of(10, T::bo, 5);
+  std::vector<StitchId> yarn;
+  for (const auto* run : {&c, &a, &b}) yarn.insert(yarn.end(), run->begin(), run->end());
+  yarn.insert(yarn.end(), {d[2], d[1], d[0]});
+  for (const auto* run : {&e, &f}) yarn.insert(yarn.end(), run->begin(), run->end());
+  for (std::size_t i = 0; i + 1 < yarn.size(); ++i) {
+    g.yarn_next[yarn[i]] = yarn[i + 1];
+    g.yarn_link[yarn[i]] = YarnLink::course;
+  }
+  for (StitchId end_of_round : {c[5], a[5], e[9]}) g.yarn_link[end_of_round] = YarnLink::shift;
+  for (StitchId turn : {b[2], d[0]}) g.yarn_link[turn] = YarnLink::turn;
+  auto loop = [&](StitchId maker, StitchId taker, std::uint8_t slot) {
+    g.loops.push_back({maker, taker, LoopKind::wale, slot, 0});
+  };
+  auto across = [&](StitchId maker, StitchId taker, std::uint8_t slot) {
+    g.loops.push_back({maker, taker, LoopKind::perpendicular, slot, 0});
+  };
+  for (int i = 0; i < 6; ++i) loop(c[i], a[i], 0);
+  for (int i = 0; i < 3; ++i) loop(a[i], b[i], 0);
+  // Rows run right to left seen from the RS: the flap's left edge is b2 and d2, whose loop
+  // across it is their first; b0 and d0 make theirs last.
+  loop(b[0], d[0], 0);
+  across(b[0], e[8], 1);
+  loop(b[1], d[1], 0);
+  across(b[2], e[4], 0);
+  loop(b[2], d[2], 1);
+  loop(d[0], e[0], 0);
+  across(d[0], e[9], 1);
+  loop(d[1], e[1], 0);
+  across(d[2], e[3], 0);
+  loop(d[2], e[2], 1);
+  for (int i = 3; i < 6; ++i) loop(a[i], e[i + 2], 0);
+  for (int i = 0; i < 10; ++i) loop(e[i], f[i], 0);
+  g.index_loops();
+  return g;
+}
+
 KnitGraph folded_tube_graph() {
   using T = StitchType;
   KnitGraph g;

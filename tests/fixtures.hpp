@@ -69,6 +69,12 @@ KnitGraph heel_turn_graph();
 // rnd, a rnd, and with a new yarn 3 pairs (a2 with a3, a1 with a4, a0 with a5).
 KnitGraph folded_tube_graph();
 
+// A gusset on a tube, as a knit graph: 6 sts cast on in the rnd and a rnd (a0..a5); a flap
+// over a0..a2 worked back and forth for 2 rows (b, then d back); a rnd over the flap that picks
+// up a st along its left edge in each of its rows (d2, b2), knits a3..a5 and picks up along its
+// right edge (b0, d0): 10 sts; a bind-off.
+KnitGraph gusset_graph();
+
 // How often `what` occurs in `text`.
 std::size_t occurrences(std::string_view text, std::string_view what);
 

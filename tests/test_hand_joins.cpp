@@ -215,6 +215,40 @@ TEST(HandGaps, TheHeelTurnIsProvenInEveryFormat) {
   }
 }
 
+// A gusset: the rnd after a flap picks up a st in each of the flap's rows along both edges.
+TEST(HandGaps, AGussetIsProvenInEveryFormat) {
+  Compilation c = compile_knit_graph(testing::gusset_graph(), "gusset");
+  ASSERT_TRUE(c.knittability.knittable) << check_report(c);
+  std::string pattern = emit(c, "hand");
+  for (const char* line :
+       {"**Row 3 (WS):** P3, turn.\n\nPick up 2 sts along the left edge of the flap, one in each "
+        "row from Row 3 down to Row 2, onto the needle after the first 3 sts of the rnd.\n\n",
+        "Pick up 2 sts along the right edge of the flap, one in each row from Row 2 up to Row 3, "
+        "onto the needle after the first 8 sts of the rnd — 10 sts.\n\n**Rnd 4:** Knit.\n"})
+    EXPECT_NE(pattern.find(line), std::string::npos) << line << "\n" << pattern;
+  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
+    VerifyReport report = verify(c, target, emit(c, target));
+    EXPECT_TRUE(report.proven) << target << ": " << report.summary;
+  }
+}
+
+// A flap's edges are picked up into the rnd of the piece worked, each edge st once.
+TEST(HandGaps, AFlapsEdgeIsPickedUpOnceIntoTheRnd) {
+  std::string flap =
+      "Cast on 6 sts. Pm and join to work in the rnd, being careful not to twist.\nRnd 1: "
+      "Knit.\nRow 2 (RS): K3, turn.\nRow 3 (WS): P3, turn.\n";
+  const std::string left =
+      "Pick up 2 sts along the left edge of the flap, one in each row from Row 3 down to Row 2";
+  EXPECT_EQ(failure_of(flap + left + ".\n"),
+            "p.md:5: Pick up along the flap: only onto the needle of the piece worked, into its "
+            "rnd");
+  flap += left + ", onto the needle after the first 3 sts of the rnd.\n";
+  EXPECT_EQ(failure_of(flap + "Pick up 2 sts along the left edge of the flap, one in each row "
+                              "from Row 2 up to Row 3, onto the needle after the first 8 sts of "
+                              "the rnd — 10 sts.\n"),
+            "p.md:6: Pick up: Row 2 (RS), st 3 (k) already gave a st");
+}
+
 TEST(HandGaps, AFoldedTubeIsProvenInEveryFormat) {
   Compilation c = compile_knit_graph(testing::folded_tube_graph(), "folded tube");
   ASSERT_TRUE(c.knittability.knittable) << check_report(c);

@@ -425,6 +425,8 @@ TEST(HandMutations, DecreasesAcrossAGapRejectEveryEditThatChangesTheFabric) {
                    compile_knit_graph(testing::heel_turn_graph(), "heel turn"));
   mutate_and_judge("folded tube (three-needle bind-off of a rnd)",
                    compile_knit_graph(testing::folded_tube_graph(), "folded tube"));
+  mutate_and_judge("gusset (a flap's edges picked up into the rnd)",
+                   compile_knit_graph(testing::gusset_graph(), "gusset"));
 }
 
 TEST(HandMutations, JoinsRejectEveryEditThatChangesTheFabric) {

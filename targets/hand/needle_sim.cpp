@@ -194,7 +194,8 @@ class NeedleSimulator {
 
   // A new piece worked from loops picked up along an edge of a finished piece, one in each
   // of its rows: the loop of the st at that edge, the last one picked up at the needle tip.
-  void pick_up(const Step& s) {
+  void pick_up(const Step& given) {
+    Step s = along_the_flap(given);
     if (!s.into_rnd && active_ && pc_.live > 0)
       fail(fmt::format("Pick up: the piece before still has {} on the needle", sts(pc_.live)));
     std::vector<std::uint32_t> rows = rows_of_piece(s.number);
@@ -215,6 +216,16 @@ class NeedleSimulator {
       pc_.right.push_back(pick_up_loop(rows, n, s.provisional));
     }
     pc_.live = s.count;
+  }
+
+  // "... along the left edge of the flap": the piece on the needle, picked up into its rnd (a
+  // gusset).
+  Step along_the_flap(Step s) const {
+    if (s.number != 0) return s;
+    if (!active_ || !s.into_rnd)
+      fail("Pick up along the flap: only onto the needle of the piece worked, into its rnd");
+    s.number = pc_.number;
+    return s;
   }
 
   // Loops picked up along another piece's edge go into the rnd of the piece worked, the first

@@ -265,11 +265,15 @@ class InstructionWriter {
     auto row = [](std::uint32_t n) {
       return n == 0 ? std::string("the cast-on") : fmt::format("Row {}", n);
     };
-    return fmt::format(
-        "Pick up {} along the {} edge of Piece {}, one in each row from {} {} "
-        "to {}",
-        sts(count), p.right ? "right" : "left", p_.sections[p.section].piece, row(p.from_row),
-        p.from_row <= p.to_row ? "up" : "down", row(p.to_row));
+    return fmt::format("Pick up {} along the {} edge of {}, one in each row from {} {} to {}",
+                       sts(count), p.right ? "right" : "left", edge_owner(p), row(p.from_row),
+                       p.from_row <= p.to_row ? "up" : "down", row(p.to_row));
+  }
+
+  // A gusset's edges are the flap's, rows of the piece being worked.
+  std::string edge_owner(const PatternSection::PickUp& p) const {
+    std::uint32_t piece = p_.sections[p.section].piece;
+    return piece == p_.sections[section_].piece ? "the flap" : fmt::format("Piece {}", piece);
   }
 
   // "Join a new yarn to the 3 loops of Piece 1's chain, the first st cast on at the tip."

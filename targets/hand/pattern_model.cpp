@@ -79,12 +79,21 @@ class Handedness {
     }
   }
 
+  // A rnd's first and last st (a gusset's last st picked up beside the first st of the rnd)
+  // are neighbours whose order along the yarn says nothing of left and right.
+  bool meet_across_the_start_of_a_rnd(StitchId a, StitchId b) const {
+    bool side_by_side = pos_[a] + 1 == pos_[b] || pos_[b] + 1 == pos_[a];
+    return !side_by_side &&
+           (g_.yarn_link[a] == YarnLink::shift || g_.yarn_link[b] == YarnLink::shift);
+  }
+
   void decide_first_rows() {
     std::vector<std::array<std::uint32_t, 2>> votes(y_.size(), {0, 0});
     auto observe = [&](StitchId left, StitchId right) {
       if (left == right || left == kNoStitch || right == kNoStitch) return;
       std::uint32_t p = y_.piece_of[left];
       if (p != y_.piece_of[right] || g_.row[left] != g_.row[right]) return;
+      if (meet_across_the_start_of_a_rnd(left, right)) return;
       bool lr = pos_[left] < pos_[right];
       ++votes[p][lr != static_cast<bool>(reversed_[left])];
     };
@@ -660,11 +669,13 @@ class PatternBuilder {
       }
   }
 
-  // An edge st of another piece that makes a loop across a perpendicular edge besides its own
-  // (paper §3.2: an expanding edge) gives a loop to pick up.
+  // An edge st that makes a loop across a perpendicular edge besides its own (paper §3.2: an
+  // expanding edge) gives a loop to pick up: along another piece, or along the piece's own
+  // flap into its rnd (a gusset).
   bool picked_up_along_an_edge(const Loop& loop) const {
     return loop.kind == LoopKind::perpendicular && g_.loops_made_by(loop.maker).size() > 1 &&
-           c_.yarns.piece_of[loop.maker] != out_.sections.back().yarn;
+           (c_.yarns.piece_of[loop.maker] != out_.sections.back().yarn ||
+            out_.sections.back().in_round);
   }
 
   // Consecutive loops picked up along one edge are one pick-up, in the order the rnd works

@@ -201,8 +201,13 @@ class SentenceReader {
     need_words(c, {"sts", "along", "the"}, "'sts along the right (or left) edge'");
     step.provisional = c.eat("right");
     need(step.provisional || c.eat("left"), c, "'right' or 'left'");
-    need_words(c, {"edge", "of", "piece"}, "'edge of Piece N'");
-    step.number = need_number(c, "a piece number");
+    need_words(c, {"edge", "of"}, "'edge of Piece N' (or 'of the flap')");
+    if (c.eat("the")) {
+      need(c.eat("flap"), c, "'the flap'");  // number 0: the piece on the needle
+    } else {
+      need(c.eat("piece"), c, "'Piece N' (or 'the flap')");
+      step.number = need_number(c, "a piece number");
+    }
     need_words(c, {",", "one", "in", "each", "row", "from"}, "', one in each row from'");
     step.from_row = row_of_piece(c);
     need(c.eat_any({"up", "down"}), c, "'up' or 'down'");
