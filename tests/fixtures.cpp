@@ -263,13 +263,24 @@ StitchMesh edging_mesh(int width, int rows) {
 
 namespace skein::testing {
 
-KnitGraph heel_turn_graph() {
-  using T = StitchType;
+namespace {
+
+// A tube's graph with a flap of two rows back and forth between its first rnds and its last:
+// cast-on, rnd, row, row, rnd, bind-off.
+KnitGraph tube_with_flap(const char* name) {
   KnitGraph g;
-  g.source_name = "heel turn";
+  g.source_name = name;
   g.element = "face";
   g.row_shape = {RowShape::closed, RowShape::closed, RowShape::open,
                  RowShape::open,   RowShape::closed, RowShape::closed};
+  return g;
+}
+
+}  // namespace
+
+KnitGraph heel_turn_graph() {
+  using T = StitchType;
+  KnitGraph g = tube_with_flap("heel turn");
   auto row_of = [&](std::initializer_list<T> types, std::uint32_t row) {
     std::vector<StitchId> made;
     for (T t : types) made.push_back(g.add_stitch(t, row, g.size(), 0));
@@ -311,11 +322,7 @@ KnitGraph heel_turn_graph() {
 
 KnitGraph gusset_graph() {
   using T = StitchType;
-  KnitGraph g;
-  g.source_name = "gusset";
-  g.element = "face";
-  g.row_shape = {RowShape::closed, RowShape::closed, RowShape::open,
-                 RowShape::open,   RowShape::closed, RowShape::closed};
+  KnitGraph g = tube_with_flap("gusset");
   auto row_of = [&](std::size_t n, T type, std::uint32_t row) {
     std::vector<StitchId> made;
     for (std::size_t i = 0; i < n; ++i) made.push_back(g.add_stitch(type, row, g.size(), 0));
