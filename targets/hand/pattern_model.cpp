@@ -390,23 +390,15 @@ class PatternBuilder {
     runs_of_the_fold(run);
     std::vector<StitchId> ring(run[0].rbegin(), run[0].rend());
     ring.insert(ring.end(), run[1].begin(), run[1].end());
-    auto any_held =
-        std::find_if(ring.begin(), ring.end(), [&](StitchId s) { return holder_of_[s] != 0; });
-    std::uint32_t held = any_held == ring.end() ? 0 : holder_of_[*any_held];
-    if (!ring_round_the_needle(ring, h) || !one_held_run(ring, held, h.live_at_end))
+    auto first_held = std::find_if(ring.begin(), ring.end(), [&](StitchId s) { return held(s); });
+    std::uint32_t by = first_held == ring.end() ? 0 : holder_of_[*first_held];
+    if (!ring_round_the_needle(ring, h) || !one_held_run(ring, by, h.live_at_end))
       unsupported(fmt::format(
           "{} binds off {} pairs from the needle of Piece {}, which holds {} sts: a "
           "three-needle bind-off of a fold together with sts waiting elsewhere (on a holder) "
           "that do not go back on the needle as one run is not covered yet",
           g_.describe(row_.front()), row_.size(), h.piece, h.live_at_end));
-    PatternSection::Fold fold;
-    fold.sts = static_cast<std::uint32_t>(ring.size());
-    fold.holder = held;
-    fold.held = holders_[held - 1].count;
-    fold.after = static_cast<std::uint32_t>(
-        std::find_if(ring.begin(), ring.end(), [&](StitchId s) { return holder_of_[s] != 0; }) -
-        ring.begin());
-    fold.held_from_last = ring[fold.after] == holders_[held - 1].last;
+    PatternSection::Fold fold = held_sts_placed(ring, by);
     for (std::uint32_t side : {0u, 1u}) {
       auto at = static_cast<std::uint32_t>(std::find(ring.begin(), ring.end(), run[side][0]) -
                                            ring.begin());
@@ -418,33 +410,47 @@ class PatternBuilder {
     join.fold = fold;
   }
 
+  bool held(StitchId s) const { return holder_of_[s] != 0; }
+
   // Turns the ring of the fold's sts to start at the first st of the needle's last row and go
   // the way that row went (its second st next, past any held sts); false if it cannot.
   bool ring_round_the_needle(std::vector<StitchId>& ring, const PatternSection& h) const {
     StitchId first = h.last_row_ends[0], second = g_.yarn_next[first];
-    for (int turn = 0; turn < 2; ++turn, std::reverse(ring.begin(), ring.end())) {
+    for (int way = 0; way < 2; ++way) {
+      if (way == 1) std::reverse(ring.begin(), ring.end());
       auto at = std::find(ring.begin(), ring.end(), first);
       if (at == ring.end()) return false;
       std::rotate(ring.begin(), at, ring.end());
-      auto next = std::find_if(ring.begin() + 1, ring.end(),
-                               [&](StitchId s) { return holder_of_[s] == 0; });
+      auto next = std::find_if(ring.begin() + 1, ring.end(), [&](StitchId s) { return !held(s); });
       if (next != ring.end() && *next == second) return true;
     }
     return false;
   }
 
-  // The held sts of the ring are all those of one holder, side by side, and the rest fill the
+  // The held sts of the ring are all those of holder `by`, side by side, and the rest fill the
   // needle.
-  bool one_held_run(const std::vector<StitchId>& ring, std::uint32_t held,
+  bool one_held_run(const std::vector<StitchId>& ring, std::uint32_t by,
                     std::uint32_t on_needle) const {
-    if (held == 0) return false;
-    auto first = std::find_if(ring.begin(), ring.end(), [&](StitchId s) { return holder_of_[s]; });
-    auto end = std::find_if(first, ring.end(), [&](StitchId s) { return holder_of_[s] == 0; });
-    bool others_held = std::any_of(end, ring.end(), [&](StitchId s) { return holder_of_[s]; });
+    if (by == 0) return false;
+    auto first = std::find_if(ring.begin(), ring.end(), [&](StitchId s) { return held(s); });
+    auto end = std::find_if(first, ring.end(), [&](StitchId s) { return !held(s); });
     auto count = static_cast<std::uint32_t>(end - first);
-    return !others_held && count == holders_[held - 1].count &&
-           std::all_of(first, end, [&](StitchId s) { return holder_of_[s] == held; }) &&
-           ring.size() == on_needle + count;
+    return std::none_of(end, ring.end(), [&](StitchId s) { return held(s); }) &&
+           std::all_of(first, end, [&](StitchId s) { return holder_of_[s] == by; }) &&
+           count == holders_[by - 1].count && ring.size() == on_needle + count;
+  }
+
+  // The ring's sts counted from the needle's first: the held ones go after those before them,
+  // the end of the holder that comes first in the ring first.
+  PatternSection::Fold held_sts_placed(const std::vector<StitchId>& ring, std::uint32_t by) const {
+    PatternSection::Fold fold;
+    fold.sts = static_cast<std::uint32_t>(ring.size());
+    fold.holder = by;
+    fold.held = holders_[by - 1].count;
+    fold.after = static_cast<std::uint32_t>(
+        std::find_if(ring.begin(), ring.end(), [&](StitchId s) { return held(s); }) - ring.begin());
+    fold.held_from_last = ring[fold.after] == holders_[by - 1].last;
+    return fold;
   }
 
   void flush_row() {
