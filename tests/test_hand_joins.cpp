@@ -414,7 +414,8 @@ TEST(HandPieces, TheTwoBarsAreProvenInEveryFormat) {
 TEST(HandPieces, TheLetterHIsProvenInEveryFormat) {
   expect_written_and_proven(
       "samples/letter-h/letter-h.yaml",
-      {"Slip sts 1\u20137 of the rnd to holder 1 \u2014 24 sts.\n",
+      {"- 1 stitch holder (or a length of waste yarn).\n",
+       "Slip sts 1\u20137 of the rnd to holder 1 \u2014 24 sts.\n",
        "Place the 7 sts of holder 1 on the spare needle of Piece 4 after its st 7 (count round "
        "the needle from the first st of its last row), the last st slipped first \u2014 42 sts. "
        "Three-needle bind-off: fold the 42 sts of Piece 4 in half with RS together"});

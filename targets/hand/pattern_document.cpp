@@ -483,6 +483,13 @@ class FrontMatter {
     return items;
   }
 
+  // "9 stitch holders (or lengths of waste yarn), numbered 1 to 9", or one.
+  static std::string holders_text(std::uint32_t holders) {
+    if (holders == 1) return "1 stitch holder (or a length of waste yarn).";
+    return fmt::format("{} stitch holders (or lengths of waste yarn), numbered 1 to {}.", holders,
+                       holders);
+  }
+
   // One line per yarn piece; a piece taken up again goes on with the same yarn.
   std::vector<std::string> yarn() const {
     std::vector<std::uint64_t> stitches(p_.sections.size() + 1, 0);
@@ -527,9 +534,7 @@ class FrontMatter {
                                            : ""));
     if (t_.spare_needles)
       items.push_back("A spare needle (or stitch holder) for each piece left to wait on one.");
-    if (t_.holders > 0)
-      items.push_back(fmt::format("{} stitch holders (or lengths of waste yarn), numbered 1 to {}.",
-                                  t_.holders, t_.holders));
+    if (t_.holders > 0) items.push_back(holders_text(t_.holders));
     if (t_.joins) items.push_back("A third needle for the three-needle bind-off.");
     items.push_back("Tapestry needle for weaving in ends.");
     return items;
