@@ -1,5 +1,8 @@
 #include "fixtures.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "common/error.hpp"
 #include "mesh/generate.hpp"
 
@@ -80,6 +83,98 @@ StitchMesh split_mesh(MismatchYarn::Kind yarn, bool own_upper) {
   for (int x = 0; x < 3; ++x) squares.push_back({x, 2, T::k, "boti"});
   for (int x = 0; x < 3; ++x) squares.push_back({x, 3, T::bo, "bito"});
   return grid_mesh(3, 4, squares, marks_along(2, 3, yarn, own_upper ? 6 : 3, 1));
+}
+
+StitchMesh mid_row_split_mesh(bool rs_row) {
+  using T = StitchType;
+  CornerBuilder b("<mid-row split>");
+  const float y = rs_row ? 1 : 0;  // with a plain row first, the cast-on comes in a RS row
+  auto roles = [](float row) { return static_cast<int>(row) % 2 ? "bito" : "boti"; };
+  for (float x = 0; x < 5; ++x) b.square(x, 0, "boti", T::co);
+  if (rs_row)
+    for (float x = 4; x >= 0; --x) b.square(x, 1, "bito", T::k);
+  // The bound-off sts' tops sag below the split line, so that they share no edge with the
+  // cast-on above them.
+  b.square(0, y + 1, roles(y + 1), T::k);
+  b.face({{1, y + 1}, {2, y + 1}, {2, y + 1.8f}, {1, y + 2}}, roles(y + 1), T::bo);
+  b.face({{2, y + 1}, {3, y + 1}, {3, y + 1.8f}, {2, y + 1.8f}}, roles(y + 1), T::bo);
+  b.face({{3, y + 1}, {4, y + 1}, {4, y + 2}, {3, y + 1.8f}}, roles(y + 1), T::bo);
+  b.square(4, y + 1, roles(y + 1), T::k);
+  const std::uint32_t split_row = rs_row ? 15 : 10;  // its first face
+  for (float x = 0; x < 5; ++x) b.square(x, y + 2, roles(y + 2), T::k);
+  for (float x = 0; x < 5; ++x) b.square(x, y + 3, roles(y + 3), T::bo);
+  // The second piece, wales down from the split line, inside the gap.
+  for (float x = 1; x < 4; ++x)
+    b.face({{x, y + 1.5f}, {x + 1, y + 1.5f}, {x + 1, y + 2}, {x, y + 2}}, "tibo", T::k);
+  for (float x = 1; x < 4; ++x)
+    b.face({{x, y + 1.2f}, {x + 1, y + 1.2f}, {x + 1, y + 1.5f}, {x, y + 1.5f}}, "tobi", T::bo);
+  StitchMesh mesh = std::move(b).build();
+  for (Edge e : mesh.edges()) {
+    Vec3 a = mesh.position[mesh.tail(mesh.halfedge(e))];
+    Vec3 c = mesh.position[mesh.head(mesh.halfedge(e))];
+    if (a.y != y + 2 || c.y != y + 2 || std::min(a.x, c.x) < 1 || std::max(a.x, c.x) > 4) continue;
+    auto above = static_cast<std::uint32_t>(split_row + std::min(a.x, c.x));
+    mesh.mismatch_yarn[e] = {MismatchYarn::Kind::own, Face(above)};
+  }
+  return mesh;
+}
+
+StitchMesh mid_round_split_mesh() {
+  using T = StitchType;
+  CornerBuilder b("<mid-round split>");
+  auto around = [&](float x, float y, float width, T type) {  // x = width is x = 0 again
+    auto at = [&](float u) { return u >= width ? u - width : u; };
+    b.face({{at(x), y}, {at(x + 1), y}, {at(x + 1), y + 1}, {at(x), y + 1}}, "boti", type);
+  };
+  for (float x = 0; x < 6; ++x) around(x, 0, 6, T::co);
+  around(0, 1, 6, T::k);
+  b.face({{1, 1}, {2, 1}, {2, 1.8f}, {1, 2}}, "boti", T::bo);
+  b.face({{2, 1}, {3, 1}, {3, 1.8f}, {2, 1.8f}}, "boti", T::bo);
+  b.face({{3, 1}, {4, 1}, {4, 2}, {3, 1.8f}}, "boti", T::bo);
+  for (float x = 4; x < 6; ++x) around(x, 1, 6, T::k);
+  for (float x = 0; x < 6; ++x) around(x, 2, 6, T::k);  // faces 12-17
+  for (float x = 0; x < 4; ++x) around(x, 3, 6, T::k);
+  b.face({{4, 3}, {5, 3}, {0, 3}, {0, 4}, {4, 4}}, "bboti", T::k2tog);
+  for (float x = 0; x < 5; ++x) around(x, 4, 5, T::bo);
+  for (float x = 1; x < 4; ++x)
+    b.face({{x, 1.5f}, {x + 1, 1.5f}, {x + 1, 2}, {x, 2}}, "tibo", T::k);
+  for (float x = 1; x < 4; ++x)
+    b.face({{x, 1.2f}, {x + 1, 1.2f}, {x + 1, 1.5f}, {x, 1.5f}}, "tobi", T::bo);
+  StitchMesh mesh = std::move(b).build();
+  for (Edge e : mesh.edges()) {
+    Vec3 a = mesh.position[mesh.tail(mesh.halfedge(e))];
+    Vec3 c = mesh.position[mesh.head(mesh.halfedge(e))];
+    if (a.x == 0 && c.x == 0 && std::abs(a.y - c.y) == 1) mesh.shift_path[e] = 1;  // the seam
+    if (a.y != 2 || c.y != 2 || std::min(a.x, c.x) < 1 || std::max(a.x, c.x) > 4) continue;
+    auto above = static_cast<std::uint32_t>(12 + std::min(a.x, c.x));
+    mesh.mismatch_yarn[e] = {MismatchYarn::Kind::own, Face(above)};
+  }
+  return mesh;
+}
+
+StitchMesh mid_row_join_mesh() {
+  using T = StitchType;
+  CornerBuilder b("<mid-row join>");
+  for (float x = 0; x < 5; ++x) b.square(x, 0, "boti", T::co);
+  for (float x = 0; x < 5; ++x) b.square(x, 1, "bito", T::k);  // faces 5-9
+  for (float x = 0; x < 2; ++x) b.square(x, 2, "boti", T::k);
+  for (float x = 0; x < 2; ++x) b.square(x, 3, "bito", T::bo);
+  // The second piece, wales down to the join line; its side beside the first piece's last
+  // rows is moved off x = 2, so that they share no edge.
+  auto side = [](float x) { return x == 2 ? 2.1f : x; };
+  for (float x = 2; x < 5; ++x)
+    b.face({{x, 2}, {x + 1, 2}, {x + 1, 3}, {side(x), 3}}, "tibo", T::k);
+  for (float x = 2; x < 5; ++x)
+    b.face({{side(x), 3}, {x + 1, 3}, {x + 1, 4}, {side(x), 4}}, "tobi", T::co);
+  StitchMesh mesh = std::move(b).build();
+  for (Edge e : mesh.edges()) {
+    Vec3 a = mesh.position[mesh.tail(mesh.halfedge(e))];
+    Vec3 c = mesh.position[mesh.head(mesh.halfedge(e))];
+    if (a.y != 2 || c.y != 2 || std::min(a.x, c.x) < 2) continue;
+    mesh.mismatch_yarn[e] = {MismatchYarn::Kind::own,
+                             Face(static_cast<std::uint32_t>(5 + std::min(a.x, c.x)))};
+  }
+  return mesh;
 }
 
 // A column knit upwards (x0), and beside it two cast-on stitches whose wales point left, at

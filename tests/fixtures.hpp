@@ -37,6 +37,19 @@ StitchMesh join_mesh(MismatchYarn::Kind yarn = MismatchYarn::Kind::by_default,
                      bool own_upper = false);
 StitchMesh split_mesh(MismatchYarn::Kind yarn = MismatchYarn::Kind::by_default,
                       bool own_upper = false);
+// A split in the middle of a row, worked with the upper piece's own yarn: a sheet 5 sts wide
+// binds off its middle 3 sts (Row 1) and casts them on again provisionally in Row 2 (the
+// opening of a pocket); a second piece hangs from the cast-on's chain, 2 rows knit downwards.
+// With `rs_row`, a plain row comes first, so that the cast-on is worked in the other direction.
+StitchMesh mid_row_split_mesh(bool rs_row = false);
+// The same in the round: a tube 6 sts around binds off 3 sts in Rnd 1, casts them on again
+// provisionally in Rnd 2 (an afterthought thumb's opening) and decreases across the seam in
+// Rnd 3 (a k2tog: its rnds run left to right); a second piece hangs from the chain.
+StitchMesh mid_round_split_mesh();
+// A three-needle bind-off in the middle of a row, with the lower piece's own yarn: a sheet 5
+// sts wide binds off 3 of its sts in Row 1 with the 3 of a second piece (wales down, knit first
+// and left on a spare needle), and goes on with the other 2.
+StitchMesh mid_row_join_mesh();
 StitchMesh contracting_mesh();
 StitchMesh expanding_mesh();
 

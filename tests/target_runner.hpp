@@ -26,6 +26,16 @@ inline VerifyReport verify(const Compilation& c, const std::string& target,
   return registry.simulator_for(target)->verify(text, "pattern", &c, {});
 }
 
+// Each hand format (markdown, page, KnitSpeak) written and proven: the failures, or "".
+inline std::string unproven_hand_formats(const Compilation& c) {
+  std::string failures;
+  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
+    VerifyReport report = verify(c, target, emit(c, target));
+    if (!report.proven) failures += std::string(target) + ": " + report.summary + "\n";
+  }
+  return failures;
+}
+
 // Works a hand pattern written by hand (no model to compare with): the failure, or "".
 inline std::string failure_of(const std::string& pattern) {
   VerifyReport r = hand::verify_pattern(pattern, "p.md", nullptr);

@@ -116,6 +116,9 @@ TEST(HandTarget, SamplesNotCoveredYetNameWhatStopsThem) {
        "face 1327 (k, row 36) picks up a loop along the edge of face 1144 (k, row 35) (an "
        "expanding perpendicular edge) in the middle of the work (a gusset's \"pick up and "
        "knit\")"},
+      {"samples/teapot/teapot.yaml",
+       "face 1909 (k, row 34) picks up a loop along the edge of face 1761 (k, row 33) (an "
+       "expanding perpendicular edge) in the middle of the work"},
   };
   for (const auto& [sample, named] : cases) {
     std::string error = emit_error(compile_model(sample));
@@ -197,7 +200,8 @@ TEST(HandReadability, PlainKnittingTakesAFewLines) {
         std::pair{"samples/sweater/sweater.yaml", 2.6},
         std::pair{"samples/three-bars/three-bars.yaml", 8.5},
         std::pair{"samples/letter-h/letter-h.yaml", 27.5},
-        std::pair{"samples/two-bars/two-bars.yaml", 12.0}}) {
+        std::pair{"samples/two-bars/two-bars.yaml", 12.0},
+        std::pair{"samples/three-bars-own/three-bars-own.yaml", 7.0}}) {
     Compilation c = compile_model(input);
     double figure = lines_per_thousand(c, emit(c, "hand"));
     std::cout << input << ": " << figure << " instruction lines per 1,000 sts\n";

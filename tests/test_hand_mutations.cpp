@@ -348,6 +348,26 @@ TEST(HandMutations, WrapAndTurnShortRowsRejectEveryEditThatChangesTheFabric) {
   }
 }
 
+// Rounds that run left to right worked with the WS facing (the tube inside out), not mirrored.
+TEST(HandMutations, RndsWorkedWithTheWSFacingRejectEveryEditThatChangesTheFabric) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  auto inside_out = [](const Compilation& c) {
+    std::ostringstream out;
+    hand::write_markdown(hand::make_document(hand::build_hand_pattern(c, hand::TurnMethod::german,
+                                                                      hand::Rounds::ws_facing)),
+                         out);
+    return out.str();
+  };
+  Compilation hat = compile_model("samples/hat/hat.obj");
+  mutate_and_judge("hat (rnds with the WS facing)", hat, inside_out(hat));
+  RandomShaping shaping;
+  shaping.purl = 0.3;
+  shaping.increase = shaping.decrease = 0.1;
+  Compilation tube =
+      compile_stitch_mesh(build_from_rows(random_rows(14, 6, shaping, 3), Layout::tube), "tube");
+  mutate_and_judge("random tube (rnds with the WS facing)", tube, inside_out(tube));
+}
+
 TEST(HandMutations, SectionMarkerPatternsRejectEveryEditThatChangesTheFabric) {
   mutate_and_judge(
       "crown with section markers",
@@ -373,6 +393,22 @@ TEST(HandMutations, SplitsRejectEveryEditThatChangesTheFabric) {
       "split sheets (own yarn)",
       compile_stitch_mesh(meeting_sheets(Meeting::split, 5, 3, 4, MismatchYarn::Kind::own, true, 7),
                           "split sheets"));
+}
+
+TEST(HandMutations, ProvisionalCastOnsInARowRejectEveryEditThatChangesTheFabric) {
+  for (bool rs_row : {false, true})
+    mutate_and_judge(rs_row ? "cast-on in a RS row" : "cast-on in a WS row",
+                     compile_stitch_mesh(testing::mid_row_split_mesh(rs_row), "mid-row split"));
+  mutate_and_judge("cast-on in a rnd (mirrored)",
+                   compile_stitch_mesh(testing::mid_round_split_mesh(), "mid-round split"));
+}
+
+TEST(HandMutations, ThreeNeedleBindOffsInARowRejectEveryEditThatChangesTheFabric) {
+  mutate_and_judge("three-needle bind-off in a row",
+                   compile_stitch_mesh(testing::mid_row_join_mesh(), "mid-row join"));
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  mutate_and_judge("three bars with their own yarns",
+                   compile_model("samples/three-bars-own/three-bars-own.yaml"));
 }
 
 TEST(HandMutations, PickUpsRejectEveryEditThatChangesTheFabric) {

@@ -127,9 +127,6 @@ TEST(HandShortRows, RejectsATurnWorkedWrongWithTheRowAndTheReason) {
   EXPECT_EQ(failure_of(rnd + "Row 2 (RS): K5.\n"),
             "p.md:3: Row 2 (RS): a row worked in the rnd ends where the work turns: end it with "
             "w&t or turn");
-  EXPECT_EQ(failure_of(rnd + "Row 2 (RS): K5, w&t.\nRnd 3: Knit.\n"),
-            "p.md:4: Rnd 3: the WS faces you (the work was turned): rnds are worked with the RS "
-            "facing");
   EXPECT_EQ(failure_of(rnd + "Row 2 (RS): K5, w&t.\nRow 3 (WS): P to end, turn.\n"),
             "p.md:4: Row 3 (WS): p to end: a row worked in the rnd has no end; give the count");
 }

@@ -38,6 +38,12 @@ enum class HandOp : std::uint8_t {
   m1pr,
   yo,
   bo,  // bind off one stitch
+  // Cast on one st onto the right needle in the middle of a row with a provisional cast-on (a
+  // cast-on along a split): its waste-yarn chain's loop waits for the other side.
+  provisional_co,
+  // Three-needle bind-off in a row: the next st together with the next st held behind it
+  // (another piece's, waiting on a spare needle), bound off.
+  tnbo,
   pm,
   sm,
   rm,  // place, slip, remove a marker

@@ -142,6 +142,9 @@ class NeedleSimulator {
       case Step::Kind::three_needle_bind_off:
         three_needle_bind_off(s);
         break;
+      case Step::Kind::hold_behind:
+        hold_behind(s);
+        break;
       case Step::Kind::hold:
         hold(s);
         check_printed_count(s, "Slip sts to holders");
@@ -167,13 +170,29 @@ class NeedleSimulator {
     fab().rows.push_back({0, 0, 0, false, Side::rs});
     row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
     facing_ = provisional ? Side::ws : Side::rs;  // the needle's loop first, seen from the RS
-    for (std::uint32_t i = 0; i < n; ++i) {
-      std::uint32_t x = new_stitch(provisional ? StitchType::sco : StitchType::co);
-      fab().taken_first.push_back(static_cast<std::uint32_t>(fab().taken.size()));
-      pc_.right.push_back(new_loop(x));
-      if (provisional) spare_needles_[{pc_.number, kChain}].push_back(new_loop(x));
-    }
+    for (std::uint32_t i = 0; i < n; ++i) cast_on_st(provisional);
     pc_.live = n;
+  }
+
+  // One st cast on onto the right needle; a provisional one also makes the loop of its
+  // waste-yarn chain, which waits on a spare needle for the other side of the split.
+  void cast_on_st(bool provisional) {
+    std::uint32_t x = new_stitch(provisional ? StitchType::sco : StitchType::co);
+    fab().taken_first.push_back(static_cast<std::uint32_t>(fab().taken.size()));
+    pc_.right.push_back(new_loop(x));
+    if (provisional) spare_needles_[{pc_.number, kChain}].push_back(new_loop(x));
+  }
+
+  // "CO 3 sts with a provisional cast-on" in the middle of a row: as a provisional cast-on of
+  // its own, the needle's loop first seen from the RS; the chain joins the piece's chain.
+  void provisional_cast_on_in_row() {
+    Side facing = facing_;
+    facing_ = Side::ws;
+    cast_on_st(true);
+    facing_ = facing;
+    ++pc_.live;
+    row_last_stitch_ = pc_.last_stitch;
+    last_make_.reset();
   }
 
   // A new piece worked from loops picked up along an edge of a finished piece, one in each
@@ -250,11 +269,15 @@ class NeedleSimulator {
       fail(fmt::format("Join a new yarn: the piece before still has {} on the needle",
                        sts(pc_.live)));
     std::vector<std::uint32_t> loops =
-        spare_needle(s.number, s.from_last[0], "Join a new yarn", s.provisional);
+        s.holder[0] ? held(s.number, s.from_last[0], "Join a new yarn")
+                    : spare_needle(s.number, s.from_last[0], "Join a new yarn", s.provisional);
     if (loops.size() != s.count)
-      fail(fmt::format("Join a new yarn: the pattern says {}, but the needle holds {}",
-                       sts(s.count), loops.size()));
-    spare_needles_.erase({s.number, s.provisional ? kChain : kNeedle});
+      fail(fmt::format("Join a new yarn: the pattern says {}, but the {} holds {}", sts(s.count),
+                       s.holder[0] ? "holder" : "needle", loops.size()));
+    if (s.holder[0])
+      holders_.erase(s.number);
+    else
+      spare_needles_.erase({s.number, s.provisional ? kChain : kNeedle});
     start_piece();
     fab().rows.push_back({0, 0, 0, false, Side::rs});
     row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
@@ -574,6 +597,24 @@ class NeedleSimulator {
   }
 
   // The sts from the needle tip: the first or the last st of the piece's last row.
+  // A spare needle held behind the work for "3-needle BO" in the rows that follow, from the
+  // end the sentence names.
+  void hold_behind(const Step& s) {
+    if (!active_) fail(fmt::format("Hold the sts of Piece {}: no piece is being worked", s.number));
+    const char* what = s.holder[0] ? "holder" : "Piece";
+    std::vector<std::uint32_t> sts_held =
+        s.holder[0] ? held(s.number, s.from_last[0], "Hold the sts")
+                    : spare_needle(s.number, s.from_last[0], "Hold the sts");
+    if (sts_held.size() != s.count)
+      fail(fmt::format("Hold the sts of {} {}: the pattern says {}, but its needle holds {}", what,
+                       s.number, sts(s.count), sts_held.size()));
+    held_behind_.insert(held_behind_.end(), sts_held.begin(), sts_held.end());
+    if (s.holder[0])
+      holders_.erase(s.number);
+    else
+      spare_needles_.erase({s.number, kNeedle});
+  }
+
   std::vector<std::uint32_t> spare_needle(std::uint32_t piece, bool from_last, const char* what,
                                           bool chain = false) const {
     auto at = spare_needles_.find({piece, chain ? kChain : kNeedle});
@@ -629,7 +670,7 @@ class NeedleSimulator {
     for (std::uint32_t n = s.number; n <= s.last; ++n) {
       if (pc_.defined.size() <= n) pc_.defined.resize(n + 1, kNone);
       pc_.defined[n] = s.program;
-      work_row(script_.programs[s.program], s.round, 0, n == s.number ? s.side : std::nullopt,
+      work_row(script_.programs[s.program], s.round, 0, n == s.number ? label_of(s) : std::nullopt,
                s.line);
     }
     check_count(s);
@@ -677,23 +718,32 @@ class NeedleSimulator {
           pc_.live == 1 ? "1 st is" : fmt::format("{} sts are", pc_.live))};
   }
 
+  // The side a written row says faces the knitter. A rnd without (WS) is worked with the RS
+  // facing; a flat row without a side follows from the turns.
+  static std::optional<Side> label_of(const Step& s) {
+    return s.round ? s.side.value_or(Side::rs) : s.side;
+  }
+
   // A row turns the work first when the one before ended at a turn (every flat row does);
-  // after a rnd, or a row that did not turn, the work goes on in the same direction.
-  Side facing_of(bool round, std::optional<Side> label) const {
-    if (!pc_.last_side) return round ? Side::rs : label.value_or(Side::rs);
+  // after a rnd, or a row that did not turn, the work goes on in the same direction. The first
+  // row of a piece says which side faces (a rnd (WS): the tube is worked inside out).
+  Side facing_of(std::optional<Side> label) const {
+    if (!pc_.last_side) return label.value_or(Side::rs);
     return pc_.turn_before ? other(*pc_.last_side) : *pc_.last_side;
   }
 
   void work_row(const Program& p, bool round, std::uint32_t repeat_of, std::optional<Side> label,
                 std::size_t line) {
-    Side facing = facing_of(round, label);
+    Side facing = facing_of(label);
     fab().rows.push_back({line, pc_.next_number, repeat_of, round, facing});
     row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
     in_row_ = true;
     row_round_ = round;
-    if (round && facing != Side::rs)
-      fail("the WS faces you (the work was turned): rnds are worked with the RS facing");
-    if (label && !round && *label != facing)
+    if (round && label == Side::rs && facing == Side::ws)
+      fail(
+          "the WS faces you (the work was turned): a rnd worked with the WS facing is "
+          "labelled (WS)");
+    if (label && *label != facing)
       fail(fmt::format("labelled {}, but the {} faces you: {}", side_name(*label),
                        side_name(facing),
                        !pc_.joined       ? "every row turns the work"
@@ -786,6 +836,9 @@ class NeedleSimulator {
     if (!row_ended_ && !pc_.left.empty())
       fail(fmt::format("a marker is left at the end of the {}: slip it (sm) or remove it (rm)",
                        what));
+    if (!held_behind_.empty())
+      fail(fmt::format("{} held behind the needle left unworked at the end of the {}",
+                       sts(static_cast<std::uint32_t>(held_behind_.size())), what));
     if (!pending_.empty())
       fail(fmt::format("{} with no st worked in the {} to go with it",
                        info(pending_.front().op).abbreviation, what));
@@ -937,6 +990,12 @@ class NeedleSimulator {
       case HandOp::from_spare_behind:
         slip_from_spare(op == HandOp::from_spare_behind);
         return;
+      case HandOp::provisional_co:
+        provisional_cast_on_in_row();
+        return;
+      case HandOp::tnbo:
+        three_needle_bind_off_st();
+        return;
       case HandOp::slip_back:
         slip_back();
         return;
@@ -969,6 +1028,29 @@ class NeedleSimulator {
     else
       stitch(op);
     if (op == HandOp::wt) wrap_and_turn();
+  }
+
+  // "3-needle BO": the next st and the first st held behind it knit together and bound off;
+  // as in a three-needle bind-off of whole pieces, the front loop first seen from the RS.
+  void three_needle_bind_off_st() {
+    if (held_behind_.empty()) fail("3-needle BO: no sts are held behind the needle");
+    if (loops_to_marker() == 0)
+      fail(fmt::format("3-needle BO needs 1 st{}, 0 left",
+                       marker_ahead() ? " before the marker" : ""));
+    check_turn_loop(HandOp::tnbo, pc_.left.back());
+    Side facing = facing_;
+    facing_ = Side::ws;
+    std::uint32_t x = new_stitch(StitchType::tnbo);
+    facing_ = facing;
+    fab().taken.push_back(pc_.left.back());
+    fab().taken.push_back(held_behind_.front());
+    fab().taken_first.push_back(static_cast<std::uint32_t>(fab().taken.size()));
+    pc_.left.pop_back();
+    --left_loops_;
+    held_behind_.erase(held_behind_.begin());
+    --pc_.live;
+    row_last_stitch_ = x;
+    last_make_.reset();
   }
 
   // w&t: the st just slipped and wrapped goes back to the left needle, and the work turns.
@@ -1212,6 +1294,7 @@ class NeedleSimulator {
   // (and with a provisional cast-on, the loops of its chain).
   static constexpr std::uint32_t kNeedle = 0, kChain = 1;
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> spare_needles_;
+  std::vector<std::uint32_t> held_behind_;  // for "3-needle BO", the next at the front
   std::map<std::uint32_t, std::vector<std::uint32_t>> holders_;  // by holder number
   std::vector<std::uint32_t> spare_for_rows_;  // a holder's sts that sl1 from spare takes
 

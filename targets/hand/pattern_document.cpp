@@ -86,13 +86,38 @@ class InstructionWriter {
   bool knitspeak() const { return dialect_ == Dialect::knitspeak; }
 
   std::string setup_text(const PatternSection& sec) const {
+    return first_setup_text(sec) + hold_text(sec);
+  }
+
+  // " Hold the 3 sts of Piece 2 behind the needle, the first st of its last row at the tip."
+  std::string hold_text(const PatternSection& sec) const {
+    std::string text;
+    for (const PatternSection::Hold& h : sec.holds)
+      text +=
+          fmt::format(" Hold the {} of {} behind the needle, the {} st of its last row at the tip.",
+                      sts(h.count),
+                      h.holder ? fmt::format("holder {}", h.holder)
+                               : fmt::format("Piece {}", p_.sections[h.section].piece),
+                      h.from_last ? "last" : "first");
+    return text;
+  }
+
+  std::string first_setup_text(const PatternSection& sec) const {
     if (sec.resumed) return take_up_text(sec);
     if (sec.starts_from) return join_spare_text(*sec.starts_from);
     if (sec.picks_up) return pick_up_text(*sec.picks_up, sec.cast_on);
     std::string text = fmt::format("Cast on {}{}.", sts(sec.cast_on),
                                    sec.provisional ? " with a provisional cast-on" : "");
-    if (sec.in_round) text += " Pm and join to work in the rnd, being careful not to twist.";
+    if (sec.in_round)
+      text +=
+          fmt::format(" Pm and join to work in the rnd{}, being careful not to twist.",
+                      starts_inside_out(sec) ? " with the WS facing (the tube inside out)" : "");
     return text;
+  }
+
+  bool starts_inside_out(const PatternSection& sec) const {
+    return sec.first_row < sec.end_row && p_.rows[sec.first_row].round &&
+           p_.rows[sec.first_row].side == Side::ws;
   }
 
   std::string three_needle_text(const PatternSection& sec) const {
@@ -263,8 +288,13 @@ class InstructionWriter {
   // "Join a new yarn to the 3 loops of Piece 1's chain, the first st cast on at the tip."
   std::string join_spare_text(const PatternSection::Start& start) const {
     const PatternSection& spare = p_.sections[start.section];
+    if (start.holder)
+      return fmt::format(
+          "Join a new yarn to the {} of holder {}, the {} st of its last {} at the tip.",
+          sts(start.count), start.holder, start.from_last ? "last" : "first",
+          spare.in_round ? "rnd" : "row");
     return fmt::format("Join a new yarn to the {} {} of Piece {}{}, the {} st cast on at the tip.",
-                       spare.cast_on, start.chain ? "loops" : "sts", spare.piece,
+                       start.count, start.chain ? "loops" : "sts", spare.piece,
                        start.chain ? "'s chain" : "", start.from_last ? "last" : "first");
   }
 
@@ -284,7 +314,7 @@ class InstructionWriter {
 
   std::string label(const PatternRow& r) const {
     std::string word = rows_word(r.round, false);
-    if (r.round) return fmt::format("{} {}", word, r.number);
+    if (r.round && r.side == Side::rs) return fmt::format("{} {}", word, r.number);
     return fmt::format("{} {} ({})", word, r.number, side_name(r.side));
   }
 
@@ -332,8 +362,9 @@ class InstructionWriter {
       auto [period, times] = best_block(i, end);
       std::uint32_t last = i + period * times - 1;
       const PatternRow& r = p_.rows[i];
-      // The first flat row of a piece keeps its label: it says which side is the RS.
-      bool sided = !r.round && i == first;
+      // The first row of a piece keeps its label: it says which side is the RS (a rnd worked
+      // with the WS facing says WS).
+      bool sided = (!r.round || r.side == Side::ws) && i == first;
       if (times > 1 && period == 1 && (texts_[i] == "Knit" || texts_[i] == "Purl") &&
           !knitspeak() && !sided) {
         add(InstructionLine::Kind::repeat, "", work_even_text(r, p_.rows[last], first, i));
@@ -418,7 +449,7 @@ Totals totals_of(const HandPattern& p) {
   for (const PatternSection& s : p.sections) {
     t.joins = t.joins || s.joins;
     t.spare_needles = t.spare_needles || s.left_live || s.provisional || !s.holdings.empty();
-    t.provisional = t.provisional || s.provisional;
+    t.provisional = t.provisional || s.provisional || s.row_chain > 0;
     for (const PatternSection::Placement& placed : s.placements)
       t.picks_up_into_rnd = t.picks_up_into_rnd || placed.edge.has_value();
     t.picks_up = t.picks_up || s.picks_up.has_value() || t.picks_up_into_rnd;
@@ -594,6 +625,12 @@ class FrontMatter {
           "with the cast-on edge untwisted, place the BOR marker and knit the first "
           "cast-on stitch with the working yarn. The marker then sits at the start of "
           "every round: slip it as you come to it.");
+    if (p_.ws_rounds)
+      items.push_back(
+          "**Rounds worked with the WS facing** (\"Rnd 30 (WS)\"): the tube is worked inside "
+          "out, around in the usual direction with the WS facing you (the wrong side of the "
+          "piece shows outside); a st that shows as a knit on the RS is purled. When such rnds "
+          "follow rows that end with the WS facing, go on around without turning.");
     if (p_.short_rows) items.push_back(short_rows_technique());
     if (t_.provisional)
       items.push_back(
@@ -601,7 +638,9 @@ class FrontMatter {
           "few sts longer than needed; with the working yarn pick up and knit 1 st through the "
           "back bump of each chain st. The sts on the needle are one side of the split; where "
           "the pattern works \"the loops of its chain\", unzip the waste yarn and put the live "
-          "loops on a needle: they are the other side.");
+          "loops on a needle: they are the other side. In the middle of a row (\"CO 3 sts with "
+          "a provisional cast-on\") pick up and knit the sts through the chain onto the right "
+          "needle and go on with the row.");
     if (t_.picks_up)
       items.push_back(
           "**Picking up along an edge:** with the RS facing and a new yarn, put the outer loop "
@@ -628,6 +667,15 @@ class FrontMatter {
           "of the back needle, knit them together; *knit the next pair together the same way, "
           "pass the first st on the right needle over the second; rep from * until all pairs "
           "are worked; cut the yarn and pull it through the last loop.");
+    if (uses(HandOp::tnbo))
+      items.push_back(
+          "**Three-needle bind-off in a row** (\"3-needle BO 3 sts\"): hold the spare needle "
+          "named behind the left needle, parallel to it. *Knit the first st of the left needle "
+          "together with the first st of the back needle; if there is a st before it on the "
+          "right needle, pass that one over it; rep from * as many times as said. Work the next "
+          "st as the pattern says and pass the last pair over it: it is the first st of what "
+          "follows (as when binding off part of a row). With more than one needle held, bind "
+          "off from them in the order they were held.");
     if (uses(HandOp::bo))
       items.push_back(
           "**Binding off (BO):** work 2 sts as they appear, *pass the first st on the "

@@ -127,27 +127,27 @@ class Handedness {
   std::vector<std::uint8_t> first_lr_;  // per piece
 };
 
-// Hand knitting works every round right to left with the RS facing. When the model's rounds
-// run the other way, the pattern knits the mirror image.
-bool needs_mirror(const Compilation& c, const Handedness& hand) {
+// Hand knitting works every round right to left with the side facing the knitter. When most
+// of the model's rounds run the other way seen from the RS, the pattern knits the mirror image;
+// the rounds that still run left to right are worked with the WS facing.
+bool needs_mirror(const Compilation& c, const Handedness& hand, Rounds rounds) {
+  if (rounds == Rounds::ws_facing) return false;
   const KnitGraph& g = c.knit;
-  std::int8_t mirror = -1;
+  std::uint64_t left_to_right = 0, closed = 0;
   for (StitchId s = 0; s < g.size(); ++s) {
     if (g.row_shape[g.row[s]] != RowShape::closed) continue;
-    std::int8_t lr = hand.left_to_right(s) ? 1 : 0;
-    if (mirror >= 0 && mirror != lr)
-      unsupported(fmt::format("the rounds of {} run both ways seen from the RS (see {})",
-                              g.source_name, g.describe(s)));
-    mirror = lr;
+    ++closed;
+    left_to_right += hand.left_to_right(s);
   }
-  return mirror == 1;
+  return 2 * left_to_right > closed;
 }
 
 class PatternBuilder {
  public:
-  PatternBuilder(const Compilation& c, TurnMethod turns) : c_(c), g_(c.knit), hand_(c) {
+  PatternBuilder(const Compilation& c, TurnMethod turns, Rounds rounds)
+      : c_(c), g_(c.knit), hand_(c) {
     out_.source = c.input;
-    out_.mirror = needs_mirror(c, hand_);
+    out_.mirror = needs_mirror(c, hand_, rounds);
     out_.turns = turns;
   }
 
@@ -205,8 +205,7 @@ class PatternBuilder {
     s.yarn = yarn;
     s.piece = ++pieces_;
     s.first_row = s.end_row = static_cast<std::uint32_t>(out_.rows.size());
-    st_.live = 0;
-    st_.cast_on_done = false;
+    st_ = Needle{};  // a new yarn: nothing of the piece before
   }
 
   // The yarn waits for another piece: its sts stay on the needle.
@@ -522,16 +521,116 @@ class PatternBuilder {
   // One side of a split: the loops wait on a spare needle (or on the provisional cast-on's
   // chain: the loops' second slot).
   void start_from_spare_needle(const Loop& first) {
-    if (first.maker == kNoStitch || g_.type[first.maker] != T::sco)
+    if (first.maker != kNoStitch && g_.type[first.maker] != T::sco) {
+      if (holder_of_[first.maker] == 0) refuse_start_on_live_sts(first);
+      return start_from_holder(first);
+    }
+    if (first.maker == kNoStitch)
       unsupported(
           fmt::format("yarn {} starts with {}, neither with a cast-on nor on the sts of a "
                       "cast-on along a split",
                       section().yarn + 1, g_.describe(row_.front())));
     std::uint32_t from = section_of_yarn_[c_.yarns.piece_of[first.maker]];
     const PatternSection& spare = out_.sections[from];
-    section().starts_from =
-        PatternSection::Start{from, first.maker_slot == 1, first.maker == spare.last_row_ends[1]};
-    st_.live = st_.ahead = spare.cast_on;
+    bool chain = is_chain_loop(first);
+    auto [count, last] = cast_on_sts(spare, chain);
+    section().starts_from = PatternSection::Start{from, chain, first.maker == last, count};
+    st_.live = st_.ahead = count;
+  }
+
+  // The sts of a provisional cast-on on the needle or on its chain (of the piece's cast-on, or
+  // of a cast-on in one of its rows): how many, and the last cast on.
+  static std::pair<std::uint32_t, StitchId> cast_on_sts(const PatternSection& spare, bool chain) {
+    if (chain && !spare.provisional) return {spare.row_chain, spare.row_chain_ends[1]};
+    return {spare.cast_on, spare.last_row_ends[1]};
+  }
+
+  // A three-needle bind-off in a row, worked with this piece's yarn: its st in front, the other
+  // piece's held behind on its spare needle (said before the row, so only in a piece's first
+  // row, as when it is taken up again to join another). The held st comes onto the needle.
+  void bind_off_with_held_st(StitchId s) {
+    auto taken = g_.loops_taken_by(s);
+    StitchId behind = g_.loops[taken[1]].maker;
+    PatternSection& sec = section();
+    if (c_.yarns.piece_of[g_.loops[taken[0]].maker] != sec.yarn)
+      unsupported(
+          fmt::format("{} is a three-needle bind-off in a row with this piece's st "
+                      "behind, which is not covered yet",
+                      g_.describe(s)));
+    if (out_.rows.size() != sec.first_row)
+      unsupported(
+          fmt::format("{} is a three-needle bind-off in the middle of the work, not in "
+                      "the first row after the piece is taken up, which is not covered "
+                      "yet",
+                      g_.describe(s)));
+    const std::uint32_t from = section_of(behind), holder = holder_of_[behind];
+    bool continues = !sec.holds.empty() && sec.holds.back().section == from &&
+                     sec.holds.back().holder == holder && out_.ops.back() == HandOp::tnbo;
+    if (!continues) {
+      StitchId last = holder ? holders_[holder - 1].last : out_.sections[from].last_row_ends[1];
+      sec.holds.push_back({from, 0, behind == last, s, holder});
+    }
+    ++sec.holds.back().count;
+    out_.ops.push_back(HandOp::tnbo);
+    ++st_.live;
+    if (!sec.in_round) ++st_.ahead;
+  }
+
+  // Every st of a piece held behind is bound off in the row (the rest of a spare needle would
+  // need a holder of its own).
+  void refuse_held_sts_left(const PatternRow& r) const {
+    for (const PatternSection::Hold& h : out_.sections.back().holds) {
+      const PatternSection& spare = out_.sections[h.section];
+      if (h.holder ? holders_[h.holder - 1].count == h.count
+                   : spare.left_live && spare.live_at_end == h.count)
+        continue;
+      unsupported(fmt::format(
+          "{} {} of Piece {} binds off {} of the {} sts of Piece {} ({}) with a three-needle "
+          "bind-off from {} on; holding only some of a piece's sts behind, and the others on "
+          "holders for the pieces that work them, is not covered yet",
+          r.round ? "Rnd" : "Row", r.number, out_.sections.back().piece, h.count, spare.live_at_end,
+          spare.piece, spare.set_aside ? "set aside with its yarn" : "on a spare needle",
+          g_.describe(h.first)));
+    }
+  }
+
+  // A new yarn joined to sts another piece slipped to a holder (a body that goes on as two
+  // flaps): the holder's first or last st at the tip.
+  void start_from_holder(const Loop& first) {
+    std::uint32_t holder = holder_of_[first.maker];
+    const Held& held = holders_[holder - 1];
+    section().starts_from = PatternSection::Start{section_of(first.maker), false,
+                                                  first.maker == held.last, held.count, holder};
+    st_.live = st_.ahead = held.count;
+  }
+
+  // A new yarn that starts on sts another piece worked and left on its needle (a body whose
+  // sts are shared out between pieces) would need them put on a holder first.
+  [[noreturn]] void refuse_start_on_live_sts(const Loop& first) const {
+    std::uint32_t holder = holder_of_[first.maker];
+    unsupported(fmt::format(
+        "yarn {} starts with {} on the sts of Piece {} (the first: {}){}; joining a new yarn to "
+        "sts another piece leaves is not covered yet",
+        out_.sections.back().yarn + 1, g_.describe(row_.front()),
+        out_.sections[section_of(first.maker)].piece, g_.describe(first.maker),
+        holder ? fmt::format(", slipped to holder {}", holder) : " left on its needle"));
+  }
+
+  // A provisional cast-on in the middle of a row: the st goes on the needle, the loop of its
+  // chain waits for the piece on the other side of the split.
+  void cast_on_in_row(StitchId s) {
+    PatternSection& sec = section();
+    bool next_to_last = !out_.ops.empty() && out_.ops.back() == HandOp::provisional_co &&
+                        sec.row_chain > 0 && g_.yarn_next[sec.row_chain_ends[1]] == s;
+    if (sec.provisional || (sec.row_chain > 0 && !next_to_last))
+      unsupported(
+          fmt::format("{} is a second provisional cast-on of yarn {}, which is not "
+                      "covered yet (one chain per piece)",
+                      g_.describe(s), sec.yarn + 1));
+    if (sec.row_chain == 0) sec.row_chain_ends[0] = s;
+    sec.row_chain_ends[1] = s;
+    ++sec.row_chain;
+    out_.ops.push_back(HandOp::provisional_co);
   }
 
   // The first and last st of the row that stay live (not bound off): the ends a spare needle
@@ -558,6 +657,7 @@ class PatternBuilder {
       for (std::uint32_t l : g_.loops_taken_by(s)) {
         const Loop& loop = g_.loops[l];
         if (picked_up_along_an_edge(loop)) pick_up_into_the_rnd(loop, taken++);
+        if (loop.kind == LoopKind::joined) continue;  // held behind for a three-needle bind-off
         std::uint32_t from = section_of(loop.maker);
         if (loop.kind == LoopKind::perpendicular && !placed_beside_a_band(loop, from == self))
           continue;  // one by one, picked up, or across the gap
@@ -690,8 +790,9 @@ class PatternBuilder {
     std::uint32_t from = section_of(loop.maker);
     const PatternSection& spare = out_.sections[from];
     bool chain = is_chain_loop(loop);
-    PatternSection::Placement p{from, chain ? spare.cast_on : spare.live_at_end, after,
-                                loop.maker == spare.last_row_ends[1]};
+    auto [cast_on, last] = cast_on_sts(spare, chain);
+    PatternSection::Placement p{from, chain ? cast_on : spare.live_at_end, after,
+                                loop.maker == (chain ? last : spare.last_row_ends[1])};
     p.chain = chain;
     p.start = chain || p.from_last ? 0 : place_in_last_rnd(spare, loop.maker);
     p.before_row = static_cast<std::uint32_t>(out_.rows.size());
@@ -719,15 +820,18 @@ class PatternBuilder {
   // keeps its own (those it works across a gap too). A run another piece works one st at a
   // time across a perpendicular edge is a holder of its own.
   void hold_what_others_work(std::uint32_t row) {
-    const std::uint32_t own = 2 * section().yarn;
-    std::vector<std::pair<StitchId, std::uint32_t>> loops;  // maker, taker's yarn (x2, +1 across)
+    const std::uint32_t own = 3 * section().yarn;
+    // maker, taker's yarn (x3; +1 across an edge, +2 bound off with a three-needle bind-off)
+    std::vector<std::pair<StitchId, std::uint32_t>> loops;
     for (StitchId s : row_)
       for (std::uint32_t l : g_.loops_made_by(s)) {
         const Loop& loop = g_.loops[l];
         if (loop.taker == kNoStitch) return;
-        std::uint32_t taker = 2 * c_.yarns.piece_of[loop.taker];
+        if (loop.kind == LoopKind::split) continue;  // on a provisional cast-on's chain
+        std::uint32_t taker = 3 * c_.yarns.piece_of[loop.taker];
         bool across = loop.kind == LoopKind::perpendicular && taker != own;
-        loops.emplace_back(s, taker + (across ? 1 : 0));
+        bool joined = loop.kind == LoopKind::joined && taker != own;
+        loops.emplace_back(s, taker + (across ? 1 : joined ? 2 : 0));
       }
     if (std::none_of(loops.begin(), loops.end(), [&](const auto& l) { return l.second == own; }))
       return;  // the whole needle waits as it is
@@ -762,6 +866,7 @@ class PatternBuilder {
     r.number =
         static_cast<std::uint32_t>(out_.rows.size()) - section().first_row + section().first_number;
     r.side = (hand_.left_to_right(row_.front()) != out_.mirror) ? Side::ws : Side::rs;
+    out_.ws_rounds = out_.ws_rounds || (r.round && r.side == Side::ws);
     r.first_op = static_cast<std::uint32_t>(out_.ops.size());
     r.sts_before = st_.live;
     r.bind_off =
@@ -775,9 +880,10 @@ class PatternBuilder {
       number_of_[s] = r.number;
       note_region_mark(s, r);
       append_ops(s, r);
-      takes += info(g_.type[s]).loops_in;
+      takes += info(g_.type[s]).loops_in - (g_.type[s] == T::tnbo);  // one is held behind
       move_loops(s);
     }
+    refuse_held_sts_left(r);
     end_row(r, turns, takes);
     check_make_one_has_a_strand(r);
     r.end_op = static_cast<std::uint32_t>(out_.ops.size());
@@ -822,13 +928,15 @@ class PatternBuilder {
   // ends at the edge when none is ahead). A wrapped st goes back to the left needle.
   void move_loops(StitchId s) {
     const StitchTypeInfo& t = info(g_.type[s]);
-    st_.live = st_.live + t.loops_out - t.loops_in;
+    // A provisional cast-on's chain loop is not on the needle.
+    std::uint32_t out = g_.type[s] == T::sco ? 1 : t.loops_out;
+    st_.live = st_.live + out - t.loops_in;
     if (section().in_round || (g_.type[s] == T::sr4 && out_.turns == TurnMethod::wrap_and_turn))
       return;
     if (st_.ahead < t.loops_in)
       unsupported(fmt::format("{} works past the end of the needle", g_.describe(s)));
     st_.ahead -= t.loops_in;
-    st_.behind += t.loops_out;
+    st_.behind += out;
   }
 
   void note_band_from_rnd(const PatternRow& r) {
@@ -899,10 +1007,12 @@ class PatternBuilder {
   }
 
   // Is the maker's st on the needle of the piece being worked: its own, one of a spare needle
-  // (or a chain) placed into its rnd, a holder placed there, or one of the spare needle it
-  // started on?
+  // (or a chain) placed into its rnd, a holder placed there (or the one it started on), or
+  // one of the spare needle it started on?
   bool on_own_needle(StitchId maker, bool chain = false) const {
-    if (holder_of_[maker] != 0) return holder_placed(holder_of_[maker]);
+    const auto& start = out_.sections.back().starts_from;
+    if (holder_of_[maker] != 0)
+      return holder_placed(holder_of_[maker]) || (start && start->holder == holder_of_[maker]);
     std::uint32_t from = section_of(maker);
     const PatternSection& worked = out_.sections.back();
     return c_.yarns.piece_of[maker] == worked.yarn ||
@@ -1025,8 +1135,10 @@ class PatternBuilder {
                         g_.describe(s), g_.describe(g_.loops[l].maker)));
     bool first_row = out_.rows.size() == section().first_row;
     if (!(section().picks_up && first_row)) slip_from_spare_needle(s, r);
-    // A cast-on (or a three-needle bind-off) between worked sts of one row.
-    if (type == T::co || type == T::sco || type == T::tnbo)
+    if (type == T::sco) return cast_on_in_row(s);
+    if (type == T::tnbo) return bind_off_with_held_st(s);
+    // A cast-on between worked sts of one row.
+    if (type == T::co)
       unsupported(fmt::format("{} is a {} in the middle of the work, which is not covered yet",
                               g_.describe(s), info(type).name));
     refuse_loop_of_a_piece_not_placed(s);
@@ -1085,9 +1197,9 @@ class PatternBuilder {
 
 }  // namespace
 
-HandPattern build_hand_pattern(const Compilation& c, TurnMethod turns) {
+HandPattern build_hand_pattern(const Compilation& c, TurnMethod turns, Rounds rounds) {
   check_supported(c);
-  HandPattern pattern = PatternBuilder(c, turns).run();
+  HandPattern pattern = PatternBuilder(c, turns, rounds).run();
   place_section_markers(pattern);
   place_region_markers(pattern);
   return pattern;

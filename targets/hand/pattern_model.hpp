@@ -25,11 +25,17 @@ namespace skein::hand {
 // later worked with its wrap ("kw").
 using TurnMethod = HandTurnMethod;
 
+// Hand knitting works a rnd right to left with the side facing the knitter. The pattern knits
+// the model's mirror image when most of its rounds run left to right seen from the RS, and
+// works the others with the WS facing (the tube inside out: `Rnd 30 (WS): Purl.`); or it
+// works every round that runs left to right with the WS facing and mirrors nothing.
+enum class Rounds : std::uint8_t { mirror_most, ws_facing };
+
 struct PatternRow {
   std::uint32_t first_op = 0, end_op = 0;  // into HandPattern::ops
   std::uint32_t number = 0;                // 1-based in its section; the cast-on is not a row
   bool round = false;
-  Side side = Side::rs;  // the side facing the knitter (rounds: always the RS)
+  Side side = Side::rs;  // the side facing the knitter (rnds: the WS when worked inside out)
   std::uint32_t sts_before = 0, sts_after = 0;
   bool bind_off = false;   // the row binds off every stitch
   bool short_row = false;  // ends where the work turns, with sts left on the left needle
@@ -84,7 +90,22 @@ struct PatternSection {
   struct Start {
     std::uint32_t section;
     bool chain, from_last;
+    std::uint32_t count;
+    std::uint32_t holder = 0;  // the sts another piece slipped to this holder
   };
+  // A provisional cast-on in the middle of one of its rows ("CO 3 sts with a provisional
+  // cast-on"): how many sts, and the model stitches cast on first and last (its chain's ends).
+  std::uint32_t row_chain = 0;
+  std::uint32_t row_chain_ends[2] = {0, 0};
+  // Pieces left on spare needles held behind the needle for "3-needle BO" in its first row
+  // (a three-needle bind-off with its own yarn in the middle of a row), in the order worked.
+  struct Hold {
+    std::uint32_t section = 0, count = 0;
+    bool from_last = false;    // its last row's last st at the tip
+    std::uint32_t first = 0;   // the model stitch that binds off its first st
+    std::uint32_t holder = 0;  // the holder its sts were slipped to (0: its spare needle)
+  };
+  std::vector<Hold> holds;
   std::optional<Start> starts_from;
   std::optional<PickUp> picks_up;
   // A join: three-needle bind-off of two sections left live (front, back), with a new yarn.
@@ -113,9 +134,10 @@ struct PatternSection {
 
 struct HandPattern {
   std::string source;  // the input, as given
-  // The model's rounds run left to right seen from the RS, and hand knitting runs right to
-  // left: the pattern knits the model's mirror image (decreases and increases swap lean).
+  // Most of the model's rounds run left to right seen from the RS, and hand knitting runs right
+  // to left: the pattern knits the model's mirror image (decreases and increases swap lean).
   bool mirror = false;
+  bool ws_rounds = false;  // some rnds are worked with the WS facing
   TurnMethod turns = TurnMethod::german;
   bool short_rows = false;    // some row turns before the end of the needle
   std::uint32_t markers = 0;  // the most stitch markers on the needle at once
@@ -141,6 +163,7 @@ struct HandPattern {
 // markers (marker_plan.hpp), mismatch groups and short rows region markers
 // (region_markers.hpp).
 HandPattern build_hand_pattern(const Compilation& compilation,
-                               TurnMethod turns = TurnMethod::german);
+                               TurnMethod turns = TurnMethod::german,
+                               Rounds rounds = Rounds::mirror_most);
 
 }  // namespace skein::hand

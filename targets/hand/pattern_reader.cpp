@@ -147,6 +147,7 @@ class SentenceReader {
     if (c.eat("take") && c.eat("up")) return take_up(c);
     if (c.eat("pick") && c.eat("up")) return pick_up(c);
     if (c.eat("three-needle") && c.eat("bind-off")) return three_needle_bind_off(c);
+    if (c.eat("hold")) return hold_behind(c);
     fail(
         "expected a row ('Row 3 (RS): ...', 'Rnd 5: ...'), 'Cast on N sts', 'Pm and join to "
         "work in the rnd', 'Rep Rows 3\u20134 N more times', 'Knit every rnd until N rnds in "
@@ -269,13 +270,22 @@ class SentenceReader {
     step.count = need_number(c, "the number of sts");
     step.provisional = c.eat("loops");
     need(step.provisional || c.eat("sts"), c, "'sts' or 'loops'");
-    need_words(c, {"of", "piece"}, "'of Piece N'");
-    step.number = need_number(c, "a piece number");
+    need(c.eat("of"), c, "'of Piece N' or 'of holder N'");
+    step.holder[0] = !step.provisional && c.eat("holder");
+    need(step.holder[0] || c.eat("piece"), c, "'of Piece N' or 'of holder N'");
+    step.number = need_number(c, step.holder[0] ? "a holder number" : "a piece number");
     if (step.provisional) need_words(c, {"'", "s", "chain"}, "'s chain' after the piece");
     need_words(c, {",", "the"}, "', the first (or last) st cast on'");
     step.from_last[0] = c.eat("last");
     need(step.from_last[0] || c.eat("first"), c, "'first' or 'last'");
-    need_words(c, {"st", "cast", "on", "at", "the", "tip"}, "'st cast on at the tip'");
+    need(c.eat("st"), c, "'st cast on at the tip' or 'st of its last rnd at the tip'");
+    if (step.holder[0]) {
+      need_words(c, {"of", "its", "last"}, "'of its last rnd'");
+      need(c.eat_any({"rnd", "row"}), c, "'rnd' or 'row'");
+    } else {
+      need_words(c, {"cast", "on"}, "'st cast on at the tip'");
+    }
+    need_words(c, {"at", "the", "tip"}, "'at the tip'");
     need(c.done(), c, "the end of the sentence");
     add(step);
   }
@@ -474,6 +484,18 @@ class SentenceReader {
     return piece;
   }
 
+  // "Hold the 3 sts of Piece 2 behind the needle, the first st of its last row at the tip":
+  // for "3-needle BO" in the next row.
+  void hold_behind(Cursor& c) {
+    Step step{Step::Kind::hold_behind, line_no_};
+    c.eat("the");
+    step.count = need_number(c, "the number of sts to hold");
+    need_words(c, {"sts", "of"}, "'sts of Piece N'");
+    step.number = needle_end(c, {"behind", "the", "needle"}, step.from_last[0], step.holder[0]);
+    need(c.done(), c, "the end of the sentence");
+    add(step);
+  }
+
   // "Row 3 (RS): ...", "Rnds 2–16: ...".
   void row(Cursor& c) {
     Step step{Step::Kind::row, line_no_};
@@ -659,6 +681,7 @@ class SentenceReader {
       n.op = HandOp::wt;
       return n;
     }
+    if (c.eat("3-needle")) return three_needle_bind_off_sts(c);  // '-' would end a word
     if (c.eat("sl1")) {
       if (c.eat("back")) {
         n.op = HandOp::slip_back;
@@ -670,6 +693,7 @@ class SentenceReader {
     }
     std::string_view w = c.word();
     if (starts_with_ci(w, "bo") && w.size() == 2) return bind_off(c);
+    if (starts_with_ci(w, "co") && w.size() == 2) return provisional_cast_on(c);
     if ((w.size() == 4 && (starts_with_ci(w, "knit") || starts_with_ci(w, "purl")))) {
       n.op = lower(w[0]) == 'k' ? HandOp::k : HandOp::p;
       n.until.kind = Until::Kind::end;
@@ -710,6 +734,26 @@ class SentenceReader {
     c.eat("rem");
     n.times = need_number(c, "how many sts to bind off");
     need(c.eat_any({"sts", "st"}), c, "'sts' after the number");
+    return n;
+  }
+
+  // "3-needle BO 3 sts": each with the next st held behind.
+  Node three_needle_bind_off_sts(Cursor& c) {
+    Node n;
+    n.op = HandOp::tnbo;
+    need(c.eat("BO"), c, "'3-needle BO N sts'");
+    n.times = need_number(c, "how many sts to bind off");
+    need(c.eat_any({"sts", "st"}), c, "'sts' after the number");
+    return n;
+  }
+
+  // "CO 3 sts with a provisional cast-on": onto the right needle, in the middle of a row.
+  Node provisional_cast_on(Cursor& c) {
+    Node n;
+    n.op = HandOp::provisional_co;
+    n.times = need_number(c, "how many sts to cast on");
+    need(c.eat_any({"sts", "st"}), c, "'sts' after the number");
+    need_words(c, {"with", "a", "provisional", "cast-on"}, "'with a provisional cast-on'");
     return n;
   }
 

@@ -25,7 +25,8 @@ struct Token {
 std::vector<Token> tokens_of(std::span<const HandOp> ops) {
   std::vector<Token> tokens;
   for (HandOp op : ops) {
-    bool runs = is_plain(op) || op == HandOp::bo;
+    bool runs =
+        is_plain(op) || op == HandOp::bo || op == HandOp::provisional_co || op == HandOp::tnbo;
     if (runs && !tokens.empty() && tokens.back().op == op)
       ++tokens.back().count;
     else
@@ -74,7 +75,10 @@ std::vector<Item> items_of(const std::vector<Token>& t) {
 
 std::string token_text(const Token& t) {
   std::string_view abbr = info(t.op).abbreviation;
-  if (t.op == HandOp::bo) return fmt::format("BO {} st{}", t.count, t.count == 1 ? "" : "s");
+  if (t.op == HandOp::bo || t.op == HandOp::tnbo)
+    return fmt::format("{} {} st{}", abbr, t.count, t.count == 1 ? "" : "s");
+  if (t.op == HandOp::provisional_co)
+    return fmt::format("CO {} st{} with a provisional cast-on", t.count, t.count == 1 ? "" : "s");
   return is_plain(t.op) ? fmt::format("{}{}", abbr, t.count) : std::string(abbr);
 }
 

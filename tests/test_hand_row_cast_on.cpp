@@ -1,0 +1,71 @@
+// A provisional cast-on in the middle of a row (a split worked with the upper piece's own
+// yarn): "K1, CO 3 sts with a provisional cast-on, k1", and the piece on the other side started
+// on its chain; written, proven in every format, and the simulator's reasons for rejecting it.
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+
+#include "driver/pipeline.hpp"
+#include "fixtures.hpp"
+#include "hand/pattern_document.hpp"
+#include "hand/pattern_model.hpp"
+#include "hand/pattern_writers.hpp"
+#include "target_runner.hpp"
+
+namespace skein {
+namespace {
+
+using testing::emit;
+using testing::failure_of;
+using testing::verify;
+
+TEST(HandRowCastOn, AProvisionalCastOnInTheMiddleOfARowIsWrittenAndProven) {
+  for (bool rs_row : {false, true}) {
+    Compilation c = compile_stitch_mesh(testing::mid_row_split_mesh(rs_row), "mid-row split");
+    std::string pattern = emit(c, "hand");
+    EXPECT_NE(pattern.find(rs_row ? "**Row 3 (RS):** K1, CO 3 sts with a provisional cast-on, "
+                                  : "**Row 2 (WS):** P1, CO 3 sts with a provisional cast-on, "),
+              std::string::npos)
+        << pattern;
+    EXPECT_NE(pattern.find("Join a new yarn to the 3 loops of Piece 1's chain"), std::string::npos)
+        << pattern;
+    EXPECT_NE(pattern.find("In the middle of a row"), std::string::npos);
+    EXPECT_EQ(testing::unproven_hand_formats(c), "") << pattern;
+  }
+}
+
+// In the round, mirrored (its rnds run left to right; the mirror keeps the cast-on's needle
+// and chain, the two sides of the split), and with those rnds worked with the WS facing.
+TEST(HandRowCastOn, AProvisionalCastOnInTheMiddleOfARndIsProvenMirroredAndInsideOut) {
+  Compilation c = compile_stitch_mesh(testing::mid_round_split_mesh(), "mid-round split");
+  std::string pattern = emit(c, "hand");
+  EXPECT_NE(pattern.find("**Rnd 2:** K1, CO 3 sts with a provisional cast-on, "), std::string::npos)
+      << pattern;
+  EXPECT_EQ(testing::unproven_hand_formats(c), "") << pattern;
+  EXPECT_NE(verify(c, "hand", pattern).summary.find("mirror image"), std::string::npos);
+  std::ostringstream inside_out;
+  hand::write_markdown(hand::make_document(hand::build_hand_pattern(c, hand::TurnMethod::german,
+                                                                    hand::Rounds::ws_facing)),
+                       inside_out);
+  EXPECT_NE(inside_out.str().find("**Rnd 2 (WS):** P1, CO 3 sts with a provisional cast-on, "),
+            std::string::npos)
+      << inside_out.str();
+  VerifyReport report = verify(c, "hand", inside_out.str());
+  EXPECT_TRUE(report.proven) << report.summary << "\n" << inside_out.str();
+}
+
+TEST(HandRowCastOn, ProvesAndRejectsHandWrittenOnes) {
+  const std::string row = "Cast on 5 sts.\nRow 1 (RS): K1, BO 3 sts, k1.\n";
+  EXPECT_EQ(failure_of(row + "Row 2 (WS): P1, CO 3 sts with a provisional cast-on, p1.\n"
+                             "Row 3 (RS): BO all sts.\nFasten off.\n"
+                             "Join a new yarn to the 3 loops of Piece 1's chain, the first st "
+                             "cast on at the tip.\nRow 1 (RS): BO all sts.\nFasten off.\n"),
+            "");
+  EXPECT_EQ(failure_of(row + "Row 2 (WS): P1, CO 3 sts with a provisional cast-on, p1.\n"
+                             "Row 3 (RS): BO all sts.\nFasten off.\n"),
+            "p.md:5: the chain of Piece 1 is left on a spare needle, never worked");
+}
+
+}  // namespace
+}  // namespace skein
