@@ -112,10 +112,6 @@ TEST(HandTarget, StitchesNotCoveredYetAreNamed) {
 TEST(HandTarget, SamplesNotCoveredYetNameWhatStopsThem) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
   const std::pair<const char*, const char*> cases[] = {
-      {"samples/letter-h/letter-h.yaml",
-       "extruded 3nbo on edge 395-30 (row 130) binds off 21 pairs from the needle of Piece 4, "
-       "which holds 35 sts: a three-needle bind-off of a fold together with sts waiting "
-       "elsewhere (on a holder) is not covered yet"},
       {"samples/letter-r/letter-r.yaml",
        "the row of face 1335 (k, row 37) works 30 of the 51 live stitches"},
       {"samples/teapot/teapot.yaml",
@@ -201,6 +197,7 @@ TEST(HandReadability, PlainKnittingTakesAFewLines) {
         std::pair{"samples/short-row-wedge/short-row-wedge.yaml", 12.5},
         std::pair{"samples/sweater/sweater.yaml", 2.6},
         std::pair{"samples/three-bars/three-bars.yaml", 8.5},
+        std::pair{"samples/letter-h/letter-h.yaml", 27.5},
         std::pair{"samples/two-bars/two-bars.yaml", 12.0},
         std::pair{"samples/three-bars-own/three-bars-own.yaml", 7.0}}) {
     Compilation c = compile_model(input);

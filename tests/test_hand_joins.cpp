@@ -443,6 +443,51 @@ TEST(HandPieces, TheTwoBarsAreProvenInEveryFormat) {
        "last st"});
 }
 
+// The letter H: the bar slips 7 sts to a holder before it is set aside, works a band across
+// gaps between the legs when taken up, and its last join folds its needle together with them.
+TEST(HandPieces, TheLetterHIsProvenInEveryFormat) {
+  expect_written_and_proven(
+      "samples/letter-h/letter-h.yaml",
+      {"- 1 stitch holder (or a length of waste yarn).\n",
+       "Slip sts 1\u20137 of the rnd to holder 1 \u2014 24 sts.\n",
+       "Place the 7 sts of holder 1 on the spare needle of Piece 4 after its st 7 (count round "
+       "the needle from the first st of its last row), the last st slipped first \u2014 42 sts. "
+       "Three-needle bind-off: fold the 42 sts of Piece 4 in half with RS together"});
+}
+
+// A tube whose last 2 sts wait on a holder and go back on its spare needle before the fold.
+std::string fold_with_held_sts(const std::string& place) {
+  return "Cast on 6 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\nSlip sts 5\u20136 of "
+         "the rnd to holder 1 \u2014 4 sts.\nLeave the 4 sts on a spare needle and cut the "
+         "yarn.\n" +
+         place +
+         " Three-needle bind-off: fold the 6 sts of Piece 1 in half with RS together (count them "
+         "round the needle from the first st of its last rnd): sts 3 down to 1 in front, sts 4 up "
+         "to 6 behind; with a new yarn bind off all 3 pairs.\nFasten off.\n";
+}
+
+TEST(HandPieces, RejectsPlacingHeldStsOnASpareNeedleWrongWithTheReason) {
+  const std::string place =
+      "Place the 2 sts of holder 1 on the spare needle of Piece 1 after its st 4 (count round "
+      "the needle from the first st of its last rnd), the first st slipped first \u2014 6 sts.";
+  auto with = [&](const char* from, const char* to) {
+    return fold_with_held_sts(std::regex_replace(place, std::regex(from), to));
+  };
+  EXPECT_EQ(failure_of(fold_with_held_sts(place)), "");
+  EXPECT_EQ(failure_of(with("the 2 sts", "the 3 sts")),
+            "p.md:5: Place the sts of holder 1: the pattern says 3 sts, but it holds 2");
+  EXPECT_EQ(failure_of(with("its st 4", "its st 5")),
+            "p.md:5: Place the sts of holder 1: the spare needle of Piece 1 has no st 5");
+  EXPECT_EQ(failure_of(with("6 sts\\.", "7 sts.")),
+            "p.md:5: Place the sts of holder 1: the pattern says 7 sts, but the spare needle "
+            "holds 6");
+  EXPECT_EQ(failure_of(with("Piece 1 after", "Piece 2 after")),
+            "p.md:5: Place the sts of holder 1: the sts of Piece 2 are not waiting on a spare "
+            "needle");
+  EXPECT_EQ(failure_of(fold_with_held_sts("")),
+            "p.md:5: three-needle bind-off: the pattern folds 6 sts, but Piece 1 has 4 sts");
+}
+
 // A tube whose sts 3-4 wait on a holder for a rnd and are placed back.
 std::string tube_with_holder(const std::string& slip, const std::string& place) {
   return "Cast on 6 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\n" + slip +

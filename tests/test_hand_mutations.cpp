@@ -457,6 +457,13 @@ TEST(HandMutations, HoldersRejectEveryEditThatChangesTheFabric) {
   mutate_and_judge("two bars", compile_model("samples/two-bars/two-bars.yaml"));
 }
 
+// The letter H: a band across gaps between the legs, and a fold whose pairs take held sts
+// put back on its spare needle first.
+TEST(HandMutations, TheLetterHRejectsEveryEditThatChangesTheFabric) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  mutate_and_judge("letter H", compile_model("samples/letter-h/letter-h.yaml"));
+}
+
 TEST(HandMutations, ShapedSheetsAndTubesRejectEveryEditThatChangesTheFabric) {
   std::mt19937_64 rng(11);
   for (int trial = 0; trial < 6; ++trial) {

@@ -149,6 +149,9 @@ class NeedleSimulator {
         hold(s);
         check_printed_count(s, "Slip sts to holders");
         break;
+      case Step::Kind::place_on_spare:
+        place_on_spare_needle(s);
+        break;
       case Step::Kind::to_spare:
         put_on_spare_needle(s);
         break;
@@ -376,6 +379,25 @@ class NeedleSimulator {
       holders_.erase(s.number);
     else
       spare_needles_.erase({s.number, s.provisional ? kChain : kNeedle});
+  }
+
+  // A holder's sts go back on a piece's spare needle (before it is folded), after its st
+  // `last` counted round from the first st of its last row.
+  void place_on_spare_needle(const Step& s) {
+    std::string what = fmt::format("Place the sts of holder {}", s.number);
+    std::vector<std::uint32_t> placed = held(s.number, s.from_last[0], what.c_str());
+    if (placed.size() != s.count)
+      fail(fmt::format("{}: the pattern says {}, but it holds {}", what, sts(s.count),
+                       placed.size()));
+    std::vector<std::uint32_t> ring = spare_needle(s.to_row, false, what.c_str());
+    if (s.last > ring.size())
+      fail(fmt::format("{}: the spare needle of Piece {} has no st {}", what, s.to_row, s.last));
+    ring.insert(ring.begin() + s.last, placed.begin(), placed.end());
+    if (s.sts && (++out_.counts_checked, *s.sts != ring.size()))
+      fail(fmt::format("{}: the pattern says {}, but the spare needle holds {}", what, sts(*s.sts),
+                       ring.size()));
+    spare_needles_[{s.to_row, kNeedle}] = ring;
+    holders_.erase(s.number);
   }
 
   // "..., st 16 of its last rnd first": the placed sts go round from that one.

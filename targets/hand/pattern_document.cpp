@@ -150,10 +150,23 @@ class InstructionWriter {
     const PatternSection& held = p_.sections[sec.front];
     bool rnd = held.end_row > held.first_row && p_.rows[held.end_row - 1].round;
     return fmt::format(
-        "Three-needle bind-off: fold the {} sts of Piece {} in half with RS together (count them "
+        "{}Three-needle bind-off: fold the {} sts of Piece {} in half with RS together (count them "
         "round the needle from the first st of its last {}): {} in front, {} behind; with a "
         "new yarn bind off all {} pairs.",
-        f.sts, held.piece, rnd ? "rnd" : "row", run(0), run(1), sec.pairs);
+        held_sts_text(f, held.piece, rnd), f.sts, held.piece, rnd ? "rnd" : "row", run(0), run(1),
+        sec.pairs);
+  }
+
+  // "Place the 7 sts of holder 1 on the spare needle of Piece 4 after its st 13 (count round
+  // the needle from the first st of its last row), the last st slipped first — 42 sts. "
+  static std::string held_sts_text(const PatternSection::Fold& f, std::uint32_t piece, bool rnd) {
+    if (f.holder == 0) return "";
+    return fmt::format(
+        "Place the {} sts of holder {} on the spare needle of Piece {} after its st {} (count "
+        "round the needle from the first st of its last {}), the {} st slipped first {} {} "
+        "sts. ",
+        f.held, f.holder, piece, f.after, rnd ? "rnd" : "row", f.held_from_last ? "last" : "first",
+        kDash, f.sts);
   }
 
   // "Take up Piece 1 again with its yarn. Place the 58 sts of Piece 2 on the needle at the
@@ -505,6 +518,13 @@ class FrontMatter {
     return items;
   }
 
+  // "9 stitch holders (or lengths of waste yarn), numbered 1 to 9", or one.
+  static std::string holders_text(std::uint32_t holders) {
+    if (holders == 1) return "1 stitch holder (or a length of waste yarn).";
+    return fmt::format("{} stitch holders (or lengths of waste yarn), numbered 1 to {}.", holders,
+                       holders);
+  }
+
   // One line per yarn piece; a piece taken up again goes on with the same yarn.
   std::vector<std::string> yarn() const {
     std::vector<std::uint64_t> stitches(p_.sections.size() + 1, 0);
@@ -549,9 +569,7 @@ class FrontMatter {
                                            : ""));
     if (t_.spare_needles)
       items.push_back("A spare needle (or stitch holder) for each piece left to wait on one.");
-    if (t_.holders > 0)
-      items.push_back(fmt::format("{} stitch holders (or lengths of waste yarn), numbered 1 to {}.",
-                                  t_.holders, t_.holders));
+    if (t_.holders > 0) items.push_back(holders_text(t_.holders));
     if (t_.joins) items.push_back("A third needle for the three-needle bind-off.");
     items.push_back("Tapestry needle for weaving in ends.");
     return items;

@@ -354,17 +354,9 @@ class PatternBuilder {
   // run starts beside its tip, across the fold.
   void fold_needle(PatternSection& join, std::uint32_t holder) {
     const PatternSection& h = out_.sections[holder];
-    if (2 * row_.size() != h.live_at_end)
-      unsupported(fmt::format(
-          "{} binds off {} pairs from the needle of Piece {}, which holds {} sts: a "
-          "three-needle bind-off of a fold together with sts waiting elsewhere (on a holder) "
-          "is not covered yet",
-          g_.describe(row_.front()), row_.size(), h.piece, h.live_at_end));
+    if (2 * row_.size() != h.live_at_end) return fold_with_held_sts(join, holder);
     std::vector<StitchId> run[2];
-    for (StitchId s : row_)
-      for (std::uint32_t side : {0u, 1u})
-        run[side].push_back(g_.loops[g_.loops_taken_by(s)[side]].maker);
-    for (const auto& side : run) refuse_pairs_off_the_fold(side, run);
+    runs_of_the_fold(run);
     StitchId first = h.last_row_ends[0], second = g_.yarn_next[first];
     PatternSection::Fold fold;
     fold.sts = h.live_at_end;
@@ -387,6 +379,86 @@ class PatternBuilder {
         fmt::format("{} binds off the sts of Piece {} folded in half, but not the first st "
                     "of its last row, which is not covered yet",
                     g_.describe(row_.front()), h.piece));
+  }
+
+  // Each needle's run of a fold: the sts its pairs take, from the tip.
+  void runs_of_the_fold(std::vector<StitchId> (&run)[2]) const {
+    for (StitchId s : row_)
+      for (std::uint32_t side : {0u, 1u})
+        run[side].push_back(g_.loops[g_.loops_taken_by(s)[side]].maker);
+    for (const auto& side : run) refuse_pairs_off_the_fold(side, run);
+  }
+
+  // A fold whose pairs also take the sts of one holder: the knitter puts them back on the
+  // spare needle first, where the fold has them (the front run goes round the needle into the
+  // back one), and folds the whole needle.
+  void fold_with_held_sts(PatternSection& join, std::uint32_t holder) {
+    const PatternSection& h = out_.sections[holder];
+    std::vector<StitchId> run[2];
+    runs_of_the_fold(run);
+    std::vector<StitchId> ring(run[0].rbegin(), run[0].rend());
+    ring.insert(ring.end(), run[1].begin(), run[1].end());
+    auto first_held = std::find_if(ring.begin(), ring.end(), [&](StitchId s) { return held(s); });
+    std::uint32_t by = first_held == ring.end() ? 0 : holder_of_[*first_held];
+    if (!ring_round_the_needle(ring, h) || !one_held_run(ring, by, h.live_at_end))
+      unsupported(fmt::format(
+          "{} binds off {} pairs from the needle of Piece {}, which holds {} sts: a "
+          "three-needle bind-off of a fold together with sts waiting elsewhere (on a holder) "
+          "that do not go back on the needle as one run is not covered yet",
+          g_.describe(row_.front()), row_.size(), h.piece, h.live_at_end));
+    PatternSection::Fold fold = held_sts_placed(ring, by);
+    for (std::uint32_t side : {0u, 1u}) {
+      auto at = static_cast<std::uint32_t>(std::find(ring.begin(), ring.end(), run[side][0]) -
+                                           ring.begin());
+      fold.tip[side] = at + 1;
+      fold.down[side] =
+          run[side].size() > 1 && ring[(at + fold.sts - 1) % fold.sts] == run[side][1];
+    }
+    join.front = holder;
+    join.fold = fold;
+  }
+
+  bool held(StitchId s) const { return holder_of_[s] != 0; }
+
+  // Turns the ring of the fold's sts to start at the first st of the needle's last row and go
+  // the way that row went (its second st next, past any held sts); false if it cannot.
+  bool ring_round_the_needle(std::vector<StitchId>& ring, const PatternSection& h) const {
+    StitchId first = h.last_row_ends[0], second = g_.yarn_next[first];
+    for (int way = 0; way < 2; ++way) {
+      if (way == 1) std::reverse(ring.begin(), ring.end());
+      auto at = std::find(ring.begin(), ring.end(), first);
+      if (at == ring.end()) return false;
+      std::rotate(ring.begin(), at, ring.end());
+      auto next = std::find_if(ring.begin() + 1, ring.end(), [&](StitchId s) { return !held(s); });
+      if (next != ring.end() && *next == second) return true;
+    }
+    return false;
+  }
+
+  // The held sts of the ring are all those of holder `by`, side by side, and the rest fill the
+  // needle.
+  bool one_held_run(const std::vector<StitchId>& ring, std::uint32_t by,
+                    std::uint32_t on_needle) const {
+    if (by == 0) return false;
+    auto first = std::find_if(ring.begin(), ring.end(), [&](StitchId s) { return held(s); });
+    auto end = std::find_if(first, ring.end(), [&](StitchId s) { return !held(s); });
+    auto count = static_cast<std::uint32_t>(end - first);
+    return std::none_of(end, ring.end(), [&](StitchId s) { return held(s); }) &&
+           std::all_of(first, end, [&](StitchId s) { return holder_of_[s] == by; }) &&
+           count == holders_[by - 1].count && ring.size() == on_needle + count;
+  }
+
+  // The ring's sts counted from the needle's first: the held ones go after those before them,
+  // the end of the holder that comes first in the ring first.
+  PatternSection::Fold held_sts_placed(const std::vector<StitchId>& ring, std::uint32_t by) const {
+    PatternSection::Fold fold;
+    fold.sts = static_cast<std::uint32_t>(ring.size());
+    fold.holder = by;
+    fold.held = holders_[by - 1].count;
+    fold.after = static_cast<std::uint32_t>(
+        std::find_if(ring.begin(), ring.end(), [&](StitchId s) { return held(s); }) - ring.begin());
+    fold.held_from_last = ring[fold.after] == holders_[by - 1].last;
+    return fold;
   }
 
   void flush_row() {

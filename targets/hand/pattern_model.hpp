@@ -122,6 +122,10 @@ struct PatternSection {
     std::uint32_t sts = 0;
     std::uint32_t tip[2] = {0, 0};
     bool down[2] = {false, false};
+    // The sts of holder `holder` (`held` of them) go on the needle after its st `after` first,
+    // the last st slipped first if `held_from_last`.
+    std::uint32_t holder = 0, held = 0, after = 0;
+    bool held_from_last = false;
   };
   std::optional<Fold> fold;
   // Model stitches: the first and last of the section's last row (or of its cast-on).

@@ -339,7 +339,9 @@ class SentenceReader {
     need(step.holder[0] || c.eat("piece"), c, "'of Piece N' or 'of holder N'");
     step.number = need_number(c, step.holder[0] ? "a holder number" : "a piece number");
     if (step.provisional) need_words(c, {"'", "s", "chain"}, "'s chain' after the piece");
-    need_words(c, {"on", "the", "needle"}, "'on the needle'");
+    need_words(c, {"on", "the"}, "'on the needle'");
+    if (step.holder[0] && c.eat("spare")) return place_on_spare_needle(c, step);
+    need(c.eat("needle"), c, "'on the needle' or 'on the spare needle of Piece N'");
     step.last = place_in_rnd(c);
     need(c.eat_char(','), c, "', the first (or last) st' or ', st N'");
     if (c.eat("st")) {
@@ -350,6 +352,27 @@ class SentenceReader {
       place_first_or_last(c, step);
     }
     need(c.eat("first"), c, "'first'");
+    end_with_count(c, step);
+    add(step);
+  }
+
+  // "... on the spare needle of Piece 4 after its st 13 (count round the needle from the first
+  // st of its last row), the last st slipped first — 42 sts" (before a fold).
+  void place_on_spare_needle(Cursor& c, Step& step) {
+    step.kind = Step::Kind::place_on_spare;
+    need_words(c, {"needle", "of", "piece"}, "'the spare needle of Piece N'");
+    step.to_row = need_number(c, "a piece number");
+    need_words(c, {"after", "its", "st"}, "'after its st N'");
+    step.last = need_number(c, "the st the held sts go after");
+    need(c.eat_char('('), c, "'(count round the needle from the first st of its last row)'");
+    need_words(
+        c, {"count", "round", "the", "needle", "from", "the", "first", "st", "of", "its", "last"},
+        "'count round the needle from the first st of its last row'");
+    need(c.eat_any({"rnd", "row"}) && c.eat_char(')') && c.eat_char(','), c, "'row),'");
+    need(c.eat("the"), c, "'the first (or last) st slipped first'");
+    step.from_last[0] = c.eat("last");
+    need(step.from_last[0] || c.eat("first"), c, "'first' or 'last'");
+    need_words(c, {"st", "slipped", "first"}, "'st slipped first'");
     end_with_count(c, step);
     add(step);
   }

@@ -64,6 +64,8 @@ struct Step {
     to_spare,               // "Put the <count> sts of holder <number> on a spare needle, ..."
     hold_behind,            // "Hold the <count> sts of Piece <number> behind the needle, the
                             // first (from_last[0]: last) st of its last row at the tip"
+    place_on_spare,  // "Place the <count> sts of holder <number> on the spare needle of Piece
+                     // <to_row> after its st <last> ..."
   };
   Step(Kind step_kind, std::size_t line_no) : kind(step_kind), line(line_no) {}
   Kind kind;
