@@ -452,7 +452,11 @@ TEST(HandPieces, TheLetterHIsProvenInEveryFormat) {
        "Slip sts 1\u20137 of the rnd to holder 1 \u2014 24 sts.\n",
        "Place the 7 sts of holder 1 on the spare needle of Piece 4 after its st 7 (count round "
        "the needle from the first st of its last row), the last st slipped first \u2014 42 sts. "
-       "Three-needle bind-off: fold the 42 sts of Piece 4 in half with RS together"});
+       "Three-needle bind-off: fold the 42 sts of Piece 4 in half with RS together",
+       // The measurements of a piece of a cast-on alone, and of one of short rows alone.
+       "- Piece 2: Width: 4 cm (1.4 in), 7 sts at the widest. A cast-on only: no rows of its "
+       "own.\n",
+       "sts at the widest. 24 short rows (worked on part of the sts), no whole rnds.\n"});
 }
 
 // A tube whose last 2 sts wait on a holder and go back on its spare needle before the fold.

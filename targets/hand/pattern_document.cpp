@@ -499,7 +499,6 @@ class FrontMatter {
     std::vector<std::string> items;
     for (const PatternSection& s : p_.sections) {
       if (s.joins) continue;
-      // Short rows add length to part of the piece only: they are counted apart.
       std::uint32_t widest = s.cast_on, rows = 0, short_rows = 0;
       for (std::uint32_t r = s.first_row; r < s.end_row; ++r) {
         widest = std::max(widest, p_.rows[r].sts_after);
@@ -508,14 +507,25 @@ class FrontMatter {
       std::string piece = p_.sections.size() > 1 ? fmt::format("Piece {}{}: ", s.piece,
                                                                s.resumed ? " (taken up again)" : "")
                                                  : "";
-      std::string extra = short_rows ? fmt::format(", plus {} short rows", short_rows) : "";
-      items.push_back(fmt::format("{}{}: {}, {} sts at the widest. {}: {}, {} {}{}.", piece,
-                                  s.in_round ? "Circumference" : "Width",
-                                  cm_and_inches(width_cm(widest)), widest,
-                                  s.in_round ? "Height" : "Length", cm_and_inches(length_cm(rows)),
-                                  rows, s.in_round ? "rnds" : "rows", extra));
+      std::string width = fmt::format("{}{}: {}, {} sts at the widest.", piece,
+                                      s.in_round ? "Circumference" : "Width",
+                                      cm_and_inches(width_cm(widest)), widest);
+      items.push_back(width + " " + height(s, rows, short_rows));
     }
     return items;
+  }
+
+  // Short rows add length to part of the piece only; a piece of a cast-on alone (along a
+  // split) has no height.
+  std::string height(const PatternSection& s, std::uint32_t rows, std::uint32_t short_rows) const {
+    std::string unit = s.in_round ? "rnds" : "rows";
+    if (rows == 0 && short_rows == 0) return "A cast-on only: no rows of its own.";
+    if (rows == 0)
+      return fmt::format("{} short rows (worked on part of the sts), no whole {}.", short_rows,
+                         unit);
+    std::string extra = short_rows ? fmt::format(", plus {} short rows", short_rows) : "";
+    return fmt::format("{}: {}, {} {}{}.", s.in_round ? "Height" : "Length",
+                       cm_and_inches(length_cm(rows)), rows, unit, extra);
   }
 
   // "9 stitch holders (or lengths of waste yarn), numbered 1 to 9", or one.
