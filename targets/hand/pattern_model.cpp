@@ -913,6 +913,8 @@ class PatternBuilder {
   // its sts are the first of the rnd, in the order the rnd goes. (Where the rows before the
   // rnd are another piece's face, as in the two bars, their sts are placed, not held.)
   void hold_the_flap_left(Side rnd_side) {
+    // The row flushed last is the piece's own (not another's, as when it is taken up again).
+    if (row_before_.empty() || c_.yarns.piece_of[row_before_.front()] != section().yarn) return;
     std::vector<std::pair<StitchId, std::uint32_t>> flap;
     for (StitchId s : row_before_)
       if (left_to_another_piece(s)) flap.emplace_back(s, 0);
