@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "common/error.hpp"
 #include "mesh/generate.hpp"
@@ -320,55 +321,100 @@ KnitGraph heel_turn_graph() {
   return g;
 }
 
-KnitGraph gusset_graph() {
-  using T = StitchType;
-  KnitGraph g = tube_with_flap("gusset");
-  auto row_of = [&](std::size_t n, T type, std::uint32_t row) {
+namespace {
+
+// The gusset graphs' tube and flap: 6 sts cast on in the rnd and a rnd (a0..a5), then the flap
+// over a0..a2 worked back and forth (b, then d back: d2, d1, d0), on one yarn.
+struct GussetFlap {
+  KnitGraph g;
+  std::vector<StitchId> c, a, b, d, yarn;
+
+  explicit GussetFlap(const char* name) : g(tube_with_flap(name)) {
+    c = row_of(6, StitchType::co, 0);
+    a = row_of(6, StitchType::k, 1);
+    b = row_of(3, StitchType::k, 2);
+    d = row_of(3, StitchType::k, 3);
+    for (const auto* run : {&c, &a, &b}) yarn.insert(yarn.end(), run->begin(), run->end());
+    yarn.insert(yarn.end(), {d[2], d[1], d[0]});
+    for (int i = 0; i < 6; ++i) loop(c[i], a[i], 0);
+    for (int i = 0; i < 3; ++i) loop(a[i], b[i], 0);
+    loop(b[0], d[0], 0);
+    loop(b[1], d[1], 0);
+    loop(b[2], d[2], 1);
+  }
+
+  std::vector<StitchId> row_of(std::size_t n, StitchType type, std::uint32_t row) {
     std::vector<StitchId> made;
     for (std::size_t i = 0; i < n; ++i) made.push_back(g.add_stitch(type, row, g.size(), 0));
     return made;
-  };
-  auto c = row_of(6, T::co, 0);
-  auto a = row_of(6, T::k, 1);
-  auto b = row_of(3, T::k, 2);
-  auto d = row_of(3, T::k, 3);  // worked d2, d1, d0
-  // In the order worked: over d0..d2, picked up from d2 and b2, over a3..a5, from b0 and d0.
-  auto e = row_of(10, T::k, 4);
-  auto f = row_of(10, T::bo, 5);
-  std::vector<StitchId> yarn;
-  for (const auto* run : {&c, &a, &b}) yarn.insert(yarn.end(), run->begin(), run->end());
-  yarn.insert(yarn.end(), {d[2], d[1], d[0]});
-  for (const auto* run : {&e, &f}) yarn.insert(yarn.end(), run->begin(), run->end());
-  for (std::size_t i = 0; i + 1 < yarn.size(); ++i) {
-    g.yarn_next[yarn[i]] = yarn[i + 1];
-    g.yarn_link[yarn[i]] = YarnLink::course;
   }
-  for (StitchId end_of_round : {c[5], a[5], e[9]}) g.yarn_link[end_of_round] = YarnLink::shift;
-  for (StitchId turn : {b[2], d[0]}) g.yarn_link[turn] = YarnLink::turn;
-  auto loop = [&](StitchId maker, StitchId taker, std::uint8_t slot) {
+  void loop(StitchId maker, StitchId taker, std::uint8_t slot) {
     g.loops.push_back({maker, taker, LoopKind::wale, slot, 0});
-  };
-  auto across = [&](StitchId maker, StitchId taker, std::uint8_t slot) {
-    g.loops.push_back({maker, taker, LoopKind::perpendicular, slot, 0});
-  };
-  for (int i = 0; i < 6; ++i) loop(c[i], a[i], 0);
-  for (int i = 0; i < 3; ++i) loop(a[i], b[i], 0);
+  }
   // Rows run right to left seen from the RS: the flap's left edge is b2 and d2, whose loop
-  // across it is their first; b0 and d0 make theirs last.
-  loop(b[0], d[0], 0);
-  across(b[0], e[8], 1);
-  loop(b[1], d[1], 0);
-  across(b[2], e[4], 0);
-  loop(b[2], d[2], 1);
-  loop(d[0], e[0], 0);
-  across(d[0], e[9], 1);
-  loop(d[1], e[1], 0);
-  across(d[2], e[3], 0);
-  loop(d[2], e[2], 1);
-  for (int i = 3; i < 6; ++i) loop(a[i], e[i + 2], 0);
-  for (int i = 0; i < 10; ++i) loop(e[i], f[i], 0);
-  g.index_loops();
-  return g;
+  // across it is their first; b0 and d0 make theirs last. Picked up down the left edge (d2,
+  // b2) and up the right one (b0, d0).
+  void pick_up_edges(StitchId from_d2, StitchId from_b2, StitchId from_b0, StitchId from_d0) {
+    for (auto [maker, taker, slot] :
+         {std::tuple{d[2], from_d2, 0}, {b[2], from_b2, 0}, {b[0], from_b0, 1}, {d[0], from_d0, 1}})
+      g.loops.push_back(
+          {maker, taker, LoopKind::perpendicular, static_cast<std::uint8_t>(slot), 0});
+  }
+  // The row over the flap's sts takes d0..d2 (d2's loop is its second, after its edge loop).
+  void work_flap(const std::vector<StitchId>& over) {
+    loop(d[0], over[0], 0);
+    loop(d[1], over[1], 0);
+    loop(d[2], over[2], 1);
+  }
+  void link(const std::vector<StitchId>& order) {
+    for (std::size_t i = 0; i + 1 < order.size(); ++i) {
+      g.yarn_next[order[i]] = order[i + 1];
+      g.yarn_link[order[i]] = YarnLink::course;
+    }
+  }
+  void finish(std::initializer_list<StitchId> ends_of_rounds,
+              std::initializer_list<StitchId> turns) {
+    for (StitchId s : ends_of_rounds) g.yarn_link[s] = YarnLink::shift;
+    for (StitchId s : turns) g.yarn_link[s] = YarnLink::turn;
+    g.index_loops();
+  }
+};
+
+}  // namespace
+
+KnitGraph gusset_graph() {
+  GussetFlap t("gusset");
+  // In the order worked: over d0..d2, picked up from d2 and b2, over a3..a5, from b0 and d0.
+  auto e = t.row_of(10, StitchType::k, 4);
+  auto f = t.row_of(10, StitchType::bo, 5);
+  for (const auto* run : {&e, &f}) t.yarn.insert(t.yarn.end(), run->begin(), run->end());
+  t.link(t.yarn);
+  t.work_flap(e);
+  t.pick_up_edges(e[3], e[4], e[8], e[9]);
+  for (int i = 3; i < 6; ++i) t.loop(t.a[i], e[i + 2], 0);
+  for (int i = 0; i < 10; ++i) t.loop(e[i], f[i], 0);
+  t.finish({t.c[5], t.a[5], e[9]}, {t.b[2], t.d[0]});
+  return std::move(t.g);
+}
+
+KnitGraph gusset_leg_graph() {
+  GussetFlap t("gusset leg");
+  t.g.row_shape.insert(t.g.row_shape.end(), {RowShape::open, RowShape::open});
+  // In the order worked: picked up from d2 and b2, over a3..a5, from b0 and d0.
+  auto e = t.row_of(7, StitchType::k, 4);
+  auto f = t.row_of(7, StitchType::bo, 5);
+  auto h = t.row_of(3, StitchType::k, 6);  // the leg, with a yarn of its own: over d0..d2
+  auto j = t.row_of(3, StitchType::bo, 7);
+  for (const auto* run : {&e, &f}) t.yarn.insert(t.yarn.end(), run->begin(), run->end());
+  t.link(t.yarn);
+  t.link({h[0], h[1], h[2], j[2], j[1], j[0]});
+  t.work_flap(h);
+  t.pick_up_edges(e[0], e[1], e[5], e[6]);
+  for (int i = 3; i < 6; ++i) t.loop(t.a[i], e[i - 1], 0);
+  for (int i = 0; i < 7; ++i) t.loop(e[i], f[i], 0);
+  for (int i = 0; i < 3; ++i) t.loop(h[i], j[i], 0);
+  t.finish({t.c[5], t.a[5], e[6]}, {t.b[2], t.d[0], h[2]});
+  return std::move(t.g);
 }
 
 KnitGraph folded_tube_graph() {

@@ -75,6 +75,11 @@ KnitGraph folded_tube_graph();
 // right edge (b0, d0): 10 sts; a bind-off.
 KnitGraph gusset_graph();
 
+// The gusset's flap goes on as a leg of its own: the rnd over the flap picks up along its
+// edges (d2, b2; b0, d0) and knits a3..a5 only (7 sts; a bind-off), leaving the flap's sts
+// (d0..d2) to a new yarn that works them in a row and binds them off.
+KnitGraph gusset_leg_graph();
+
 // How often `what` occurs in `text`.
 std::size_t occurrences(std::string_view text, std::string_view what);
 

@@ -232,6 +232,24 @@ TEST(HandGaps, AGussetIsProvenInEveryFormat) {
   }
 }
 
+// A gusset whose flap goes on as a leg of its own: the flap's sts go to a holder after the
+// rnd that picks up along its edges, and a new yarn is joined to them.
+TEST(HandGaps, AGussetLeavingItsFlapToALegIsProvenInEveryFormat) {
+  Compilation c = compile_knit_graph(testing::gusset_leg_graph(), "gusset leg");
+  ASSERT_TRUE(c.knittability.knittable) << check_report(c);
+  std::string pattern = emit(c, "hand");
+  for (const char* line :
+       {"**Row 3 (WS):** P3, turn.\n\nSlip sts 1\u20133 of the rnd to holder 1 \u2014 3 "
+        "sts.\n\nPick up 2 sts along the left edge of the flap, one in each row from Row 3 down to "
+        "Row 2, onto the needle at the beginning of the rnd.\n\n",
+        "Join a new yarn to the 3 sts of holder 1"})
+    EXPECT_NE(pattern.find(line), std::string::npos) << line << "\n" << pattern;
+  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
+    VerifyReport report = verify(c, target, emit(c, target));
+    EXPECT_TRUE(report.proven) << target << ": " << report.summary;
+  }
+}
+
 // A flap's edges are picked up into the rnd of the piece worked, each edge st once.
 TEST(HandGaps, AFlapsEdgeIsPickedUpOnceIntoTheRnd) {
   std::string flap =

@@ -427,6 +427,8 @@ TEST(HandMutations, DecreasesAcrossAGapRejectEveryEditThatChangesTheFabric) {
                    compile_knit_graph(testing::folded_tube_graph(), "folded tube"));
   mutate_and_judge("gusset (a flap's edges picked up into the rnd)",
                    compile_knit_graph(testing::gusset_graph(), "gusset"));
+  mutate_and_judge("gusset leg (the flap's sts to a holder, a new yarn)",
+                   compile_knit_graph(testing::gusset_leg_graph(), "gusset leg"));
 }
 
 TEST(HandMutations, JoinsRejectEveryEditThatChangesTheFabric) {

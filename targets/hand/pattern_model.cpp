@@ -472,6 +472,7 @@ class PatternBuilder {
     else
       add_row();
     st_.previous_link = g_.yarn_link[row_.back()];
+    row_before_ = std::move(row_);
     row_.clear();
   }
 
@@ -869,6 +870,9 @@ class PatternBuilder {
     bool first_of_take_up = section().resumed && section().first_row == out_.rows.size();
     bool full_round = section().in_round && !turns && st_.previous_link != YarnLink::turn;
     bool picked_up = section().picks_up && section().first_row == out_.rows.size();
+    Side side = (hand_.left_to_right(row_.front()) != out_.mirror) ? Side::ws : Side::rs;
+    if (section().in_round && !turns && st_.previous_link == YarnLink::turn)
+      hold_the_flap_left(side);
     // After rows that turned, a rnd that works every st starts at the beginning of the rnd.
     if (!picked_up && (first_of_take_up || (section().in_round && !turns))) place_spare_needles();
     PatternRow r;
@@ -876,7 +880,7 @@ class PatternBuilder {
     r.round = section().in_round && !turns;
     r.number =
         static_cast<std::uint32_t>(out_.rows.size()) - section().first_row + section().first_number;
-    r.side = (hand_.left_to_right(row_.front()) != out_.mirror) ? Side::ws : Side::rs;
+    r.side = side;
     out_.ws_rounds = out_.ws_rounds || (r.round && r.side == Side::ws);
     r.first_op = static_cast<std::uint32_t>(out_.ops.size());
     r.sts_before = st_.live;
@@ -901,6 +905,43 @@ class PatternBuilder {
     r.sts_after = st_.live;
     out_.rows.push_back(r);
     if (full_round) hold_what_others_work(static_cast<std::uint32_t>(out_.rows.size() - 1));
+  }
+
+  // A rnd after rows that turned (a gusset's, round a flap) that leaves the sts of the flap's
+  // last row to another piece (the flap goes on as a leg of its own): the knitter slips them to
+  // a holder first. The flap's rows start at the beginning of the rnd (they follow a rnd), so
+  // its sts are the first of the rnd, in the order the rnd goes. (Where the rows before the
+  // rnd are another piece's face, as in the two bars, their sts are placed, not held.)
+  void hold_the_flap_left(Side rnd_side) {
+    // The row flushed last is the piece's own (not another's, as when it is taken up again).
+    if (row_before_.empty() || c_.yarns.piece_of[row_before_.front()] != section().yarn) return;
+    std::vector<std::pair<StitchId, std::uint32_t>> flap;
+    for (StitchId s : row_before_)
+      if (left_to_another_piece(s)) flap.emplace_back(s, 0);
+    if (flap.empty() || flap.size() >= st_.live || !picks_up_its_own_flap()) return;
+    if (out_.rows.back().side != rnd_side) std::reverse(flap.begin(), flap.end());
+    hold(static_cast<std::uint32_t>(out_.rows.size() - 1), flap, 0,
+         static_cast<std::uint32_t>(flap.size()));
+  }
+
+  bool picks_up_its_own_flap() const {
+    const std::uint32_t self = section_of_yarn_[out_.sections.back().yarn];
+    return std::any_of(row_.begin(), row_.end(), [&](StitchId s) {
+      auto taken = g_.loops_taken_by(s);
+      return std::any_of(taken.begin(), taken.end(), [&](std::uint32_t l) {
+        return picked_up_along_an_edge(g_.loops[l]) && section_of(g_.loops[l].maker) == self;
+      });
+    });
+  }
+
+  bool left_to_another_piece(StitchId s) const {
+    if (holder_of_[s] != 0) return false;
+    for (std::uint32_t l : g_.loops_made_by(s))
+      if (const Loop& loop = g_.loops[l];
+          loop.taker != kNoStitch && loop.kind != LoopKind::split &&
+          c_.yarns.piece_of[loop.taker] != out_.sections.back().yarn)
+        return true;
+    return false;
   }
 
   // The last row of a yarn in the rnd that goes on from a turn leaves the sts beyond it on
@@ -1175,6 +1216,7 @@ class PatternBuilder {
   std::uint32_t pieces_ = 0;
   HandPattern out_;
   std::vector<StitchId> row_;
+  std::vector<StitchId> row_before_;  // the row flushed last
   // What the knitter has on the needle for the yarn being worked (kept while it is set aside).
   struct Needle {
     std::uint32_t live = 0;
