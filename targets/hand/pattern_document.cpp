@@ -456,7 +456,7 @@ Totals totals_of(const HandPattern& p) {
     t.provisional = t.provisional || s.provisional || s.row_chain > 0;
     for (const PatternSection::Placement& placed : s.placements)
       t.picks_up_into_rnd = t.picks_up_into_rnd || placed.edge.has_value();
-    t.picks_up = t.picks_up || s.picks_up.has_value() || t.picks_up_into_rnd;
+    t.picks_up = t.picks_up || s.picks_up.has_value();
     for (const PatternSection::Holding& h : s.holdings) t.holders = std::max(t.holders, h.holder);
     if (s.joins) continue;
     (s.in_round ? t.round : t.flat) = true;
@@ -663,8 +663,9 @@ class FrontMatter {
     if (t_.picks_up_into_rnd)
       items.push_back(
           "**Picking up onto the needle of a rnd** (\"..., onto the needle after the first 18 sts "
-          "of the rnd\"): join no yarn; put the loops, picked up the same way, on the needle at "
-          "that place in the order picked up: the rnd works them in that order.");
+          "of the rnd\"): with the RS facing and no new yarn, put the outer loop of the edge st "
+          "of each row named on the needle at that place, one row after the other (the loops "
+          "are not knit: the rnd works them in the order picked up).");
     if (t_.holders > 0)
       items.push_back(
           "**Holders:** \"Slip sts 10\u201318 of the rnd to holder 1\" counts the sts from the "
