@@ -546,8 +546,8 @@ class FrontMatter {
       items.push_back(fmt::format(
           "{}About {:.0f} m ({:.0f} yd) of worsted-weight yarn, estimated from its {} sts at the "
           "gauge below, with 20 cm tails at each end.",
-          p_.sections.size() > 1 ? fmt::format("Yarn {}: ", s.yarn + 1) : "", metres,
-          std::ceil(metres / 0.9144), with_commas(stitches[s.piece])));
+          p_.sections.size() > 1 ? fmt::format("Piece {} (yarn {}): ", s.piece, s.yarn + 1) : "",
+          metres, std::ceil(metres / 0.9144), with_commas(stitches[s.piece])));
     }
     return items;
   }
