@@ -461,6 +461,15 @@ TEST(HandPieces, TheTwoBarsAreProvenInEveryFormat) {
        "last st"});
 }
 
+// A piece whose numbers count rows among its rnds (before it was set aside too) counts plain
+// rnds to a row number, not as "rnds in all".
+TEST(HandPieces, PlainRndsAfterRowsCountToARowNumber) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  std::string text = emit(compile_model("samples/two-bars/two-bars.yaml"), "hand");
+  EXPECT_EQ(testing::occurrences(text, "Knit every rnd through Rnd 39.\n"), 2u) << text;
+  EXPECT_EQ(text.find("until 39 rnds in all"), std::string::npos) << text;
+}
+
 // The letter H: the bar slips 7 sts to a holder before it is set aside, works a band across
 // gaps between the legs when taken up, and its last join folds its needle together with them.
 TEST(HandPieces, TheLetterHIsProvenInEveryFormat) {

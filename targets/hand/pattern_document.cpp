@@ -371,7 +371,7 @@ class InstructionWriter {
       bool sided = (!r.round || r.side == Side::ws) && i == first;
       if (times > 1 && period == 1 && (texts_[i] == "Knit" || texts_[i] == "Purl") &&
           !knitspeak() && !sided) {
-        add(InstructionLine::Kind::repeat, "", work_even_text(r, p_.rows[last], first, i));
+        add(InstructionLine::Kind::repeat, "", work_even_text(r, p_.rows[last], i));
       } else {
         for (std::uint32_t k = 0; k < period; ++k) row_line(i + k);
         if (times > 1) repeat_line(i, period, times);
@@ -380,18 +380,23 @@ class InstructionWriter {
     }
   }
 
-  // "Knit every rnd until 24 rnds in all"; after short rows, which the numbers count too,
-  // "Knit every rnd through Rnd 105".
-  std::string work_even_text(const PatternRow& r, const PatternRow& last, std::uint32_t first,
-                             std::uint32_t i) const {
-    bool turned = std::any_of(p_.rows.begin() + first, p_.rows.begin() + i,
-                              [](const PatternRow& row) { return row.short_row; });
+  // "Knit every rnd until 24 rnds in all"; after short rows, or rows among the rnds, which the
+  // numbers count too (also before the piece was set aside), "Knit every rnd through Rnd 105".
+  std::string work_even_text(const PatternRow& r, const PatternRow& last, std::uint32_t i) const {
     const char* every = r.round ? "rnd" : "row";
-    if (turned)
+    if (numbers_count_other_rows(r, i))
       return fmt::format("{} every {} through {} {}.", texts_[i], every, rows_word(r.round, false),
                          last.number);
     return fmt::format("{} every {} until {} {} in all.", texts_[i], every, last.number,
                        r.round ? "rnds" : "rows");
+  }
+
+  bool numbers_count_other_rows(const PatternRow& r, std::uint32_t i) const {
+    std::uint32_t piece = p_.sections[section_].piece;
+    for (const PatternSection& sec : p_.sections)
+      for (std::uint32_t k = sec.first_row; sec.piece == piece && k < std::min(sec.end_row, i); ++k)
+        if (p_.rows[k].short_row || p_.rows[k].round != r.round) return true;
+    return false;
   }
 
   void row_line(std::uint32_t i) {
