@@ -142,8 +142,9 @@ TEST(HandTarget, SamplesNotCoveredYetNameWhatStopsThem) {
        "face 888 (3nbo, row 59) is a three-needle bind-off in the middle of the work, not in the "
        "first row after the piece is taken up, which is not covered yet"},
       {"samples/teapot/teapot.yaml",
-       "face 1909 (k, row 34) picks up a loop along the edge of face 1761 (k, row 33) (an "
-       "expanding perpendicular edge) in the middle of the work"},
+       "face 1909 (k, row 34) starts a rnd that picks up along the edge of face 1761 (k, row "
+       "33), a row of its own piece worked flat: Piece 2 is joined to work in the rnd in the "
+       "middle of its work"},
   };
   for (const auto& [sample, named] : cases) {
     std::string error = emit_error(compile_model(sample));
