@@ -152,6 +152,19 @@ TEST(HandTarget, SamplesNotCoveredYetNameWhatStopsThem) {
   }
 }
 
+// A piece worked flat that goes on in the rnd by picking up along its own edges (the
+// teapot's second strip) is refused by name, not written wrong.
+TEST(HandTarget, AFlatPieceJoinedInTheRndByItsOwnEdgesIsNamed) {
+  Compilation c = compile_knit_graph(testing::strip_joined_in_the_rnd_graph(), "strip");
+  ASSERT_TRUE(c.knittability.knittable) << check_report(c);
+  std::string error = emit_error(c);
+  EXPECT_NE(error.find("face 10 (k, row 4) starts a rnd that picks up along the edge of face 9 (k, "
+                       "row 3), a row "
+                       "of its own piece worked flat: Piece 1 is joined to work in the rnd"),
+            std::string::npos)
+      << error;
+}
+
 TEST(HandTarget, AMakeOneLastInAFlatRowHasNoStrandToLift) {
   RowPlan plan = {{T::co, T::co, T::co}, {T::m1l, T::k, T::k}, {T::bo, T::bo, T::bo, T::bo}};
   std::string error = emit_error(compile_stitch_mesh(build_from_rows(plan, Layout::sheet), "edge"));
