@@ -417,6 +417,48 @@ KnitGraph gusset_leg_graph() {
   return std::move(t.g);
 }
 
+KnitGraph strip_joined_in_the_rnd_graph() {
+  using T = StitchType;
+  KnitGraph g;
+  g.source_name = "strip joined in the rnd";
+  g.element = "face";
+  g.row_shape = {RowShape::open,   RowShape::open, RowShape::open, RowShape::closed,
+                 RowShape::closed, RowShape::open, RowShape::open};
+  auto row_of = [&](std::size_t n, T type, std::uint32_t row) {
+    std::vector<StitchId> made;
+    for (std::size_t i = 0; i < n; ++i) made.push_back(g.add_stitch(type, row, g.size(), 0));
+    return made;
+  };
+  auto c = row_of(3, T::co, 0), b = row_of(3, T::k, 1), d = row_of(3, T::k, 2);
+  auto e = row_of(4, T::k, 3), f = row_of(4, T::bo, 4);
+  auto h = row_of(3, T::k, 5), j = row_of(3, T::bo, 6);
+  auto link = [&](const std::vector<StitchId>& order) {
+    for (std::size_t i = 0; i + 1 < order.size(); ++i) {
+      g.yarn_next[order[i]] = order[i + 1];
+      g.yarn_link[order[i]] = YarnLink::course;
+    }
+  };
+  link({c[2], c[1], c[0], b[0], b[1], b[2], d[2], d[1], d[0], e[0], e[1], e[2], e[3], f[0], f[1],
+        f[2], f[3]});
+  link({h[0], h[1], h[2], j[2], j[1], j[0]});
+  for (StitchId s : {c[0], b[2], d[0], h[2]}) g.yarn_link[s] = YarnLink::turn;
+  g.yarn_link[e[3]] = YarnLink::shift;
+  auto wale = [&](StitchId maker, StitchId taker, std::uint8_t slot) {
+    g.loops.push_back({maker, taker, LoopKind::wale, slot, 0});
+  };
+  for (int i = 0; i < 3; ++i) wale(c[i], b[i], 0);
+  for (int i = 0; i < 3; ++i) wale(b[i], d[i], i == 2 ? 1 : 0);
+  // The strip's left edge (d2, b2) makes its loop across it first, the right one (b0, d0) last.
+  for (auto [maker, taker, slot] :
+       {std::tuple{d[2], e[0], 0}, {b[2], e[1], 0}, {b[0], e[2], 1}, {d[0], e[3], 1}})
+    g.loops.push_back({maker, taker, LoopKind::perpendicular, static_cast<std::uint8_t>(slot), 0});
+  for (int i = 0; i < 4; ++i) wale(e[i], f[i], 0);
+  for (int i = 0; i < 3; ++i) wale(d[i], h[i], i == 2 ? 1 : 0);
+  for (int i = 0; i < 3; ++i) wale(h[i], j[i], 0);
+  g.index_loops();
+  return g;
+}
+
 KnitGraph folded_tube_graph() {
   using T = StitchType;
   KnitGraph g;

@@ -80,6 +80,11 @@ KnitGraph gusset_graph();
 // (d0..d2) to a new yarn that works them in a row and binds them off.
 KnitGraph gusset_leg_graph();
 
+// A flat strip joined to work in the rnd: 3 sts cast on flat, 2 rows (b, then d back); a rnd
+// of the same yarn that picks up along the strip's left edge (d2, b2) and right edge (b0, d0)
+// only, then binds off; the strip's sts (d0..d2) go on with a new yarn in a row, bound off.
+KnitGraph strip_joined_in_the_rnd_graph();
+
 // How often `what` occurs in `text`.
 std::size_t occurrences(std::string_view text, std::string_view what);
 

@@ -142,13 +142,27 @@ TEST(HandTarget, SamplesNotCoveredYetNameWhatStopsThem) {
        "face 888 (3nbo, row 59) is a three-needle bind-off in the middle of the work, not in the "
        "first row after the piece is taken up, which is not covered yet"},
       {"samples/teapot/teapot.yaml",
-       "face 1909 (k, row 34) picks up a loop along the edge of face 1761 (k, row 33) (an "
-       "expanding perpendicular edge) in the middle of the work"},
+       "face 1909 (k, row 34) starts a rnd that picks up along the edge of face 1761 (k, row "
+       "33), a row of its own piece worked flat: Piece 2 is joined to work in the rnd in the "
+       "middle of its work"},
   };
   for (const auto& [sample, named] : cases) {
     std::string error = emit_error(compile_model(sample));
     EXPECT_NE(error.find(named), std::string::npos) << sample << ": " << error;
   }
+}
+
+// A piece worked flat that goes on in the rnd by picking up along its own edges (the
+// teapot's second strip) is refused by name, not written wrong.
+TEST(HandTarget, AFlatPieceJoinedInTheRndByItsOwnEdgesIsNamed) {
+  Compilation c = compile_knit_graph(testing::strip_joined_in_the_rnd_graph(), "strip");
+  ASSERT_TRUE(c.knittability.knittable) << check_report(c);
+  std::string error = emit_error(c);
+  EXPECT_NE(error.find("face 10 (k, row 4) starts a rnd that picks up along the edge of face 9 (k, "
+                       "row 3), a row "
+                       "of its own piece worked flat: Piece 1 is joined to work in the rnd"),
+            std::string::npos)
+      << error;
 }
 
 TEST(HandTarget, AMakeOneLastInAFlatRowHasNoStrandToLift) {

@@ -1076,10 +1076,24 @@ class PatternBuilder {
   // gusset's "pick up and knit") is not written yet.
   void refuse_pick_up_in_the_work(StitchId s, StitchId maker) const {
     if (g_.loops_made_by(maker).size() < 2) return;
+    refuse_joining_a_flat_piece_in_the_rnd(s, maker);
     unsupported(fmt::format(
         "{} picks up a loop along the edge of {} (an expanding perpendicular edge) in the middle "
         "of the work (a gusset's \"pick up and knit\"), which is not covered yet",
         g_.describe(s), g_.describe(maker)));
+  }
+
+  // A flat piece's rnd that picks up along the piece's own edge (the teapot's handle after its
+  // strip) joins it to work in the rnd in the middle of its work: the flat rows' sts are held
+  // and the rnd is made of sts picked up along their edges. Named as a knitter would see it.
+  void refuse_joining_a_flat_piece_in_the_rnd(StitchId s, StitchId maker) const {
+    if (g_.yarn_link[row_.back()] != YarnLink::shift) return;
+    unsupported(fmt::format(
+        "{} starts a rnd that picks up along the edge of {}, a row of its own piece worked "
+        "flat: Piece {} is joined to work in the rnd in the middle of its work (its last "
+        "row's sts held, the rnd picking up and knitting along the edges of its rows), which "
+        "is not covered yet",
+        g_.describe(s), g_.describe(maker), out_.sections.back().piece));
   }
 
   // A st of the piece's own needle across a gap (a heel turn's decrease): worked second, it is
