@@ -35,10 +35,7 @@ TEST(HandJoins, TheJoinFixtureReadsLikeAPatternAndIsProven) {
   EXPECT_NE(pattern.find("Piece 1 in front, the first st of its last row at the needle tip"),
             std::string::npos);
   EXPECT_NE(pattern.find("**Three-needle bind-off:**"), std::string::npos);
-  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
-    VerifyReport report = verify(c, target, emit(c, target));
-    EXPECT_TRUE(report.proven) << target << ": " << report.summary;
-  }
+  EXPECT_EQ(testing::unproven_hand_formats(c), "");
 }
 
 // With a piece's own yarn: the piece knit first is set aside until the other is done.
@@ -49,10 +46,7 @@ TEST(HandJoins, JoinsWithAPiecesOwnYarnAreProven) {
     std::string pattern = emit(c, "hand");
     EXPECT_NE(pattern.find("; with its yarn bind off all 3 pairs.\n"), std::string::npos)
         << pattern;
-    for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
-      VerifyReport report = verify(c, target, emit(c, target));
-      EXPECT_TRUE(report.proven) << target << ": " << report.summary;
-    }
+    EXPECT_EQ(testing::unproven_hand_formats(c), "");
   }
 }
 
@@ -125,10 +119,7 @@ TEST(HandSplits, TheSplitFixturesAreProvenInEveryFormat) {
         << pattern;
     EXPECT_NE(pattern.find(line), std::string::npos) << pattern;
     EXPECT_NE(pattern.find("**Provisional cast-on**"), std::string::npos);
-    for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
-      VerifyReport report = verify(c, target, emit(c, target));
-      EXPECT_TRUE(report.proven) << target << ": " << report.summary;
-    }
+    EXPECT_EQ(testing::unproven_hand_formats(c), "");
   }
 }
 
@@ -163,10 +154,7 @@ TEST(HandPickUps, TheExpandingFixtureIsProvenInEveryFormat) {
             std::string::npos)
       << pattern;
   EXPECT_NE(pattern.find("**Picking up along an edge:**"), std::string::npos);
-  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
-    VerifyReport report = verify(c, target, emit(c, target));
-    EXPECT_TRUE(report.proven) << target << ": " << report.summary;
-  }
+  EXPECT_EQ(testing::unproven_hand_formats(c), "");
 }
 
 TEST(HandPickUps, TheContractingFixtureIsProvenInEveryFormat) {
@@ -174,10 +162,7 @@ TEST(HandPickUps, TheContractingFixtureIsProvenInEveryFormat) {
   std::string pattern = emit(c, "hand");
   EXPECT_NE(pattern.find("**Row 1 (RS):** Sl1 from spare, k2tog.\n"), std::string::npos) << pattern;
   EXPECT_NE(pattern.find("**Row 2 (WS):** Sl1 from spare behind, p2tog.\n"), std::string::npos);
-  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
-    VerifyReport report = verify(c, target, emit(c, target));
-    EXPECT_TRUE(report.proven) << target << ": " << report.summary;
-  }
+  EXPECT_EQ(testing::unproven_hand_formats(c), "");
   EXPECT_EQ(failure_of("Cast on 2 sts.\nRow 1 (RS): Sl1 from spare, k2tog, k1.\n"),
             "p.md:2: Row 1 (RS): sl1 from spare: 0 pieces wait on spare needles; which one is "
             "meant?");
@@ -209,10 +194,7 @@ TEST(HandGaps, TheHeelTurnIsProvenInEveryFormat) {
                            "**Row 3 (WS):** Sl1 back, [p2tog] 2 times, turn — 3 sts.\n",
                            "**Rnd 4:** Pm, k3.\n", "**Decreasing across a gap**"})
     EXPECT_NE(pattern.find(line), std::string::npos) << line << "\n" << pattern;
-  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
-    VerifyReport report = verify(c, target, emit(c, target));
-    EXPECT_TRUE(report.proven) << target << ": " << report.summary;
-  }
+  EXPECT_EQ(testing::unproven_hand_formats(c), "");
 }
 
 // A gusset: the rnd after a flap picks up a st in each of the flap's rows along both edges.
@@ -226,10 +208,7 @@ TEST(HandGaps, AGussetIsProvenInEveryFormat) {
         "Pick up 2 sts along the right edge of the flap, one in each row from Row 2 up to Row 3, "
         "onto the needle after the first 8 sts of the rnd — 10 sts.\n\n**Rnd 4:** Knit.\n"})
     EXPECT_NE(pattern.find(line), std::string::npos) << line << "\n" << pattern;
-  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
-    VerifyReport report = verify(c, target, emit(c, target));
-    EXPECT_TRUE(report.proven) << target << ": " << report.summary;
-  }
+  EXPECT_EQ(testing::unproven_hand_formats(c), "");
 }
 
 // A gusset whose flap goes on as a leg of its own: the flap's sts go to a holder after the
@@ -244,10 +223,7 @@ TEST(HandGaps, AGussetLeavingItsFlapToALegIsProvenInEveryFormat) {
         "Row 2, onto the needle at the beginning of the rnd.\n\n",
         "Join a new yarn to the 3 sts of holder 1"})
     EXPECT_NE(pattern.find(line), std::string::npos) << line << "\n" << pattern;
-  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
-    VerifyReport report = verify(c, target, emit(c, target));
-    EXPECT_TRUE(report.proven) << target << ": " << report.summary;
-  }
+  EXPECT_EQ(testing::unproven_hand_formats(c), "");
 }
 
 // A flap's edges are picked up into the rnd of the piece worked, each edge st once.
@@ -277,10 +253,7 @@ TEST(HandGaps, AFoldedTubeIsProvenInEveryFormat) {
                          "bind off all 3 pairs.\n"),
             std::string::npos)
       << pattern;
-  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
-    VerifyReport report = verify(c, target, emit(c, target));
-    EXPECT_TRUE(report.proven) << target << ": " << report.summary;
-  }
+  EXPECT_EQ(testing::unproven_hand_formats(c), "");
 }
 
 // The loops of a provisional cast-on's chain are placed into a rnd like a spare needle's sts.
@@ -405,10 +378,7 @@ TEST(HandPieces, TheSweaterIsProvenInEveryFormat) {
         "sts.\n",
         "**Rnd 108:** K106, pm, k to end.\n"})
     EXPECT_NE(pattern.find(line), std::string::npos) << line;
-  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
-    VerifyReport report = verify(c, target, emit(c, target));
-    EXPECT_TRUE(report.proven) << target << ": " << report.summary;
-  }
+  EXPECT_EQ(testing::unproven_hand_formats(c), "");
 }
 
 // A sample's hand pattern holds these lines and is proven in every format.
@@ -417,10 +387,7 @@ void expect_written_and_proven(const char* sample, std::initializer_list<const c
   Compilation c = compile_model(sample);
   std::string pattern = emit(c, "hand");
   for (const char* line : lines) EXPECT_NE(pattern.find(line), std::string::npos) << line;
-  for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
-    VerifyReport report = verify(c, target, emit(c, target));
-    EXPECT_TRUE(report.proven) << sample << ", " << target << ": " << report.summary;
-  }
+  EXPECT_EQ(testing::unproven_hand_formats(c), "") << sample;
 }
 
 // Three arms knit towards the centre, where their sts go four ways: into each arm beyond it

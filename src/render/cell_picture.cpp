@@ -75,7 +75,10 @@ class Grid {
     bool covered = false;
     for (std::uint32_t r = r0; r <= r1; ++r)
       for (std::uint32_t c = c0; c <= c1; ++c)
-        if (inside(polygon, centre_x(c), centre_y(r))) covered |= paint(c, r, label, shade, depth);
+        if (inside(polygon, centre_x(c), centre_y(r))) {
+          paint(c, r, label, shade, depth);
+          covered = true;
+        }
     if (!covered) {
       double x = (b.min_x + b.max_x) / 2, y = (b.min_y + b.max_y) / 2;
       paint(column(x), row(y), label, shade, depth);
@@ -104,11 +107,10 @@ class Grid {
   std::size_t index(std::uint32_t c, std::uint32_t r) const {
     return std::size_t{r} * pic_.columns + c;
   }
-  bool paint(std::uint32_t c, std::uint32_t r, std::uint32_t label, std::uint8_t shade,
+  void paint(std::uint32_t c, std::uint32_t r, std::uint32_t label, std::uint8_t shade,
              double depth) {
     std::size_t i = index(c, r);
     if (depth > depth_[i]) pic_.label[i] = label, pic_.shade[i] = shade, depth_[i] = depth;
-    return true;
   }
 
   Box box_;

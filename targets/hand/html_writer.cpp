@@ -217,12 +217,13 @@ std::vector<std::uint8_t> after_first_hold(const Compilation& c) {
 
 // The cells of the section worked: its piece's, and of that piece only the part before or
 // after it was set aside when it was.
-bool shows_section(const HandPattern& p, const PatternSection& s, std::uint32_t label) {
-  if (label / 2 != s.yarn) return false;
+auto cells_of_section(const HandPattern& p, const PatternSection& s) {
   bool taken_up = std::any_of(p.sections.begin(), p.sections.end(), [&](const PatternSection& o) {
     return o.yarn == s.yarn && o.resumed;
   });
-  return !taken_up || (label % 2 == 1) == s.resumed;
+  return [yarn = s.yarn, resumed = s.resumed, taken_up](std::uint32_t label) {
+    return label / 2 == yarn && (!taken_up || (label % 2 == 1) == resumed);
+  };
 }
 
 }  // namespace
@@ -266,9 +267,7 @@ void write_html(const PatternDocument& doc, const HandPattern& pattern, const Ce
     const PatternSection& s = pattern.sections[line.section];
     if (picture) {
       out << "<figure>\n"
-          << Schematic(*picture).svg(
-                 [&](std::uint32_t label) { return shows_section(pattern, s, label); },
-                 first_figure)
+          << Schematic(*picture).svg(cells_of_section(pattern, s), first_figure)
           << fmt::format(
                  "<figcaption>Schematic: the model seen from the front and a little above{}."
                  "</figcaption>\n",

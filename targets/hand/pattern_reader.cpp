@@ -267,12 +267,10 @@ class SentenceReader {
     return need_number(c, "a row number");
   }
 
-  // "Join a new yarn to the 3 sts of Piece 1 (or: the 3 loops of Piece 1's chain), the first
-  // st cast on at the tip".
-  void join_spare(Cursor& c) {
-    Step step{Step::Kind::join_spare, line_no_};
+  // "the 3 sts of Piece 1", "the 7 sts of holder 2" or "the 3 loops of Piece 1's chain".
+  void whose_sts(Cursor& c, Step& step, const char* count) {
     c.eat("the");
-    step.count = need_number(c, "the number of sts");
+    step.count = need_number(c, count);
     step.provisional = c.eat("loops");
     need(step.provisional || c.eat("sts"), c, "'sts' or 'loops'");
     need(c.eat("of"), c, "'of Piece N' or 'of holder N'");
@@ -280,6 +278,13 @@ class SentenceReader {
     need(step.holder[0] || c.eat("piece"), c, "'of Piece N' or 'of holder N'");
     step.number = need_number(c, step.holder[0] ? "a holder number" : "a piece number");
     if (step.provisional) need_words(c, {"'", "s", "chain"}, "'s chain' after the piece");
+  }
+
+  // "Join a new yarn to the 3 sts of Piece 1 (or: the 3 loops of Piece 1's chain), the first
+  // st cast on at the tip".
+  void join_spare(Cursor& c) {
+    Step step{Step::Kind::join_spare, line_no_};
+    whose_sts(c, step, "the number of sts");
     need_words(c, {",", "the"}, "', the first (or last) st cast on'");
     step.from_last[0] = c.eat("last");
     need(step.from_last[0] || c.eat("first"), c, "'first' or 'last'");
@@ -330,15 +335,7 @@ class SentenceReader {
   // rnd (or: the first st cast on; st 16 of its last rnd) first".
   void place(Cursor& c) {
     Step step{Step::Kind::place, line_no_};
-    c.eat("the");
-    step.count = need_number(c, "the number of sts to place");
-    step.provisional = c.eat("loops");
-    need(step.provisional || c.eat("sts"), c, "'sts' or 'loops'");
-    need(c.eat("of"), c, "'of Piece N' or 'of holder N'");
-    step.holder[0] = !step.provisional && c.eat("holder");
-    need(step.holder[0] || c.eat("piece"), c, "'of Piece N' or 'of holder N'");
-    step.number = need_number(c, step.holder[0] ? "a holder number" : "a piece number");
-    if (step.provisional) need_words(c, {"'", "s", "chain"}, "'s chain' after the piece");
+    whose_sts(c, step, "the number of sts to place");
     need_words(c, {"on", "the"}, "'on the needle'");
     if (step.holder[0] && c.eat("spare")) return place_on_spare_needle(c, step);
     need(c.eat("needle"), c, "'on the needle' or 'on the spare needle of Piece N'");
