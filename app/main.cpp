@@ -27,8 +27,20 @@ constexpr int kBadInput = 2;
 
 std::string registry_listing(const Registry& registry) {
   std::string out = "\nTargets (--target):\n";
-  for (const Target* t : registry.targets())
+  std::string listed, listed_by;  // the last settings listed, and whose they were
+  for (const Target* t : registry.targets()) {
     out += fmt::format("  {:<12} {}\n", t->name(), t->description());
+    std::string settings;
+    for (const TargetSetting& s : t->settings())
+      settings += fmt::format("    --set {}={}: {}\n", s.key, fmt::join(s.values, "|"), s.help);
+    if (!settings.empty() && settings == listed) {
+      out += fmt::format("    --set: as {}\n", listed_by);
+      continue;
+    }
+    out += settings;
+    listed = settings;
+    listed_by = t->name();
+  }
   out += "\nSimulators (skein verify, compile --verify):\n";
   for (const Simulator* s : registry.simulators())
     out +=
@@ -76,6 +88,43 @@ void check_dialect(const Target& target, const std::string& dialect) {
                                target.name(), fmt::join(valid, ", ")));
 }
 
+void check_setting_value(const TargetSetting& s, const std::string& value,
+                         const std::string& where) {
+  if (std::find(s.values.begin(), s.values.end(), value) == s.values.end())
+    throw UsageError(fmt::format("{} {}: expected {}, found '{}'", where, s.key,
+                                 fmt::join(s.values, " or "), value));
+}
+
+// `--set KEY=VALUE` pairs, checked against what the target offers, over the project file's
+// `target:` keys that the target knows (the others are for other targets).
+std::map<std::string, std::string> settings_for(const Target& target, const std::string& input,
+                                                const std::vector<std::string>& given) {
+  std::vector<TargetSetting> known = target.settings();
+  std::map<std::string, std::string> settings;
+  for (const TargetSetting& s : known) {
+    std::string value = project_target_option(input, s.key);
+    if (value.empty()) continue;
+    check_setting_value(s, value, input + ": target:");
+    settings[s.key] = value;
+  }
+  for (const std::string& pair : given) {
+    std::size_t eq = pair.find('=');
+    std::string key = pair.substr(0, eq);
+    auto s = std::find_if(known.begin(), known.end(), [&](const auto& k) { return k.key == key; });
+    if (s == known.end()) {
+      std::vector<std::string> keys;
+      for (const TargetSetting& k : known) keys.push_back(k.key);
+      throw UsageError(fmt::format(
+          "target '{}' has no setting '{}'; {}", target.name(), key,
+          keys.empty() ? "it has none" : fmt::format("its settings: {}", fmt::join(keys, ", "))));
+    }
+    std::string value = eq == std::string::npos ? "" : pair.substr(eq + 1);
+    check_setting_value(*s, value, "--set");
+    settings[key] = value;
+  }
+  return settings;
+}
+
 int run_check(const std::string& input, bool verbose) {
   Compilation c = compile_model(input, progress_printer(verbose));
   std::cout << check_report(c);
@@ -88,9 +137,11 @@ int report_verification(const VerifyReport& report) {
 }
 
 int run_compile(const Registry& registry, const std::string& input, const std::string& target_name,
-                TargetOptions options, const std::string& output, bool verify, bool verbose) {
+                TargetOptions options, const std::vector<std::string>& settings,
+                const std::string& output, bool verify, bool verbose) {
   const Target& target = find_target(registry, target_name);
   check_dialect(target, options.dialect);
+  options.settings = settings_for(target, input, settings);
   if (options.machine.empty()) options.machine = project_target_option(input, "machine");
   Compilation c = compile_model(input, progress_printer(verbose));
   if (!c.knittability.knittable) {
@@ -170,6 +221,9 @@ int main(int argc, char** argv) {
   compile->add_option("-m,--machine", options.machine, "machine profile name or path");
   compile->add_option("--dialect", options.dialect,
                       "how the target spells its output (hand: standard or knitspeak)");
+  std::vector<std::string> settings;
+  compile->add_option("--set", settings,
+                      "KEY=VALUE: a target's setting (see the list below); repeatable");
   compile->add_flag("--verify", verify, "replay the output in the target's simulator");
 
   auto* verify_cmd = app.add_subcommand("verify", "replay OUT in its target's simulator");
@@ -214,7 +268,7 @@ int main(int argc, char** argv) {
     if (*render) return render_file(input, output, coarse), kKnittable;
     if (*generate) return write_generated_stitch_mesh(input, output), kKnittable;
     if (*compile)
-      return run_compile(registry, input, target_name, options, output, verify, verbose);
+      return run_compile(registry, input, target_name, options, settings, output, verify, verbose);
     return run_verify(registry, file, against, target_name, options, verbose);
   } catch (const Error& e) {
     std::cerr << "skein: error: " << e.what() << '\n';

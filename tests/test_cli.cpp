@@ -1,7 +1,9 @@
 // The skein command line as a user meets it: exit codes, messages, and no partial outputs.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "cli_runner.hpp"
 
@@ -83,6 +85,51 @@ TEST_F(Cli, DialectChoosesHowTheHandTargetSpellsItsRows) {
   EXPECT_EQ(outputs(), std::vector<std::string>{"sock.knitspeak"});
 }
 
+TEST_F(Cli, SettingsChooseHowTheHandTargetKnitsRoundsAndShortRows) {
+  // The sock's rounds run left to right: by default the pattern knits its mirror image.
+  CliRun r = skein(
+      "compile samples/sock/sock.yaml -t hand --set rounds=inside-out --set "
+      "short-rows=wrap-and-turn -o " +
+      in_dir("sock.md") + " --verify");
+  EXPECT_EQ(r.exit_code, 0) << r.err << r.out;
+  EXPECT_NE(r.out.find("stitch for stitch (4606 stitches: their types, loops and yarn order)\n"),
+            std::string::npos)
+      << r.out;  // not ", as its mirror image"
+  std::string pattern = read("sock.md");
+  EXPECT_NE(pattern.find("**Rnd 1 (WS):** *P2, k2; rep from * to end."), std::string::npos);
+  EXPECT_NE(pattern.find("**Row 46 (RS):** K22, w&t."), std::string::npos);
+  EXPECT_EQ(pattern.find("mirror image"), std::string::npos);
+  CliRun unknown = skein("compile samples/hat/hat.obj -t hand --set round=x -o " + in_dir("h.md"));
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_NE(unknown.err.find("target 'hand' has no setting 'round'; its settings: short-rows, "
+                             "rounds"),
+            std::string::npos)
+      << unknown.err;
+  CliRun bad = skein("compile samples/hat/hat.obj -t hand --set rounds=x -o " + in_dir("h.md"));
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--set rounds: expected mirror or inside-out, found 'x'"),
+            std::string::npos)
+      << bad.err;
+  EXPECT_EQ(outputs(), std::vector<std::string>{"sock.md"});
+}
+
+TEST_F(Cli, AProjectFileCanChooseTheHandTargetsSettings) {
+  std::ifstream sample("samples/sock/sock.yaml");
+  std::string project((std::istreambuf_iterator<char>(sample)), {});
+  project.replace(project.find("sock.obj"), 8, std::filesystem::absolute("samples/sock/sock.obj"));
+  std::ofstream(in_dir("sock.yaml")) << project << "target: {rounds: inside-out}\n";
+  CliRun r = skein("compile " + in_dir("sock.yaml") + " -t hand -o " + in_dir("sock.md"));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(read("sock.md").find("**Rnd 1 (WS):**"), std::string::npos);
+  std::ofstream(in_dir("sock.yaml")) << project << "target: {rounds: sideways}\n";
+  CliRun bad = skein("compile " + in_dir("sock.yaml") + " -t hand -o " + in_dir("sock.md"));
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("sock.yaml: target: rounds: expected mirror or inside-out, found "
+                         "'sideways'"),
+            std::string::npos)
+      << bad.err;
+}
+
 TEST_F(Cli, UnwritableOutputLeavesNoTemporaryFile) {
   CliRun r =
       skein("compile samples/hat/hat.obj -t schedule -o " + in_dir("missing-dir/hat.schedule"));
@@ -113,6 +160,7 @@ TEST_F(Cli, HelpListsTargetsAndSimulatorsFromTheRegistry) {
   EXPECT_NE(r.out.find("schedule "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("schedule-replay"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("Examples:"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("--set rounds=mirror|inside-out"), std::string::npos) << r.out;
 }
 
 }  // namespace

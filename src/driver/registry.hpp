@@ -16,6 +16,15 @@ struct Compilation;
 struct TargetOptions {
   std::string machine;  // profile name or path, for machine targets
   std::string dialect;  // one of the target's dialects(); empty: its default
+  // --set KEY=VALUE, then the project file's `target:` keys the target knows.
+  std::map<std::string, std::string> settings;
+};
+
+// A choice a target offers (`--set rounds=inside-out`); the first value is the default.
+struct TargetSetting {
+  std::string key;
+  std::vector<std::string> values;
+  std::string help;
 };
 
 class Target {
@@ -26,6 +35,8 @@ class Target {
   virtual std::string default_extension() const = 0;  // ".txt", ".k", ".md"
   // The dialects --dialect may name (the hand target: "standard", "knitspeak"); none by default.
   virtual std::vector<std::string> dialects() const { return {}; }
+  // The settings --set may give; none by default.
+  virtual std::vector<TargetSetting> settings() const { return {}; }
   // Writes the compiled model; throws Error when this target cannot express it.
   virtual void emit(const Compilation& compilation, const TargetOptions& options,
                     std::ostream& out) const = 0;

@@ -35,9 +35,18 @@ constexpr FormatInfo kFormats[] = {
      "the hand-knitting pattern's rows in Stitch-Maps' KnitSpeak"},
 };
 
-// The short-row method the project file chose (German short rows otherwise).
-TurnMethod turn_method_of(const Compilation& c) {
+// `--set short-rows=...`, else the project file's `short_rows: {hand: ...}`, else German.
+TurnMethod turn_method_of(const Compilation& c, const TargetOptions& options) {
+  auto set = options.settings.find("short-rows");
+  if (set != options.settings.end())
+    return set->second == "german" ? TurnMethod::german : TurnMethod::wrap_and_turn;
   return is_project_file(c.input) ? read_project(c.input).hand_turns : TurnMethod::german;
+}
+
+Rounds rounds_of(const TargetOptions& options) {
+  auto set = options.settings.find("rounds");
+  bool inside_out = set != options.settings.end() && set->second == "inside-out";
+  return inside_out ? Rounds::ws_facing : Rounds::mirror_most;
 }
 
 class HandTarget : public Target {
@@ -47,8 +56,16 @@ class HandTarget : public Target {
   std::string description() const override { return f_.description; }
   std::string default_extension() const override { return f_.extension; }
   std::vector<std::string> dialects() const override { return {"standard", "knitspeak"}; }
+  std::vector<TargetSetting> settings() const override {
+    return {{"short-rows",
+             {"german", "wrap-and-turn"},
+             "how short rows turn (default: the project's short_rows: hand:)"},
+            {"rounds",
+             {"mirror", "inside-out"},
+             "rnds run left to right: mirror the model if most do, or work them WS facing"}};
+  }
   void emit(const Compilation& c, const TargetOptions& options, std::ostream& out) const override {
-    HandPattern pattern = build_hand_pattern(c, turn_method_of(c));
+    HandPattern pattern = build_hand_pattern(c, turn_method_of(c, options), rounds_of(options));
     Gauge gauge;
     PatternDocument doc = make_document(pattern, dialect_of(options), gauge);
     // `--target hand --dialect knitspeak` writes what hand-knitspeak writes; the page stays a
