@@ -139,8 +139,9 @@ TEST(HandTarget, SamplesNotCoveredYetNameWhatStopsThem) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
   const std::pair<const char*, const char*> cases[] = {
       {"samples/letter-r/letter-r.yaml",
-       "face 888 (3nbo, row 59) is a three-needle bind-off in the middle of the work, not in the "
-       "first row after the piece is taken up, which is not covered yet"},
+       "face 1095 (k, row 28) works the loop of face 699 (k, row 27), the st just made, and its "
+       "row goes back over the sts of the rnd before, where the model goes on along a "
+       "shift-path: a knitter turns the work there"},
       {"samples/teapot/teapot.yaml",
        "face 1909 (k, row 34) starts a rnd that picks up along the edge of face 1761 (k, row "
        "33), a row of its own piece worked flat: Piece 2 is joined to work in the rnd in the "

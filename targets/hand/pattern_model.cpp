@@ -866,6 +866,7 @@ class PatternBuilder {
   }
 
   void add_row() {
+    refuse_going_back_over_the_rnd_without_a_turn();
     bool turns = g_.yarn_link[row_.back()] == YarnLink::turn || ends_between_turns();
     bool first_of_take_up = section().resumed && section().first_row == out_.rows.size();
     bool full_round = section().in_round && !turns && st_.previous_link != YarnLink::turn;
@@ -922,6 +923,30 @@ class PatternBuilder {
     if (out_.rows.back().side != rnd_side) std::reverse(flap.begin(), flap.end());
     hold(static_cast<std::uint32_t>(out_.rows.size() - 1), flap, 0,
          static_cast<std::uint32_t>(flap.size()));
+  }
+
+  // A row that goes on from a rnd along a shift-path but works the sts just made, last first
+  // (letter-r's flap): a knitter turns the work there, which the model does not say (it turns
+  // instead where the flap's last row goes on down its edge into the rnd). Named, not written
+  // wrong.
+  void refuse_going_back_over_the_rnd_without_a_turn() const {
+    if (st_.previous_link != YarnLink::shift || row_before_.size() < 2 || row_.size() < 2 ||
+        !works_a_wale_loop_of(row_[0], row_before_.back()) ||
+        !works_a_wale_loop_of(row_[1], row_before_[row_before_.size() - 2]))
+      return;
+    unsupported(fmt::format(
+        "{} works the loop of {}, the st just made, and its row goes back over the sts of the "
+        "rnd before, where the model goes on along a shift-path: a knitter turns the work there "
+        "(and then needs no turn where the model has one, after the flap's last row), which is "
+        "not covered yet",
+        g_.describe(row_[0]), g_.describe(row_before_.back())));
+  }
+
+  bool works_a_wale_loop_of(StitchId taker, StitchId maker) const {
+    auto taken = g_.loops_taken_by(taker);
+    return std::any_of(taken.begin(), taken.end(), [&](std::uint32_t l) {
+      return g_.loops[l].maker == maker && g_.loops[l].kind == LoopKind::wale;
+    });
   }
 
   bool picks_up_its_own_flap() const {
