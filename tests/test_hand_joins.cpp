@@ -453,6 +453,30 @@ TEST(HandPieces, TheLetterHIsProvenInEveryFormat) {
        "sts at the widest. 24 short rows (worked on part of the sts), no whole rnds.\n"});
 }
 
+// The letter R: a flap worked back from the end of a rnd (the model's shift-path there is a
+// turn, its turn after the flap a shift down the flap's edge), rnds worked with the WS facing,
+// a last rnd shared out to holders, a three-needle bind-off in the middle of a piece's work
+// said before its rnd, two spare needles at once, a new yarn joined in the rnd on a chain, and
+// a last rnd bound off with two pieces held behind it.
+TEST(HandPieces, TheLetterRIsProvenInEveryFormat) {
+  expect_written_and_proven(
+      "samples/letter-r/letter-r.yaml",
+      {"**Row 20 (WS):** P10, p DS, p17, turn.\n\n**Row 21 (RS):** K21, turn.\n",
+       "**Rnd 28 (WS):** Purl.\n\nSlip sts 8\u201328 of the rnd to holder 1 \u2014 7 sts.\n",
+       "Slip sts 1\u20138 of the rnd to holder 2, sts 9\u201315 to holder 3 and sts 16\u201323 to "
+       "holder 4 \u2014 7 sts.\n\nLeave the 7 sts on a spare needle and cut the yarn.\n",
+       "Hold the 7 sts of holder 3 behind the needle, the last st of its last row at the "
+       "tip.\n\n**Rnd 20:** K3, k DS, k to last 7 sts, 3-needle BO 7 sts \u2014 21 sts.\n",
+       "Put the 8 sts of holder 4 on a second spare needle, the first st of its last rnd at the "
+       "tip.\n\n**Row 21 (RS):** Sl1 from spare behind, k2tog, k19, sl1 from 2nd spare, k2tog, "
+       "turn.\n",
+       "Join a new yarn to the 7 loops of Piece 1's chain, the last st cast on at the tip. Pm and "
+       "join to work in the rnd, being careful not to twist.\n",
+       "Hold the 7 sts of Piece 1 behind the needle, the last st of its last row at the tip. Hold "
+       "the 21 sts of Piece 2 behind the needle, the first st of its last row at the "
+       "tip.\n\n**Rnd 51:** 3-needle BO 28 sts.\n\nFasten off.\n"});
+}
+
 // A tube whose last 2 sts wait on a holder and go back on its spare needle before the fold.
 std::string fold_with_held_sts(const std::string& place) {
   return "Cast on 6 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\nSlip sts 5\u20136 of "

@@ -466,6 +466,13 @@ TEST(HandMutations, TheLetterHRejectsEveryEditThatChangesTheFabric) {
   mutate_and_judge("letter H", compile_model("samples/letter-h/letter-h.yaml"));
 }
 
+// The letter R: a three-needle bind-off said before a rnd in the middle of a piece's work,
+// two spare needles at once, a last rnd bound off with two pieces held behind it.
+TEST(HandMutations, TheLetterRRejectsEveryEditThatChangesTheFabric) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  mutate_and_judge("letter R", compile_model("samples/letter-r/letter-r.yaml"));
+}
+
 TEST(HandMutations, ShapedSheetsAndTubesRejectEveryEditThatChangesTheFabric) {
   std::mt19937_64 rng(11);
   for (int trial = 0; trial < 6; ++trial) {
