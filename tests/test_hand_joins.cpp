@@ -572,6 +572,47 @@ TEST(HandPieces, RejectsPuttingAHolderOnASpareNeedleWrongWithTheReason) {
             "p.md:8: 1 st left on the spare needle, never worked");
 }
 
+// A tube whose sts 3-4 and 7-8 wait on two holders, put on two spare needles and taken back
+// one per rnd at both ends of the two halves.
+std::string tube_taking_back_from_two_spare_needles(const std::string& puts,
+                                                    const std::string& rnd_2) {
+  return "Cast on 8 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\nSlip sts 3\u20134 of the "
+         "rnd to holder 1, sts 5\u20136 to holder 3 and sts 7\u20138 to holder 2 \u2014 2 "
+         "sts.\nPlace the 2 sts of holder 3 on the needle after the first 1 sts of the rnd, the "
+         "first st of its last rnd first \u2014 4 sts.\n" +
+         puts + "\n" + rnd_2 +
+         "\nRnd 3: Sl1 from spare, k2tog, k1, sl1 from 2nd spare, k2tog, k1.\nRnd 4: BO all "
+         "sts.\nFasten off.\n";
+}
+
+TEST(HandPieces, TwoSpareNeedlesGiveTheirStsAndRejectWrongStepsWithTheReason) {
+  const std::string puts =
+      "Put the 2 sts of holder 1 on a spare needle, the first st of its last rnd at the tip.\nPut "
+      "the 2 sts of holder 2 on a second spare needle, the first st of its last rnd at the tip.";
+  const std::string rnd_2 = "Rnd 2: Sl1 from spare, k2tog, k1, sl1 from 2nd spare, k2tog, k1.";
+  EXPECT_EQ(failure_of(tube_taking_back_from_two_spare_needles(puts, rnd_2)), "");
+  EXPECT_EQ(failure_of(tube_taking_back_from_two_spare_needles(
+                puts.substr(0, puts.find('\n')),
+                "Rnd 2: Sl1 from spare, k2tog, k1, sl1 from 2nd spare, k2tog, k1.")),
+            "p.md:6: Rnd 2: sl1 from 2nd spare: no sts wait on a second spare needle");
+  EXPECT_EQ(failure_of(tube_taking_back_from_two_spare_needles(
+                puts + "\n" +
+                    std::regex_replace(puts.substr(puts.find('\n') + 1), std::regex("holder 2"),
+                                       "holder 3"),
+                rnd_2)),
+            "p.md:7: Put the sts of holder 3 on a second spare needle: the second spare needle "
+            "still holds 2 sts");
+}
+
+// A pick-up along rows one of which worked no st (it only turned) has nothing to pick up there.
+TEST(HandPieces, APickUpAlongARowThatWorkedNoStIsRejected) {
+  EXPECT_EQ(failure_of("Cast on 4 sts.\nRow 1 (RS): Knit.\nRow 2 (WS): Turn.\nRow 3 (RS): "
+                       "Knit.\nRow 4 (WS): BO all sts.\nFasten off.\nPick up 4 sts along the right "
+                       "edge of Piece 1, one in each row from Row 1 up to Row 4.\nRow 1 (WS): BO "
+                       "all sts.\nFasten off.\n"),
+            "p.md:7: Pick up: Row 2 worked no st to pick up from");
+}
+
 std::string body_and_sleeve(const std::string& take_up) {
   return "Cast on 8 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\n"
          "Leave the 8 sts on the needle and set the yarn aside (do not cut it).\n"

@@ -262,7 +262,7 @@ class NeedleSimulator {
   // with the RS facing starts at the right; a cast-on ends where the next row starts.
   std::uint32_t pick_up_loop(const std::vector<std::uint32_t>& rows, std::uint32_t n, bool right) {
     if (n >= rows.size() || rows[n] == kNone)  // a row between the two named
-      fail(fmt::format("Pick up: the piece has no Row {} to pick up from", n));
+      fail(fmt::format("Pick up: Row {} worked no st to pick up from", n));
     Fabric& f = fab();
     const Fabric::RowWorked& row = f.rows[rows[n]];
     Side side =
