@@ -263,9 +263,9 @@ class PatternBuilder {
  private:
   PatternSection& section() { return out_.sections.back(); }
 
-  // A knitter's row ends where the yarn turns or goes on into the next round.
-  // A three-needle bind-off's yarn goes along its chain of edges as one row; one worked last
-  // in a row of the piece's own sts ends that row.
+  // A knitter's row ends where the yarn turns or goes on into the next round. A three-needle
+  // bind-off's yarn goes along its chain of edges as one row; one worked last in a row of the
+  // piece's own sts ends that row.
   void add_stitch(StitchId s) {
     row_.push_back(s);
     if (link_[s] != YarnLink::course && (g_.type[s] != T::tnbo || binds_off_in_a_row()))
@@ -332,7 +332,7 @@ class PatternBuilder {
   // (pieces on spare needles, holders) held behind it, one after another: a row of
   // "3-needle BO", not a join of two needles.
   bool binds_off_held_pieces() const {
-    if (out_.rows.size() == out_.sections.back().first_row) return false;
+    if (out_.rows.size() == out_.sections.back().first_row || binds_off_in_a_row()) return false;
     auto behind = [&](StitchId s) {
       StitchId maker = g_.loops[g_.loops_taken_by(s)[1]].maker;
       return std::pair{section_of(maker), holder_of_[maker]};
@@ -953,7 +953,7 @@ class PatternBuilder {
                      [&](const auto& l) { return bound_off_in_a_row_of_its_own(l.first); }))
       return;
     std::uint32_t last_run = static_cast<std::uint32_t>(loops.size());
-    while (loops[last_run - 1].second == loops.back().second) --last_run;
+    while (last_run > 0 && loops[last_run - 1].second == loops.back().second) --last_run;
     for (std::uint32_t i = 0; i < last_run;) {
       std::uint32_t end = i;
       while (end < last_run && loops[end].second == loops[i].second) ++end;
