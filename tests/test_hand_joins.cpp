@@ -226,6 +226,23 @@ TEST(HandGaps, AGussetLeavingItsFlapToALegIsProvenInEveryFormat) {
   EXPECT_EQ(testing::unproven_hand_formats(c), "");
 }
 
+// The flap the other way round (letter-r's): the knitter turns at the end of the rnd where the
+// model has a shift-path, and goes on down the flap's edge where it has a turn; the flap's sts
+// are the last of the rnd.
+TEST(HandGaps, AFlapWorkedBackFromTheEndOfTheRndIsProvenInEveryFormat) {
+  Compilation c = compile_knit_graph(testing::reversed_gusset_leg_graph(), "reversed gusset leg");
+  ASSERT_TRUE(c.knittability.knittable) << check_report(c);
+  std::string pattern = emit(c, "hand");
+  for (const char* line :
+       {"**Row 3 (WS):** P3, turn.\n",
+        "Slip sts 4\u20136 of the rnd to holder 1 \u2014 3 sts.\n\nPick up 2 sts along the left "
+        "edge of the flap, one in each row from Row 4 down to Row 3, onto the needle at the "
+        "beginning of the rnd.\n",
+        "Join a new yarn to the 3 sts of holder 1"})
+    EXPECT_NE(pattern.find(line), std::string::npos) << line << "\n" << pattern;
+  EXPECT_EQ(testing::unproven_hand_formats(c), "");
+}
+
 // A flap's edges are picked up into the rnd of the piece worked, each edge st once.
 TEST(HandGaps, AFlapsEdgeIsPickedUpOnceIntoTheRnd) {
   std::string flap =

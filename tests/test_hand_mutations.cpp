@@ -429,6 +429,8 @@ TEST(HandMutations, DecreasesAcrossAGapRejectEveryEditThatChangesTheFabric) {
                    compile_knit_graph(testing::gusset_graph(), "gusset"));
   mutate_and_judge("gusset leg (the flap's sts to a holder, a new yarn)",
                    compile_knit_graph(testing::gusset_leg_graph(), "gusset leg"));
+  mutate_and_judge("reversed gusset leg (a flap worked back from the end of the rnd)",
+                   compile_knit_graph(testing::reversed_gusset_leg_graph(), "reversed gusset leg"));
 }
 
 TEST(HandMutations, JoinsRejectEveryEditThatChangesTheFabric) {

@@ -715,8 +715,9 @@ class FrontMatter {
           "together with the first st of the back needle; if there is a st before it on the "
           "right needle, pass that one over it; rep from * as many times as said. Work the next "
           "st as the pattern says and pass the last pair over it: it is the first st of what "
-          "follows (as when binding off part of a row). With more than one needle held, bind "
-          "off from them in the order they were held.");
+          "follows (as when binding off part of a row; where nothing follows, the pattern "
+          "fastens off the last st). With more than one needle held, bind off from them in the "
+          "order they were held.");
     if (uses(HandOp::bo))
       items.push_back(
           "**Binding off (BO):** work 2 sts as they appear, *pass the first st on the "
