@@ -397,6 +397,61 @@ KnitGraph gusset_graph() {
   return std::move(t.g);
 }
 
+KnitGraph reversed_gusset_leg_graph() {
+  using T = StitchType;
+  KnitGraph g = tube_with_flap("reversed gusset leg");
+  g.row_shape.insert(g.row_shape.begin(), RowShape::closed);  // z: a rnd before the flap's
+  g.row_shape.insert(g.row_shape.end(), {RowShape::open, RowShape::open});
+  auto row_of = [&](std::size_t n, T type, std::uint32_t row) {
+    std::vector<StitchId> made;
+    for (std::size_t i = 0; i < n; ++i) made.push_back(g.add_stitch(type, row, g.size(), 0));
+    return made;
+  };
+  auto c = row_of(6, T::co, 0), z = row_of(6, T::k, 1), a = row_of(6, T::k, 2);
+  auto b = row_of(3, T::k, 3);  // over a5, a4, a3: left to right seen from the RS
+  auto d = row_of(3, T::k, 4);  // over b2, b1, b0: right to left
+  auto e = row_of(7, T::k, 5);  // from d2, b0 (left edge); over a0..a2; from b2, d0 (right)
+  auto f = row_of(7, T::bo, 6);
+  auto h = row_of(3, T::k, 7);  // the leg, with a yarn of its own: over d0..d2
+  auto j = row_of(3, T::bo, 8);
+  auto link = [&](std::vector<StitchId> order) {
+    for (std::size_t i = 0; i + 1 < order.size(); ++i) {
+      g.yarn_next[order[i]] = order[i + 1];
+      g.yarn_link[order[i]] = YarnLink::course;
+    }
+  };
+  std::vector<StitchId> yarn;
+  for (const auto* run : {&c, &z, &a, &b, &d, &e, &f})
+    yarn.insert(yarn.end(), run->begin(), run->end());
+  link(yarn);
+  link({h[0], h[1], h[2], j[2], j[1], j[0]});
+  auto loop = [&](StitchId maker, StitchId taker, std::uint8_t slot, LoopKind kind) {
+    g.loops.push_back({maker, taker, kind, slot, 0});
+  };
+  const LoopKind w = LoopKind::wale, across = LoopKind::perpendicular;
+  for (int i = 0; i < 6; ++i) loop(c[i], z[i], 0, w);
+  for (int i = 0; i < 6; ++i) loop(z[i], a[i], 0, w);
+  for (int i = 0; i < 3; ++i) loop(a[5 - i], b[i], 0, w);
+  // The flap's left edge is b0 and d2 (their loop across it first), its right b2 and d0.
+  loop(b[2], d[0], 0, w);
+  loop(b[1], d[1], 0, w);
+  loop(b[0], d[2], 1, w);
+  loop(d[2], e[0], 0, across);
+  loop(b[0], e[1], 0, across);
+  for (int i = 0; i < 3; ++i) loop(a[i], e[i + 2], 0, w);
+  loop(b[2], e[5], 1, across);
+  loop(d[0], e[6], 1, across);
+  for (int i = 0; i < 7; ++i) loop(e[i], f[i], 0, w);
+  loop(d[0], h[0], 0, w);
+  loop(d[1], h[1], 0, w);
+  loop(d[2], h[2], 1, w);
+  for (int i = 0; i < 3; ++i) loop(h[i], j[i], 0, w);
+  for (StitchId s : {c[5], z[5], a[5], e[6]}) g.yarn_link[s] = YarnLink::shift;
+  for (StitchId s : {b[2], d[2], h[2]}) g.yarn_link[s] = YarnLink::turn;
+  g.index_loops();
+  return g;
+}
+
 KnitGraph gusset_leg_graph() {
   GussetFlap t("gusset leg");
   t.g.row_shape.insert(t.g.row_shape.end(), {RowShape::open, RowShape::open});

@@ -80,6 +80,14 @@ KnitGraph gusset_graph();
 // (d0..d2) to a new yarn that works them in a row and binds them off.
 KnitGraph gusset_leg_graph();
 
+// The gusset leg's flap the other way round (as letter-r's), after two rnds (z, a) of 6 sts:
+// its first row (b) goes back over
+// the rnd's last 3 sts from a5, linked to it by a shift-path, and its last row (d) ends at the
+// beginning of the rnd, where the rnd over the flap goes on down its edge (d2, b0), knits
+// a0..a2 and picks up the other edge (b2, d0), linked to it by a turn. The flap's sts go on
+// with a new yarn in a row, bound off.
+KnitGraph reversed_gusset_leg_graph();
+
 // A flat strip joined to work in the rnd: 3 sts cast on flat, 2 rows (b, then d back); a rnd
 // of the same yarn that picks up along the strip's left edge (d2, b2) and right edge (b0, d0)
 // only, then binds off; the strip's sts (d0..d2) go on with a new yarn in a row, bound off.

@@ -226,6 +226,23 @@ TEST(HandGaps, AGussetLeavingItsFlapToALegIsProvenInEveryFormat) {
   EXPECT_EQ(testing::unproven_hand_formats(c), "");
 }
 
+// The flap the other way round (letter-r's): the knitter turns at the end of the rnd where the
+// model has a shift-path, and goes on down the flap's edge where it has a turn; the flap's sts
+// are the last of the rnd.
+TEST(HandGaps, AFlapWorkedBackFromTheEndOfTheRndIsProvenInEveryFormat) {
+  Compilation c = compile_knit_graph(testing::reversed_gusset_leg_graph(), "reversed gusset leg");
+  ASSERT_TRUE(c.knittability.knittable) << check_report(c);
+  std::string pattern = emit(c, "hand");
+  for (const char* line :
+       {"**Row 3 (WS):** P3, turn.\n",
+        "Slip sts 4\u20136 of the rnd to holder 1 \u2014 3 sts.\n\nPick up 2 sts along the left "
+        "edge of the flap, one in each row from Row 4 down to Row 3, onto the needle at the "
+        "beginning of the rnd.\n",
+        "Join a new yarn to the 3 sts of holder 1"})
+    EXPECT_NE(pattern.find(line), std::string::npos) << line << "\n" << pattern;
+  EXPECT_EQ(testing::unproven_hand_formats(c), "");
+}
+
 // A flap's edges are picked up into the rnd of the piece worked, each edge st once.
 TEST(HandGaps, AFlapsEdgeIsPickedUpOnceIntoTheRnd) {
   std::string flap =
@@ -453,6 +470,30 @@ TEST(HandPieces, TheLetterHIsProvenInEveryFormat) {
        "sts at the widest. 24 short rows (worked on part of the sts), no whole rnds.\n"});
 }
 
+// The letter R: a flap worked back from the end of a rnd (the model's shift-path there is a
+// turn, its turn after the flap a shift down the flap's edge), rnds worked with the WS facing,
+// a last rnd shared out to holders, a three-needle bind-off in the middle of a piece's work
+// said before its rnd, two spare needles at once, a new yarn joined in the rnd on a chain, and
+// a last rnd bound off with two pieces held behind it.
+TEST(HandPieces, TheLetterRIsProvenInEveryFormat) {
+  expect_written_and_proven(
+      "samples/letter-r/letter-r.yaml",
+      {"**Row 20 (WS):** P10, p DS, p17, turn.\n\n**Row 21 (RS):** K21, turn.\n",
+       "**Rnd 28 (WS):** Purl.\n\nSlip sts 8\u201328 of the rnd to holder 1 \u2014 7 sts.\n",
+       "Slip sts 1\u20138 of the rnd to holder 2, sts 9\u201315 to holder 3 and sts 16\u201323 to "
+       "holder 4 \u2014 7 sts.\n\nLeave the 7 sts on a spare needle and cut the yarn.\n",
+       "Hold the 7 sts of holder 3 behind the needle, the last st of its last row at the "
+       "tip.\n\n**Rnd 20:** K3, k DS, k to last 7 sts, 3-needle BO 7 sts \u2014 21 sts.\n",
+       "Put the 8 sts of holder 4 on a second spare needle, the first st of its last rnd at the "
+       "tip.\n\n**Row 21 (RS):** Sl1 from spare behind, k2tog, k19, sl1 from 2nd spare, k2tog, "
+       "turn.\n",
+       "Join a new yarn to the 7 loops of Piece 1's chain, the last st cast on at the tip. Pm and "
+       "join to work in the rnd, being careful not to twist.\n",
+       "Hold the 7 sts of Piece 1 behind the needle, the last st of its last row at the tip. Hold "
+       "the 21 sts of Piece 2 behind the needle, the first st of its last row at the "
+       "tip.\n\n**Rnd 51:** 3-needle BO 28 sts.\n\nFasten off.\n"});
+}
+
 // A tube whose last 2 sts wait on a holder and go back on its spare needle before the fold.
 std::string fold_with_held_sts(const std::string& place) {
   return "Cast on 6 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\nSlip sts 5\u20136 of "
@@ -546,6 +587,47 @@ TEST(HandPieces, RejectsPuttingAHolderOnASpareNeedleWrongWithTheReason) {
       "p.md:5: Put the sts of holder 2 on a spare needle: the spare needle still holds 2 sts");
   EXPECT_EQ(failure_of(tube_taking_back_one_at_a_time(slip, put, "Rnd 3: Knit.")),
             "p.md:8: 1 st left on the spare needle, never worked");
+}
+
+// A tube whose sts 3-4 and 7-8 wait on two holders, put on two spare needles and taken back
+// one per rnd at both ends of the two halves.
+std::string tube_taking_back_from_two_spare_needles(const std::string& puts,
+                                                    const std::string& rnd_2) {
+  return "Cast on 8 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\nSlip sts 3\u20134 of the "
+         "rnd to holder 1, sts 5\u20136 to holder 3 and sts 7\u20138 to holder 2 \u2014 2 "
+         "sts.\nPlace the 2 sts of holder 3 on the needle after the first 1 sts of the rnd, the "
+         "first st of its last rnd first \u2014 4 sts.\n" +
+         puts + "\n" + rnd_2 +
+         "\nRnd 3: Sl1 from spare, k2tog, k1, sl1 from 2nd spare, k2tog, k1.\nRnd 4: BO all "
+         "sts.\nFasten off.\n";
+}
+
+TEST(HandPieces, TwoSpareNeedlesGiveTheirStsAndRejectWrongStepsWithTheReason) {
+  const std::string puts =
+      "Put the 2 sts of holder 1 on a spare needle, the first st of its last rnd at the tip.\nPut "
+      "the 2 sts of holder 2 on a second spare needle, the first st of its last rnd at the tip.";
+  const std::string rnd_2 = "Rnd 2: Sl1 from spare, k2tog, k1, sl1 from 2nd spare, k2tog, k1.";
+  EXPECT_EQ(failure_of(tube_taking_back_from_two_spare_needles(puts, rnd_2)), "");
+  EXPECT_EQ(failure_of(tube_taking_back_from_two_spare_needles(
+                puts.substr(0, puts.find('\n')),
+                "Rnd 2: Sl1 from spare, k2tog, k1, sl1 from 2nd spare, k2tog, k1.")),
+            "p.md:6: Rnd 2: sl1 from 2nd spare: no sts wait on a second spare needle");
+  EXPECT_EQ(failure_of(tube_taking_back_from_two_spare_needles(
+                puts + "\n" +
+                    std::regex_replace(puts.substr(puts.find('\n') + 1), std::regex("holder 2"),
+                                       "holder 3"),
+                rnd_2)),
+            "p.md:7: Put the sts of holder 3 on a second spare needle: the second spare needle "
+            "still holds 2 sts");
+}
+
+// A pick-up along rows one of which worked no st (it only turned) has nothing to pick up there.
+TEST(HandPieces, APickUpAlongARowThatWorkedNoStIsRejected) {
+  EXPECT_EQ(failure_of("Cast on 4 sts.\nRow 1 (RS): Knit.\nRow 2 (WS): Turn.\nRow 3 (RS): "
+                       "Knit.\nRow 4 (WS): BO all sts.\nFasten off.\nPick up 4 sts along the right "
+                       "edge of Piece 1, one in each row from Row 1 up to Row 4.\nRow 1 (WS): BO "
+                       "all sts.\nFasten off.\n"),
+            "p.md:7: Pick up: Row 2 worked no st to pick up from");
 }
 
 std::string body_and_sleeve(const std::string& take_up) {

@@ -429,6 +429,8 @@ TEST(HandMutations, DecreasesAcrossAGapRejectEveryEditThatChangesTheFabric) {
                    compile_knit_graph(testing::gusset_graph(), "gusset"));
   mutate_and_judge("gusset leg (the flap's sts to a holder, a new yarn)",
                    compile_knit_graph(testing::gusset_leg_graph(), "gusset leg"));
+  mutate_and_judge("reversed gusset leg (a flap worked back from the end of the rnd)",
+                   compile_knit_graph(testing::reversed_gusset_leg_graph(), "reversed gusset leg"));
 }
 
 TEST(HandMutations, JoinsRejectEveryEditThatChangesTheFabric) {
@@ -464,6 +466,13 @@ TEST(HandMutations, HoldersRejectEveryEditThatChangesTheFabric) {
 TEST(HandMutations, TheLetterHRejectsEveryEditThatChangesTheFabric) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
   mutate_and_judge("letter H", compile_model("samples/letter-h/letter-h.yaml"));
+}
+
+// The letter R: a three-needle bind-off said before a rnd in the middle of a piece's work,
+// two spare needles at once, a last rnd bound off with two pieces held behind it.
+TEST(HandMutations, TheLetterRRejectsEveryEditThatChangesTheFabric) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  mutate_and_judge("letter R", compile_model("samples/letter-r/letter-r.yaml"));
 }
 
 TEST(HandMutations, ShapedSheetsAndTubesRejectEveryEditThatChangesTheFabric) {

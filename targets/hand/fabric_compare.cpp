@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "driver/pipeline.hpp"
+#include "hand/pattern_model.hpp"
 
 namespace skein::hand {
 namespace {
@@ -29,7 +30,12 @@ std::string ordinal(std::size_t n) {
 class Comparison {
  public:
   Comparison(const Fabric& f, const Compilation& c, bool mirror)
-      : f_(f), g_(c.knit), c_(c), mirror_(mirror), model_of_(f.size(), kNoStitch) {}
+      : f_(f),
+        g_(c.knit),
+        c_(c),
+        link_(knitter_links(c.knit)),
+        mirror_(mirror),
+        model_of_(f.size(), kNoStitch) {}
 
   std::optional<Difference> run() {
     if (auto d = pair_yarns()) return d;
@@ -78,9 +84,9 @@ class Comparison {
 
   std::optional<Difference> compare_stitch(std::uint32_t x) {
     StitchId s = model_of_[x];
-    if (f_.yarn_link[x] != g_.yarn_link[s])
+    if (f_.yarn_link[x] != link_[s])
       return differ(x, fmt::format("the pattern {} after it, the model {}",
-                                   link_words(f_.yarn_link[x]), link_words(g_.yarn_link[s])));
+                                   link_words(f_.yarn_link[x]), link_words(link_[s])));
     StitchType want = mirror_ ? mirrored(g_.type[s]) : g_.type[s];
     if (f_.type[x] != want) {
       std::optional<Difference> d = differ(
@@ -122,6 +128,7 @@ class Comparison {
   const Fabric& f_;
   const KnitGraph& g_;
   const Compilation& c_;
+  const std::vector<YarnLink> link_;  // as a knitter works them (knitter_links)
   bool mirror_;
   std::vector<StitchId> model_of_;
 };

@@ -76,6 +76,13 @@ constexpr std::array kOps{
   HandOpInfo{O::from_spare_behind, "sl1 from spare behind", "slip the next st waiting on the "
                                 "spare needle onto the left needle behind its first st (the two "
                                 "are worked together, that one first)", 0, 0},
+  HandOpInfo{O::from_second_spare, "sl1 from 2nd spare", "slip the next st waiting on the "
+                                "second spare needle onto the left needle (it is worked next)",
+                                0, 0},
+  HandOpInfo{O::from_second_spare_behind, "sl1 from 2nd spare behind", "slip the next st "
+                                "waiting on the second spare needle onto the left needle behind "
+                                "its first st (the two are worked together, that one first)",
+                                0, 0},
   HandOpInfo{O::slip_back, "sl1 back", "slip the st at the tip of the right needle back to the "
                                 "left needle (it is worked next, across the gap)", 0, 0},
 };

@@ -62,6 +62,9 @@ enum class HandOp : std::uint8_t {
   // the next st waiting on the spare needle goes onto the left needle, to be worked next.
   from_spare,
   from_spare_behind,  // ... behind the first st of the left needle (worked second)
+  // The same from a second spare needle, where two wait at once (at the two edges of rows).
+  from_second_spare,
+  from_second_spare_behind,
   // A row that decreases across a gap into a st of its own needle worked before it (a heel
   // turn's st on the other side of the gap): that st goes back from the right needle's tip to
   // the left needle's, to be worked next.

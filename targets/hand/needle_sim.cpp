@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <map>
 
 namespace skein::hand {
@@ -260,6 +261,8 @@ class NeedleSimulator {
   // The loop picked up at the right (or left) edge of a row, seen from the RS: a row worked
   // with the RS facing starts at the right; a cast-on ends where the next row starts.
   std::uint32_t pick_up_loop(const std::vector<std::uint32_t>& rows, std::uint32_t n, bool right) {
+    if (n >= rows.size() || rows[n] == kNone)  // a row between the two named
+      fail(fmt::format("Pick up: Row {} worked no st to pick up from", n));
     Fabric& f = fab();
     const Fabric::RowWorked& row = f.rows[rows[n]];
     Side side =
@@ -294,6 +297,7 @@ class NeedleSimulator {
     row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
     pc_.right.assign(loops.rbegin(), loops.rend());
     pc_.live = s.count;
+    pc_.on_spare_sts = true;
   }
 
   // A new piece with its own yarn and needles.
@@ -313,6 +317,8 @@ class NeedleSimulator {
       fail("Join to work in the rnd: only right after a cast-on");
     pc_.joined = true;
     pc_.turn_before = false;  // the first rnd starts with the first st cast on
+    // ... or, joined to sts waiting elsewhere, with the st at the tip.
+    if (pc_.on_spare_sts) std::reverse(pc_.right.begin(), pc_.right.end());
     pc_.place_bor = marker;
   }
 
@@ -432,17 +438,21 @@ class NeedleSimulator {
   }
 
   // A holder's sts go on the spare needle that "sl1 from spare" takes from.
+  // (Where two wait at once, the second goes on a second spare needle.)
   void put_on_spare_needle(const Step& s) {
-    if (!spare_for_rows_.empty())
+    std::vector<std::uint32_t>& spare = spare_for_rows_[s.last];
+    if (!spare.empty())
       fail(
-          fmt::format("Put the sts of holder {} on a spare needle: the spare needle still holds {}",
-                      s.number, sts(static_cast<std::uint32_t>(spare_for_rows_.size()))));
+          fmt::format("Put the sts of holder {} on a {}spare needle: the {}spare needle still "
+                      "holds {}",
+                      s.number, s.last ? "second " : "", s.last ? "second " : "",
+                      sts(static_cast<std::uint32_t>(spare.size()))));
     std::vector<std::uint32_t> loops = held(s.number, s.from_last[0], "Put the sts");
     if (loops.size() != s.count)
       fail(fmt::format("Put the sts of holder {}: the pattern says {}, but it holds {}", s.number,
                        sts(s.count), loops.size()));
     holders_.erase(s.number);
-    spare_for_rows_ = std::move(loops);
+    spare = std::move(loops);
   }
 
   // Sts A–B of the rnd, counted from the beginning-of-round marker, go to a holder of their
@@ -648,9 +658,10 @@ class NeedleSimulator {
                       spare_needles_.begin()->first.second == kChain ? "chain" : "sts",
                       spare_needles_.begin()->first.first,
                       spare_needles_.begin()->first.second == kChain ? "is" : "are")};
-    if (!spare_for_rows_.empty())
-      throw StepFailure{fmt::format("{} left on the spare needle, never worked",
-                                    sts(static_cast<std::uint32_t>(spare_for_rows_.size())))};
+    for (const std::vector<std::uint32_t>& spare : spare_for_rows_)
+      if (!spare.empty())
+        throw StepFailure{fmt::format("{} left on the spare needle, never worked",
+                                      sts(static_cast<std::uint32_t>(spare.size())))};
     if (!holders_.empty())
       throw StepFailure{fmt::format("the sts of holder {} are left on it, never worked",
                                     holders_.begin()->first)};
@@ -1001,6 +1012,10 @@ class NeedleSimulator {
       case HandOp::from_spare_behind:
         slip_from_spare(op == HandOp::from_spare_behind);
         return;
+      case HandOp::from_second_spare:
+      case HandOp::from_second_spare_behind:
+        slip_from_second_spare(op == HandOp::from_second_spare_behind);
+        return;
       case HandOp::provisional_co:
         provisional_cast_on_in_row();
         return;
@@ -1087,24 +1102,37 @@ class NeedleSimulator {
   // The next st of the one piece waiting on a spare needle (in the order its last row worked
   // them) joins the work at the tip of the left needle.
   void slip_from_spare(bool behind) {
-    if (spare_for_rows_.empty() && spare_needles_.size() != 1)
+    if (spare_for_rows_[0].empty() && spare_needles_.size() != 1)
       fail(fmt::format("sl1 from spare: {} pieces wait on spare needles; which one is meant?",
                        spare_needles_.size()));
+    // The spare needle a holder was put on, or else the one piece waiting on a spare needle.
+    bool holder = !spare_for_rows_[0].empty();
+    std::vector<std::uint32_t>& spare =
+        holder ? spare_for_rows_[0] : spare_needles_.begin()->second;
+    slip_onto_left_needle(spare, behind, "sl1 from spare");
+    if (spare.empty() && !holder) spare_needles_.clear();
+  }
+
+  // "sl1 from 2nd spare": from the second of two holders put on spare needles.
+  void slip_from_second_spare(bool behind) {
+    if (spare_for_rows_[1].empty())
+      fail("sl1 from 2nd spare: no sts wait on a second spare needle");
+    slip_onto_left_needle(spare_for_rows_[1], behind, "sl1 from 2nd spare");
+  }
+
+  // The spare needle's next st goes to the tip of the left needle, or behind the st there.
+  void slip_onto_left_needle(std::vector<std::uint32_t>& spare, bool behind, const char* what) {
     std::uint32_t first = kNone;
     if (behind) {
       if (pc_.left.empty() || is_marker_entry(pc_.left.back()))
-        fail("sl1 from spare behind: there is no st on the left needle to slip it behind");
+        fail(fmt::format("{} behind: there is no st on the left needle to slip it behind", what));
       first = pc_.left.back();
       pc_.left.pop_back();
       --left_loops_;
     }
-    // The spare needle a holder was put on, or else the one piece waiting on a spare needle.
-    bool holder = !spare_for_rows_.empty();
-    std::vector<std::uint32_t>& spare = holder ? spare_for_rows_ : spare_needles_.begin()->second;
     push_left(spare.front());
     if (behind) push_left(first);
     spare.erase(spare.begin());
-    if (spare.empty() && !holder) spare_needles_.clear();
     ++pc_.live;
   }
 
@@ -1307,7 +1335,8 @@ class NeedleSimulator {
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> spare_needles_;
   std::vector<std::uint32_t> held_behind_;  // for "3-needle BO", the next at the front
   std::map<std::uint32_t, std::vector<std::uint32_t>> holders_;  // by holder number
-  std::vector<std::uint32_t> spare_for_rows_;  // a holder's sts that sl1 from spare takes
+  // Holders' sts that sl1 from spare (and sl1 from 2nd spare) take.
+  std::array<std::vector<std::uint32_t>, 2> spare_for_rows_;
 
   // Per loop: whether a short row turned at it, and how.
   static constexpr std::uint8_t kPlainLoop = 0, kWrapped = 1, kDouble = 2;
@@ -1317,7 +1346,8 @@ class NeedleSimulator {
   struct Piece {
     std::uint32_t number = 0;  // 1-based, in the order the pieces start
     bool joined = false, place_bor = false;
-    bool turn_before = true;  // the next row starts by turning the work
+    bool turn_before = true;    // the next row starts by turning the work
+    bool on_spare_sts = false;  // started on sts waiting elsewhere (not cast on)
     std::uint32_t bor = kNone;
     std::uint32_t next_number = 1;
     std::optional<Side> last_side;

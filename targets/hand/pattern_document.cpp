@@ -86,33 +86,50 @@ class InstructionWriter {
   bool knitspeak() const { return dialect_ == Dialect::knitspeak; }
 
   std::string setup_text(const PatternSection& sec) const {
-    return first_setup_text(sec) + hold_text(sec);
+    return first_setup_text(sec) + hold_text(sec, sec.first_row);
+  }
+
+  // Sts held behind for a row in the middle of the work, on a line of their own before it.
+  void write_holds_before(std::uint32_t row) {
+    std::string text = hold_text(p_.sections[section_], row);
+    if (!text.empty()) add(InstructionLine::Kind::setup, "", text.substr(1));
+  }
+
+  bool hold_before(std::uint32_t row) const {
+    const auto& holds = p_.sections[section_].holds;
+    return std::any_of(holds.begin(), holds.end(),
+                       [&](const PatternSection::Hold& h) { return h.before_row == row; });
   }
 
   // " Hold the 3 sts of Piece 2 behind the needle, the first st of its last row at the tip."
-  std::string hold_text(const PatternSection& sec) const {
+  std::string hold_text(const PatternSection& sec, std::uint32_t row) const {
     std::string text;
     for (const PatternSection::Hold& h : sec.holds)
-      text +=
-          fmt::format(" Hold the {} of {} behind the needle, the {} st of its last row at the tip.",
-                      sts(h.count),
-                      h.holder ? fmt::format("holder {}", h.holder)
-                               : fmt::format("Piece {}", p_.sections[h.section].piece),
-                      h.from_last ? "last" : "first");
+      if (h.before_row == row)
+        text += fmt::format(
+            " Hold the {} of {} behind the needle, the {} st of its last row at the tip.",
+            sts(h.count),
+            h.holder ? fmt::format("holder {}", h.holder)
+                     : fmt::format("Piece {}", p_.sections[h.section].piece),
+            h.from_last ? "last" : "first");
     return text;
   }
 
   std::string first_setup_text(const PatternSection& sec) const {
     if (sec.resumed) return take_up_text(sec);
-    if (sec.starts_from) return join_spare_text(*sec.starts_from);
+    if (sec.starts_from) return join_spare_text(*sec.starts_from) + join_round_text(sec);
     if (sec.picks_up) return pick_up_text(*sec.picks_up, sec.cast_on);
-    std::string text = fmt::format("Cast on {}{}.", sts(sec.cast_on),
-                                   sec.provisional ? " with a provisional cast-on" : "");
-    if (sec.in_round)
-      text +=
-          fmt::format(" Pm and join to work in the rnd{}, being careful not to twist.",
-                      starts_inside_out(sec) ? " with the WS facing (the tube inside out)" : "");
-    return text;
+    return fmt::format("Cast on {}{}.", sts(sec.cast_on),
+                       sec.provisional ? " with a provisional cast-on" : "") +
+           join_round_text(sec);
+  }
+
+  // " Pm and join to work in the rnd, being careful not to twist." after the cast-on (or the
+  // new yarn joined to another piece's sts) of a piece worked in the rnd.
+  std::string join_round_text(const PatternSection& sec) const {
+    if (!sec.in_round) return "";
+    return fmt::format(" Pm and join to work in the rnd{}, being careful not to twist.",
+                       starts_inside_out(sec) ? " with the WS facing (the tube inside out)" : "");
   }
 
   bool starts_inside_out(const PatternSection& sec) const {
@@ -199,9 +216,9 @@ class InstructionWriter {
       return fmt::format("{}, onto the needle {}.", pick_up_words(*p.edge, p.count), where);
     if (p.to_spare)
       return fmt::format(
-          "Put the {} sts of holder {} on a spare needle, the {} st of its last rnd "
+          "Put the {} sts of holder {} on a {}spare needle, the {} st of its last rnd "
           "at the tip.",
-          p.count, p.holder, p.from_last ? "last" : "first");
+          p.count, p.holder, p.second_spare ? "second " : "", p.from_last ? "last" : "first");
     bool cast_on = p.holder == 0 && (p.chain || spare.first_row == spare.end_row);
     std::string which = cast_on          ? "cast on"
                         : spare.in_round ? "of its last rnd"
@@ -322,8 +339,9 @@ class InstructionWriter {
     return fmt::format("{} {} ({})", word, r.number, side_name(r.side));
   }
 
+  // None left (a row that binds off its last sts with held ones): the fasten-off says so.
   static std::string count_after(std::uint32_t before, std::uint32_t after) {
-    return before == after ? "" : fmt::format(" {} {} sts", kDash, after);
+    return before == after || after == 0 ? "" : fmt::format(" {} {} sts", kDash, after);
   }
 
   // The longest-covering block of rows starting at `i` that repeats, as (rows, times).
@@ -352,9 +370,12 @@ class InstructionWriter {
   void write_rows(std::uint32_t first, std::uint32_t end) {
     for (std::uint32_t i = first; i < end;) {
       std::uint32_t stop = i + 1;
-      while (stop < end && !placement_before(stop) && !holding_after(stop - 1)) ++stop;
+      while (stop < end && !placement_before(stop) && !holding_after(stop - 1) &&
+             !hold_before(stop))
+        ++stop;
       // A piece taken up again places its first ones as it is taken up.
       if (i != first || !p_.sections[section_].resumed) write_placements_before(i);
+      if (i != first) write_holds_before(i);
       write_row_run(first, i, stop);
       write_holdings_after(stop - 1);
       i = stop;
@@ -694,8 +715,9 @@ class FrontMatter {
           "together with the first st of the back needle; if there is a st before it on the "
           "right needle, pass that one over it; rep from * as many times as said. Work the next "
           "st as the pattern says and pass the last pair over it: it is the first st of what "
-          "follows (as when binding off part of a row). With more than one needle held, bind "
-          "off from them in the order they were held.");
+          "follows (as when binding off part of a row; where nothing follows, the pattern "
+          "fastens off the last st). With more than one needle held, bind off from them in the "
+          "order they were held.");
     if (uses(HandOp::bo))
       items.push_back(
           "**Binding off (BO):** work 2 sts as they appear, *pass the first st on the "

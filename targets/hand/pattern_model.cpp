@@ -47,14 +47,51 @@ void check_supported(const Compilation& c) {
   }
 }
 
+// Does `taker` work a loop of the kind that `maker` made?
+bool works_a_loop_of(const KnitGraph& g, StitchId taker, StitchId maker, LoopKind kind) {
+  if (taker == kNoStitch || maker == kNoStitch) return false;
+  auto taken = g.loops_taken_by(taker);
+  return std::any_of(taken.begin(), taken.end(), [&](std::uint32_t l) {
+    return g.loops[l].maker == maker && g.loops[l].kind == kind;
+  });
+}
+
+bool works_the_wale_of(const KnitGraph& g, StitchId taker, StitchId maker) {
+  return works_a_loop_of(g, taker, maker, LoopKind::wale);
+}
+
+// Does the stitch after `s` pick up the loop `s` makes across the edge (a gusset's rnd going
+// on from the last row of its flap, down the flap's edge), not work its wale?
+bool picks_up_along_its_edge_next(const KnitGraph& g, StitchId s) {
+  StitchId next = g.yarn_next[s];
+  return works_a_loop_of(g, next, s, LoopKind::perpendicular) && !works_the_wale_of(g, next, s);
+}
+
+// Do the two stitches after `s` (after `before`, the one before it) along the yarn work the
+// loops of `s` and of `before`: does the yarn go back over the sts just made?
+bool goes_back_over_the_sts_just_made(const KnitGraph& g, StitchId before, StitchId s) {
+  StitchId next = g.yarn_next[s];
+  return next != kNoStitch && works_the_wale_of(g, next, s) &&
+         works_the_wale_of(g, g.yarn_next[next], before);
+}
+
+// Per model row: does it hold both three-needle bind-off sts and others?
+std::vector<std::uint8_t> rows_binding_off_among_own_sts(const KnitGraph& g) {
+  std::vector<std::uint8_t> kinds(g.row_shape.size(), 0);  // bit 0: tnbo; bit 1: other
+  for (StitchId s = 0; s < g.size(); ++s) kinds[g.row[s]] |= g.type[s] == T::tnbo ? 1 : 2;
+  for (std::uint8_t& k : kinds) k = k == 3;
+  return kinds;
+}
+
 // Which way each row runs seen from the RS. Along one yarn piece a turn reverses the
 // direction and a shift-path keeps it, so one bit per piece remains: the direction of its
 // first row. Two loops side by side in one stitch (slots count left to right) that were made,
 // or are taken, by two stitches of one row tell which way that row ran.
 class Handedness {
  public:
-  explicit Handedness(const Compilation& c)
+  Handedness(const Compilation& c, const std::vector<YarnLink>& links)
       : g_(c.knit),
+        link_(links),
         y_(c.yarns),
         pos_(g_.size(), 0),
         reversed_(g_.size(), 0),
@@ -71,10 +108,13 @@ class Handedness {
     for (std::uint32_t p = 0; p < y_.size(); ++p) {
       std::uint8_t reversed = 0;
       StitchId s = y_.first[p];
+      bool row_starts = true;
       for (std::uint32_t i = 0; i < y_.length[p]; ++i, s = g_.yarn_next[s]) {
         pos_[s] = i;
         reversed_[s] = reversed;
-        if (g_.yarn_link[s] == YarnLink::turn) reversed ^= 1;
+        first_in_row_[s] = row_starts;
+        row_starts = link_[s] != YarnLink::course;
+        if (link_[s] == YarnLink::turn) reversed ^= 1;
       }
     }
   }
@@ -83,12 +123,12 @@ class Handedness {
   // are neighbours whose order along the yarn says nothing of left and right.
   bool meet_across_the_start_of_a_rnd(StitchId a, StitchId b) const {
     bool side_by_side = pos_[a] + 1 == pos_[b] || pos_[b] + 1 == pos_[a];
-    return !side_by_side &&
-           (g_.yarn_link[a] == YarnLink::shift || g_.yarn_link[b] == YarnLink::shift);
+    return !side_by_side && (link_[a] == YarnLink::shift || link_[b] == YarnLink::shift);
   }
 
   void decide_first_rows() {
     std::vector<std::array<std::uint32_t, 2>> votes(y_.size(), {0, 0});
+    std::vector<std::array<std::uint32_t, 2>> edge_votes(y_.size(), {0, 0});
     auto observe = [&](StitchId left, StitchId right) {
       if (left == right || left == kNoStitch || right == kNoStitch) return;
       std::uint32_t p = y_.piece_of[left];
@@ -105,8 +145,10 @@ class Handedness {
       auto made = g_.loops_made_by(s);
       for (std::size_t i = 1; i < made.size(); ++i)
         observe(g_.loops[made[i - 1]].taker, g_.loops[made[i]].taker);
+      observe_edge(s, edge_votes);
     }
     for (std::uint32_t p = 0; p < y_.size(); ++p) {
+      if (!votes[p][0] && !votes[p][1]) votes[p] = edge_votes[p];
       if (votes[p][0] && votes[p][1])
         unsupported(
             fmt::format("the loops of yarn {} do not keep one left-to-right order, so "
@@ -123,6 +165,23 @@ class Handedness {
     }
   }
 
+  // An edge st that makes a loop across the edge beside its own (picked up by another row)
+  // has that loop on the side of the edge it is at: the first st of a row at the right edge,
+  // or its last at the left, says the row runs left to right seen from the RS (or the other
+  // way). Heard only for a piece whose sts tell nothing else (letter-r's flap).
+  void observe_edge(StitchId s, std::vector<std::array<std::uint32_t, 2>>& votes) const {
+    auto made = g_.loops_made_by(s);
+    if (made.size() != 2) return;
+    const Loop &a = g_.loops[made[0]], &b = g_.loops[made[1]];
+    if ((a.kind == LoopKind::perpendicular) == (b.kind == LoopKind::perpendicular)) return;
+    bool first = first_in_row_[s], last = link_[s] != YarnLink::course;
+    if (first == last) return;
+    const Loop& across = a.kind == LoopKind::perpendicular ? a : b;
+    bool on_the_right = across.maker_slot == 1;
+    bool lr = on_the_right == last;
+    ++votes[y_.piece_of[s]][lr != static_cast<bool>(reversed_[s])];
+  }
+
   // A loop taken across a perpendicular edge comes from beyond a gap (in the rnd, from across
   // the beginning of the rnd): it is not side by side with the other in its row.
   bool across_a_gap(std::uint32_t loop) const {
@@ -130,9 +189,11 @@ class Handedness {
   }
 
   const KnitGraph& g_;
+  const std::vector<YarnLink>& link_;
   const YarnPieces& y_;
   std::vector<std::uint32_t> pos_;      // index along its yarn piece
   std::vector<std::uint8_t> reversed_;  // runs against the first row of its piece
+  std::vector<std::uint8_t> first_in_row_ = std::vector<std::uint8_t>(g_.size(), 0);
   std::vector<std::uint8_t> first_lr_;  // per piece
 };
 
@@ -154,7 +215,7 @@ bool needs_mirror(const Compilation& c, const Handedness& hand, Rounds rounds) {
 class PatternBuilder {
  public:
   PatternBuilder(const Compilation& c, TurnMethod turns, Rounds rounds)
-      : c_(c), g_(c.knit), hand_(c) {
+      : c_(c), g_(c.knit), link_(knitter_links(c.knit)), hand_(c, link_) {
     out_.source = c.input;
     out_.mirror = needs_mirror(c, hand_, rounds);
     out_.turns = turns;
@@ -202,10 +263,17 @@ class PatternBuilder {
  private:
   PatternSection& section() { return out_.sections.back(); }
 
-  // A knitter's row ends where the yarn turns or goes on into the next round.
+  // A knitter's row ends where the yarn turns or goes on into the next round. A three-needle
+  // bind-off's yarn goes along its chain of edges as one row; one worked last in a row of the
+  // piece's own sts ends that row.
   void add_stitch(StitchId s) {
     row_.push_back(s);
-    if (g_.type[s] != T::tnbo && g_.yarn_link[s] != YarnLink::course) flush_row();
+    if (link_[s] != YarnLink::course && (g_.type[s] != T::tnbo || binds_off_in_a_row()))
+      flush_row();
+  }
+
+  bool binds_off_in_a_row() const {
+    return std::any_of(row_.begin(), row_.end(), [&](StitchId s) { return g_.type[s] != T::tnbo; });
   }
 
   void start_section(std::uint32_t yarn) {
@@ -252,11 +320,31 @@ class PatternBuilder {
   }
 
   void end_section() {
-    if (!row_.empty() && g_.type[row_.front()] == T::tnbo) join_live_sections();
+    if (!row_.empty() && g_.type[row_.front()] == T::tnbo && !binds_off_held_pieces())
+      join_live_sections();
     flush_row();
     section().left_live = st_.live != 0;  // every loop is taken by another piece
     section().live_at_end = st_.live;
     section().end_row = static_cast<std::uint32_t>(out_.rows.size());
+  }
+
+  // A piece's last row that binds off its own sts with those of more than one other needle
+  // (pieces on spare needles, holders) held behind it, one after another: a row of
+  // "3-needle BO", not a join of two needles.
+  bool binds_off_held_pieces() const {
+    if (out_.rows.size() == out_.sections.back().first_row || binds_off_in_a_row()) return false;
+    auto behind = [&](StitchId s) {
+      StitchId maker = g_.loops[g_.loops_taken_by(s)[1]].maker;
+      return std::pair{section_of(maker), holder_of_[maker]};
+    };
+    auto front_yarn = [&](StitchId s) {
+      return c_.yarns.piece_of[g_.loops[g_.loops_taken_by(s)[0]].maker];
+    };
+    const std::uint32_t yarn = out_.sections.back().yarn;
+    return std::all_of(row_.begin(), row_.end(),
+                       [&](StitchId s) { return front_yarn(s) == yarn; }) &&
+           std::any_of(row_.begin(), row_.end(),
+                       [&](StitchId s) { return behind(s) != behind(row_.front()); });
   }
 
   // A yarn of three-needle bind-off stitches pairs the loops of two sections left live: the
@@ -471,7 +559,7 @@ class PatternBuilder {
       cast_on();
     else
       add_row();
-    st_.previous_link = g_.yarn_link[row_.back()];
+    st_.previous_link = link_[row_.back()];
     row_before_ = std::move(row_);
     row_.clear();
   }
@@ -490,7 +578,7 @@ class PatternBuilder {
     section().cast_on = st_.live = st_.behind = static_cast<std::uint32_t>(row_.size());
     for (StitchId s : row_) number_of_[s] = 0;
     st_.ahead = 0;
-    section().in_round = g_.yarn_link[row_.back()] == YarnLink::shift;
+    section().in_round = link_[row_.back()] == YarnLink::shift;
     st_.cast_on_done = true;
   }
 
@@ -500,6 +588,8 @@ class PatternBuilder {
     const Loop& first = g_.loops[g_.loops_taken_by(row_.front())[0]];
     if (first.kind == LoopKind::perpendicular) return start_from_pick_up();
     start_from_spare_needle(first);
+    // A first row that goes on into the next rnd joins the piece to work in the rnd.
+    section().in_round = link_[row_.back()] == YarnLink::shift;
     st_.behind = 0;
     st_.cast_on_done = true;
   }
@@ -556,8 +646,9 @@ class PatternBuilder {
   }
 
   // A three-needle bind-off in a row, worked with this piece's yarn: its st in front, the other
-  // piece's held behind on its spare needle (said before the row, so only in a piece's first
-  // row, as when it is taken up again to join another). The held st comes onto the needle.
+  // piece's held behind on its spare needle (or a holder), said before the row that works it
+  // (as the piece is taken up again to join another, or on a line of its own). The held st
+  // comes onto the needle.
   void bind_off_with_held_st(StitchId s) {
     auto taken = g_.loops_taken_by(s);
     StitchId behind = g_.loops[taken[1]].maker;
@@ -567,18 +658,13 @@ class PatternBuilder {
           fmt::format("{} is a three-needle bind-off in a row with this piece's st "
                       "behind, which is not covered yet",
                       g_.describe(s)));
-    if (out_.rows.size() != sec.first_row)
-      unsupported(
-          fmt::format("{} is a three-needle bind-off in the middle of the work, not in "
-                      "the first row after the piece is taken up, which is not covered "
-                      "yet",
-                      g_.describe(s)));
     const std::uint32_t from = section_of(behind), holder = holder_of_[behind];
     bool continues = !sec.holds.empty() && sec.holds.back().section == from &&
                      sec.holds.back().holder == holder && out_.ops.back() == HandOp::tnbo;
     if (!continues) {
       StitchId last = holder ? holders_[holder - 1].last : out_.sections[from].last_row_ends[1];
-      sec.holds.push_back({from, 0, behind == last, s, holder});
+      sec.holds.push_back(
+          {from, 0, behind == last, s, holder, static_cast<std::uint32_t>(out_.rows.size())});
     }
     ++sec.holds.back().count;
     out_.ops.push_back(HandOp::tnbo);
@@ -780,8 +866,8 @@ class PatternBuilder {
     const std::vector<StitchId>& all = deferred_[out_.sections.back().yarn];
     std::size_t row_start = 0;
     for (std::size_t i = 0; i < all.size(); ++i) {
-      if (g_.type[all[i]] == T::tnbo || g_.yarn_link[all[i]] == YarnLink::course) continue;
-      if (row_start > 0 && g_.yarn_link[all[i]] != YarnLink::turn)
+      if (g_.type[all[i]] == T::tnbo || link_[all[i]] == YarnLink::course) continue;
+      if (row_start > 0 && link_[all[i]] != YarnLink::turn)
         return {all.begin(), all.begin() + static_cast<std::ptrdiff_t>(row_start)};
       row_start = i + 1;
     }
@@ -846,7 +932,7 @@ class PatternBuilder {
         loops.emplace_back(s, taker + (across ? 1 : joined ? 2 : 0));
       }
     if (std::none_of(loops.begin(), loops.end(), [&](const auto& l) { return l.second == own; }))
-      return;  // the whole needle waits as it is
+      return share_out_the_last_rnd(row, loops);
     for (std::uint32_t i = 0; i < loops.size(); ++i) {
       if (loops[i].second == own) continue;
       std::uint32_t end = i;
@@ -856,9 +942,43 @@ class PatternBuilder {
     }
   }
 
+  // A piece's last rnd some of whose sts another piece binds off with a three-needle
+  // bind-off in the middle of one of its rows (held behind the needle there) keeps its last
+  // run on the needle, left on a spare needle, and slips each run before it (to those rows,
+  // to rows that take them one at a time, to a join) to a holder of its own. Otherwise the
+  // whole needle waits as it is.
+  void share_out_the_last_rnd(std::uint32_t row,
+                              const std::vector<std::pair<StitchId, std::uint32_t>>& loops) {
+    if (std::none_of(loops.begin(), loops.end(),
+                     [&](const auto& l) { return bound_off_in_a_row_of_its_own(l.first); }))
+      return;
+    std::uint32_t last_run = static_cast<std::uint32_t>(loops.size());
+    while (last_run > 0 && loops[last_run - 1].second == loops.back().second) --last_run;
+    for (std::uint32_t i = 0; i < last_run;) {
+      std::uint32_t end = i;
+      while (end < last_run && loops[end].second == loops[i].second) ++end;
+      hold(row, loops, i, end);
+      i = end;
+    }
+  }
+
+  // Is the loop of `s` bound off by a three-needle bind-off in a row that works sts of its own
+  // too (not a join of whole needles)?
+  bool bound_off_in_a_row_of_its_own(StitchId s) const {
+    for (std::uint32_t l : g_.loops_made_by(s)) {
+      StitchId taker = g_.loops[l].taker;
+      if (g_.loops[l].kind == LoopKind::joined && taker != kNoStitch &&
+          rows_binding_off_among_own_sts_[g_.row[taker]])
+        return true;
+    }
+    return false;
+  }
+
   void hold(std::uint32_t row, const std::vector<std::pair<StitchId, std::uint32_t>>& loops,
             std::uint32_t first, std::uint32_t end) {
     holders_.push_back({loops[end - 1].first, end - first});
+    spare_left_.push_back(0);
+    spare_second_.push_back(0);
     auto holder = static_cast<std::uint32_t>(holders_.size());
     for (std::uint32_t i = first; i < end; ++i) holder_of_[loops[i].first] = holder;
     section().holdings.push_back({row, first + 1, end - first, holder});
@@ -866,13 +986,12 @@ class PatternBuilder {
   }
 
   void add_row() {
-    bool turns = g_.yarn_link[row_.back()] == YarnLink::turn || ends_between_turns();
+    bool turns = link_[row_.back()] == YarnLink::turn || ends_between_turns();
     bool first_of_take_up = section().resumed && section().first_row == out_.rows.size();
     bool full_round = section().in_round && !turns && st_.previous_link != YarnLink::turn;
     bool picked_up = section().picks_up && section().first_row == out_.rows.size();
     Side side = (hand_.left_to_right(row_.front()) != out_.mirror) ? Side::ws : Side::rs;
-    if (section().in_round && !turns && st_.previous_link == YarnLink::turn)
-      hold_the_flap_left(side);
+    if (section().in_round && !turns && after_a_row_that_turned()) hold_the_flap_left(side);
     // After rows that turned, a rnd that works every st starts at the beginning of the rnd.
     if (!picked_up && (first_of_take_up || (section().in_round && !turns))) place_spare_needles();
     PatternRow r;
@@ -920,8 +1039,19 @@ class PatternBuilder {
       if (left_to_another_piece(s)) flap.emplace_back(s, 0);
     if (flap.empty() || flap.size() >= st_.live || !picks_up_its_own_flap()) return;
     if (out_.rows.back().side != rnd_side) std::reverse(flap.begin(), flap.end());
-    hold(static_cast<std::uint32_t>(out_.rows.size() - 1), flap, 0,
-         static_cast<std::uint32_t>(flap.size()));
+    auto held = static_cast<std::uint32_t>(flap.size());
+    std::uint32_t live = st_.live;
+    hold(static_cast<std::uint32_t>(out_.rows.size() - 1), flap, 0, held);
+    // A flap whose last row went on to the beginning of the rnd (its first row went back from
+    // there) is the rnd's last sts.
+    if (st_.previous_link == YarnLink::shift) section().holdings.back().first = live - held + 1;
+  }
+
+  // The row before turned, or went on round from where rows that turned ended (a flap's last
+  // row going on to the beginning of the rnd, down the flap's edge).
+  bool after_a_row_that_turned() const {
+    return st_.previous_link == YarnLink::turn ||
+           (out_.rows.size() > out_.sections.back().first_row && out_.rows.back().partial);
   }
 
   bool picks_up_its_own_flap() const {
@@ -948,7 +1078,7 @@ class PatternBuilder {
   // the needle: a row that turns (before its sts are left for a join), not a rnd.
   bool ends_between_turns() const {
     StitchId last = row_.back();
-    return out_.sections.back().in_round && g_.yarn_link[last] == YarnLink::none &&
+    return out_.sections.back().in_round && link_[last] == YarnLink::none &&
            st_.previous_link == YarnLink::turn && info(g_.type[last]).loops_out > 0;
   }
 
@@ -1031,26 +1161,46 @@ class PatternBuilder {
         decrease_across_gap(s, maker, worked, r);
         continue;
       }
+      bool second = false;
       if (holder_of_[maker] != 0)
-        put_holder_on_spare_needle(holder_of_[maker], maker);
+        second = take_from_holder_on_spare_needle(s, holder_of_[maker], maker);
       else
         refuse_edge_loop_off_spare_needle(s, maker);
-      out_.ops.push_back(worked == 0 ? HandOp::from_spare : HandOp::from_spare_behind);
+      out_.ops.push_back(
+          second ? (worked == 0 ? HandOp::from_second_spare : HandOp::from_second_spare_behind)
+                 : (worked == 0 ? HandOp::from_spare : HandOp::from_spare_behind));
       ++st_.live;
       if (!section().in_round) ++st_.ahead;
     }
   }
 
   // Sts held for rows that work them one at a time go on a spare needle before the first of
-  // those rows, the one they take first at its tip.
-  void put_holder_on_spare_needle(std::uint32_t holder, StitchId first) {
-    if (holder_placed(holder)) return;
+  // those rows, the one they take first at its tip; while one spare needle holds sts, a second
+  // holder goes on a second one (rows that take a st at each edge). Is it on the second?
+  bool take_from_holder_on_spare_needle(StitchId s, std::uint32_t holder, StitchId first) {
+    if (!holder_placed(holder)) put_holder_on_spare_needle(s, holder, first);
+    --spare_left_[holder - 1];
+    return spare_second_[holder - 1] != 0;
+  }
+
+  void put_holder_on_spare_needle(StitchId s, std::uint32_t holder, StitchId first) {
     const Held& held = holders_[holder - 1];
+    bool in_use[2] = {false, false};
+    for (std::size_t h = 0; h < holders_.size(); ++h)
+      if (spare_left_[h] > 0) in_use[spare_second_[h]] = true;
+    if (in_use[0] && in_use[1])
+      unsupported(fmt::format(
+          "{} works a st of holder {} across a perpendicular edge while two spare needles still "
+          "hold sts for the rows: a third spare needle is not covered yet",
+          g_.describe(s), holder));
     PatternSection::Placement p{section_of(first), held.count, 0, first == held.last};
     p.before_row = static_cast<std::uint32_t>(out_.rows.size());
     p.holder = holder;
     p.to_spare = true;
+    p.second_spare = in_use[0];
     section().placements.push_back(p);
+    spare_left_[holder - 1] = held.count;
+    spare_second_[holder - 1] = in_use[0];
   }
 
   // The latest section of the yarn that worked `maker`.
@@ -1087,7 +1237,7 @@ class PatternBuilder {
   // strip) joins it to work in the rnd in the middle of its work: the flat rows' sts are held
   // and the rnd is made of sts picked up along their edges. Named as a knitter would see it.
   void refuse_joining_a_flat_piece_in_the_rnd(StitchId s, StitchId maker) const {
-    if (g_.yarn_link[row_.back()] != YarnLink::shift) return;
+    if (link_[row_.back()] != YarnLink::shift) return;
     unsupported(fmt::format(
         "{} starts a rnd that picks up along the edge of {}, a row of its own piece worked "
         "flat: Piece {} is joined to work in the rnd in the middle of its work (its last "
@@ -1226,6 +1376,7 @@ class PatternBuilder {
 
   const Compilation& c_;
   const KnitGraph& g_;
+  const std::vector<YarnLink> link_;  // as a knitter works them (knitter_links)
   Handedness hand_;
   std::uint32_t pieces_ = 0;
   HandPattern out_;
@@ -1260,9 +1411,28 @@ class PatternBuilder {
     std::uint32_t count;
   };
   std::vector<Held> holders_;
+  // Per holder put on a spare needle for rows: the sts still on it, and whether that needle
+  // is the second of two.
+  std::vector<std::uint32_t> spare_left_;
+  std::vector<std::uint8_t> spare_second_;
+  // Per model row: it binds off with a three-needle bind-off among sts of its own.
+  std::vector<std::uint8_t> rows_binding_off_among_own_sts_ = rows_binding_off_among_own_sts(g_);
 };
 
 }  // namespace
+
+std::vector<YarnLink> knitter_links(const KnitGraph& g) {
+  std::vector<YarnLink> links(g.yarn_link.begin(), g.yarn_link.end());
+  std::vector<StitchId> before(g.size(), kNoStitch);
+  for (StitchId s = 0; s < g.size(); ++s)
+    if (g.yarn_next[s] != kNoStitch) before[g.yarn_next[s]] = s;
+  for (StitchId s = 0; s < g.size(); ++s)
+    if (links[s] == YarnLink::shift && goes_back_over_the_sts_just_made(g, before[s], s))
+      links[s] = YarnLink::turn;
+    else if (links[s] == YarnLink::turn && picks_up_along_its_edge_next(g, s))
+      links[s] = YarnLink::shift;
+  return links;
+}
 
 HandPattern build_hand_pattern(const Compilation& c, TurnMethod turns, Rounds rounds) {
   check_supported(c);

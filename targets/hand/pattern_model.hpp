@@ -72,6 +72,7 @@ struct PatternSection {
     std::uint32_t holder = 0;      // 1-based: the sts of that holder instead
     // The holder's sts go on a spare needle instead, for rows that work them one at a time.
     bool to_spare = false;
+    bool second_spare = false;  // ... on a second spare needle, while the first holds sts
     std::optional<PickUp> edge =
         std::nullopt;         // loops picked up along the edge of section `section` instead
     std::uint32_t start = 0;  // 1-based: from that st of its last rnd on, going round
@@ -97,13 +98,14 @@ struct PatternSection {
   // cast-on"): how many sts, and the model stitches cast on first and last (its chain's ends).
   std::uint32_t row_chain = 0;
   std::uint32_t row_chain_ends[2] = {0, 0};
-  // Pieces left on spare needles held behind the needle for "3-needle BO" in its first row
+  // Pieces left on spare needles held behind the needle for "3-needle BO" in one of its rows
   // (a three-needle bind-off with its own yarn in the middle of a row), in the order worked.
   struct Hold {
     std::uint32_t section = 0, count = 0;
-    bool from_last = false;    // its last row's last st at the tip
-    std::uint32_t first = 0;   // the model stitch that binds off its first st
-    std::uint32_t holder = 0;  // the holder its sts were slipped to (0: its spare needle)
+    bool from_last = false;        // its last row's last st at the tip
+    std::uint32_t first = 0;       // the model stitch that binds off its first st
+    std::uint32_t holder = 0;      // the holder its sts were slipped to (0: its spare needle)
+    std::uint32_t before_row = 0;  // into HandPattern::rows: the row that binds them off
   };
   std::vector<Hold> holds;
   std::optional<Start> starts_from;
@@ -156,6 +158,13 @@ struct HandPattern {
     return {ops.data() + row.first_op, ops.data() + row.end_op};
   }
 };
+
+// How the yarn goes on after each stitch as a knitter works it: the model's links, except
+// that a shift-path whose next stitches work the loops of the stitches just made (the yarn
+// goes back over them, as where a rnd goes on into a flap's rows) turns the work, and a turn
+// whose next stitch picks up along the edge of the st just made (a gusset's rnd going on from
+// its flap's last row, down its edge) goes on into the rnd.
+std::vector<YarnLink> knitter_links(const KnitGraph& g);
 
 // Throws Error naming the stitch when the model needs something hand patterns do not cover
 // yet (joins with a side's own yarn, splits, perpendicular edges, held pieces, stitch graphs

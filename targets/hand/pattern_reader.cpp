@@ -243,14 +243,17 @@ class SentenceReader {
     return after;
   }
 
-  // "Put the 10 sts of holder 2 on a spare needle, the first st of its last rnd at the tip".
+  // "Put the 10 sts of holder 2 on a [second] spare needle, the first st of its last rnd at the
+  // tip".
   void to_spare(Cursor& c) {
     Step step{Step::Kind::to_spare, line_no_};
     c.eat("the");
     step.count = need_number(c, "the number of sts");
     need_words(c, {"sts", "of", "holder"}, "'sts of holder N'");
     step.number = need_number(c, "a holder number");
-    need_words(c, {"on", "a", "spare", "needle", ",", "the"}, "'on a spare needle, the'");
+    need(c.eat("on") && c.eat("a"), c, "'on a spare needle' or 'on a second spare needle'");
+    step.last = c.eat("second") ? 1 : 0;
+    need_words(c, {"spare", "needle", ",", "the"}, "'spare needle, the'");
     step.from_last[0] = c.eat("last");
     need(step.from_last[0] || c.eat("first"), c, "'first' or 'last'");
     need_words(c, {"st", "of", "its", "last"}, "'st of its last rnd'");
@@ -689,8 +692,12 @@ class SentenceReader {
         n.op = HandOp::slip_back;
         return n;
       }
-      need(c.eat("from") && c.eat("spare"), c, "'sl1 from spare' or 'sl1 back'");
-      n.op = c.eat("behind") ? HandOp::from_spare_behind : HandOp::from_spare;
+      need(c.eat("from"), c, "'sl1 from spare' or 'sl1 back'");
+      bool second = c.eat("2nd");
+      need(c.eat("spare"), c, "'sl1 from spare' or 'sl1 from 2nd spare'");
+      bool behind = c.eat("behind");
+      n.op = second ? (behind ? HandOp::from_second_spare_behind : HandOp::from_second_spare)
+                    : (behind ? HandOp::from_spare_behind : HandOp::from_spare);
       return n;
     }
     std::string_view w = c.word();

@@ -62,6 +62,7 @@ struct Step {
                             // from_last: which ends are at the tips (front, back)
     hold,                   // "Slip sts <from_row>–<to_row> of the rnd to holder <number>"
     to_spare,               // "Put the <count> sts of holder <number> on a spare needle, ..."
+                            // (last 1: "on a second spare needle")
     hold_behind,            // "Hold the <count> sts of Piece <number> behind the needle, the
                             // first (from_last[0]: last) st of its last row at the tip"
     place_on_spare,  // "Place the <count> sts of holder <number> on the spare needle of Piece

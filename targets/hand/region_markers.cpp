@@ -30,7 +30,12 @@ bool takes_a_loop(HandOp op) {
 }
 
 bool from_spare(HandOp op) {
-  return op == HandOp::from_spare || op == HandOp::from_spare_behind;
+  return op == HandOp::from_spare || op == HandOp::from_spare_behind ||
+         op == HandOp::from_second_spare || op == HandOp::from_second_spare_behind;
+}
+
+bool from_spare_behind(HandOp op) {
+  return op == HandOp::from_spare_behind || op == HandOp::from_second_spare_behind;
 }
 
 // Does the operation need the left needle's tip (a marker there is passed first)?
@@ -281,7 +286,7 @@ class SectionPlanner {
   }
 
   static std::uint32_t follow(NeedleLine& line, HandOp op, bool bind_off) {
-    if (from_spare(op)) return line.insert_ahead(op == HandOp::from_spare_behind) ? kFits : kOther;
+    if (from_spare(op)) return line.insert_ahead(from_spare_behind(op)) ? kFits : kOther;
     while (bind_off && takes_a_loop(op) && line.ahead()) line.remove();  // BO removes them
     std::uint32_t in_the_way = line.work(loops_taken(op), loops_made(op));
     if (op == HandOp::wt) line.unwork_wrapped();
