@@ -25,11 +25,6 @@ constexpr std::array kSupported = {T::k,     T::p,    T::co,  T::bo,    T::kfb,
 
 void check_supported(const Compilation& c) {
   const KnitGraph& g = c.knit;
-  if (std::count(g.row_shape.begin(), g.row_shape.end(), RowShape::unknown) > 0)
-    unsupported(fmt::format(
-        "{} has no rows or rounds (the yarn of a stitch graph is one helix), so it cannot be "
-        "written as a hand pattern yet; give a stitch mesh (.obj)",
-        g.source_name));
   for (StitchId s = 0; s < g.size(); ++s)
     if (std::find(kSupported.begin(), kSupported.end(), g.type[s]) == kSupported.end())
       unsupported(fmt::format("{} is a {} ({}), which hand patterns do not cover yet",
