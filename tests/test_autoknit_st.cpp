@@ -25,7 +25,7 @@ std::string sample_path(std::string_view name) {
 // Facts about AutoKnit's samples, computed with awk straight from the files: lines; in-links
 // that are not -1; yarn pieces (lines whose yarn id differs from the line before); lines per
 // type letter; the last row (0-based), a row ending before a line that takes a loop made in
-// it or where a bind-off begins or ends; rows beside a turn (dir flips) and whole rounds.
+// it or where a bind-off ends; rows beside a turn (dir flips) and whole rounds.
 struct SampleFacts {
   std::string_view name;
   std::uint32_t stitches;

@@ -284,13 +284,15 @@ class StParser {
 
   // Does stitch s begin a row, the current one having begun at `row_start`? It does when the
   // yarn starts there, when it takes a loop made earlier in the current row (the yarn came
-  // round the tube or back along the sheet), and where a bind-off begins or ends (binding
-  // off is a row of its own; after it the yarn goes on to other sts).
+  // round the tube or back along the sheet), and where a bind-off ends and the yarn goes on
+  // to other sts (test-B.st's second leg). A bind-off begins in the row it ends: where a
+  // helix steps up a st before it (`k1`, then the rest bound off) the yarn goes on along the
+  // row, and it comes round to that st after the others.
   bool starts_row(StitchId s, StitchId row_start) const {
     if (s == 0 || graph_.yarn_next[s - 1] != s) return true;
     for (std::int32_t maker : links_[s].in)
       if (maker != kNone && static_cast<StitchId>(maker) >= row_start) return true;
-    return (graph_.type[s] == StitchType::bo) != (graph_.type[s - 1] == StitchType::bo);
+    return graph_.type[s] != StitchType::bo && graph_.type[s - 1] == StitchType::bo;
   }
 
   // The rows a knitter sees, in one pass along the yarns (stitches are in knitting order, and

@@ -50,21 +50,30 @@ void check_stitches(const KnitGraph& g) {
   }
 }
 
+bool is_bind_off(const KnitGraph& g, StitchId s) {
+  return g.type[s] == StitchType::bo;
+}
+
 // A course ends where the yarn turns or crosses a shift-path. A row with short rows inside
-// (a heel's) is knit in several courses; a course never spans two rows of a sheet or tube (a
-// stitch graph's rows are inferred when it is read: see read_autoknit_st).
+// (a heel's) is knit in several courses; a course never spans two rows of a sheet or tube. A
+// bind-off is a course of its own, knit where its loops wait: in a stitch graph (whose rows
+// are inferred when it is read) it may start in the row of the st a helix steps up by, and go
+// on round past that st's row into the next.
 std::vector<Course> split_into_courses(const KnitGraph& g, const std::vector<StitchId>& order) {
   std::vector<Course> courses;
   for (std::uint32_t i = 0; i < order.size(); ++i) {
     StitchId s = order[i];
-    bool starts = courses.empty() || g.yarn_link[order[i - 1]] == YarnLink::turn ||
-                  g.yarn_link[order[i - 1]] == YarnLink::shift;
+    bool after_bind_off = i > 0 && is_bind_off(g, order[i - 1]);
+    bool bind_off_goes_on = after_bind_off && is_bind_off(g, s);
+    bool starts = courses.empty() || (is_bind_off(g, s) && !after_bind_off) ||
+                  (!bind_off_goes_on && (g.yarn_link[order[i - 1]] == YarnLink::turn ||
+                                         g.yarn_link[order[i - 1]] == YarnLink::shift));
     if (starts) {
       courses.emplace_back();
       courses.back().row = g.row[s];
       courses.back().begin = i;
     }
-    if (!starts && g.row[s] != courses.back().row)
+    if (!starts && !bind_off_goes_on && g.row[s] != courses.back().row)
       unsupported(g, "a row that ends without a turn or a shift-path", s);
     courses.back().end = i + 1;
   }
