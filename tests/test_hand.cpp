@@ -90,20 +90,6 @@ std::string emit_error(const Compilation& c) {
   return "";
 }
 
-// A stitch graph's rows are inferred; what the target cannot write yet is named at its stitch.
-TEST(HandTarget, StitchGraphsNotCoveredYetAreRefusedAtTheirFirstStitch) {
-  std::filesystem::current_path(SKEIN_SOURCE_DIR);
-  const std::pair<const char*, const char*> cases[] = {
-      {"samples/autoknit/test-A.st", "line 59 (tuck) is a tuck (tuck)"},
-      {"samples/autoknit/test-B.st", "the row of line 128 (k) works 16 of the 17 live stitches"},
-      {"samples/autoknit/test-C.st", "line 353 (k) works a loop of line 275 (k) (Piece 1)"},
-  };
-  for (const auto& [sample, named] : cases) {
-    std::string error = emit_error(compile_model(sample));
-    EXPECT_NE(error.find(named), std::string::npos) << sample << ": " << error;
-  }
-}
-
 TEST(HandTarget, StitchesNotCoveredYetAreNamed) {
   const std::pair<StitchMesh, const char*> cases[] = {
       {testing::short_row_mesh(T::sr5), "(sr5), which hand patterns do not cover yet"},
@@ -120,14 +106,15 @@ TEST(HandTarget, StitchesNotCoveredYetAreNamed) {
 // a new sample is covered by this test without being listed.
 TEST(HandTarget, EverySampleIsProvenOrNamedAsNotCoveredYet) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
-  const std::set<std::string> not_covered = {"letter-r", "teapot", "autoknit"};
+  const std::set<std::string> not_covered = {"letter-r", "teapot", "test-A"};
   std::uint32_t proven = 0;
   for (const auto& dir : std::filesystem::directory_iterator("samples")) {
     std::string name = dir.path().filename().string();
     if (not_covered.contains(name) || name == "unknittable") continue;
     for (const auto& file : std::filesystem::directory_iterator(dir.path())) {
       std::string ext = file.path().extension().string();
-      bool project = ext == ".yaml";
+      if (not_covered.contains(file.path().stem().string())) continue;
+      bool project = ext == ".yaml" || ext == ".st";
       bool stitch_mesh =
           ext == ".obj" &&
           !std::filesystem::exists(std::filesystem::path(file.path()).replace_extension(".yaml"));
@@ -138,7 +125,7 @@ TEST(HandTarget, EverySampleIsProvenOrNamedAsNotCoveredYet) {
       ++proven;
     }
   }
-  EXPECT_GE(proven, 13u);
+  EXPECT_GE(proven, 15u);
 }
 
 // Samples not covered yet are refused at the first structure the pattern cannot write, named
@@ -153,6 +140,10 @@ TEST(HandTarget, SamplesNotCoveredYetNameWhatStopsThem) {
        "face 1909 (k, row 34) starts a rnd that picks up along the edge of face 1761 (k, row "
        "33), a row of its own piece worked flat: Piece 2 is joined to work in the rnd in the "
        "middle of its work"},
+      {"samples/autoknit/test-A.st",
+       "line 59 (tuck) is a tuck where a short row turns (the st is not worked: the yarn is laid "
+       "over it, then slipped with it after the turn, and a later row works the two as one); a "
+       "knitter would need a brioche-style turn (sl1yo, turn, sl1; later k the st with its yo)"},
   };
   for (const auto& [sample, named] : cases) {
     std::string error = emit_error(compile_model(sample));

@@ -466,6 +466,17 @@ TEST(HandMutations, TheLetterHRejectsEveryEditThatChangesTheFabric) {
   mutate_and_judge("letter H", compile_model("samples/letter-h/letter-h.yaml"));
 }
 
+// AutoKnit's tubes parted along their helix into two legs: the second leg's sts go to one
+// holder (after the sts on it), then a new yarn is joined to them (test-C) or the first leg's
+// yarn is carried on to them from its bind-off (test-B).
+TEST(HandMutations, StitchGraphLegsRejectEveryEditThatChangesTheFabric) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  mutate_and_judge("AutoKnit test-B (the yarn carried on to a leg)",
+                   compile_model("samples/autoknit/test-B.st"));
+  mutate_and_judge("AutoKnit test-C (a new yarn joined to a leg)",
+                   compile_model("samples/autoknit/test-C.st"));
+}
+
 TEST(HandMutations, ShapedSheetsAndTubesRejectEveryEditThatChangesTheFabric) {
   std::mt19937_64 rng(11);
   for (int trial = 0; trial < 6; ++trial) {

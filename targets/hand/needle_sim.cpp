@@ -104,6 +104,9 @@ class NeedleSimulator {
       case Step::Kind::cast_on:
         cast_on(s.count, s.provisional);
         break;
+      case Step::Kind::carry_on:
+        carry_on(s);
+        break;
       case Step::Kind::join_spare:
         join_spare(s);
         break;
@@ -294,6 +297,7 @@ class NeedleSimulator {
     row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
     pc_.right.assign(loops.rbegin(), loops.rend());
     pc_.live = s.count;
+    pc_.joined_to_sts = true;
   }
 
   // A new piece with its own yarn and needles.
@@ -308,11 +312,35 @@ class NeedleSimulator {
     next_link_ = YarnLink::course;
   }
 
+  // "Do not fasten off: carry the yarn to the sts of holder 1": every st bound off, the yarn
+  // goes on to a holder's sts (joined in the rnd next); the rows count on.
+  void carry_on(const Step& s) {
+    if (!active_) fail("Carry the yarn: no yarn is being worked");
+    if (pc_.live > 0)
+      fail(fmt::format("Carry the yarn to holder {}: {} still on the needle; bind them off first",
+                       s.number, sts(pc_.live)));
+    std::vector<std::uint32_t> loops = held(s.number, s.from_last[0], "Carry the yarn");
+    if (loops.size() != s.count)
+      fail(fmt::format("Carry the yarn: the pattern says {}, but the holder holds {}", sts(s.count),
+                       loops.size()));
+    holders_.erase(s.number);
+    pc_.left.clear();
+    pc_.right.assign(loops.rbegin(), loops.rend());
+    pc_.live = s.count;
+    pc_.joined = false;
+    pc_.joined_to_sts = pc_.carried = true;
+    pc_.bor = kNone;
+  }
+
   void join(bool marker) {
-    if (!active_ || pc_.next_number != 1 || pc_.joined)
+    if (!active_ || (pc_.next_number != 1 && !pc_.carried) || pc_.joined)
       fail("Join to work in the rnd: only right after a cast-on");
+    pc_.carried = false;
     pc_.joined = true;
-    pc_.turn_before = false;  // the first rnd starts with the first st cast on
+    // The first rnd starts with the first st cast on, or with the st at the tip of the sts a
+    // yarn was joined to.
+    if (pc_.joined_to_sts) std::reverse(pc_.right.begin(), pc_.right.end());
+    pc_.turn_before = false;
     pc_.place_bor = marker;
   }
 
@@ -450,7 +478,8 @@ class NeedleSimulator {
   void hold(const Step& s) {
     if (!active_ || !pc_.joined || pc_.bor == kNone)
       fail(fmt::format("Slip sts to holder {}: only from a piece worked in the rnd", s.number));
-    if (holders_.contains(s.number))
+    if (s.onto) check_held_before(s);
+    if (!s.onto && holders_.contains(s.number))
       fail(fmt::format("Slip sts to holder {}: it already holds sts", s.number));
     if (s.from_row == 0) fail(fmt::format("Slip sts to holder {}: the sts count from 1", s.number));
     std::vector<std::uint32_t> ring = ring_from_bor();
@@ -458,10 +487,19 @@ class NeedleSimulator {
       fail(fmt::format("Slip sts {}\u2013{} to holder {}: the rnd has only {}", s.from_row,
                        s.to_row, s.number, sts(static_cast<std::uint32_t>(ring.size()))));
     auto first = ring.begin() + (s.from_row - 1), end = ring.begin() + s.to_row;
-    holders_[s.number].assign(first, end);
+    holders_[s.number].insert(holders_[s.number].end(), first, end);
     ring.erase(first, end);
     lay_out_from_bor(ring);
     pc_.live -= s.to_row - s.from_row + 1;
+  }
+
+  // "(after the 1 st on it)": the holder must hold that many sts.
+  void check_held_before(const Step& s) const {
+    auto at = holders_.find(s.number);
+    auto held = static_cast<std::uint32_t>(at == holders_.end() ? 0 : at->second.size());
+    if (held != s.count)
+      fail(fmt::format("Slip sts to holder {} after the {} on it: it holds {}", s.number,
+                       sts(s.count), held == 0 ? "no sts" : sts(held)));
   }
 
   // A holder's sts from the needle tip: the first or the last st of the run slipped to it.
@@ -1317,7 +1355,9 @@ class NeedleSimulator {
   struct Piece {
     std::uint32_t number = 0;  // 1-based, in the order the pieces start
     bool joined = false, place_bor = false;
-    bool turn_before = true;  // the next row starts by turning the work
+    bool turn_before = true;     // the next row starts by turning the work
+    bool joined_to_sts = false;  // started by joining a yarn to another piece's sts
+    bool carried = false;        // the yarn was carried to held sts, not yet joined in the rnd
     std::uint32_t bor = kNone;
     std::uint32_t next_number = 1;
     std::optional<Side> last_side;

@@ -223,9 +223,8 @@ class InstructionWriter {
     for (const PatternSection::Holding& h : p_.sections[section_].holdings) {
       if (h.after_row != row) continue;
       held += h.count;
-      runs.push_back(fmt::format("sts {}{}{}{} to holder {}", h.first, knitspeak() ? "-" : kRange,
-                                 h.first + h.count - 1, runs.empty() ? " of the rnd" : "",
-                                 h.holder));
+      runs.push_back(fmt::format("{}{} to holder {}{}", held_sts_text(h),
+                                 runs.empty() ? " of the rnd" : "", h.holder, onto_text(h)));
     }
     if (runs.empty()) return;
     std::string text = "Slip " + runs.front();
@@ -233,6 +232,17 @@ class InstructionWriter {
       text.append(i + 1 == runs.size() ? " and " : ", ").append(runs[i]);
     add(InstructionLine::Kind::setup, "",
         fmt::format("{} {} {} sts.", text, kDash, p_.rows[row].sts_after - held));
+  }
+
+  // "sts 10–18", or "st 26".
+  std::string held_sts_text(const PatternSection::Holding& h) const {
+    if (h.count == 1) return fmt::format("st {}", h.first);
+    return fmt::format("sts {}{}{}", h.first, knitspeak() ? "-" : kRange, h.first + h.count - 1);
+  }
+
+  // " (after the 1 st on it)": sts that go on a holder already holding some.
+  static std::string onto_text(const PatternSection::Holding& h) {
+    return h.onto ? fmt::format(" (after the {} on it)", sts(h.onto)) : "";
   }
 
   bool holding_after(std::uint32_t row) const {
@@ -292,6 +302,11 @@ class InstructionWriter {
   // "Join a new yarn to the 3 loops of Piece 1's chain, the first st cast on at the tip."
   std::string join_spare_text(const PatternSection::Start& start) const {
     const PatternSection& spare = p_.sections[start.section];
+    if (start.holder && p_.sections[section_].in_round)
+      return fmt::format(
+          "Join a new yarn to the {} of holder {}, the {} st slipped to it at the tip. Pm and "
+          "join to work in the rnd.",
+          sts(start.count), start.holder, start.from_last ? "last" : "first");
     if (start.holder)
       return fmt::format(
           "Join a new yarn to the {} of holder {}, the {} st of its last {} at the tip.",
@@ -323,7 +338,7 @@ class InstructionWriter {
   }
 
   static std::string count_after(std::uint32_t before, std::uint32_t after) {
-    return before == after ? "" : fmt::format(" {} {} sts", kDash, after);
+    return before == after ? "" : fmt::format(" {} {}", kDash, sts(after));
   }
 
   // The longest-covering block of rows starting at `i` that repeats, as (rows, times).
@@ -352,13 +367,32 @@ class InstructionWriter {
   void write_rows(std::uint32_t first, std::uint32_t end) {
     for (std::uint32_t i = first; i < end;) {
       std::uint32_t stop = i + 1;
-      while (stop < end && !placement_before(stop) && !holding_after(stop - 1)) ++stop;
+      while (stop < end && !placement_before(stop) && !holding_after(stop - 1) &&
+             !carry_before(stop))
+        ++stop;
+      write_carry_before(i);
       // A piece taken up again places its first ones as it is taken up.
       if (i != first || !p_.sections[section_].resumed) write_placements_before(i);
       write_row_run(first, i, stop);
       write_holdings_after(stop - 1);
       i = stop;
     }
+  }
+
+  const PatternSection::CarryOn* carry_before(std::uint32_t row) const {
+    for (const PatternSection::CarryOn& c : p_.sections[section_].carries)
+      if (c.before_row == row) return &c;
+    return nullptr;
+  }
+
+  // The yarn goes on from a bind-off to a holder's sts (a tube's second leg).
+  void write_carry_before(std::uint32_t row) {
+    const PatternSection::CarryOn* c = carry_before(row);
+    if (!c) return;
+    add(InstructionLine::Kind::setup, "",
+        fmt::format("Do not fasten off: carry the yarn to the {} of holder {}, the {} st slipped "
+                    "to it at the tip. Pm and join to work in the rnd.",
+                    sts(c->count), c->holder, c->from_last ? "last" : "first"));
   }
 
   void write_row_run(std::uint32_t first, std::uint32_t from, std::uint32_t end) {

@@ -23,12 +23,25 @@ constexpr std::array kSupported = {T::k,     T::p,    T::co,  T::bo,    T::kfb,
   throw Error(fmt::format("hand target: {}", what));
 }
 
+// AutoKnit turns its short rows on a tuck: the st is not worked, the yarn is laid over it, and
+// the row back slips it; a later row works the st and the yarn as one.
+[[noreturn]] void refuse_tuck_at_a_turn(const KnitGraph& g, StitchId s) {
+  unsupported(fmt::format(
+      "{} is a tuck where a short row turns (the st is not worked: the yarn is laid over it, "
+      "then slipped with it after the turn, and a later row works the two as one); a knitter "
+      "would need a brioche-style turn (sl1yo, turn, sl1; later k the st with its yo), which "
+      "hand patterns do not cover yet (German short rows and wrap and turn work other fabrics)",
+      g.describe(s)));
+}
+
 void check_supported(const Compilation& c) {
   const KnitGraph& g = c.knit;
-  for (StitchId s = 0; s < g.size(); ++s)
-    if (std::find(kSupported.begin(), kSupported.end(), g.type[s]) == kSupported.end())
-      unsupported(fmt::format("{} is a {} ({}), which hand patterns do not cover yet",
-                              g.describe(s), info(g.type[s]).name, abbreviation(g.type[s])));
+  for (StitchId s = 0; s < g.size(); ++s) {
+    if (std::find(kSupported.begin(), kSupported.end(), g.type[s]) != kSupported.end()) continue;
+    if (g.type[s] == T::tuck && g.yarn_link[s] == YarnLink::turn) refuse_tuck_at_a_turn(g, s);
+    unsupported(fmt::format("{} is a {} ({}), which hand patterns do not cover yet", g.describe(s),
+                            info(g.type[s]).name, abbreviation(g.type[s])));
+  }
   for (const Loop& l : g.loops) {
     bool joined = l.kind == LoopKind::joined && l.taker != kNoStitch && g.type[l.taker] == T::tnbo;
     bool split = l.kind == LoopKind::split && l.maker != kNoStitch && g.type[l.maker] == T::sco;
@@ -109,6 +122,8 @@ class Handedness {
                         p + 1));
       if (votes[p][0] || votes[p][1]) {
         first_lr_[p] = votes[p][1] > 0;
+      } else if (std::optional<bool> lr = as_the_row_it_takes(p)) {
+        first_lr_[p] = *lr;
       } else {
         // No stitch tells: work the first row after the cast-on from the RS.
         StitchId s = y_.first[p];
@@ -116,6 +131,25 @@ class Handedness {
         first_lr_[p] = reversed_[s];
       }
     }
+  }
+
+  // A piece whose own sts do not tell (no increase or decrease) but whose first row takes the
+  // loops of an earlier piece's row one after another (a leg joined to sts a tube left on a
+  // holder) runs as that row ran, or against it if it takes them in the other order.
+  std::optional<bool> as_the_row_it_takes(std::uint32_t p) const {
+    for (StitchId s = y_.first[p]; g_.yarn_link[s] == YarnLink::course; s = g_.yarn_next[s]) {
+      StitchId a = first_maker(s), b = first_maker(g_.yarn_next[s]);
+      if (a == kNoStitch || b == kNoStitch || y_.piece_of[a] >= p || g_.row[a] != g_.row[b])
+        continue;
+      if (pos_[a] + 1 == pos_[b] || pos_[b] + 1 == pos_[a])
+        return (left_to_right(a) == (pos_[a] < pos_[b])) != static_cast<bool>(reversed_[s]);
+    }
+    return std::nullopt;
+  }
+
+  StitchId first_maker(StitchId s) const {
+    auto taken = g_.loops_taken_by(s);
+    return taken.empty() ? kNoStitch : g_.loops[taken[0]].maker;
   }
 
   // A loop taken across a perpendicular edge comes from beyond a gap (in the rnd, from across
@@ -156,6 +190,7 @@ class PatternBuilder {
   }
 
   HandPattern run() && {
+    number_parts();
     std::size_t yarns = c_.yarns.size();
     set_aside_.resize(yarns);
     section_of_yarn_.resize(yarns, 0);
@@ -606,6 +641,7 @@ class PatternBuilder {
     const Held& held = holders_[holder - 1];
     section().starts_from = PatternSection::Start{section_of(first.maker), false,
                                                   first.maker == held.last, held.count, holder};
+    section().in_round = g_.yarn_link[row_.back()] == YarnLink::shift;  // a leg of a tube
     st_.live = st_.ahead = held.count;
   }
 
@@ -668,13 +704,20 @@ class PatternBuilder {
           continue;  // one by one, picked up, or across the gap
         bool chain = is_chain_loop(loop);
         if (std::uint32_t holder = holder_of_[loop.maker]; holder != 0) {
-          if (!holder_placed(holder)) place_holder(holder, loop, taken);
+          if (!holder_placed(holder) && !started_on(holder)) place_holder(holder, loop, taken);
         } else if (from != self && placeable(from, chain)) {
           place_spare_needle(loop, taken);
         }
         ++taken;
       }
     place_pieces_worked_later();
+  }
+
+  bool started_on(std::uint32_t holder) const {
+    const PatternSection& worked = out_.sections.back();
+    return (worked.starts_from && worked.starts_from->holder == holder) ||
+           std::any_of(worked.carries.begin(), worked.carries.end(),
+                       [&](const PatternSection::CarryOn& c) { return c.holder == holder; });
   }
 
   // The first row of a piece taken up in the rnd places the pieces beside its band too.
@@ -827,7 +870,7 @@ class PatternBuilder {
   // keeps its own (those it works across a gap too). A run another piece works one st at a
   // time across a perpendicular edge is a holder of its own.
   void hold_what_others_work(std::uint32_t row) {
-    const std::uint32_t own = 3 * section().yarn;
+    const std::uint32_t own = 3 * part_[row_.front()];
     // maker, taker's yarn (x3; +1 across an edge, +2 bound off with a three-needle bind-off)
     std::vector<std::pair<StitchId, std::uint32_t>> loops;
     for (StitchId s : row_)
@@ -835,7 +878,7 @@ class PatternBuilder {
         const Loop& loop = g_.loops[l];
         if (loop.taker == kNoStitch) return;
         if (loop.kind == LoopKind::split) continue;  // on a provisional cast-on's chain
-        std::uint32_t taker = 3 * c_.yarns.piece_of[loop.taker];
+        std::uint32_t taker = 3 * part_[loop.taker];
         bool across = loop.kind == LoopKind::perpendicular && taker != own;
         bool joined = loop.kind == LoopKind::joined && taker != own;
         loops.emplace_back(s, taker + (across ? 1 : joined ? 2 : 0));
@@ -853,11 +896,58 @@ class PatternBuilder {
 
   void hold(std::uint32_t row, const std::vector<std::pair<StitchId, std::uint32_t>>& loops,
             std::uint32_t first, std::uint32_t end) {
-    holders_.push_back({loops[end - 1].first, end - first});
+    std::uint32_t onto = 0;
+    if (goes_on_from_last_holder(loops[first].first)) {
+      onto = holders_.back().count;
+      holders_.back() = {loops[end - 1].first, onto + end - first};
+    } else {
+      holders_.push_back({loops[end - 1].first, end - first});
+    }
     auto holder = static_cast<std::uint32_t>(holders_.size());
     for (std::uint32_t i = first; i < end; ++i) holder_of_[loops[i].first] = holder;
-    section().holdings.push_back({row, first + 1, end - first, holder});
+    section().holdings.push_back({row, first + 1, end - first, holder, onto});
     st_.live -= end - first;
+  }
+
+  // A yarn works one part of the fabric from its start, and another each time it leaves a
+  // row it bound off to go on to other sts (a tube's second leg): sts another part works
+  // wait on holders as another yarn's do.
+  void number_parts() {
+    std::uint32_t parts = 0;
+    for (std::uint32_t p = 0; p < c_.yarns.size(); ++p) {
+      StitchId s = c_.yarns.first[p];
+      for (std::uint32_t i = 0; i < c_.yarns.length[p]; ++i, s = g_.yarn_next[s]) {
+        part_[s] = parts;
+        bool leaves_bind_off = g_.type[s] == T::bo && g_.yarn_link[s] != YarnLink::course &&
+                               g_.yarn_next[s] != kNoStitch && g_.type[g_.yarn_next[s]] != T::bo;
+        if (leaves_bind_off) ++parts;
+      }
+      ++parts;
+    }
+  }
+
+  // After binding off every st, a row that takes held sts works them with the same yarn,
+  // joined in the rnd (written before the row: the yarn carried to them).
+  void carry_on_to_held_sts() {
+    if (st_.live > 0 || out_.rows.size() == section().first_row) return;
+    auto taken = g_.loops_taken_by(row_.front());
+    if (taken.empty() || holder_of_[g_.loops[taken[0]].maker] == 0) return;
+    StitchId first = g_.loops[taken[0]].maker;
+    std::uint32_t holder = holder_of_[first];
+    const Held& held = holders_[holder - 1];
+    section().carries.push_back(
+        {static_cast<std::uint32_t>(out_.rows.size()), holder, held.count, first == held.last});
+    st_.live = held.count;
+  }
+
+  // Does the yarn that works the st `first` come to it straight from the last st of the last
+  // holder? A tube parted along a helix (a stitch graph's) leaves the last st of one rnd and
+  // the first sts of the next to one leg: they go on one holder, in the order it works them.
+  bool goes_on_from_last_holder(StitchId first) const {
+    if (holders_.empty()) return false;
+    auto taker = [&](std::uint32_t loop) { return g_.loops[loop].taker; };
+    StitchId before = taker(g_.loops_made_by(holders_.back().last).back());
+    return g_.yarn_next[before] == taker(g_.loops_made_by(first).front());
   }
 
   void add_row() {
@@ -868,6 +958,7 @@ class PatternBuilder {
     Side side = (hand_.left_to_right(row_.front()) != out_.mirror) ? Side::ws : Side::rs;
     if (section().in_round && !turns && st_.previous_link == YarnLink::turn)
       hold_the_flap_left(side);
+    carry_on_to_held_sts();
     // After rows that turned, a rnd that works every st starts at the beginning of the rnd.
     if (!picked_up && (first_of_take_up || (section().in_round && !turns))) place_spare_needles();
     PatternRow r;
@@ -1057,9 +1148,8 @@ class PatternBuilder {
   // (or a chain) placed into its rnd, a holder placed there (or the one it started on), or
   // one of the spare needle it started on?
   bool on_own_needle(StitchId maker, bool chain = false) const {
-    const auto& start = out_.sections.back().starts_from;
     if (holder_of_[maker] != 0)
-      return holder_placed(holder_of_[maker]) || (start && start->holder == holder_of_[maker]);
+      return holder_placed(holder_of_[maker]) || started_on(holder_of_[maker]);
     std::uint32_t from = section_of(maker);
     const PatternSection& worked = out_.sections.back();
     return c_.yarns.piece_of[maker] == worked.yarn ||
@@ -1250,6 +1340,7 @@ class PatternBuilder {
   // Sts slipped to holders: per model stitch its holder (1-based, 0: none); per holder its
   // last st (in the order its rnd worked them) and how many it holds.
   std::vector<std::uint32_t> holder_of_ = std::vector<std::uint32_t>(g_.size(), 0);
+  std::vector<std::uint32_t> part_ = std::vector<std::uint32_t>(g_.size(), 0);  // number_parts
   struct Held {
     StitchId last;
     std::uint32_t count;

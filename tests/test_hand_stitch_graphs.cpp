@@ -1,0 +1,154 @@
+// AutoKnit stitch graphs (.st) as hand patterns: a tube parted along its helix into two legs,
+// the second leg's sts (the last st of one rnd and the first of the next) slipped to one
+// holder and worked with a new yarn (test-C.st) or with the same yarn carried on from the first
+// leg's bind-off (test-B.st); and the simulator's reasons for rejecting those steps.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "driver/pipeline.hpp"
+#include "mesh/autoknit_st.hpp"
+#include "target_runner.hpp"
+
+namespace skein {
+namespace {
+
+using testing::emit;
+using testing::failure_of;
+
+// One line of a stitch graph: its yarn, AutoKnit's letter and the stitches whose loops it
+// takes (-1: none); the outs are filled in from the ins, in the order the loops are taken.
+struct StLine {
+  int yarn;
+  char letter;
+  int in = -1;
+};
+
+std::string st_text(const std::vector<StLine>& lines) {
+  std::vector<std::vector<int>> outs(lines.size());
+  for (std::size_t s = 0; s < lines.size(); ++s)
+    if (lines[s].in >= 0)
+      outs[static_cast<std::size_t>(lines[s].in)].push_back(static_cast<int>(s));
+  std::string text;
+  for (std::size_t s = 0; s < lines.size(); ++s) {
+    int out = outs[s].empty() ? -1 : outs[s][0];
+    text += fmt::format("{} {} a {} -1 {} -1 0 0 0\n", lines[s].yarn, lines[s].letter, lines[s].in,
+                        out);
+  }
+  return text;
+}
+
+// A 6-st tube whose second rnd works 5 sts: its last 3 are one leg (a rnd, then bound off);
+// the 6th st of the first rnd and the first 2 of the second are the other leg, worked by
+// `second_yarn` (the same yarn goes on from the bind-off when it is 0), whose helix steps up a
+// st before its bind-off.
+std::string two_legs_st(int second_yarn) {
+  std::vector<StLine> lines;
+  for (int i = 0; i < 6; ++i) lines.push_back({0, 's'});
+  for (int i = 0; i < 6; ++i) lines.push_back({0, 'k', i});             // 6..11
+  for (int i = 0; i < 5; ++i) lines.push_back({0, 'k', 6 + i});         // 12..16
+  for (int i = 0; i < 3; ++i) lines.push_back({0, 'k', 14 + i});        // 17..19: leg 1
+  for (int i = 0; i < 3; ++i) lines.push_back({0, 'e', 17 + i});        // 20..22
+  for (int in : {11, 12, 13}) lines.push_back({second_yarn, 'k', in});  // 23..25: leg 2
+  lines.push_back({second_yarn, 'k', 23});                              // 26: the helix steps up
+  for (int in : {24, 25, 26}) lines.push_back({second_yarn, 'e', in});
+  return st_text(lines);
+}
+
+Compilation compile_st(const std::string& text, const std::string& name) {
+  return compile_knit_graph(parse_autoknit_st(text, name), name);
+}
+
+void expect_lines(const std::string& pattern, const std::vector<std::string>& lines) {
+  for (const std::string& line : lines)
+    EXPECT_NE(pattern.find(line), std::string::npos) << line << "\n" << pattern;
+}
+
+TEST(HandStitchGraphs, ALegWithANewYarnIsJoinedToTheHeldStsInEveryFormat) {
+  Compilation c = compile_st(two_legs_st(1), "legs.st");
+  ASSERT_TRUE(c.knittability.knittable) << check_report(c);
+  expect_lines(emit(c, "hand"),
+               {"**Rnd 1:** Knit.\n\nSlip st 6 of the rnd to holder 1 \u2014 5 sts.\n\n**Rnd 2:** "
+                "Knit.\n\nSlip sts 1\u20132 of the rnd to holder 1 (after the 1 st on it) \u2014 3 "
+                "sts.\n",
+                "Join a new yarn to the 3 sts of holder 1, the first st slipped to it at the tip. "
+                "Pm and join to work in the rnd.\n\n**Rnd 1:** Knit.\n\n**Rnd 2:** K1, BO 2 sts "
+                "\u2014 1 st.\n\n**Rnd 3:** BO all sts.\n"});
+  EXPECT_EQ(testing::unproven_hand_formats(c), "");
+}
+
+TEST(HandStitchGraphs, ALegWithTheSameYarnIsCarriedOnFromTheBindOffInEveryFormat) {
+  Compilation c = compile_st(two_legs_st(0), "legs.st");
+  ASSERT_TRUE(c.knittability.knittable) << check_report(c);
+  expect_lines(
+      emit(c, "hand"),
+      {"**Rnd 4:** BO all sts.\n\nDo not fasten off: carry the yarn to the 3 sts of holder "
+       "1, the first st slipped to it at the tip. Pm and join to work in the rnd.\n\n**Rnd "
+       "5:** Knit.\n"});
+  EXPECT_EQ(testing::unproven_hand_formats(c), "");
+}
+
+TEST(HandStitchGraphs, AutoKnitsTubesPartedIntoLegsAreProvenInEveryFormat) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  for (const char* sample : {"samples/autoknit/test-B.st", "samples/autoknit/test-C.st"}) {
+    Compilation c = compile_model(sample);
+    EXPECT_EQ(testing::unproven_hand_formats(c), "") << sample;
+  }
+  Compilation b = compile_model("samples/autoknit/test-B.st");
+  expect_lines(emit(b, "hand"),
+               {"Slip st 17 of the rnd to holder 1 \u2014 16 sts.\n",
+                "Slip sts 1\u20138 of the rnd to holder 1 (after the 1 st on it) \u2014 8 sts.\n",
+                "Do not fasten off: carry the yarn to the 9 sts of holder 1, the first st slipped "
+                "to it at the tip. Pm and join to work in the rnd.\n"});
+}
+
+// A 4-st tube: 1 st to holder 1 after Rnd 1, then 2 more after Rnd 2; the yarn bound off the
+// other 1 st and is carried on to them.
+const std::string kTube =
+    "Cast on 4 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\nSlip st 4 of the rnd to "
+    "holder 1 \u2014 3 sts.\nRnd 2: Knit.\n";
+
+TEST(HandStitchGraphs, RejectsStsSlippedOntoAHolderThatDoesNotHoldWhatItSays) {
+  std::string onto =
+      "Slip sts 1\u20132 of the rnd to holder 1 (after the 1 st on it) \u2014 1 st.\n";
+  EXPECT_EQ(failure_of(kTube + onto +
+                       "Rnd 3: BO all sts.\nDo not fasten off: carry the yarn to "
+                       "the 3 sts of holder 1, the first st slipped to it at the "
+                       "tip. Pm and join to work in the rnd.\nRnd 4: BO all "
+                       "sts.\nFasten off.\n"),
+            "");
+  EXPECT_EQ(failure_of(kTube + "Slip sts 1\u20132 of the rnd to holder 2 (after the 1 st on it) "
+                               "\u2014 1 st.\n"),
+            "p.md:5: Slip sts to holder 2 after the 1 st on it: it holds no sts");
+  EXPECT_EQ(failure_of(kTube + "Slip sts 1\u20132 of the rnd to holder 1 (after the 2 sts on it) "
+                               "\u2014 1 st.\n"),
+            "p.md:5: Slip sts to holder 1 after the 2 sts on it: it holds 1 st");
+}
+
+TEST(HandStitchGraphs, RejectsCarryingTheYarnOnWithTheReason) {
+  std::string held = kTube +
+                     "Slip sts 1\u20132 of the rnd to holder 1 (after the 1 st on it) "
+                     "\u2014 1 st.\n";
+  std::string carry =
+      "Do not fasten off: carry the yarn to the 3 sts of holder 1, the first st "
+      "slipped to it at the tip.";
+  EXPECT_EQ(failure_of(held + carry + "\n"),
+            "p.md:6: Carry the yarn to holder 1: 1 st still on the needle; bind them off first");
+  held += "Rnd 3: BO all sts.\n";
+  EXPECT_EQ(failure_of(held + "Do not fasten off: carry the yarn to the 2 sts of holder 1, the "
+                              "first st slipped to it at the tip.\n"),
+            "p.md:7: Carry the yarn: the pattern says 2 sts, but the holder holds 3");
+  EXPECT_EQ(failure_of(held + "Do not fasten off: carry the yarn to the 3 sts of holder 2, the "
+                              "first st slipped to it at the tip.\n"),
+            "p.md:7: Carry the yarn: holder 2 holds no sts");
+  EXPECT_EQ(failure_of("Do not fasten off: carry the yarn to the 3 sts of holder 1, the first st "
+                       "slipped to it at the tip.\n"),
+            "p.md:1: Carry the yarn: no yarn is being worked");
+}
+
+}  // namespace
+}  // namespace skein
