@@ -239,7 +239,9 @@ TEST(HandReadability, PlainKnittingTakesAFewLines) {
         std::pair{"samples/three-bars/three-bars.yaml", 8.5},
         std::pair{"samples/letter-h/letter-h.yaml", 27.5},
         std::pair{"samples/two-bars/two-bars.yaml", 12.0},
-        std::pair{"samples/three-bars-own/three-bars-own.yaml", 7.0}}) {
+        std::pair{"samples/three-bars-own/three-bars-own.yaml", 7.0},
+        std::pair{"samples/autoknit/test-B.st", 101.2},
+        std::pair{"samples/autoknit/test-C.st", 62.0}}) {
     Compilation c = compile_model(input);
     double figure = lines_per_thousand(c, emit(c, "hand"));
     std::cout << input << ": " << figure << " instruction lines per 1,000 sts\n";

@@ -643,6 +643,26 @@ class FrontMatter {
   }
   bool says(std::string_view words) const { return text_.find(words) != std::string::npos; }
 
+  // A tube parted into legs: the sts of one leg gathered on a holder from two rnds, then worked
+  // in the rnd with a new yarn or the yarn carried on from the other leg.
+  std::string held_sts_in_the_rnd_technique() const {
+    std::string text;
+    if (says(" on it)"))
+      text +=
+          " \"(after the 1 st on it)\" slips the sts onto the holder after those it already "
+          "holds, so they wait in the order they are worked.";
+    if (says("slipped to it at the tip. Pm and join"))
+      text +=
+          " To work a holder's sts in the rnd, slide them onto the needle(s) with the st "
+          "named at the tip of the left needle, place the BOR marker and work that st first.";
+    if (says("Do not fasten off: carry the yarn"))
+      text +=
+          " \"Do not fasten off: carry the yarn to\" them: after binding off, pull the yarn "
+          "through the last loop without cutting it and work the held sts with it, leaving a "
+          "strand from the bind-off to the first of them.";
+    return text;
+  }
+
   std::vector<std::string> abbreviations() const {
     std::vector<std::string> items;
     for (auto op = HandOp::k; op <= HandOp::slip_back;
@@ -712,7 +732,8 @@ class FrontMatter {
           "they wait there until the pattern places them on the needle, puts them on a spare "
           "needle (for \"sl1 from spare\") or binds them off. \"Place\" puts a holder's sts (a "
           "spare needle's, a chain's loops) on the needle where it says, the st it names "
-          "first.");
+          "first." +
+          held_sts_in_the_rnd_technique());
     if (uses(HandOp::slip_back)) items.push_back(decreasing_across_a_gap_technique());
     if (t_.joins)
       items.push_back(
