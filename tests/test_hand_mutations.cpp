@@ -223,6 +223,10 @@ class Mutator {
       {"pw", {"p", "kw"}},
       {"back", {"from spare"}},
       {"Rm", {"Sm"}},
+      {"sl1yo", {"sl1", "k1", "turn"}},
+      {"brk", {"k1", "brp", "sl1"}},
+      {"Brk", {"K1", "Sl1"}},
+      {"brp", {"p1", "brk"}},
   };
 
   bool near_a_piece_heading(std::size_t i) const {  // blank lines between instructions
@@ -475,6 +479,14 @@ TEST(HandMutations, StitchGraphLegsRejectEveryEditThatChangesTheFabric) {
                    compile_model("samples/autoknit/test-B.st"));
   mutate_and_judge("AutoKnit test-C (a new yarn joined to a leg)",
                    compile_model("samples/autoknit/test-C.st"));
+}
+
+// AutoKnit's short rows turned on a tuck (sl1yo, turn, sl1, later brk), going round past the
+// beginning of the rnd, which then moves to where the rnd after them begins.
+TEST(HandMutations, StitchGraphTuckTurnsRejectEveryEditThatChangesTheFabric) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  mutate_and_judge("AutoKnit test-A (short rows turned on a tuck)",
+                   compile_model("samples/autoknit/test-A.st"));
 }
 
 TEST(HandMutations, ShapedSheetsAndTubesRejectEveryEditThatChangesTheFabric) {

@@ -1,7 +1,9 @@
 // AutoKnit stitch graphs (.st) as hand patterns: a tube parted along its helix into two legs,
 // the second leg's sts (the last st of one rnd and the first of the next) slipped to one
 // holder and worked with a new yarn (test-C.st) or with the same yarn carried on from the first
-// leg's bind-off (test-B.st); and the simulator's reasons for rejecting those steps.
+// leg's bind-off (test-B.st); short rows turned on a tuck (test-A.st: sl1yo, turn, sl1, brk),
+// going round past the beginning of the rnd; and the simulator's reasons for rejecting those
+// steps.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -10,6 +12,7 @@
 
 #include <fmt/format.h>
 
+#include "common/error.hpp"
 #include "driver/pipeline.hpp"
 #include "mesh/autoknit_st.hpp"
 #include "target_runner.hpp"
@@ -26,6 +29,7 @@ struct StLine {
   int yarn;
   char letter;
   int in = -1;
+  char dir = 'a';  // flips at a turn
 };
 
 std::string st_text(const std::vector<StLine>& lines) {
@@ -36,8 +40,8 @@ std::string st_text(const std::vector<StLine>& lines) {
   std::string text;
   for (std::size_t s = 0; s < lines.size(); ++s) {
     int out = outs[s].empty() ? -1 : outs[s][0];
-    text += fmt::format("{} {} a {} -1 {} -1 0 0 0\n", lines[s].yarn, lines[s].letter, lines[s].in,
-                        out);
+    text += fmt::format("{} {} {} {} -1 {} -1 0 0 0\n", lines[s].yarn, lines[s].letter,
+                        lines[s].dir, lines[s].in, out);
   }
   return text;
 }
@@ -56,6 +60,28 @@ std::string two_legs_st(int second_yarn) {
   for (int in : {11, 12, 13}) lines.push_back({second_yarn, 'k', in});  // 23..25: leg 2
   lines.push_back({second_yarn, 'k', 23});                              // 26: the helix steps up
   for (int in : {24, 25, 26}) lines.push_back({second_yarn, 'e', in});
+  return st_text(lines);
+}
+
+// A 6-st tube with two short rows turned on tucks: the first turns after 3 sts, the second
+// goes back past the beginning of the rnd and turns 2 sts before it; the rnd from there goes
+// all the way round (the rnds begin there from then on), then one more rnd and the bind-off.
+std::string tuck_short_rows_st() {
+  const int first = 0;
+  std::vector<StLine> lines;
+  for (int i = 0; i < 6; ++i) lines.push_back({0, 's'});
+  for (int i = 0; i < 6; ++i) lines.push_back({0, 'k', i});              // 6..11: at 0..5
+  auto at = [&](int position) { return 6 + (position % 6); };            // rnd 1's st there
+  for (int i = 0; i < 3; ++i) lines.push_back({0, 'k', at(first + i)});  // 12..14
+  lines.push_back({0, 't', at(first + 3)});                              // 15: turns
+  lines.push_back({0, 'm', 15, 'c'});                                    // 16
+  for (int in : {14, 13, 12}) lines.push_back({0, 'k', in, 'c'});        // 17..19
+  lines.push_back({0, 't', at(first + 5), 'c'});                         // 20: turns
+  lines.push_back({0, 'm', 20});                                         // 21
+  for (int in : {19, 18, 17, 16}) lines.push_back({0, 'k', in});         // 22..25
+  lines.push_back({0, 'k', at(first + 4)});                              // 26: round the rnd
+  for (int i = 0; i < 6; ++i) lines.push_back({0, 'k', 21 + i});         // 27..32
+  for (int i = 0; i < 6; ++i) lines.push_back({0, 'e', 27 + i});
   return st_text(lines);
 }
 
@@ -90,6 +116,29 @@ TEST(HandStitchGraphs, ALegWithTheSameYarnIsCarriedOnFromTheBindOffInEveryFormat
        "1, the first st slipped to it at the tip. Pm and join to work in the rnd.\n\n**Rnd "
        "5:** Knit.\n"});
   EXPECT_EQ(testing::unproven_hand_formats(c), "");
+}
+
+TEST(HandStitchGraphs, ShortRowsTurnedOnATuckAreProvenInEveryFormat) {
+  Compilation c = compile_st(tuck_short_rows_st(), "tucks.st");
+  ASSERT_TRUE(c.knittability.knittable) << check_report(c);
+  std::string pattern = emit(c, "hand");
+  expect_lines(pattern,
+               {"- **sl1yo**: slip 1 yarn over", "**Short rows (turned on a tuck):**",
+                "**Row 2 (RS):** K3, sl1yo, turn.\n\n**Row 3 (WS):** Sl1, p to m, rm, sl1yo, "
+                "turn.\n\n**Rnd 4:** Pm, sl1, k3, brk, k1.\n\n**Rnd 5:** "
+                "Brk, k to end.\n"});
+  EXPECT_EQ(testing::unproven_hand_formats(c), "") << pattern;
+}
+
+TEST(HandStitchGraphs, AutoKnitsShortRowsTurnedOnTucksAreProvenInEveryFormat) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  Compilation c = compile_model("samples/autoknit/test-A.st");
+  EXPECT_EQ(testing::unproven_hand_formats(c), "");
+  expect_lines(emit(c, "hand"),
+               {"**Row 3 (RS):** K11, sl1yo, turn.\n\n**Row 4 (WS):** Sl1, p4, sl1yo, turn.\n\n"
+                "**Row 5 (RS):** Sl1, k4, brk, k to m, sm, k3, sl1yo, turn.\n",
+                "**Row 8 (WS):** Sl1, p to m, rm, p1, sl1yo, turn.\n\n**Rnd 9:** Pm, sl1, k2, "
+                "brk, k1, brk, k2, brk, k to last 2 sts, brk, k1.\n"});
 }
 
 TEST(HandStitchGraphs, AutoKnitsTubesPartedIntoLegsAreProvenInEveryFormat) {
@@ -148,6 +197,25 @@ TEST(HandStitchGraphs, RejectsCarryingTheYarnOnWithTheReason) {
   EXPECT_EQ(failure_of("Do not fasten off: carry the yarn to the 3 sts of holder 1, the first st "
                        "slipped to it at the tip.\n"),
             "p.md:1: Carry the yarn: no yarn is being worked");
+}
+
+// A 6-st tube with a short row turned on a tuck after 2 sts; the row back goes past the
+// beginning of the rnd ("p to m" goes round the needle to it).
+const std::string kTucked =
+    "Cast on 6 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\nRow 2 (RS): K2, sl1yo, "
+    "turn.\nRow 3 (WS): Sl1, p to m, sm, p1, sl1yo, turn.\n";
+
+// Every step of a pattern that stops after Row 4 is worked: only the sts left are refused.
+TEST(HandStitchGraphs, RejectsAStWithItsYoWorkedWrongWithTheReason) {
+  const std::pair<const char*, const char*> row_4[] = {
+      {"Sl1, k1, sm, k2, brk", "p.md:5: the pattern ends with 6 sts still on the needle"},
+      {"Sl1, k1, sm, k3",
+       "p.md:5: Row 4 (RS): k: the next st has a yo over it (sl1yo): work it with brk"},
+      {"Sl1, brk, sm, k2, brk", "p.md:5: Row 4 (RS): brk: the next st has no yo over it"},
+      {"Sl1, k1, sm, k1, k2tog", "p.md:5: the pattern ends with 5 sts still on the needle"},
+  };
+  for (const auto& [row, failure] : row_4)
+    EXPECT_EQ(failure_of(kTucked + "Row 4 (RS): " + row + ", turn.\n"), failure) << row;
 }
 
 }  // namespace

@@ -862,6 +862,17 @@ class NeedleSimulator {
     index_left_needle();
   }
 
+  // ... and a row that turns goes "to m" round to a marker beyond the last st on the left
+  // needle (the BOR marker a stitch graph's short rows pass): the right needle's sts follow
+  // the left needle's there.
+  void look_round_for_marker() {
+    bool beyond = std::any_of(pc_.right.begin(), pc_.right.end(), is_marker_entry);
+    if (!pc_.joined || row_round_ || marker_ahead() || !beyond) return;
+    pc_.left.insert(pc_.left.begin(), pc_.right.rbegin(), pc_.right.rend());
+    pc_.right.clear();
+    index_left_needle();
+  }
+
   // ... and a row that turns may work the last st of the left needle together with the first
   // of the right one's far end (a decrease across a gap, on the other side of the needle).
   void reach_around(std::uint32_t takes) {
@@ -927,6 +938,8 @@ class NeedleSimulator {
   }
 
   void run_node(const Program& p, const Node& n) {
+    if (n.until.kind == Until::Kind::marker || n.until.kind == Until::Kind::before_marker)
+      look_round_for_marker();
     switch (n.kind) {
       case Node::Kind::bind_off_all:
         while (!pc_.left.empty()) {
@@ -1199,12 +1212,23 @@ class NeedleSimulator {
     pc_.right.push_back(loop);
   }
 
-  // A loop a short row turned at must be worked with what resolves it, and only such a loop.
+  // sl1yo lays a yo over the st it slips; sl1 slips a st with its yo as it is.
+  void mark_st_with_yo(HandOp op) {
+    if (op == HandOp::sl1yo) turn_mark_[pc_.right.back()] = kWithYo;
+    if (op == HandOp::sl1) turn_mark_[pc_.right.back()] = turn_mark_[fab().taken.back()];
+  }
+
+  // A loop a short row turned at must be worked with what resolves it, and only such a loop
+  // (a st is slipped as it is).
   void check_turn_loop(HandOp op, std::uint32_t loop) const {
+    // A st is slipped as it is; a decrease takes a st and its yo as one of its sts.
+    if (op == HandOp::sl1 || (turn_mark_[loop] == kWithYo && info(op).takes > 1)) return;
     std::uint8_t needs = op == HandOp::kw || op == HandOp::pw     ? kWrapped
                          : op == HandOp::kds || op == HandOp::pds ? kDouble
+                         : works_with_yo(op)                      ? kWithYo
                                                                   : kPlainLoop;
     if (turn_mark_[loop] == needs) return;
+    if (turn_mark_[loop] == kWithYo || needs == kWithYo) with_yo_or_not(op, loop);
     if (needs != kPlainLoop)
       fail(fmt::format("{}: the next st is {}", info(op).abbreviation,
                        turn_mark_[loop] == kPlainLoop ? "not a short-row turn"
@@ -1214,6 +1238,13 @@ class NeedleSimulator {
                      turn_mark_[loop] == kWrapped ? "wrapped" : "a double stitch",
                      turn_mark_[loop] == kWrapped ? (facing_ == Side::rs ? "kw" : "pw")
                                                   : (facing_ == Side::rs ? "k DS" : "p DS")));
+  }
+
+  [[noreturn]] void with_yo_or_not(HandOp op, std::uint32_t loop) const {
+    if (turn_mark_[loop] == kWithYo)
+      fail(fmt::format("{}: the next st has a yo over it (sl1yo): work it with {}",
+                       info(op).abbreviation, facing_ == Side::rs ? "brk" : "brp"));
+    fail(fmt::format("{}: the next st has no yo over it", info(op).abbreviation));
   }
 
   void remove_bor() {
@@ -1243,6 +1274,7 @@ class NeedleSimulator {
     for (const Pending& p : pending_) adopt(x, p.op, p.loop);
     pending_.clear();
     for (std::uint32_t i = 0; i < oi.makes; ++i) pc_.right.push_back(new_loop(x));
+    mark_st_with_yo(op);
     pc_.live = pc_.live + oi.makes - oi.takes;
     row_last_stitch_ = x;
     last_make_.reset();
@@ -1348,7 +1380,7 @@ class NeedleSimulator {
   std::vector<std::uint32_t> spare_for_rows_;  // a holder's sts that sl1 from spare takes
 
   // Per loop: whether a short row turned at it, and how.
-  static constexpr std::uint8_t kPlainLoop = 0, kWrapped = 1, kDouble = 2;
+  static constexpr std::uint8_t kPlainLoop = 0, kWrapped = 1, kDouble = 2, kWithYo = 3;
   std::vector<std::uint8_t> turn_mark_;
 
   // The piece being worked: what a knitter sets aside with its yarn and takes up again.

@@ -779,6 +779,7 @@ class FrontMatter {
 
   // The method the project chose, and how its turns are resolved later.
   std::string short_rows_technique() const {
+    if (uses(HandOp::sl1yo)) return tuck_turn_technique();
     if (p_.turns == TurnMethod::wrap_and_turn)
       return "**Short rows (wrap and turn):** a row that ends in w&t stops there: bring the yarn "
              "between the needles, slip the next st purlwise, take the yarn back between the "
@@ -792,6 +793,19 @@ class FrontMatter {
            "up over the needle to the back until the st shows two legs: a double stitch. When a "
            "later row comes to a double stitch, work its two legs together as one st: k DS on "
            "the RS, p DS on the WS.";
+  }
+
+  // A stitch graph's short rows (AutoKnit's) turn on a tuck, whatever the project chose.
+  static std::string tuck_turn_technique() {
+    return "**Short rows (turned on a tuck):** a row that ends in \"sl1yo, turn\" stops there: "
+           "with the yarn in front slip the next st purlwise, take the yarn over the needle to "
+           "the back (the yo lies over the st, which is not worked) and turn the work; the sts "
+           "beyond wait on the needle. The next row begins with sl1: slip that st and its yo "
+           "purlwise as one. When a later row comes to it, work the st and its yo together as "
+           "one st: brk on the RS, brp on the WS (a decrease takes them as one of its sts). The "
+           "short rows go round past the beginning of the rnd: slip the marker as you come to "
+           "it; where a row says rm, remove it, and the next rnd places it anew (pm) where it "
+           "begins.";
   }
 
   std::vector<std::string> notes() const {

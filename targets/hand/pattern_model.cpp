@@ -15,30 +15,18 @@ namespace {
 
 using T = StitchType;
 
-constexpr std::array kSupported = {T::k,     T::p,    T::co,  T::bo,    T::kfb,
-                                   T::m1l,   T::m1r,  T::yo,  T::k2tog, T::ssk,
-                                   T::p2tog, T::s2kp, T::sr4, T::tnbo,  T::sco};
+constexpr std::array kSupported = {T::k,   T::p,    T::co,    T::bo,   T::kfb,   T::m1l,
+                                   T::m1r, T::yo,   T::k2tog, T::ssk,  T::p2tog, T::s2kp,
+                                   T::sr4, T::tnbo, T::sco,   T::tuck, T::sl};
 
 [[noreturn]] void unsupported(const std::string& what) {
   throw Error(fmt::format("hand target: {}", what));
-}
-
-// AutoKnit turns its short rows on a tuck: the st is not worked, the yarn is laid over it, and
-// the row back slips it; a later row works the st and the yarn as one.
-[[noreturn]] void refuse_tuck_at_a_turn(const KnitGraph& g, StitchId s) {
-  unsupported(fmt::format(
-      "{} is a tuck where a short row turns (the st is not worked: the yarn is laid over it, "
-      "then slipped with it after the turn, and a later row works the two as one); a knitter "
-      "would need a brioche-style turn (sl1yo, turn, sl1; later k the st with its yo), which "
-      "hand patterns do not cover yet (German short rows and wrap and turn work other fabrics)",
-      g.describe(s)));
 }
 
 void check_supported(const Compilation& c) {
   const KnitGraph& g = c.knit;
   for (StitchId s = 0; s < g.size(); ++s) {
     if (std::find(kSupported.begin(), kSupported.end(), g.type[s]) != kSupported.end()) continue;
-    if (g.type[s] == T::tuck && g.yarn_link[s] == YarnLink::turn) refuse_tuck_at_a_turn(g, s);
     unsupported(fmt::format("{} is a {} ({}), which hand patterns do not cover yet", g.describe(s),
                             info(g.type[s]).name, abbreviation(g.type[s])));
   }
@@ -974,13 +962,17 @@ class PatternBuilder {
         std::all_of(row_.begin(), row_.end(), [&](StitchId s) { return g_.type[s] == T::bo; });
     if (st_.previous_link == YarnLink::turn) std::swap(st_.ahead, st_.behind);
     if (st_.double_stitch_next) slip_double_stitch();
+    if (r.round) move_beginning_of_round_to_a_helix();
     if (r.round && st_.bor_removed) place_new_beginning_of_round();
     note_band_from_rnd(r);
     std::uint32_t takes = 0;
     for (StitchId s : row_) {
       number_of_[s] = r.number;
       note_region_mark(s, r);
+      pass_beginning_of_round(s, r, true);
       append_ops(s, r);
+      pass_beginning_of_round(s, r, false);
+      follow_beginning_of_round(s, r);
       takes += info(g_.type[s]).loops_in - (g_.type[s] == T::tnbo);  // one is held behind
       move_loops(s);
     }
@@ -991,6 +983,57 @@ class PatternBuilder {
     r.sts_after = st_.live;
     out_.rows.push_back(r);
     if (full_round) hold_what_others_work(static_cast<std::uint32_t>(out_.rows.size() - 1));
+  }
+
+  bool works_bor_wale(StitchId s) const {
+    auto taken = g_.loops_taken_by(s);
+    return st_.bor_st != kNoStitch && std::any_of(taken.begin(), taken.end(), [&](std::uint32_t l) {
+             return g_.loops[l].maker == st_.bor_st;
+           });
+  }
+
+  // A row that turns in the rnd (a stitch graph's short rows go round past the beginning of
+  // the rnd) slips the BOR marker where it works the marker's wale: before that st going the
+  // way the rnds go, after it going back; not first or last in the row (the simulator slips
+  // it at the start of a row, and a row that turns there leaves it behind the turn).
+  void pass_beginning_of_round(StitchId s, const PatternRow& r, bool before) {
+    if (!section().in_round || r.round || !turns_on_tucks() || !works_bor_wale(s)) return;
+    bool forward = r.side == st_.rnd_side;
+    if (forward != before || s == (before ? row_.front() : row_.back())) return;
+    st_.bor_slipped_at = static_cast<std::uint32_t>(out_.ops.size());
+    out_.ops.push_back(HandOp::sm);
+  }
+
+  // A rnd after short rows that goes all the way round from where they ended (a stitch
+  // graph's helix) begins the rnds there: the last short row to pass the BOR marker removes
+  // it, and the rnd places it anew.
+  void move_beginning_of_round_to_a_helix() {
+    std::uint32_t takes = 0;
+    for (StitchId s : row_) takes += info(g_.type[s]).loops_in;
+    if (st_.previous_link != YarnLink::turn || takes != st_.live || !turns_on_tucks() ||
+        works_bor_wale(row_.front()) || !st_.bor_slipped_at)
+      return;
+    out_.ops[*st_.bor_slipped_at] = HandOp::rm;
+    st_.bor_slipped_at.reset();
+    st_.bor_removed = true;
+  }
+
+  // Short rows turned on a tuck (a stitch graph's) go round past the beginning of the rnd; the
+  // short rows of a stitch mesh turn within the rnd, which the rows among rnds keep to.
+  bool turns_on_tucks() const {
+    auto tuck_turn = [&](const std::vector<StitchId>& row) {
+      return !row.empty() && g_.type[row.back()] == T::tuck &&
+             g_.yarn_link[row.back()] == YarnLink::turn;
+    };
+    return tuck_turn(row_) || (st_.previous_link == YarnLink::turn && tuck_turn(row_before_));
+  }
+
+  void follow_beginning_of_round(StitchId s, const PatternRow& r) {
+    if (!section().in_round) return;
+    bool starts_rnd = r.round && s == row_.front() && st_.previous_link != YarnLink::turn;
+    if (starts_rnd) st_.rnd_side = r.side;
+    if (r.round) st_.bor_slipped_at.reset();
+    if (starts_rnd || works_bor_wale(s)) st_.bor_st = s;
   }
 
   // A rnd after rows that turned (a gusset's, round a flap) that leaves the sts of the flap's
@@ -1295,8 +1338,29 @@ class PatternBuilder {
     refuse_loop_of_a_piece_not_placed(s);
     std::optional<Working> w = working_of(out_.mirror ? mirrored(type) : type, r.side);
     SKEIN_ASSERT(w.has_value(), "every supported stitch type has a hand working");
-    out_.ops.push_back(works_a_turn(s) ? resolving(w->op, s) : w->op);
+    HandOp op = works_a_turn(s) ? resolving(w->op, s) : w->op;
+    out_.ops.push_back(works_a_st_with_its_yo(s) ? with_its_yo(op) : op);
     if (w->make) out_.ops.push_back(*w->make);
+  }
+
+  // Does `s` work a st with a yo laid over it (a tuck's, or one slipped since)? Slipping it
+  // again keeps the yo with it.
+  bool works_a_st_with_its_yo(StitchId s) const {
+    if (g_.type[s] == T::sl) return false;
+    for (std::uint32_t l : g_.loops_taken_by(s)) {
+      StitchId maker = g_.loops[l].maker;
+      while (maker != kNoStitch && g_.type[maker] == T::sl)
+        maker = g_.loops[g_.loops_taken_by(maker)[0]].maker;
+      if (maker != kNoStitch && g_.type[maker] == T::tuck) return true;
+    }
+    return false;
+  }
+
+  // brk / brp: a plain st that works a st and its yo as one (a decrease takes the two as one
+  // of its sts, as brioche patterns count them).
+  static HandOp with_its_yo(HandOp op) {
+    if (!is_plain(op)) return op;
+    return op == HandOp::k ? HandOp::brk : HandOp::brp;
   }
 
   // A make-one lifts the strand to the next stitch; the last stitch of a flat row has none.
@@ -1326,6 +1390,11 @@ class PatternBuilder {
     // The row (and its first op) that went on from the end of the last rnd.
     std::optional<std::pair<std::uint32_t, std::uint32_t>> band_from_rnd;
     YarnLink previous_link = YarnLink::none;
+    // The BOR marker sits before the loop of this st's wale (the latest st worked there), and
+    // the side the rnds are worked with.
+    StitchId bor_st = kNoStitch;
+    Side rnd_side = Side::rs;
+    std::optional<std::uint32_t> bor_slipped_at;  // the op of a short row that slipped it
   };
   Needle st_;
   std::vector<Needle> set_aside_;               // per yarn

@@ -719,7 +719,11 @@ class SentenceReader {
         n.op = HandOp::slip_back;
         return n;
       }
-      need(c.eat("from") && c.eat("spare"), c, "'sl1 from spare' or 'sl1 back'");
+      if (!c.eat("from")) {
+        n.op = HandOp::sl1;
+        return n;
+      }
+      need(c.eat("spare"), c, "'sl1 from spare'");
       n.op = c.eat("behind") ? HandOp::from_spare_behind : HandOp::from_spare;
       return n;
     }
