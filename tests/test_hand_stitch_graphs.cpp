@@ -197,6 +197,9 @@ TEST(HandStitchGraphs, RejectsCarryingTheYarnOnWithTheReason) {
   EXPECT_EQ(failure_of("Do not fasten off: carry the yarn to the 3 sts of holder 1, the first st "
                        "slipped to it at the tip.\n"),
             "p.md:1: Carry the yarn: no yarn is being worked");
+  EXPECT_EQ(failure_of(kTube + "Pm and join to work in the rnd.\n"),
+            "p.md:5: Join to work in the rnd: only before a piece's first row, or after the yarn "
+            "is carried to held sts");
 }
 
 // A 6-st tube with a short row turned on a tuck after 2 sts; the row back goes past the

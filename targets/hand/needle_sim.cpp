@@ -334,7 +334,9 @@ class NeedleSimulator {
 
   void join(bool marker) {
     if (!active_ || (pc_.next_number != 1 && !pc_.carried) || pc_.joined)
-      fail("Join to work in the rnd: only right after a cast-on");
+      fail(
+          "Join to work in the rnd: only before a piece's first row, or after the yarn is carried "
+          "to held sts");
     pc_.carried = false;
     pc_.joined = true;
     // The first rnd starts with the first st cast on, or with the st at the tip of the sts a
@@ -1218,8 +1220,7 @@ class NeedleSimulator {
     if (op == HandOp::sl1) turn_mark_[pc_.right.back()] = turn_mark_[fab().taken.back()];
   }
 
-  // A loop a short row turned at must be worked with what resolves it, and only such a loop
-  // (a st is slipped as it is).
+  // A loop a short row turned at must be worked with what resolves it, and only such a loop.
   void check_turn_loop(HandOp op, std::uint32_t loop) const {
     // A st is slipped as it is; a decrease takes a st and its yo as one of its sts.
     if (op == HandOp::sl1 || (turn_mark_[loop] == kWithYo && info(op).takes > 1)) return;
