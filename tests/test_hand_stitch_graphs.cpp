@@ -16,6 +16,7 @@
 #include "driver/pipeline.hpp"
 #include "mesh/autoknit_st.hpp"
 #include "target_runner.hpp"
+#include "test_knitout_util.hpp"
 
 namespace skein {
 namespace {
@@ -85,6 +86,27 @@ std::string tuck_short_rows_st() {
   return st_text(lines);
 }
 
+// A flat sheet: cast on `width` sts, `rows` rows, each taking the row before's loops in the
+// other order (AutoKnit's dir flips at every turn), and the bind-off.
+std::string flat_sheet_st(int width, int rows) {
+  std::vector<StLine> lines;
+  std::vector<int> below;
+  for (int i = 0; i < width; ++i) {
+    below.push_back(static_cast<int>(lines.size()));
+    lines.push_back({0, 's'});
+  }
+  for (int r = 0; r <= rows; ++r) {
+    char dir = r % 2 == 0 ? 'c' : 'a';
+    std::vector<int> row;
+    for (auto in = below.rbegin(); in != below.rend(); ++in) {
+      row.push_back(static_cast<int>(lines.size()));
+      lines.push_back({0, r == rows ? 'e' : 'k', *in, dir});
+    }
+    below = row;
+  }
+  return st_text(lines);
+}
+
 Compilation compile_st(const std::string& text, const std::string& name) {
   return compile_knit_graph(parse_autoknit_st(text, name), name);
 }
@@ -92,6 +114,20 @@ Compilation compile_st(const std::string& text, const std::string& name) {
 void expect_lines(const std::string& pattern, const std::vector<std::string>& lines) {
   for (const std::string& line : lines)
     EXPECT_NE(pattern.find(line), std::string::npos) << line << "\n" << pattern;
+}
+
+// Rows inferred from a stitch graph worked flat (dir flips at each turn) are open rows.
+TEST(HandStitchGraphs, AFlatSheetIsWrittenInRowsAndProvenInEveryFormat) {
+  Compilation c = compile_st(flat_sheet_st(4, 4), "sheet.st");
+  ASSERT_TRUE(c.knittability.knittable) << check_report(c);
+  EXPECT_EQ(c.knit.row_shape, std::vector<RowShape>(6, RowShape::open));
+  expect_lines(emit(c, "hand"), {"Cast on 4 sts.\n\n**Row 1 (RS):** Knit.\n\n**Row 2 (WS):** "
+                                 "Purl.\n\nRep Rows 1\u20132 once more.\n"});
+  EXPECT_EQ(testing::unproven_hand_formats(c), "");
+  // The knitout target knits it too, now that its rows are known (it refused a stitch graph
+  // whose yarn turns while it read every one as a helix).
+  knitout::MachineProfile generic = testing::shipped_profile("generic");
+  EXPECT_TRUE(testing::replay_and_prove(testing::emit_knitout_text(c, generic), c, generic).proven);
 }
 
 TEST(HandStitchGraphs, ALegWithANewYarnIsJoinedToTheHeldStsInEveryFormat) {
