@@ -24,7 +24,8 @@ std::string sample_path(std::string_view name) {
 
 // Facts about AutoKnit's samples, computed with awk straight from the files: lines; in-links
 // that are not -1; yarn pieces (lines whose yarn id differs from the line before); lines per
-// type letter; and max over lines of row = 1 + max(row of the in-links), 0 without in-links.
+// type letter; the last row (0-based), a row ending before a line that takes a loop made in
+// it or where a bind-off ends; rows beside a turn (dir flips) and whole rounds.
 struct SampleFacts {
   std::string_view name;
   std::uint32_t stitches;
@@ -32,6 +33,7 @@ struct SampleFacts {
   std::size_t yarn_pieces;
   std::map<StitchType, std::size_t> type_counts;
   std::uint32_t max_row;
+  std::size_t short_rows, rounds;
 };
 
 const std::vector<SampleFacts>& sample_facts() {
@@ -48,9 +50,11 @@ const std::vector<SampleFacts>& sample_facts() {
         {T::sl, 18},
         {T::kfb, 9},
         {T::k2tog, 3}},
-       31},
-      {"test-B.st", 178, 165, 1, {{T::co, 13}, {T::bo, 17}, {T::k, 144}, {T::kfb, 4}}, 11},
-      {"test-C.st", 404, 385, 2, {{T::co, 19}, {T::bo, 26}, {T::k, 352}, {T::kfb, 7}}, 17},
+       33,
+       23,
+       11},
+      {"test-B.st", 178, 165, 1, {{T::co, 13}, {T::bo, 17}, {T::k, 144}, {T::kfb, 4}}, 14, 0, 15},
+      {"test-C.st", 404, 385, 2, {{T::co, 19}, {T::bo, 26}, {T::k, 352}, {T::kfb, 7}}, 22, 0, 23},
   };
   return facts;
 }
@@ -79,6 +83,10 @@ TEST(AutoknitSt, SamplesImportWithTheirKnownShape) {
     EXPECT_EQ(count_types(graph), facts.type_counts);
     EXPECT_EQ(*std::max_element(graph.row.begin(), graph.row.end()), facts.max_row);
     EXPECT_EQ(graph.row_shape.size(), std::size_t{facts.max_row} + 1);
+    EXPECT_EQ(std::count(graph.row_shape.begin(), graph.row_shape.end(), RowShape::short_row),
+              facts.short_rows);
+    EXPECT_EQ(std::count(graph.row_shape.begin(), graph.row_shape.end(), RowShape::closed),
+              facts.rounds);
     EXPECT_EQ(graph.source_name, sample_path(facts.name));
     EXPECT_EQ(graph.element, "line");
   }
@@ -125,11 +133,11 @@ TEST(AutoknitSt, TinyGraphMapsEveryField) {
   EXPECT_EQ(graph.source, (std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5, 6, 7, 8}));
   constexpr StitchId kNo = kNoStitch;
   EXPECT_EQ(graph.yarn_next, (std::vector<StitchId>{1, 2, 3, 4, 5, kNo, 7, 8, kNo}));
-  using Y = YarnLink;
-  EXPECT_EQ(graph.yarn_link, (std::vector{Y::course, Y::course, Y::course, Y::course, Y::course,
+  using Y = YarnLink;  // dir flips from a to c: the work turns after the cast-on
+  EXPECT_EQ(graph.yarn_link, (std::vector{Y::course, Y::course, Y::turn, Y::course, Y::course,
                                           Y::none, Y::course, Y::course, Y::none}));
   EXPECT_EQ(graph.flags, std::vector<std::uint8_t>(9, 0));
-  EXPECT_EQ(graph.row_shape, std::vector<RowShape>(3, RowShape::unknown));
+  EXPECT_EQ(graph.row_shape, std::vector<RowShape>(3, RowShape::open));
   ASSERT_EQ(graph.loops.size(), 6u);
   for (StitchId taker = 3; taker < 9; ++taker) {
     const Loop& loop = graph.loops[taker - 3];

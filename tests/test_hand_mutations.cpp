@@ -223,6 +223,10 @@ class Mutator {
       {"pw", {"p", "kw"}},
       {"back", {"from spare"}},
       {"Rm", {"Sm"}},
+      {"sl1yo", {"sl1", "k1", "turn"}},
+      {"brk", {"k1", "brp", "sl1"}},
+      {"Brk", {"K1", "Sl1"}},
+      {"brp", {"p1", "brk"}},
   };
 
   bool near_a_piece_heading(std::size_t i) const {  // blank lines between instructions
@@ -473,6 +477,25 @@ TEST(HandMutations, TheLetterHRejectsEveryEditThatChangesTheFabric) {
 TEST(HandMutations, TheLetterRRejectsEveryEditThatChangesTheFabric) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
   mutate_and_judge("letter R", compile_model("samples/letter-r/letter-r.yaml"));
+}
+
+// AutoKnit's tubes parted along their helix into two legs: the second leg's sts go to one
+// holder (after the sts on it), then a new yarn is joined to them (test-C) or the first leg's
+// yarn is carried on to them from its bind-off (test-B).
+TEST(HandMutations, StitchGraphLegsRejectEveryEditThatChangesTheFabric) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  mutate_and_judge("AutoKnit test-B (the yarn carried on to a leg)",
+                   compile_model("samples/autoknit/test-B.st"));
+  mutate_and_judge("AutoKnit test-C (a new yarn joined to a leg)",
+                   compile_model("samples/autoknit/test-C.st"));
+}
+
+// AutoKnit's short rows turned on a tuck (sl1yo, turn, sl1, later brk), going round past the
+// beginning of the rnd, which then moves to where the rnd after them begins.
+TEST(HandMutations, StitchGraphTuckTurnsRejectEveryEditThatChangesTheFabric) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  mutate_and_judge("AutoKnit test-A (short rows turned on a tuck)",
+                   compile_model("samples/autoknit/test-A.st"));
 }
 
 TEST(HandMutations, ShapedSheetsAndTubesRejectEveryEditThatChangesTheFabric) {

@@ -61,6 +61,16 @@ TEST(HandWsRounds, TheHatWorkedInsideOutIsTheModelItself) {
   expect_proven_unmirrored(c, "hat");
 }
 
+// AutoKnit's stitch graphs run left to right: inside out, their short rows turned on a tuck
+// (brp on the WS rnds), held legs and the yarn carried on are proven as the model itself.
+TEST(HandWsRounds, AutoKnitsStitchGraphsWorkedInsideOutAreTheModelsThemselves) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  for (const char* sample : {"test-A", "test-B", "test-C"}) {
+    Compilation c = compile_model(std::string("samples/autoknit/") + sample + ".st");
+    expect_proven_unmirrored(c, sample);
+  }
+}
+
 // Every stitch a WS rnd works (p2tog, ssp, s2pp, pfb, M1PL, M1PR, yo) on random tubes.
 TEST(HandWsRounds, RandomShapedTubesWorkedInsideOutAreProven) {
   std::mt19937_64 rng(11);

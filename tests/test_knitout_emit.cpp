@@ -105,8 +105,8 @@ TEST(KnitoutFit, ADoubleDecreaseNeedsThreeLoopsPerNeedle) {
 TEST(KnitoutFit, WhatIsNotSupportedYetIsNamedWithItsStitch) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
   EXPECT_EQ(emit_error(compile_model("samples/autoknit/test-A.st"), "generic"),
-            "not yet supported by the knitout target: a stitch graph whose yarn is not one helix "
-            "of rounds (it turns: rows knit back and forth or short rows), at line 60 (sl)");
+            "not yet supported by the knitout target: an increase, decrease or bind-off in a short "
+            "row, at line 309 (kfb)");
   EXPECT_EQ(emit_error(compile_model("samples/autoknit/test-B.st"), "generic"),
             "not yet supported by the knitout target: a bind-off stitch below the last row, at "
             "line 152 (bo)");
@@ -147,9 +147,9 @@ std::string helix_st(const std::string& letters) {
   return text;
 }
 
-// A stitch graph (.st) has no rows: its helix is cut into rounds where a stitch takes a loop of
-// the round being knit, and knit as a tube; its bind-off, wherever in the round it starts,
-// is a course of its own.
+// A stitch graph's helix is read as rounds (one ends before a stitch that takes a loop of it,
+// and where its bind-off starts) and knit as a tube; its bind-off, wherever in the round it
+// starts, is a course of its own.
 TEST(KnitoutStitchGraph, AHelixOfRoundsKnitsAsATubeAndProvesOnEveryProfile) {
   struct Case {
     const char* letters;

@@ -90,15 +90,12 @@ std::string stitch_counts(const KnitGraph& g) {
 }
 
 std::string row_counts(const KnitGraph& g) {
-  std::array<std::uint32_t, 4> shapes{};
+  std::array<std::uint32_t, 3> shapes{};
   for (RowShape s : g.row_shape) ++shapes[static_cast<int>(s)];
-  std::string out = fmt::format("{}", g.row_shape.size());
-  if (shapes[static_cast<int>(RowShape::unknown)] == g.row_shape.size())
-    return out + " (a stitch graph has no explicit rows; counted by loop depth)";
-  return out + fmt::format(" (closed {}, open {}, short {})",
-                           shapes[static_cast<int>(RowShape::closed)],
-                           shapes[static_cast<int>(RowShape::open)],
-                           shapes[static_cast<int>(RowShape::short_row)]);
+  return fmt::format("{} (closed {}, open {}, short {})", g.row_shape.size(),
+                     shapes[static_cast<int>(RowShape::closed)],
+                     shapes[static_cast<int>(RowShape::open)],
+                     shapes[static_cast<int>(RowShape::short_row)]);
 }
 
 void append_yarn_pieces(const Compilation& c, std::string& out) {

@@ -46,8 +46,6 @@ const char* row_shape_name(RowShape shape) {
       return "closed";
     case RowShape::short_row:
       return "short";
-    case RowShape::unknown:
-      return "unknown";
   }
   return "?";
 }

@@ -77,7 +77,7 @@ struct MismatchEdge {
   std::uint32_t vertex[2];  // 0-based mesh vertices
 };
 
-enum class RowShape : std::uint8_t { open, closed, short_row, unknown };
+enum class RowShape : std::uint8_t { open, closed, short_row };
 const char* row_shape_name(RowShape shape);
 
 // Flags for stitches that sit in a special region, so schedules can place markers.

@@ -111,7 +111,8 @@ class StParser {
     for (StitchId s = 0; s < size(); ++s) parse_line(s);
     for (StitchId s = 0; s < size(); ++s) check_mirrored(s);
     link_yarn();
-    add_loops_and_rows();
+    add_loops();
+    infer_rows();
     graph_.index_loops();
     return std::move(graph_);
   }
@@ -134,6 +135,7 @@ class StParser {
     graph_.yarn_link.resize(n);
     graph_.flags.assign(n, 0);
     yarn_.resize(n);
+    anticlockwise_.resize(n);
     links_.resize(n);
   }
 
@@ -147,7 +149,7 @@ class StParser {
     graph_.source[s] = s;
     yarn_[s] = parse_yarn(s, field[0]);
     graph_.type[s] = parse_type(s, field[1]);
-    check_direction(s, field[2]);
+    anticlockwise_[s] = parse_direction(s, field[2]);
     Links& links = links_[s];
     links.in = {parse_index(s, "in0", field[3]), parse_index(s, "in1", field[4])};
     links.out = {parse_index(s, "out0", field[5]), parse_index(s, "out1", field[6])};
@@ -173,10 +175,11 @@ class StParser {
     fail(s, fmt::format("expected a stitch type s, e, k, t, m, i or d, found '{}'", field));
   }
 
-  // The direction only matters to AutoKnit's own scheduler; skein checks it and drops it.
-  void check_direction(StitchId s, std::string_view field) const {
+  // The direction tells a turn (it flips) from a shift (it stays): see infer_rows.
+  bool parse_direction(StitchId s, std::string_view field) const {
     if (field != "c" && field != "a")
       fail(s, fmt::format("expected dir c (clockwise) or a (anticlockwise), found '{}'", field));
+    return field == "a";
   }
 
   std::int32_t parse_index(StitchId s, std::string_view name, std::string_view field) const {
@@ -257,7 +260,8 @@ class StParser {
                         there[1]));
   }
 
-  // AutoKnit yarns are helices with no explicit rows: the yarn runs on while the yarn id does.
+  // AutoKnit yarns have no explicit rows: the yarn runs on while the yarn id does. Rows are
+  // inferred afterwards (infer_rows), which changes the links between them.
   void link_yarn() {
     for (StitchId s = 0; s < size(); ++s) {
       bool continues = s + 1 < size() && yarn_[s + 1] == yarn_[s];
@@ -266,22 +270,64 @@ class StParser {
     }
   }
 
-  // Every in-link is a wale loop; makers come earlier, so one pass gives the rows.
-  void add_loops_and_rows() {
-    std::uint32_t max_row = 0;
+  // Every in-link is a wale loop.
+  void add_loops() {
     for (StitchId s = 0; s < size(); ++s) {
-      std::uint32_t row = 0;
       for (std::uint8_t in_slot = 0; in_slot < links_[s].in.size(); ++in_slot) {
         std::int32_t maker = links_[s].in[in_slot];
         if (maker == kNone) continue;
         auto m = static_cast<StitchId>(maker);
         graph_.loops.push_back(Loop{m, s, LoopKind::wale, out_slot(m, s, in_slot), in_slot});
-        row = std::max(row, graph_.row[m] + 1);
       }
-      graph_.row[s] = row;
-      max_row = std::max(max_row, row);
     }
-    graph_.row_shape.assign(std::size_t{max_row} + 1, RowShape::unknown);
+  }
+
+  // Does stitch s begin a row, the current one having begun at `row_start`? It does when the
+  // yarn starts there, when it takes a loop made earlier in the current row (the yarn came
+  // round the tube or back along the sheet), and where a bind-off ends and the yarn goes on
+  // to other sts (test-B.st's second leg). A bind-off begins in the row it ends: where a
+  // helix steps up a st before it (`k1`, then the rest bound off) the yarn goes on along the
+  // row, and it comes round to that st after the others.
+  bool starts_row(StitchId s, StitchId row_start) const {
+    if (s == 0 || graph_.yarn_next[s - 1] != s) return true;
+    for (std::int32_t maker : links_[s].in)
+      if (maker != kNone && static_cast<StitchId>(maker) >= row_start) return true;
+    return graph_.type[s] != StitchType::bo && graph_.type[s - 1] == StitchType::bo;
+  }
+
+  // The rows a knitter sees, in one pass along the yarns (stitches are in knitting order, and
+  // each row is a run of consecutive lines). Between two rows of one yarn AutoKnit's dir flips
+  // at a turn (the work is turned) and stays at a shift (the yarn goes on round the tube).
+  void infer_rows() {
+    std::vector<std::uint32_t> piece_of_row;
+    std::vector<bool> tube;          // per yarn piece: its yarn goes round at least once
+    std::vector<bool> touches_turn;  // per row: it ends at a turn or begins after one
+    StitchId row_start = 0;
+    for (StitchId s = 0; s < size(); ++s) {
+      if (starts_row(s, row_start)) {
+        bool new_piece = s == 0 || graph_.yarn_next[s - 1] != s;
+        bool turn = !new_piece && anticlockwise_[s] != anticlockwise_[s - 1];
+        if (new_piece) tube.push_back(false);
+        if (!new_piece) link_rows(s, turn);
+        if (!new_piece && !turn) tube.back() = true;
+        if (turn) touches_turn.back() = true;
+        touches_turn.push_back(turn);
+        piece_of_row.push_back(static_cast<std::uint32_t>(tube.size() - 1));
+        row_start = s;
+      }
+      graph_.row[s] = static_cast<std::uint32_t>(touches_turn.size() - 1);
+    }
+    // A piece worked flat has open rows; in a tube the rows that turn, or begin after a
+    // turn, are short rows, the others whole rounds.
+    for (std::size_t r = 0; r < touches_turn.size(); ++r)
+      graph_.row_shape.push_back(!tube[piece_of_row[r]] ? RowShape::open
+                                 : touches_turn[r]      ? RowShape::short_row
+                                                        : RowShape::closed);
+  }
+
+  void link_rows(StitchId s, bool turn) {
+    graph_.yarn_link[s - 1] = turn ? YarnLink::turn : YarnLink::shift;
+    if (!turn) graph_.flags[s] |= kShiftPathStart;
   }
 
   // Which out slot of `maker` feeds in slot `in_slot` of `taker`: the n-th mention of the
@@ -300,6 +346,7 @@ class StParser {
   std::string file_name_;
   std::vector<std::string_view> lines_;
   std::vector<std::uint32_t> yarn_;
+  std::vector<bool> anticlockwise_;  // AutoKnit's dir: a (true) or c
   std::vector<Links> links_;
   KnitGraph graph_;
 };

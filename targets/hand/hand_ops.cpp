@@ -63,6 +63,10 @@ constexpr std::array kOps{
   HandOpInfo{O::ds,    "DS",    "double stitch (German short row): with the yarn in front, "
                                 "slip the first st purlwise and pull the yarn up over the needle "
                                 "to the back, so the st shows two legs", 0, 0},
+  HandOpInfo{O::sl1yo, "sl1yo", "slip 1 yarn over: with the yarn in front, slip the next st "
+                                "purlwise and take the yarn over the needle to the back (a tuck: "
+                                "the st is not worked, the yo lies over it)", 1, 1},
+  HandOpInfo{O::sl1,   "sl1",   "slip the next st purlwise (a st with its yo: both as one)", 1, 1},
   HandOpInfo{O::kw,    "kw",    "knit the wrapped st together with its wrap: lift the wrap "
                                 "onto the left needle and knit it with the st", 1, 1},
   HandOpInfo{O::pw,    "pw",    "purl the wrapped st together with its wrap: lift the wrap "
@@ -71,6 +75,8 @@ constexpr std::array kOps{
                                 1, 1},
   HandOpInfo{O::pds,   "p DS",  "purl the two legs of the double stitch together as one st",
                                 1, 1},
+  HandOpInfo{O::brk,   "brk",   "brioche knit: knit the st together with its yo", 1, 1},
+  HandOpInfo{O::brp,   "brp",   "brioche purl: purl the st together with its yo", 1, 1},
   HandOpInfo{O::from_spare, "sl1 from spare", "slip the next st waiting on the spare needle "
                                 "onto the left needle (it is worked next)", 0, 0},
   HandOpInfo{O::from_spare_behind, "sl1 from spare behind", "slip the next st waiting on the "
@@ -107,6 +113,8 @@ constexpr std::array kFaces{
   FaceRule{O::yo, Side::rs, T::yo},       FaceRule{O::yo, Side::ws, T::yo},
   FaceRule{O::bo, Side::rs, T::bo},       FaceRule{O::bo, Side::ws, T::bo},
   FaceRule{O::wt, Side::rs, T::sr4},      FaceRule{O::wt, Side::ws, T::sr4},
+  FaceRule{O::sl1yo, Side::rs, T::tuck},  FaceRule{O::sl1yo, Side::ws, T::tuck},
+  FaceRule{O::sl1, Side::rs, T::sl},      FaceRule{O::sl1, Side::ws, T::sl},
 };
 // clang-format on
 
@@ -179,11 +187,15 @@ bool ends_row(HandOp op) {
 bool resolves_turn(HandOp op) {
   return op >= HandOp::kw && op <= HandOp::pds;
 }
+bool works_with_yo(HandOp op) {
+  return op == HandOp::brk || op == HandOp::brp;
+}
 
 std::optional<StitchType> rs_face(HandOp op, Side side) {
   // Resolving a short-row turn works the loop as a plain st (not in the table, so that
   // working_of keeps k and p for plain stitches).
   if (resolves_turn(op)) op = (op == HandOp::kw || op == HandOp::kds) ? HandOp::k : HandOp::p;
+  if (works_with_yo(op)) op = op == HandOp::brk ? HandOp::k : HandOp::p;
   return face_tables().face[static_cast<std::size_t>(op)][static_cast<std::size_t>(side)];
 }
 

@@ -54,10 +54,17 @@ enum class HandOp : std::uint8_t {
   wt,
   turn,
   ds,
+  // AutoKnit turns its short rows on a tuck: "sl1yo" slips the next st with a yo laid over it
+  // (a tuck), the row back slips it first ("sl1", the st with its yo as one), and a later row
+  // works the st and its yo together ("brk", "brp").
+  sl1yo,
+  sl1,
   kw,
   pw,
   kds,
   pds,
+  brk,
+  brp,
   // A piece beside this one (a contracting perpendicular edge) gives its sts one at a time:
   // the next st waiting on the spare needle goes onto the left needle, to be worked next.
   from_spare,
@@ -88,6 +95,7 @@ bool is_plain(HandOp op);     // k, p: written with a count ("k12")
 bool ends_row(HandOp op);     // w&t, turn: the rest of the needle waits
 // kw, pw, k DS, p DS: a plain st worked over the loop a short row turned at.
 bool resolves_turn(HandOp op);
+bool works_with_yo(HandOp op);  // brk, brp: a plain st worked over a st and its yo
 
 // The model stitch (as seen from the RS) that `op` makes when worked with `side` facing;
 // nullopt when no stitch of the catalogue looks like that (ssk worked on the WS). For a

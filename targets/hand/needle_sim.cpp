@@ -105,6 +105,9 @@ class NeedleSimulator {
       case Step::Kind::cast_on:
         cast_on(s.count, s.provisional);
         break;
+      case Step::Kind::carry_on:
+        carry_on(s);
+        break;
       case Step::Kind::join_spare:
         join_spare(s);
         break;
@@ -297,7 +300,7 @@ class NeedleSimulator {
     row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
     pc_.right.assign(loops.rbegin(), loops.rend());
     pc_.live = s.count;
-    pc_.on_spare_sts = true;
+    pc_.joined_to_sts = true;
   }
 
   // A new piece with its own yarn and needles.
@@ -312,13 +315,37 @@ class NeedleSimulator {
     next_link_ = YarnLink::course;
   }
 
+  // "Do not fasten off: carry the yarn to the sts of holder 1": every st bound off, the yarn
+  // goes on to a holder's sts (joined in the rnd next); the rows count on.
+  void carry_on(const Step& s) {
+    if (!active_) fail("Carry the yarn: no yarn is being worked");
+    if (pc_.live > 0)
+      fail(fmt::format("Carry the yarn to holder {}: {} still on the needle; bind them off first",
+                       s.number, sts(pc_.live)));
+    std::vector<std::uint32_t> loops = held(s.number, s.from_last[0], "Carry the yarn");
+    if (loops.size() != s.count)
+      fail(fmt::format("Carry the yarn: the pattern says {}, but the holder holds {}", sts(s.count),
+                       loops.size()));
+    holders_.erase(s.number);
+    pc_.left.clear();
+    pc_.right.assign(loops.rbegin(), loops.rend());
+    pc_.live = s.count;
+    pc_.joined = false;
+    pc_.joined_to_sts = pc_.carried = true;
+    pc_.bor = kNone;
+  }
+
   void join(bool marker) {
-    if (!active_ || pc_.next_number != 1 || pc_.joined)
-      fail("Join to work in the rnd: only right after a cast-on");
+    if (!active_ || (pc_.next_number != 1 && !pc_.carried) || pc_.joined)
+      fail(
+          "Join to work in the rnd: only before a piece's first row, or after the yarn is carried "
+          "to held sts");
+    pc_.carried = false;
     pc_.joined = true;
-    pc_.turn_before = false;  // the first rnd starts with the first st cast on
-    // ... or, joined to sts waiting elsewhere, with the st at the tip.
-    if (pc_.on_spare_sts) std::reverse(pc_.right.begin(), pc_.right.end());
+    // The first rnd starts with the first st cast on, or with the st at the tip of the sts a
+    // yarn was joined to.
+    if (pc_.joined_to_sts) std::reverse(pc_.right.begin(), pc_.right.end());
+    pc_.turn_before = false;
     pc_.place_bor = marker;
   }
 
@@ -460,7 +487,8 @@ class NeedleSimulator {
   void hold(const Step& s) {
     if (!active_ || !pc_.joined || pc_.bor == kNone)
       fail(fmt::format("Slip sts to holder {}: only from a piece worked in the rnd", s.number));
-    if (holders_.contains(s.number))
+    if (s.onto) check_held_before(s);
+    if (!s.onto && holders_.contains(s.number))
       fail(fmt::format("Slip sts to holder {}: it already holds sts", s.number));
     if (s.from_row == 0) fail(fmt::format("Slip sts to holder {}: the sts count from 1", s.number));
     std::vector<std::uint32_t> ring = ring_from_bor();
@@ -468,10 +496,19 @@ class NeedleSimulator {
       fail(fmt::format("Slip sts {}\u2013{} to holder {}: the rnd has only {}", s.from_row,
                        s.to_row, s.number, sts(static_cast<std::uint32_t>(ring.size()))));
     auto first = ring.begin() + (s.from_row - 1), end = ring.begin() + s.to_row;
-    holders_[s.number].assign(first, end);
+    holders_[s.number].insert(holders_[s.number].end(), first, end);
     ring.erase(first, end);
     lay_out_from_bor(ring);
     pc_.live -= s.to_row - s.from_row + 1;
+  }
+
+  // "(after the 1 st on it)": the holder must hold that many sts.
+  void check_held_before(const Step& s) const {
+    auto at = holders_.find(s.number);
+    auto held = static_cast<std::uint32_t>(at == holders_.end() ? 0 : at->second.size());
+    if (held != s.count)
+      fail(fmt::format("Slip sts to holder {} after the {} on it: it holds {}", s.number,
+                       sts(s.count), held == 0 ? "no sts" : sts(held)));
   }
 
   // A holder's sts from the needle tip: the first or the last st of the run slipped to it.
@@ -835,6 +872,17 @@ class NeedleSimulator {
     index_left_needle();
   }
 
+  // ... and a row that turns goes "to m" round to a marker beyond the last st on the left
+  // needle (the BOR marker a stitch graph's short rows pass): the right needle's sts follow
+  // the left needle's there.
+  void look_round_for_marker() {
+    bool beyond = std::any_of(pc_.right.begin(), pc_.right.end(), is_marker_entry);
+    if (!pc_.joined || row_round_ || marker_ahead() || !beyond) return;
+    pc_.left.insert(pc_.left.begin(), pc_.right.rbegin(), pc_.right.rend());
+    pc_.right.clear();
+    index_left_needle();
+  }
+
   // ... and a row that turns may work the last st of the left needle together with the first
   // of the right one's far end (a decrease across a gap, on the other side of the needle).
   void reach_around(std::uint32_t takes) {
@@ -900,6 +948,8 @@ class NeedleSimulator {
   }
 
   void run_node(const Program& p, const Node& n) {
+    if (n.until.kind == Until::Kind::marker || n.until.kind == Until::Kind::before_marker)
+      look_round_for_marker();
     switch (n.kind) {
       case Node::Kind::bind_off_all:
         while (!pc_.left.empty()) {
@@ -1189,12 +1239,22 @@ class NeedleSimulator {
     pc_.right.push_back(loop);
   }
 
+  // sl1yo lays a yo over the st it slips; sl1 slips a st with its yo as it is.
+  void mark_st_with_yo(HandOp op) {
+    if (op == HandOp::sl1yo) turn_mark_[pc_.right.back()] = kWithYo;
+    if (op == HandOp::sl1) turn_mark_[pc_.right.back()] = turn_mark_[fab().taken.back()];
+  }
+
   // A loop a short row turned at must be worked with what resolves it, and only such a loop.
   void check_turn_loop(HandOp op, std::uint32_t loop) const {
+    // A st is slipped as it is; a decrease takes a st and its yo as one of its sts.
+    if (op == HandOp::sl1 || (turn_mark_[loop] == kWithYo && info(op).takes > 1)) return;
     std::uint8_t needs = op == HandOp::kw || op == HandOp::pw     ? kWrapped
                          : op == HandOp::kds || op == HandOp::pds ? kDouble
+                         : works_with_yo(op)                      ? kWithYo
                                                                   : kPlainLoop;
     if (turn_mark_[loop] == needs) return;
+    if (turn_mark_[loop] == kWithYo || needs == kWithYo) with_yo_or_not(op, loop);
     if (needs != kPlainLoop)
       fail(fmt::format("{}: the next st is {}", info(op).abbreviation,
                        turn_mark_[loop] == kPlainLoop ? "not a short-row turn"
@@ -1204,6 +1264,13 @@ class NeedleSimulator {
                      turn_mark_[loop] == kWrapped ? "wrapped" : "a double stitch",
                      turn_mark_[loop] == kWrapped ? (facing_ == Side::rs ? "kw" : "pw")
                                                   : (facing_ == Side::rs ? "k DS" : "p DS")));
+  }
+
+  [[noreturn]] void with_yo_or_not(HandOp op, std::uint32_t loop) const {
+    if (turn_mark_[loop] == kWithYo)
+      fail(fmt::format("{}: the next st has a yo over it (sl1yo): work it with {}",
+                       info(op).abbreviation, facing_ == Side::rs ? "brk" : "brp"));
+    fail(fmt::format("{}: the next st has no yo over it", info(op).abbreviation));
   }
 
   void remove_bor() {
@@ -1233,6 +1300,7 @@ class NeedleSimulator {
     for (const Pending& p : pending_) adopt(x, p.op, p.loop);
     pending_.clear();
     for (std::uint32_t i = 0; i < oi.makes; ++i) pc_.right.push_back(new_loop(x));
+    mark_st_with_yo(op);
     pc_.live = pc_.live + oi.makes - oi.takes;
     row_last_stitch_ = x;
     last_make_.reset();
@@ -1339,15 +1407,16 @@ class NeedleSimulator {
   std::array<std::vector<std::uint32_t>, 2> spare_for_rows_;
 
   // Per loop: whether a short row turned at it, and how.
-  static constexpr std::uint8_t kPlainLoop = 0, kWrapped = 1, kDouble = 2;
+  static constexpr std::uint8_t kPlainLoop = 0, kWrapped = 1, kDouble = 2, kWithYo = 3;
   std::vector<std::uint8_t> turn_mark_;
 
   // The piece being worked: what a knitter sets aside with its yarn and takes up again.
   struct Piece {
     std::uint32_t number = 0;  // 1-based, in the order the pieces start
     bool joined = false, place_bor = false;
-    bool turn_before = true;    // the next row starts by turning the work
-    bool on_spare_sts = false;  // started on sts waiting elsewhere (not cast on)
+    bool turn_before = true;     // the next row starts by turning the work
+    bool joined_to_sts = false;  // started by joining a yarn to another piece's sts
+    bool carried = false;        // the yarn was carried to held sts, not yet joined in the rnd
     std::uint32_t bor = kNone;
     std::uint32_t next_number = 1;
     std::optional<Side> last_side;

@@ -240,9 +240,8 @@ class InstructionWriter {
     for (const PatternSection::Holding& h : p_.sections[section_].holdings) {
       if (h.after_row != row) continue;
       held += h.count;
-      runs.push_back(fmt::format("sts {}{}{}{} to holder {}", h.first, knitspeak() ? "-" : kRange,
-                                 h.first + h.count - 1, runs.empty() ? " of the rnd" : "",
-                                 h.holder));
+      runs.push_back(fmt::format("{}{} to holder {}{}", held_sts_text(h),
+                                 runs.empty() ? " of the rnd" : "", h.holder, onto_text(h)));
     }
     if (runs.empty()) return;
     std::string text = "Slip " + runs.front();
@@ -250,6 +249,17 @@ class InstructionWriter {
       text.append(i + 1 == runs.size() ? " and " : ", ").append(runs[i]);
     add(InstructionLine::Kind::setup, "",
         fmt::format("{} {} {} sts.", text, kDash, p_.rows[row].sts_after - held));
+  }
+
+  // "sts 10–18", or "st 26".
+  std::string held_sts_text(const PatternSection::Holding& h) const {
+    if (h.count == 1) return fmt::format("st {}", h.first);
+    return fmt::format("sts {}{}{}", h.first, knitspeak() ? "-" : kRange, h.first + h.count - 1);
+  }
+
+  // " (after the 1 st on it)": sts that go on a holder already holding some.
+  static std::string onto_text(const PatternSection::Holding& h) {
+    return h.onto ? fmt::format(" (after the {} on it)", sts(h.onto)) : "";
   }
 
   bool holding_after(std::uint32_t row) const {
@@ -309,6 +319,10 @@ class InstructionWriter {
   // "Join a new yarn to the 3 loops of Piece 1's chain, the first st cast on at the tip."
   std::string join_spare_text(const PatternSection::Start& start) const {
     const PatternSection& spare = p_.sections[start.section];
+    if (start.holder && p_.sections[section_].in_round)
+      return fmt::format(
+          "Join a new yarn to the {} of holder {}, the {} st slipped to it at the tip.",
+          sts(start.count), start.holder, start.from_last ? "last" : "first");
     if (start.holder)
       return fmt::format(
           "Join a new yarn to the {} of holder {}, the {} st of its last {} at the tip.",
@@ -341,7 +355,7 @@ class InstructionWriter {
 
   // None left (a row that binds off its last sts with held ones): the fasten-off says so.
   static std::string count_after(std::uint32_t before, std::uint32_t after) {
-    return before == after || after == 0 ? "" : fmt::format(" {} {} sts", kDash, after);
+    return before == after || after == 0 ? "" : fmt::format(" {} {}", kDash, sts(after));
   }
 
   // The longest-covering block of rows starting at `i` that repeats, as (rows, times).
@@ -371,8 +385,9 @@ class InstructionWriter {
     for (std::uint32_t i = first; i < end;) {
       std::uint32_t stop = i + 1;
       while (stop < end && !placement_before(stop) && !holding_after(stop - 1) &&
-             !hold_before(stop))
+             !hold_before(stop) && !carry_before(stop))
         ++stop;
+      write_carry_before(i);
       // A piece taken up again places its first ones as it is taken up.
       if (i != first || !p_.sections[section_].resumed) write_placements_before(i);
       if (i != first) write_holds_before(i);
@@ -380,6 +395,22 @@ class InstructionWriter {
       write_holdings_after(stop - 1);
       i = stop;
     }
+  }
+
+  const PatternSection::CarryOn* carry_before(std::uint32_t row) const {
+    for (const PatternSection::CarryOn& c : p_.sections[section_].carries)
+      if (c.before_row == row) return &c;
+    return nullptr;
+  }
+
+  // The yarn goes on from a bind-off to a holder's sts (a tube's second leg).
+  void write_carry_before(std::uint32_t row) {
+    const PatternSection::CarryOn* c = carry_before(row);
+    if (!c) return;
+    add(InstructionLine::Kind::setup, "",
+        fmt::format("Do not fasten off: carry the yarn to the {} of holder {}, the {} st slipped "
+                    "to it at the tip. Pm and join to work in the rnd.",
+                    sts(c->count), c->holder, c->from_last ? "last" : "first"));
   }
 
   void write_row_run(std::uint32_t first, std::uint32_t from, std::uint32_t end) {
@@ -630,6 +661,26 @@ class FrontMatter {
   }
   bool says(std::string_view words) const { return text_.find(words) != std::string::npos; }
 
+  // A tube parted into legs: the sts of one leg gathered on a holder from two rnds, then worked
+  // in the rnd with a new yarn or the yarn carried on from the other leg.
+  std::string held_sts_in_the_rnd_technique() const {
+    std::string text;
+    if (says(" on it)"))
+      text +=
+          " \"(after the 1 st on it)\" slips the sts onto the holder after those it already "
+          "holds, so they wait in the order they are worked.";
+    if (says("slipped to it at the tip. Pm and join"))
+      text +=
+          " To work a holder's sts in the rnd, slide them onto the needle(s) with the st "
+          "named at the tip of the left needle, place the BOR marker and work that st first.";
+    if (says("Do not fasten off: carry the yarn"))
+      text +=
+          " \"Do not fasten off: carry the yarn to\" them: after binding off, pull the yarn "
+          "through the last loop without cutting it and work the held sts with it, leaving a "
+          "strand from the bind-off to the first of them.";
+    return text;
+  }
+
   std::vector<std::string> abbreviations() const {
     std::vector<std::string> items;
     for (auto op = HandOp::k; op <= HandOp::slip_back;
@@ -699,7 +750,8 @@ class FrontMatter {
           "they wait there until the pattern places them on the needle, puts them on a spare "
           "needle (for \"sl1 from spare\") or binds them off. \"Place\" puts a holder's sts (a "
           "spare needle's, a chain's loops) on the needle where it says, the st it names "
-          "first.");
+          "first." +
+          held_sts_in_the_rnd_technique());
     if (uses(HandOp::slip_back)) items.push_back(decreasing_across_a_gap_technique());
     if (t_.joins)
       items.push_back(
@@ -746,6 +798,7 @@ class FrontMatter {
 
   // The method the project chose, and how its turns are resolved later.
   std::string short_rows_technique() const {
+    if (uses(HandOp::sl1yo)) return tuck_turn_technique();
     if (p_.turns == TurnMethod::wrap_and_turn)
       return "**Short rows (wrap and turn):** a row that ends in w&t stops there: bring the yarn "
              "between the needles, slip the next st purlwise, take the yarn back between the "
@@ -759,6 +812,19 @@ class FrontMatter {
            "up over the needle to the back until the st shows two legs: a double stitch. When a "
            "later row comes to a double stitch, work its two legs together as one st: k DS on "
            "the RS, p DS on the WS.";
+  }
+
+  // A stitch graph's short rows (AutoKnit's) turn on a tuck, whatever the project chose.
+  static std::string tuck_turn_technique() {
+    return "**Short rows (turned on a tuck):** a row that ends in \"sl1yo, turn\" stops there: "
+           "with the yarn in front slip the next st purlwise, take the yarn over the needle to "
+           "the back (the yo lies over the st, which is not worked) and turn the work; the sts "
+           "beyond wait on the needle. The next row begins with sl1: slip that st and its yo "
+           "purlwise as one. When a later row comes to it, work the st and its yo together as "
+           "one st: brk on the RS, brp on the WS (a decrease takes them as one of its sts). The "
+           "short rows go round past the beginning of the rnd: slip the marker as you come to "
+           "it; where a row says rm, remove it, and the next rnd places it anew (pm) where it "
+           "begins.";
   }
 
   std::vector<std::string> notes() const {

@@ -15,9 +15,9 @@ namespace {
 
 using T = StitchType;
 
-constexpr std::array kSupported = {T::k,     T::p,    T::co,  T::bo,    T::kfb,
-                                   T::m1l,   T::m1r,  T::yo,  T::k2tog, T::ssk,
-                                   T::p2tog, T::s2kp, T::sr4, T::tnbo,  T::sco};
+constexpr std::array kSupported = {T::k,   T::p,    T::co,    T::bo,   T::kfb,   T::m1l,
+                                   T::m1r, T::yo,   T::k2tog, T::ssk,  T::p2tog, T::s2kp,
+                                   T::sr4, T::tnbo, T::sco,   T::tuck, T::sl};
 
 [[noreturn]] void unsupported(const std::string& what) {
   throw Error(fmt::format("hand target: {}", what));
@@ -25,15 +25,11 @@ constexpr std::array kSupported = {T::k,     T::p,    T::co,  T::bo,    T::kfb,
 
 void check_supported(const Compilation& c) {
   const KnitGraph& g = c.knit;
-  if (std::count(g.row_shape.begin(), g.row_shape.end(), RowShape::unknown) > 0)
-    unsupported(fmt::format(
-        "{} has no rows or rounds (the yarn of a stitch graph is one helix), so it cannot be "
-        "written as a hand pattern yet; give a stitch mesh (.obj)",
-        g.source_name));
-  for (StitchId s = 0; s < g.size(); ++s)
-    if (std::find(kSupported.begin(), kSupported.end(), g.type[s]) == kSupported.end())
-      unsupported(fmt::format("{} is a {} ({}), which hand patterns do not cover yet",
-                              g.describe(s), info(g.type[s]).name, abbreviation(g.type[s])));
+  for (StitchId s = 0; s < g.size(); ++s) {
+    if (std::find(kSupported.begin(), kSupported.end(), g.type[s]) != kSupported.end()) continue;
+    unsupported(fmt::format("{} is a {} ({}), which hand patterns do not cover yet", g.describe(s),
+                            info(g.type[s]).name, abbreviation(g.type[s])));
+  }
   for (const Loop& l : g.loops) {
     bool joined = l.kind == LoopKind::joined && l.taker != kNoStitch && g.type[l.taker] == T::tnbo;
     bool split = l.kind == LoopKind::split && l.maker != kNoStitch && g.type[l.maker] == T::sco;
@@ -156,6 +152,8 @@ class Handedness {
                         p + 1));
       if (votes[p][0] || votes[p][1]) {
         first_lr_[p] = votes[p][1] > 0;
+      } else if (std::optional<bool> lr = as_the_row_it_takes(p)) {
+        first_lr_[p] = *lr;
       } else {
         // No stitch tells: work the first row after the cast-on from the RS.
         StitchId s = y_.first[p];
@@ -180,6 +178,25 @@ class Handedness {
     bool on_the_right = across.maker_slot == 1;
     bool lr = on_the_right == last;
     ++votes[y_.piece_of[s]][lr != static_cast<bool>(reversed_[s])];
+  }
+
+  // A piece whose own sts do not tell (no increase or decrease) but whose first row takes the
+  // loops of an earlier piece's row one after another (a leg joined to sts a tube left on a
+  // holder) runs as that row ran, or against it if it takes them in the other order.
+  std::optional<bool> as_the_row_it_takes(std::uint32_t p) const {
+    for (StitchId s = y_.first[p]; link_[s] == YarnLink::course; s = g_.yarn_next[s]) {
+      StitchId a = first_maker(s), b = first_maker(g_.yarn_next[s]);
+      if (a == kNoStitch || b == kNoStitch || y_.piece_of[a] >= p || g_.row[a] != g_.row[b])
+        continue;
+      if (pos_[a] + 1 == pos_[b] || pos_[b] + 1 == pos_[a])
+        return (left_to_right(a) == (pos_[a] < pos_[b])) != static_cast<bool>(reversed_[s]);
+    }
+    return std::nullopt;
+  }
+
+  StitchId first_maker(StitchId s) const {
+    auto taken = g_.loops_taken_by(s);
+    return taken.empty() ? kNoStitch : g_.loops[taken[0]].maker;
   }
 
   // A loop taken across a perpendicular edge comes from beyond a gap (in the rnd, from across
@@ -222,6 +239,7 @@ class PatternBuilder {
   }
 
   HandPattern run() && {
+    number_parts();
     std::size_t yarns = c_.yarns.size();
     set_aside_.resize(yarns);
     section_of_yarn_.resize(yarns, 0);
@@ -697,6 +715,7 @@ class PatternBuilder {
     const Held& held = holders_[holder - 1];
     section().starts_from = PatternSection::Start{section_of(first.maker), false,
                                                   first.maker == held.last, held.count, holder};
+    section().in_round = g_.yarn_link[row_.back()] == YarnLink::shift;  // a leg of a tube
     st_.live = st_.ahead = held.count;
   }
 
@@ -759,13 +778,20 @@ class PatternBuilder {
           continue;  // one by one, picked up, or across the gap
         bool chain = is_chain_loop(loop);
         if (std::uint32_t holder = holder_of_[loop.maker]; holder != 0) {
-          if (!holder_placed(holder)) place_holder(holder, loop, taken);
+          if (!holder_placed(holder) && !started_on(holder)) place_holder(holder, loop, taken);
         } else if (from != self && placeable(from, chain)) {
           place_spare_needle(loop, taken);
         }
         ++taken;
       }
     place_pieces_worked_later();
+  }
+
+  bool started_on(std::uint32_t holder) const {
+    const PatternSection& worked = out_.sections.back();
+    return (worked.starts_from && worked.starts_from->holder == holder) ||
+           std::any_of(worked.carries.begin(), worked.carries.end(),
+                       [&](const PatternSection::CarryOn& c) { return c.holder == holder; });
   }
 
   // The first row of a piece taken up in the rnd places the pieces beside its band too.
@@ -918,7 +944,7 @@ class PatternBuilder {
   // keeps its own (those it works across a gap too). A run another piece works one st at a
   // time across a perpendicular edge is a holder of its own.
   void hold_what_others_work(std::uint32_t row) {
-    const std::uint32_t own = 3 * section().yarn;
+    const std::uint32_t own = 3 * part_[row_.front()];
     // maker, taker's yarn (x3; +1 across an edge, +2 bound off with a three-needle bind-off)
     std::vector<std::pair<StitchId, std::uint32_t>> loops;
     for (StitchId s : row_)
@@ -926,7 +952,7 @@ class PatternBuilder {
         const Loop& loop = g_.loops[l];
         if (loop.taker == kNoStitch) return;
         if (loop.kind == LoopKind::split) continue;  // on a provisional cast-on's chain
-        std::uint32_t taker = 3 * c_.yarns.piece_of[loop.taker];
+        std::uint32_t taker = 3 * part_[loop.taker];
         bool across = loop.kind == LoopKind::perpendicular && taker != own;
         bool joined = loop.kind == LoopKind::joined && taker != own;
         loops.emplace_back(s, taker + (across ? 1 : joined ? 2 : 0));
@@ -976,13 +1002,60 @@ class PatternBuilder {
 
   void hold(std::uint32_t row, const std::vector<std::pair<StitchId, std::uint32_t>>& loops,
             std::uint32_t first, std::uint32_t end) {
-    holders_.push_back({loops[end - 1].first, end - first});
-    spare_left_.push_back(0);
-    spare_second_.push_back(0);
+    std::uint32_t onto = 0;
+    if (goes_on_from_last_holder(loops[first].first)) {
+      onto = holders_.back().count;
+      holders_.back() = {loops[end - 1].first, onto + end - first};
+    } else {
+      holders_.push_back({loops[end - 1].first, end - first});
+      spare_left_.push_back(0);
+      spare_second_.push_back(0);
+    }
     auto holder = static_cast<std::uint32_t>(holders_.size());
     for (std::uint32_t i = first; i < end; ++i) holder_of_[loops[i].first] = holder;
-    section().holdings.push_back({row, first + 1, end - first, holder});
+    section().holdings.push_back({row, first + 1, end - first, holder, onto});
     st_.live -= end - first;
+  }
+
+  // A yarn works one part of the fabric from its start, and another each time it leaves a
+  // row it bound off to go on to other sts (a tube's second leg): sts another part works
+  // wait on holders as another yarn's do.
+  void number_parts() {
+    std::uint32_t parts = 0;
+    for (std::uint32_t p = 0; p < c_.yarns.size(); ++p) {
+      StitchId s = c_.yarns.first[p];
+      for (std::uint32_t i = 0; i < c_.yarns.length[p]; ++i, s = g_.yarn_next[s]) {
+        part_[s] = parts;
+        bool leaves_bind_off = g_.type[s] == T::bo && g_.yarn_link[s] != YarnLink::course &&
+                               g_.yarn_next[s] != kNoStitch && g_.type[g_.yarn_next[s]] != T::bo;
+        if (leaves_bind_off) ++parts;
+      }
+      ++parts;
+    }
+  }
+
+  // After binding off every st, a row that takes held sts works them with the same yarn,
+  // joined in the rnd (written before the row: the yarn carried to them).
+  void carry_on_to_held_sts() {
+    if (st_.live > 0 || out_.rows.size() == section().first_row) return;
+    auto taken = g_.loops_taken_by(row_.front());
+    if (taken.empty() || holder_of_[g_.loops[taken[0]].maker] == 0) return;
+    StitchId first = g_.loops[taken[0]].maker;
+    std::uint32_t holder = holder_of_[first];
+    const Held& held = holders_[holder - 1];
+    section().carries.push_back(
+        {static_cast<std::uint32_t>(out_.rows.size()), holder, held.count, first == held.last});
+    st_.live = held.count;
+  }
+
+  // Does the yarn that works the st `first` come to it straight from the last st of the last
+  // holder? A tube parted along a helix (a stitch graph's) leaves the last st of one rnd and
+  // the first sts of the next to one leg: they go on one holder, in the order it works them.
+  bool goes_on_from_last_holder(StitchId first) const {
+    if (holders_.empty()) return false;
+    auto taker = [&](std::uint32_t loop) { return g_.loops[loop].taker; };
+    StitchId before = taker(g_.loops_made_by(holders_.back().last).back());
+    return g_.yarn_next[before] == taker(g_.loops_made_by(first).front());
   }
 
   void add_row() {
@@ -992,6 +1065,7 @@ class PatternBuilder {
     bool picked_up = section().picks_up && section().first_row == out_.rows.size();
     Side side = (hand_.left_to_right(row_.front()) != out_.mirror) ? Side::ws : Side::rs;
     if (section().in_round && !turns && after_a_row_that_turned()) hold_the_flap_left(side);
+    carry_on_to_held_sts();
     // After rows that turned, a rnd that works every st starts at the beginning of the rnd.
     if (!picked_up && (first_of_take_up || (section().in_round && !turns))) place_spare_needles();
     PatternRow r;
@@ -1007,13 +1081,17 @@ class PatternBuilder {
         std::all_of(row_.begin(), row_.end(), [&](StitchId s) { return g_.type[s] == T::bo; });
     if (st_.previous_link == YarnLink::turn) std::swap(st_.ahead, st_.behind);
     if (st_.double_stitch_next) slip_double_stitch();
+    if (r.round) move_beginning_of_round_to_a_helix();
     if (r.round && st_.bor_removed) place_new_beginning_of_round();
     note_band_from_rnd(r);
     std::uint32_t takes = 0;
     for (StitchId s : row_) {
       number_of_[s] = r.number;
       note_region_mark(s, r);
+      pass_beginning_of_round(s, r, true);
       append_ops(s, r);
+      pass_beginning_of_round(s, r, false);
+      follow_beginning_of_round(s, r);
       takes += info(g_.type[s]).loops_in - (g_.type[s] == T::tnbo);  // one is held behind
       move_loops(s);
     }
@@ -1024,6 +1102,57 @@ class PatternBuilder {
     r.sts_after = st_.live;
     out_.rows.push_back(r);
     if (full_round) hold_what_others_work(static_cast<std::uint32_t>(out_.rows.size() - 1));
+  }
+
+  bool works_bor_wale(StitchId s) const {
+    auto taken = g_.loops_taken_by(s);
+    return st_.bor_st != kNoStitch && std::any_of(taken.begin(), taken.end(), [&](std::uint32_t l) {
+             return g_.loops[l].maker == st_.bor_st;
+           });
+  }
+
+  // A row that turns in the rnd (a stitch graph's short rows go round past the beginning of
+  // the rnd) slips the BOR marker where it works the marker's wale: before that st going the
+  // way the rnds go, after it going back; not first or last in the row (the simulator slips
+  // it at the start of a row, and a row that turns there leaves it behind the turn).
+  void pass_beginning_of_round(StitchId s, const PatternRow& r, bool before) {
+    if (!section().in_round || r.round || !turns_on_tucks() || !works_bor_wale(s)) return;
+    bool forward = r.side == st_.rnd_side;
+    if (forward != before || s == (before ? row_.front() : row_.back())) return;
+    st_.bor_slipped_at = static_cast<std::uint32_t>(out_.ops.size());
+    out_.ops.push_back(HandOp::sm);
+  }
+
+  // A rnd after short rows that goes all the way round from where they ended (a stitch
+  // graph's helix) begins the rnds there: the last short row to pass the BOR marker removes
+  // it, and the rnd places it anew.
+  void move_beginning_of_round_to_a_helix() {
+    std::uint32_t takes = 0;
+    for (StitchId s : row_) takes += info(g_.type[s]).loops_in;
+    if (st_.previous_link != YarnLink::turn || takes != st_.live || !turns_on_tucks() ||
+        works_bor_wale(row_.front()) || !st_.bor_slipped_at)
+      return;
+    out_.ops[*st_.bor_slipped_at] = HandOp::rm;
+    st_.bor_slipped_at.reset();
+    st_.bor_removed = true;
+  }
+
+  // Short rows turned on a tuck (a stitch graph's) go round past the beginning of the rnd; the
+  // short rows of a stitch mesh turn within the rnd, which the rows among rnds keep to.
+  bool turns_on_tucks() const {
+    auto tuck_turn = [&](const std::vector<StitchId>& row) {
+      return !row.empty() && g_.type[row.back()] == T::tuck &&
+             g_.yarn_link[row.back()] == YarnLink::turn;
+    };
+    return tuck_turn(row_) || (st_.previous_link == YarnLink::turn && tuck_turn(row_before_));
+  }
+
+  void follow_beginning_of_round(StitchId s, const PatternRow& r) {
+    if (!section().in_round) return;
+    bool starts_rnd = r.round && s == row_.front() && st_.previous_link != YarnLink::turn;
+    if (starts_rnd) st_.rnd_side = r.side;
+    if (r.round) st_.bor_slipped_at.reset();
+    if (starts_rnd || works_bor_wale(s)) st_.bor_st = s;
   }
 
   // A rnd after rows that turned (a gusset's, round a flap) that leaves the sts of the flap's
@@ -1212,9 +1341,8 @@ class PatternBuilder {
   // (or a chain) placed into its rnd, a holder placed there (or the one it started on), or
   // one of the spare needle it started on?
   bool on_own_needle(StitchId maker, bool chain = false) const {
-    const auto& start = out_.sections.back().starts_from;
     if (holder_of_[maker] != 0)
-      return holder_placed(holder_of_[maker]) || (start && start->holder == holder_of_[maker]);
+      return holder_placed(holder_of_[maker]) || started_on(holder_of_[maker]);
     std::uint32_t from = section_of(maker);
     const PatternSection& worked = out_.sections.back();
     return c_.yarns.piece_of[maker] == worked.yarn ||
@@ -1360,8 +1488,29 @@ class PatternBuilder {
     refuse_loop_of_a_piece_not_placed(s);
     std::optional<Working> w = working_of(out_.mirror ? mirrored(type) : type, r.side);
     SKEIN_ASSERT(w.has_value(), "every supported stitch type has a hand working");
-    out_.ops.push_back(works_a_turn(s) ? resolving(w->op, s) : w->op);
+    HandOp op = works_a_turn(s) ? resolving(w->op, s) : w->op;
+    out_.ops.push_back(works_a_st_with_its_yo(s) ? with_its_yo(op) : op);
     if (w->make) out_.ops.push_back(*w->make);
+  }
+
+  // Does `s` work a st with a yo laid over it (a tuck's, or one slipped since)? Slipping it
+  // again keeps the yo with it.
+  bool works_a_st_with_its_yo(StitchId s) const {
+    if (g_.type[s] == T::sl) return false;
+    for (std::uint32_t l : g_.loops_taken_by(s)) {
+      StitchId maker = g_.loops[l].maker;
+      while (maker != kNoStitch && g_.type[maker] == T::sl)
+        maker = g_.loops[g_.loops_taken_by(maker)[0]].maker;
+      if (maker != kNoStitch && g_.type[maker] == T::tuck) return true;
+    }
+    return false;
+  }
+
+  // brk / brp: a plain st that works a st and its yo as one (a decrease takes the two as one
+  // of its sts, as brioche patterns count them).
+  static HandOp with_its_yo(HandOp op) {
+    if (!is_plain(op)) return op;
+    return op == HandOp::k ? HandOp::brk : HandOp::brp;
   }
 
   // A make-one lifts the strand to the next stitch; the last stitch of a flat row has none.
@@ -1392,6 +1541,11 @@ class PatternBuilder {
     // The row (and its first op) that went on from the end of the last rnd.
     std::optional<std::pair<std::uint32_t, std::uint32_t>> band_from_rnd;
     YarnLink previous_link = YarnLink::none;
+    // The BOR marker sits before the loop of this st's wale (the latest st worked there), and
+    // the side the rnds are worked with.
+    StitchId bor_st = kNoStitch;
+    Side rnd_side = Side::rs;
+    std::optional<std::uint32_t> bor_slipped_at;  // the op of a short row that slipped it
   };
   Needle st_;
   std::vector<Needle> set_aside_;               // per yarn
@@ -1406,6 +1560,7 @@ class PatternBuilder {
   // Sts slipped to holders: per model stitch its holder (1-based, 0: none); per holder its
   // last st (in the order its rnd worked them) and how many it holds.
   std::vector<std::uint32_t> holder_of_ = std::vector<std::uint32_t>(g_.size(), 0);
+  std::vector<std::uint32_t> part_ = std::vector<std::uint32_t>(g_.size(), 0);  // number_parts
   struct Held {
     StitchId last;
     std::uint32_t count;

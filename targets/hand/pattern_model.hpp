@@ -82,8 +82,17 @@ struct PatternSection {
   // `count` sts from the `first` (1-based, from the beginning of the rnd) to holder `holder`.
   struct Holding {
     std::uint32_t after_row, first, count, holder;
+    std::uint32_t onto = 0;  // the sts already on the holder, which these go after
   };
   std::vector<Holding> holdings;
+  // After binding off every st, the yarn goes on to the sts of a holder (a tube's second leg,
+  // worked with the yarn of the first), joined to work in the rnd from row `before_row` on:
+  // `count` sts, the first (or the last) slipped to it at the tip.
+  struct CarryOn {
+    std::uint32_t before_row, holder, count;
+    bool from_last;
+  };
+  std::vector<CarryOn> carries;
   std::vector<Placement> placements;
   bool provisional = false;  // its cast-on is a provisional one (a cast-on along a split)
   // A piece that starts on the sts of another's provisional cast-on: the sts on its needle,

@@ -142,6 +142,10 @@ class SentenceReader {
       step.marker = starts_with_ci(sentence, "pm");
       return add(step);
     }
+    if (starts_with_ci(sentence, "do not fasten off")) {
+      Cursor rest(sentence.substr(17));
+      return carry_on(rest);
+    }
     if (mentions(sentence, "fasten off")) return add({Step::Kind::fasten_off, line_no_});
     if (c.eat("leave")) return leave(c);
     if (c.eat("take") && c.eat("up")) return take_up(c);
@@ -285,22 +289,37 @@ class SentenceReader {
 
   // "Join a new yarn to the 3 sts of Piece 1 (or: the 3 loops of Piece 1's chain), the first
   // st cast on at the tip".
-  void join_spare(Cursor& c) {
-    Step step{Step::Kind::join_spare, line_no_};
+  void join_spare(Cursor& c) { add(sts_at_the_tip(c, {Step::Kind::join_spare, line_no_})); }
+
+  // "Do not fasten off: carry the yarn to the 9 sts of holder 1, the first st slipped to it at
+  // the tip".
+  void carry_on(Cursor& c) {
+    need_words(c, {":", "carry", "the", "yarn", "to"},
+               "': carry the yarn to the N sts of holder N'");
+    Step step = sts_at_the_tip(c, {Step::Kind::carry_on, line_no_});
+    if (!step.holder[0]) fail("expected the sts of a holder", c.rest());
+    add(step);
+  }
+
+  // "the 3 sts of Piece 1, the first st cast on at the tip" (or "the 13 sts of holder 1, the
+  // first st of its last rnd (or: slipped to it) at the tip").
+  Step sts_at_the_tip(Cursor& c, Step step) {
     whose_sts(c, step, "the number of sts");
     need_words(c, {",", "the"}, "', the first (or last) st cast on'");
     step.from_last[0] = c.eat("last");
     need(step.from_last[0] || c.eat("first"), c, "'first' or 'last'");
     need(c.eat("st"), c, "'st cast on at the tip' or 'st of its last rnd at the tip'");
-    if (step.holder[0]) {
-      need_words(c, {"of", "its", "last"}, "'of its last rnd'");
+    if (step.holder[0] && c.eat("slipped")) {
+      need_words(c, {"to", "it"}, "'slipped to it'");
+    } else if (step.holder[0]) {
+      need_words(c, {"of", "its", "last"}, "'of its last rnd' or 'slipped to it'");
       need(c.eat_any({"rnd", "row"}), c, "'rnd' or 'row'");
     } else {
       need_words(c, {"cast", "on"}, "'st cast on at the tip'");
     }
     need_words(c, {"at", "the", "tip"}, "'at the tip'");
     need(c.done(), c, "the end of the sentence");
-    add(step);
+    return step;
   }
 
   // "Leave the 16 sts on a spare needle and cut the yarn", "Leave the 96 sts on the needle and
@@ -397,18 +416,29 @@ class SentenceReader {
     std::vector<Step> runs;
     do {
       Step step{Step::Kind::hold, line_no_};
-      need(c.eat("sts"), c, "'sts A–B'");
+      bool one = c.eat("st");
+      need(one || c.eat("sts"), c, "'sts A–B' or 'st A'");
       step.from_row = need_number(c, "the first st to hold");
-      need(c.eat(kEnDash) || c.eat("-"), c, "'–' between the first and the last st");
-      step.to_row = need_number(c, "the last st to hold");
+      if (!one) need(c.eat(kEnDash) || c.eat("-"), c, "'–' between the first and the last st");
+      step.to_row = one ? step.from_row : need_number(c, "the last st to hold");
       if (step.to_row < step.from_row) fail("expected the sts in increasing order", c.rest());
       if (runs.empty()) need_words(c, {"of", "the", "rnd"}, "'of the rnd'");
       need_words(c, {"to", "holder"}, "'to holder N'");
       step.number = need_number(c, "a holder number");
+      if (c.eat_char('(')) onto_held_sts(c, step);
       runs.push_back(step);
     } while (c.eat_char(',') || c.eat("and"));
     end_with_count(c, runs.front());  // checked once the last run (given first) is slipped
     for (auto run = runs.rbegin(); run != runs.rend(); ++run) add(*run);
+  }
+
+  // "(after the 1 st on it)": the sts go on a holder after those it holds.
+  void onto_held_sts(Cursor& c, Step& step) {
+    need_words(c, {"after", "the"}, "'(after the N sts on it)'");
+    step.onto = true;
+    step.count = need_number(c, "the number of sts on the holder");
+    need(c.eat_any({"st", "sts"}), c, "'sts on it)'");
+    need_words(c, {"on", "it", ")"}, "'on it)'");
   }
 
   void need_words(Cursor& c, std::initializer_list<std::string_view> words, const char* expected) {
@@ -692,7 +722,10 @@ class SentenceReader {
         n.op = HandOp::slip_back;
         return n;
       }
-      need(c.eat("from"), c, "'sl1 from spare' or 'sl1 back'");
+      if (!c.eat("from")) {
+        n.op = HandOp::sl1;
+        return n;
+      }
       bool second = c.eat("2nd");
       need(c.eat("spare"), c, "'sl1 from spare' or 'sl1 from 2nd spare'");
       bool behind = c.eat("behind");

@@ -57,6 +57,7 @@ struct Step {
     take_up,                // "Take up Piece <number> again with its yarn"
     place,                  // "Place the <count> sts of Piece <number> ... first <last> sts"
     join_spare,             // "Join a new yarn to the <count> sts of Piece <number>['s chain], ..."
+    carry_on,               // "Do not fasten off: carry the yarn to the <count> sts of holder ..."
     pick_up,                // "Pick up <count> sts along the right edge of Piece <number>, ..."
     three_needle_bind_off,  // Piece <number> in front, Piece <last> behind, <count> pairs;
                             // from_last: which ends are at the tips (front, back)
@@ -88,6 +89,8 @@ struct Step {
   // place (front), three_needle_bind_off: the number (and last) name a holder, not a piece.
   bool holder[2] = {false, false};
   bool into_rnd = false;  // pick_up: onto the needle of the piece worked, after <last> sts
+  // hold: after the <count> sts already on the holder ("(after the 1 st on it)").
+  bool onto = false;
   // three_needle_bind_off of one needle folded in half (Piece <number>, <last> sts): each
   // needle's run from its tip to its end, counted round the needle; from_last: going down.
   bool fold = false;

@@ -50,37 +50,31 @@ void check_stitches(const KnitGraph& g) {
   }
 }
 
-// Whether the helix's bind-off starts at order[i] (wherever in its round: a course of its own).
-bool binds_off_from(const KnitGraph& g, const std::vector<StitchId>& order, std::uint32_t i) {
-  return i > 0 && g.type[order[i]] == StitchType::bo && g.type[order[i - 1]] != StitchType::bo;
+bool is_bind_off(const KnitGraph& g, StitchId s) {
+  return g.type[s] == StitchType::bo;
 }
 
 // A course ends where the yarn turns or crosses a shift-path. A row with short rows inside
 // (a heel's) is knit in several courses; a course never spans two rows of a sheet or tube. A
-// stitch graph (.st) has no rows: its yarn is a helix whose next round starts where a stitch
-// takes a loop of the round being knit, or where its bind-off starts.
+// bind-off is a course of its own, knit where its loops wait: in a stitch graph (whose rows
+// are inferred when it is read) it may start in the row of the st a helix steps up by, and go
+// on round past that st's row into the next.
 std::vector<Course> split_into_courses(const KnitGraph& g, const std::vector<StitchId>& order) {
   std::vector<Course> courses;
-  std::vector<std::uint32_t> course_of(g.size(), 0);  // 1-based, for the helix
-  auto takes_from_this_course = [&](StitchId s) {
-    for (std::uint32_t loop : g.loops_taken_by(s))
-      if (course_of[g.loops[loop].maker] == courses.size()) return true;
-    return false;
-  };
   for (std::uint32_t i = 0; i < order.size(); ++i) {
     StitchId s = order[i];
-    bool helix = g.row_shape[g.row[s]] == RowShape::unknown;
-    bool starts = courses.empty() || g.yarn_link[order[i - 1]] == YarnLink::turn ||
-                  g.yarn_link[order[i - 1]] == YarnLink::shift ||
-                  (helix && (takes_from_this_course(s) || binds_off_from(g, order, i)));
+    bool after_bind_off = i > 0 && is_bind_off(g, order[i - 1]);
+    bool bind_off_goes_on = after_bind_off && is_bind_off(g, s);
+    bool starts = courses.empty() || (is_bind_off(g, s) && !after_bind_off) ||
+                  (!bind_off_goes_on && (g.yarn_link[order[i - 1]] == YarnLink::turn ||
+                                         g.yarn_link[order[i - 1]] == YarnLink::shift));
     if (starts) {
       courses.emplace_back();
       courses.back().row = g.row[s];
       courses.back().begin = i;
     }
-    if (!starts && !helix && g.row[s] != courses.back().row)
+    if (!starts && !bind_off_goes_on && g.row[s] != courses.back().row)
       unsupported(g, "a row that ends without a turn or a shift-path", s);
-    course_of[s] = static_cast<std::uint32_t>(courses.size());
     courses.back().end = i + 1;
   }
   return courses;
@@ -308,22 +302,17 @@ CourseLayout lay_out_piece(const KnitGraph& g, std::vector<StitchId> order) {
   CourseLayout l;
   l.order = std::move(order);
   l.courses = split_into_courses(g, l.order);
-  // A stitch graph's helix is a tube (its rows are unknown).
-  bool helix = g.row_shape[l.courses.front().row] == RowShape::unknown;
-  l.tube = helix || g.row_shape[l.courses.front().row] == RowShape::closed;
+  l.tube = g.row_shape[l.courses.front().row] == RowShape::closed;
   for (const Course& course : l.courses) {
     RowShape shape = g.row_shape[course.row];
-    if (!helix && shape != RowShape::short_row && (shape == RowShape::closed) != l.tube)
+    if (shape != RowShape::short_row && (shape == RowShape::closed) != l.tube)
       unsupported(g, "a mix of open rows and closed rounds", l.order[course.begin]);
   }
   if (l.courses.size() < 2) unsupported(g, "a piece with fewer than two rows", l.order.front());
   check_borders(g, l);
   std::size_t bad = assign_directions(g, l, true);
   if (bad && assign_directions(g, l, false))
-    unsupported(g,
-                helix ? "a stitch graph whose yarn is not one helix of rounds (it turns: rows "
-                        "knit back and forth or short rows)"
-                      : "a row whose stitches do not take the loops below in order",
+    unsupported(g, "a row whose stitches do not take the loops below in order",
                 l.order[l.courses[bad].begin]);
   check_short_rows(g, l);
   for (const Course& course : l.courses)  // a bind-off is knit where its loops wait
