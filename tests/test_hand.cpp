@@ -142,9 +142,9 @@ TEST(HandTarget, SamplesNotCoveredYetNameWhatStopsThem) {
        "face 888 (3nbo, row 59) is a three-needle bind-off in the middle of the work, not in the "
        "first row after the piece is taken up, which is not covered yet"},
       {"samples/teapot/teapot.yaml",
-       "face 1909 (k, row 34) starts a rnd that picks up along the edge of face 1761 (k, row "
-       "33), a row of its own piece worked flat: Piece 2 is joined to work in the rnd in the "
-       "middle of its work"},
+       "face 2557 (k, row 40) starts Piece 3 on the loops of Piece 1's chain and goes on "
+       "around: a new yarn joined to another piece's sts to work in the rnd (the other pieces' "
+       "sts placed into that rnd) is not covered yet"},
   };
   for (const auto& [sample, named] : cases) {
     std::string error = emit_error(compile_model(sample));
@@ -153,22 +153,46 @@ TEST(HandTarget, SamplesNotCoveredYetNameWhatStopsThem) {
 }
 
 // A piece worked flat that goes on in the rnd by picking up along its own edges (the
-// teapot's second strip) is refused by name, not written wrong.
-TEST(HandTarget, AFlatPieceJoinedInTheRndByItsOwnEdgesIsNamed) {
+// teapot's second strip): its sts go to a holder, the rnd picks up onto the empty needle.
+TEST(HandTarget, AFlatPieceJoinedInTheRndByItsOwnEdgesIsProvenInEveryFormat) {
   Compilation c = compile_knit_graph(testing::strip_joined_in_the_rnd_graph(), "strip");
   ASSERT_TRUE(c.knittability.knittable) << check_report(c);
-  std::string error = emit_error(c);
-  EXPECT_NE(error.find("face 10 (k, row 4) starts a rnd that picks up along the edge of face 9 (k, "
-                       "row 3), a row "
-                       "of its own piece worked flat: Piece 1 is joined to work in the rnd"),
-            std::string::npos)
-      << error;
+  std::string pattern = emit(c, "hand");
+  for (const char* line :
+       {"**Row 2 (WS):** Purl.\n\nSlip the 3 sts of Row 2 to holder 1.\n\nPm and join to work in "
+        "the "
+        "rnd: the sts picked up and placed below go on the empty needle after the marker, in "
+        "order.\n\nPick up 2 sts along the left edge of this piece, one in each row from Row 2 "
+        "down to Row 1, onto the needle at the beginning of the rnd.\n\n",
+        "onto the needle after the first 2 sts of the rnd \u2014 4 sts.\n\n**Rnd 3:** Knit.\n",
+        "Join a new yarn to the 3 sts of holder 1, the last st of its last row at the tip.",
+        "**Joining a flat piece in the round**"})
+    EXPECT_NE(pattern.find(line), std::string::npos) << line << "\n" << pattern;
+  EXPECT_EQ(testing::unproven_hand_formats(c), "");
 }
 
-TEST(HandTarget, AMakeOneLastInAFlatRowHasNoStrandToLift) {
-  RowPlan plan = {{T::co, T::co, T::co}, {T::m1l, T::k, T::k}, {T::bo, T::bo, T::bo, T::bo}};
-  std::string error = emit_error(compile_stitch_mesh(build_from_rows(plan, Layout::sheet), "edge"));
-  EXPECT_NE(error.find("no strand to lift"), std::string::npos) << error;
+// Joining a flat piece in the rnd in the middle of its work: its sts first go to a holder,
+// and a marker marks the beginning of the rnd on the empty needle.
+TEST(HandTarget, AFlatPieceIsJoinedInTheRndWithAnEmptyNeedleAndAMarker) {
+  const std::string strip = "Cast on 3 sts.\nRow 1 (RS): Knit.\nRow 2 (WS): Purl.\n";
+  const std::pair<std::string, const char*> cases[] = {
+      {strip + "Pm and join to work in the rnd.\n",
+       "p.md:4: Join to work in the rnd: the sts of Row 2 are still on the needle (slip them to a "
+       "holder first: the rnd is made of the sts picked up and placed, and those left)"},
+      {strip + "Slip the 3 sts of Row 2 to holder 1.\nJoin to work in the rnd.\n",
+       "p.md:5: Join to work in the rnd: pm for the beginning of the rnd first (where the yarn "
+       "is)"},
+      {strip + "Slip the 2 sts of Row 2 to holder 1.\n",
+       "p.md:4: Slip the sts of Row 2 to holder 1: the pattern says 2 sts, but the row left 3 sts "
+       "on the needle"},
+      {strip + "Slip the 3 sts of Row 1 to holder 1.\n",
+       "p.md:4: Slip the sts of Row 1 to holder 1: the last row worked is Row 2"},
+      {"Cast on 6 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\nSlip the 6 sts of Row 1 to "
+       "holder 1.\n",
+       "p.md:3: Slip the sts of Row 1 to holder 1: only from a piece worked flat (in the rnd, say "
+       "which sts)"},
+  };
+  for (const auto& [pattern, failure] : cases) EXPECT_EQ(failure_of(pattern), failure) << pattern;
 }
 
 // Generates many sheets and tubes with random shaping: the hand simulator is the judge.

@@ -429,6 +429,8 @@ TEST(HandMutations, DecreasesAcrossAGapRejectEveryEditThatChangesTheFabric) {
                    compile_knit_graph(testing::gusset_graph(), "gusset"));
   mutate_and_judge("gusset leg (the flap's sts to a holder, a new yarn)",
                    compile_knit_graph(testing::gusset_leg_graph(), "gusset leg"));
+  mutate_and_judge("strip joined in the rnd (its sts to a holder, its edges picked up)",
+                   compile_knit_graph(testing::strip_joined_in_the_rnd_graph(), "strip"));
 }
 
 TEST(HandMutations, JoinsRejectEveryEditThatChangesTheFabric) {

@@ -149,6 +149,9 @@ class NeedleSimulator {
         hold(s);
         check_printed_count(s, "Slip sts to holders");
         break;
+      case Step::Kind::hold_all:
+        hold_all(s);
+        break;
       case Step::Kind::place_on_spare:
         place_on_spare_needle(s);
         break;
@@ -309,11 +312,29 @@ class NeedleSimulator {
   }
 
   void join(bool marker) {
+    if (active_ && pc_.next_number != 1 && !pc_.joined) return join_flat_piece(marker);
     if (!active_ || pc_.next_number != 1 || pc_.joined)
       fail("Join to work in the rnd: only right after a cast-on");
     pc_.joined = true;
     pc_.turn_before = false;  // the first rnd starts with the first st cast on
     pc_.place_bor = marker;
+  }
+
+  // A flat piece joined to work in the rnd in the middle of its work: its last row's sts were
+  // slipped to a holder; the BOR marker goes where the yarn is (the tip of the right needle),
+  // and the sts picked up and placed next go in after it.
+  void join_flat_piece(bool marker) {
+    auto of_last_row = [&](std::uint32_t entry) { return made_by_last_row(entry); };
+    if (std::any_of(pc_.right.begin(), pc_.right.end(), of_last_row) ||
+        std::any_of(pc_.left.begin(), pc_.left.end(), of_last_row))
+      fail(fmt::format(
+          "Join to work in the rnd: the sts of Row {} are still on the needle (slip them to a "
+          "holder first: the rnd is made of the sts picked up and placed, and those left)",
+          pc_.next_number - 1));
+    if (!marker)
+      fail("Join to work in the rnd: pm for the beginning of the rnd first (where the yarn is)");
+    pc_.joined = true;
+    pc_.right.push_back(pc_.bor = new_marker());
   }
 
   void fasten_off() {
@@ -462,6 +483,39 @@ class NeedleSimulator {
     ring.erase(first, end);
     lay_out_from_bor(ring);
     pc_.live -= s.to_row - s.from_row + 1;
+  }
+
+  // "Slip the 35 sts of Row 33 to holder 3": the sts a flat piece's last row left on the needle,
+  // in the order it worked them (before the piece is joined in the rnd); the others stay.
+  void hold_all(const Step& s) {
+    std::string what = fmt::format("Slip the sts of Row {} to holder {}", s.from_row, s.number);
+    if (!active_ || pc_.joined)
+      fail(what + ": only from a piece worked flat (in the rnd, say which sts)");
+    if (holders_.contains(s.number)) fail(what + ": it already holds sts");
+    if (s.from_row + 1 != pc_.next_number)
+      fail(fmt::format("{}: the last row worked is Row {}", what, pc_.next_number - 1));
+    std::vector<std::uint32_t> held = sts_of_last_row_off_the_needle();
+    if (held.size() != s.count)
+      fail(fmt::format("{}: the pattern says {}, but the row left {} on the needle", what,
+                       sts(s.count), sts(static_cast<std::uint32_t>(held.size()))));
+    pc_.live -= s.count;
+    holders_[s.number] = std::move(held);
+    check_printed_count(s, "Slip the sts to holder");
+  }
+
+  // The loops the last row made that are on the needles, in the order it made them; taken off.
+  std::vector<std::uint32_t> sts_of_last_row_off_the_needle() {
+    std::vector<std::uint32_t> off;
+    auto of_last_row = [&](std::uint32_t entry) { return made_by_last_row(entry); };
+    for (std::vector<std::uint32_t>* needle : {&pc_.right, &pc_.left}) {
+      std::copy_if(needle->begin(), needle->end(), std::back_inserter(off), of_last_row);
+      std::erase_if(*needle, of_last_row);
+    }
+    return off;
+  }
+
+  bool made_by_last_row(std::uint32_t entry) {
+    return !is_marker_entry(entry) && fab().row[fab().loop_maker[entry]] == row_;
   }
 
   // A holder's sts from the needle tip: the first or the last st of the run slipped to it.

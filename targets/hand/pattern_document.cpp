@@ -108,7 +108,7 @@ class InstructionWriter {
     if (sec.picks_up) return pick_up_text(*sec.picks_up, sec.cast_on);
     std::string text = fmt::format("Cast on {}{}.", sts(sec.cast_on),
                                    sec.provisional ? " with a provisional cast-on" : "");
-    if (sec.in_round)
+    if (sec.in_round && !sec.joined_in_rnd_at)
       text +=
           fmt::format(" Pm and join to work in the rnd{}, being careful not to twist.",
                       starts_inside_out(sec) ? " with the WS facing (the tube inside out)" : "");
@@ -173,9 +173,20 @@ class InstructionWriter {
   // beginning of the rnd, the first st of its last rnd first."
   std::string take_up_text(const PatternSection& sec) const {
     std::string text = fmt::format("Take up Piece {} again with its yarn.", sec.piece);
+    if (sec.first_row > 0)  // the sts of its flap another piece works, slipped as it is taken up
+      if (std::string held = holdings_text(sec.first_row - 1, set_aside_with(sec)); !held.empty())
+        text.append(" ").append(held);
     for (const std::string& placed : placement_texts_before(sec.first_row))
       text.append(" ").append(placed);
     return with_count_after_placements(text, sec.first_row);
+  }
+
+  // The sts a piece taken up again was set aside with.
+  std::uint32_t set_aside_with(const PatternSection& taken_up) const {
+    std::uint32_t sts = 0;
+    for (std::uint32_t s = 0; s < section_; ++s)
+      if (p_.sections[s].piece == taken_up.piece) sts = p_.sections[s].live_at_end;
+    return sts;
   }
 
   // What is placed before `row`: holders put on a spare needle first, as they add no st to the
@@ -203,9 +214,9 @@ class InstructionWriter {
           "at the tip.",
           p.count, p.holder, p.from_last ? "last" : "first");
     bool cast_on = p.holder == 0 && (p.chain || spare.first_row == spare.end_row);
-    std::string which = cast_on          ? "cast on"
-                        : spare.in_round ? "of its last rnd"
-                                         : "of its last row";
+    std::string which = cast_on                                         ? "cast on"
+                        : spare.in_round && !holds_a_flat_row(p.holder) ? "of its last rnd"
+                                                                        : "of its last row";
     std::string from = p.holder != 0
                            ? fmt::format("holder {}", p.holder)
                            : fmt::format("Piece {}{}", spare.piece, p.chain ? "'s chain" : "");
@@ -218,6 +229,14 @@ class InstructionWriter {
 
   // "Slip sts 10–18 of the rnd to holder 1, sts 19–27 to holder 2 and sts 28–36 to holder 3."
   void write_holdings_after(std::uint32_t row) {
+    if (write_whole_needle_held_after(row)) return;
+    std::string text = holdings_text(row, p_.rows[row].sts_after);
+    if (!text.empty()) add(InstructionLine::Kind::setup, "", text);
+  }
+
+  // The holdings after `row` (a row of the section, or the one before a piece is taken up), with
+  // what then stays of the `on_needle` sts.
+  std::string holdings_text(std::uint32_t row, std::uint32_t on_needle) const {
     std::vector<std::string> runs;
     std::uint32_t held = 0;
     for (const PatternSection::Holding& h : p_.sections[section_].holdings) {
@@ -227,12 +246,34 @@ class InstructionWriter {
                                  h.first + h.count - 1, runs.empty() ? " of the rnd" : "",
                                  h.holder));
     }
-    if (runs.empty()) return;
+    if (runs.empty()) return "";
     std::string text = "Slip " + runs.front();
     for (std::size_t i = 1; i < runs.size(); ++i)
       text.append(i + 1 == runs.size() ? " and " : ", ").append(runs[i]);
+    return fmt::format("{} {} {} sts.", text, kDash, on_needle - held);
+  }
+
+  // "Slip the 35 sts of Row 33 to holder 3 — 7 sts.": a flat piece's last row, before the piece
+  // is joined in the rnd (the count: the sts that stay on the needle, if any).
+  bool write_whole_needle_held_after(std::uint32_t row) {
+    for (const PatternSection::Holding& h : p_.sections[section_].holdings)
+      if (h.after_row == row && h.whole) {
+        std::uint32_t left = p_.rows[row].sts_after - h.count;
+        add(InstructionLine::Kind::setup, "",
+            fmt::format("Slip the {} of {} {} to holder {}{}.", sts(h.count),
+                        rows_word(false, false), p_.rows[row].number, h.holder,
+                        left ? fmt::format(" {} {}", kDash, sts(left)) : ""));
+        return true;
+      }
+    return false;
+  }
+
+  // Before the first rnd of a flat piece joined in the rnd, whose needle is then empty.
+  void write_join_in_the_rnd_before(std::uint32_t row) {
+    if (p_.sections[section_].joined_in_rnd_at != row) return;
     add(InstructionLine::Kind::setup, "",
-        fmt::format("{} {} {} sts.", text, kDash, p_.rows[row].sts_after - held));
+        "Pm and join to work in the rnd: the sts picked up and placed below go on the empty "
+        "needle after the marker, in order.");
   }
 
   bool holding_after(std::uint32_t row) const {
@@ -283,10 +324,22 @@ class InstructionWriter {
                        p.from_row <= p.to_row ? "up" : "down", row(p.to_row));
   }
 
-  // A gusset's edges are the flap's, rows of the piece being worked.
+  // A gusset's edges are the flap's, rows of the piece being worked (of a flat piece joined in
+  // the rnd, this piece's).
   std::string edge_owner(const PatternSection::PickUp& p) const {
+    const PatternSection& worked = p_.sections[section_];
     std::uint32_t piece = p_.sections[p.section].piece;
-    return piece == p_.sections[section_].piece ? "the flap" : fmt::format("Piece {}", piece);
+    if (piece != worked.piece) return fmt::format("Piece {}", piece);
+    return worked.joined_in_rnd_at ? "this piece" : "the flap";
+  }
+
+  // Does the holder hold the sts of a flat piece's last row (slipped before it was joined in
+  // the rnd)?
+  bool holds_a_flat_row(std::uint32_t holder) const {
+    for (const PatternSection& sec : p_.sections)
+      for (const PatternSection::Holding& h : sec.holdings)
+        if (h.holder == holder && holder != 0) return h.whole;
+    return false;
   }
 
   // "Join a new yarn to the 3 loops of Piece 1's chain, the first st cast on at the tip."
@@ -296,7 +349,7 @@ class InstructionWriter {
       return fmt::format(
           "Join a new yarn to the {} of holder {}, the {} st of its last {} at the tip.",
           sts(start.count), start.holder, start.from_last ? "last" : "first",
-          spare.in_round ? "rnd" : "row");
+          spare.in_round && !holds_a_flat_row(start.holder) ? "rnd" : "row");
     return fmt::format("Join a new yarn to the {} {} of Piece {}{}, the {} st cast on at the tip.",
                        start.count, start.chain ? "loops" : "sts", spare.piece,
                        start.chain ? "'s chain" : "", start.from_last ? "last" : "first");
@@ -354,7 +407,10 @@ class InstructionWriter {
       std::uint32_t stop = i + 1;
       while (stop < end && !placement_before(stop) && !holding_after(stop - 1)) ++stop;
       // A piece taken up again places its first ones as it is taken up.
-      if (i != first || !p_.sections[section_].resumed) write_placements_before(i);
+      if (i != first || !p_.sections[section_].resumed) {
+        write_join_in_the_rnd_before(i);
+        write_placements_before(i);
+      }
       write_row_run(first, i, stop);
       write_holdings_after(stop - 1);
       i = stop;
@@ -447,6 +503,7 @@ struct Totals {
   bool provisional = false;        // a provisional cast-on
   bool picks_up = false;           // a piece starts on loops picked up along an edge
   bool picks_up_into_rnd = false;  // loops picked up along an edge go into a rnd
+  bool joins_flat_piece = false;   // a flat piece is joined in the rnd in the middle of its work
   std::uint32_t holders = 0;
   std::uint32_t widest = 0, narrowest_round = 0;
   std::vector<bool> used = std::vector<bool>(kHandOpCount, false);
@@ -465,6 +522,8 @@ Totals totals_of(const HandPattern& p) {
     for (const PatternSection::Holding& h : s.holdings) t.holders = std::max(t.holders, h.holder);
     if (s.joins) continue;
     (s.in_round ? t.round : t.flat) = true;
+    t.flat = t.flat || s.joined_in_rnd_at;
+    t.joins_flat_piece = t.joins_flat_piece || s.joined_in_rnd_at;
     t.widest = std::max(t.widest, s.cast_on);
     if (s.in_round) t.narrowest_round = std::min(t.narrowest_round, s.cast_on);
   }
@@ -671,6 +730,13 @@ class FrontMatter {
           "of the rnd\"): with the RS facing and no new yarn, put the outer loop of the edge st "
           "of each row named on the needle at that place, one row after the other (the loops "
           "are not knit: the rnd works them in the order picked up).");
+    if (t_.joins_flat_piece)
+      items.push_back(
+          "**Joining a flat piece in the round** (after rows worked flat): once its sts are "
+          "slipped to a holder the needle is empty. Place the BOR marker, put the sts the "
+          "pattern picks up and places next on the needle after it, in order, and work the next "
+          "rnd over them with the yarn still attached at the end of the last row: starting with "
+          "the first st put on, it joins them into a tube.");
     if (t_.holders > 0)
       items.push_back(
           "**Holders:** \"Slip sts 10\u201318 of the rnd to holder 1\" counts the sts from the "

@@ -472,7 +472,7 @@ class PatternBuilder {
     else
       add_row();
     st_.previous_link = g_.yarn_link[row_.back()];
-    row_before_ = std::move(row_);
+    st_.last_row = std::move(row_);
     row_.clear();
   }
 
@@ -673,7 +673,8 @@ class PatternBuilder {
           continue;  // one by one, picked up, or across the gap
         bool chain = is_chain_loop(loop);
         if (std::uint32_t holder = holder_of_[loop.maker]; holder != 0) {
-          if (!holder_placed(holder)) place_holder(holder, loop, taken);
+          if (!holder_placed(holder) && !started_on_holder(holder))
+            place_holder(holder, loop, taken);
         } else if (from != self && placeable(from, chain)) {
           place_spare_needle(loop, taken);
         }
@@ -757,22 +758,33 @@ class PatternBuilder {
     auto& placed = section().placements;
     std::uint32_t row = number_of_[loop.maker];
     std::uint32_t before_row = static_cast<std::uint32_t>(out_.rows.size());
-    if (!placed.empty() && placed.back().edge && placed.back().before_row == before_row &&
-        placed.back().after + placed.back().count == after &&
-        placed.back().section == section_of(loop.maker)) {
+    // The edge seen from the RS: the loop across it is the maker's last (right) or first; the
+    // mirror image swaps them.
+    auto made = g_.loops_made_by(loop.maker);
+    bool right = (g_.loops[made.front()].kind != LoopKind::perpendicular) != out_.mirror;
+    if (goes_on_picking_up(loop, after, right)) {
       ++placed.back().count;
       placed.back().edge->to_row = row;
     } else {
       PatternSection::Placement p{section_of(loop.maker), 1, after, false};
       p.before_row = before_row;
-      // The edge seen from the RS: the loop across it is the maker's last (right) or first;
-      // the mirror image swaps them.
-      auto made = g_.loops_made_by(loop.maker);
-      bool right = (g_.loops[made.front()].kind != LoopKind::perpendicular) != out_.mirror;
       p.edge = PatternSection::PickUp{p.section, row, row, right};
       placed.push_back(p);
     }
     ++st_.live;
+  }
+
+  // Does the loop go on the last pick-up: right after it in the rnd, along the same edge of the
+  // same piece, in the next row (both edges of a flat piece joined in the rnd are side by side
+  // in its first rnd)?
+  bool goes_on_picking_up(const Loop& loop, std::uint32_t after, bool right) const {
+    const auto& placed = out_.sections.back().placements;
+    if (placed.empty() || !placed.back().edge) return false;
+    const PatternSection::Placement& last = placed.back();
+    std::uint32_t row = number_of_[loop.maker], to = last.edge->to_row;
+    return last.before_row == out_.rows.size() && last.after + last.count == after &&
+           last.section == section_of(loop.maker) && last.edge->right == right &&
+           (row + 1 == to || to + 1 == row);
   }
 
   // The sts of the piece taken up, from its first row up to the first whole rnd after it.
@@ -810,6 +822,12 @@ class PatternBuilder {
     p.before_row = static_cast<std::uint32_t>(out_.rows.size());
     section().placements.push_back(p);
     st_.live += p.count;
+  }
+
+  // The piece started on that holder's sts: those it has not worked yet are on its needle.
+  bool started_on_holder(std::uint32_t holder) const {
+    const auto& start = out_.sections.back().starts_from;
+    return start && start->holder == holder;
   }
 
   bool holder_placed(std::uint32_t holder) const {
@@ -866,6 +884,8 @@ class PatternBuilder {
   }
 
   void add_row() {
+    refuse_a_first_rnd_on_another_pieces_sts();
+    join_flat_piece_in_the_rnd();
     bool turns = g_.yarn_link[row_.back()] == YarnLink::turn || ends_between_turns();
     bool first_of_take_up = section().resumed && section().first_row == out_.rows.size();
     bool full_round = section().in_round && !turns && st_.previous_link != YarnLink::turn;
@@ -903,23 +923,79 @@ class PatternBuilder {
     check_make_one_has_a_strand(r);
     r.end_op = static_cast<std::uint32_t>(out_.ops.size());
     r.sts_after = st_.live;
+    st_.last_side = r.side;
     out_.rows.push_back(r);
     if (full_round) hold_what_others_work(static_cast<std::uint32_t>(out_.rows.size() - 1));
+  }
+
+  // A flat piece whose next row goes on around (the teapot's second strip going on as a tube
+  // between the strips) is joined to work in the rnd in the middle of its work: the sts of its
+  // last row, all left to other pieces, are slipped to a holder, and the rnd is made of sts
+  // picked up (along the piece's own edges too) and placed onto the empty needle, from the new
+  // beginning of the rnd.
+  void join_flat_piece_in_the_rnd() {
+    PatternSection& sec = section();
+    if (sec.in_round || st_.previous_link != YarnLink::turn ||
+        g_.yarn_link[row_.back()] != YarnLink::shift || out_.rows.size() == sec.first_row)
+      return;
+    hold_the_whole_needle();
+    sec.in_round = true;
+    sec.joined_in_rnd_at = static_cast<std::uint32_t>(out_.rows.size());
+    st_.previous_link = YarnLink::shift;  // the rnd starts at the beginning of the rnd
+  }
+
+  // A new yarn joined to another piece's sts (a holder's, a spare needle's) whose first row goes
+  // on around (the teapot's body above its spout and handle, joining both strips' held sts and
+  // both provisional cast-ons' chains in one rnd) would join them in the rnd with the others
+  // placed: not written yet.
+  void refuse_a_first_rnd_on_another_pieces_sts() const {
+    const PatternSection& sec = out_.sections.back();
+    if (sec.in_round || !sec.starts_from || out_.rows.size() != sec.first_row ||
+        g_.yarn_link[row_.back()] != YarnLink::shift)
+      return;
+    unsupported(fmt::format(
+        "{} starts Piece {} on the {} of {} and goes on around: a new yarn joined to another "
+        "piece's sts to work in the rnd (the other pieces' sts placed into that rnd) is not "
+        "covered yet",
+        g_.describe(row_.front()), sec.piece, sec.starts_from->chain ? "loops" : "sts",
+        sec.starts_from->holder
+            ? fmt::format("holder {}", sec.starts_from->holder)
+            : fmt::format("Piece {}{}", out_.sections[sec.starts_from->section].piece,
+                          sec.starts_from->chain ? "'s chain" : "")));
+  }
+
+  // The sts of the flat piece's last row go to a holder, in the order the row worked them; the
+  // others on the needle (those short rows left) stay for the rnd. A rnd that works some of
+  // the last row's sts itself would join them with the sts picked up: not written yet.
+  void hold_the_whole_needle() {
+    std::vector<std::pair<StitchId, std::uint32_t>> held;
+    for (StitchId s : st_.last_row)
+      if (info(g_.type[s]).loops_out > 0) held.emplace_back(s, 0);
+    if (!std::all_of(held.begin(), held.end(),
+                     [&](const auto& h) { return left_to_another_piece(h.first); }))
+      unsupported(fmt::format(
+          "{} starts a rnd of Piece {} after rows worked flat, and works sts of its last row "
+          "itself: joining a flat piece in the rnd with the sts of its last row is not covered "
+          "yet (only with those sts slipped to a holder for another piece)",
+          g_.describe(row_.front()), section().piece));
+    if (held.empty()) return;
+    hold(static_cast<std::uint32_t>(out_.rows.size() - 1), held, 0,
+         static_cast<std::uint32_t>(held.size()));
+    section().holdings.back().whole = true;
   }
 
   // A rnd after rows that turned (a gusset's, round a flap) that leaves the sts of the flap's
   // last row to another piece (the flap goes on as a leg of its own): the knitter slips them to
   // a holder first. The flap's rows start at the beginning of the rnd (they follow a rnd), so
   // its sts are the first of the rnd, in the order the rnd goes. (Where the rows before the
-  // rnd are another piece's face, as in the two bars, their sts are placed, not held.)
+  // rnd are another piece's face, as in the two bars, their sts are placed, not held.) A piece
+  // taken up again (the teapot's body between its strips) slips them as it is taken up.
   void hold_the_flap_left(Side rnd_side) {
-    // The row flushed last is the piece's own (not another's, as when it is taken up again).
-    if (row_before_.empty() || c_.yarns.piece_of[row_before_.front()] != section().yarn) return;
     std::vector<std::pair<StitchId, std::uint32_t>> flap;
-    for (StitchId s : row_before_)
+    for (StitchId s : st_.last_row)
       if (left_to_another_piece(s)) flap.emplace_back(s, 0);
     if (flap.empty() || flap.size() >= st_.live || !picks_up_its_own_flap()) return;
-    if (out_.rows.back().side != rnd_side) std::reverse(flap.begin(), flap.end());
+    if (st_.last_side != rnd_side) std::reverse(flap.begin(), flap.end());
     hold(static_cast<std::uint32_t>(out_.rows.size() - 1), flap, 0,
          static_cast<std::uint32_t>(flap.size()));
   }
@@ -1076,24 +1152,10 @@ class PatternBuilder {
   // gusset's "pick up and knit") is not written yet.
   void refuse_pick_up_in_the_work(StitchId s, StitchId maker) const {
     if (g_.loops_made_by(maker).size() < 2) return;
-    refuse_joining_a_flat_piece_in_the_rnd(s, maker);
     unsupported(fmt::format(
         "{} picks up a loop along the edge of {} (an expanding perpendicular edge) in the middle "
         "of the work (a gusset's \"pick up and knit\"), which is not covered yet",
         g_.describe(s), g_.describe(maker)));
-  }
-
-  // A flat piece's rnd that picks up along the piece's own edge (the teapot's handle after its
-  // strip) joins it to work in the rnd in the middle of its work: the flat rows' sts are held
-  // and the rnd is made of sts picked up along their edges. Named as a knitter would see it.
-  void refuse_joining_a_flat_piece_in_the_rnd(StitchId s, StitchId maker) const {
-    if (g_.yarn_link[row_.back()] != YarnLink::shift) return;
-    unsupported(fmt::format(
-        "{} starts a rnd that picks up along the edge of {}, a row of its own piece worked "
-        "flat: Piece {} is joined to work in the rnd in the middle of its work (its last "
-        "row's sts held, the rnd picking up and knitting along the edges of its rows), which "
-        "is not covered yet",
-        g_.describe(s), g_.describe(maker), out_.sections.back().piece));
   }
 
   // A st of the piece's own needle across a gap (a heel turn's decrease): worked second, it is
@@ -1230,7 +1292,6 @@ class PatternBuilder {
   std::uint32_t pieces_ = 0;
   HandPattern out_;
   std::vector<StitchId> row_;
-  std::vector<StitchId> row_before_;  // the row flushed last
   // What the knitter has on the needle for the yarn being worked (kept while it is set aside).
   struct Needle {
     std::uint32_t live = 0;
@@ -1241,6 +1302,8 @@ class PatternBuilder {
     // The row (and its first op) that went on from the end of the last rnd.
     std::optional<std::pair<std::uint32_t, std::uint32_t>> band_from_rnd;
     YarnLink previous_link = YarnLink::none;
+    std::vector<StitchId> last_row;  // the piece's row flushed last, and the side it faced
+    Side last_side = Side::rs;
   };
   Needle st_;
   std::vector<Needle> set_aside_;               // per yarn

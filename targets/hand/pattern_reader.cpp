@@ -201,9 +201,11 @@ class SentenceReader {
     need_words(c, {"sts", "along", "the"}, "'sts along the right (or left) edge'");
     step.provisional = c.eat("right");
     need(step.provisional || c.eat("left"), c, "'right' or 'left'");
-    need_words(c, {"edge", "of"}, "'edge of Piece N' (or 'of the flap')");
+    need_words(c, {"edge", "of"}, "'edge of Piece N' (or 'of the flap', 'of this piece')");
     if (c.eat("the")) {
       need(c.eat("flap"), c, "'the flap'");  // number 0: the piece on the needle
+    } else if (c.eat("this")) {
+      need(c.eat("piece"), c, "'this piece'");  // a flat piece joined in the rnd: the same
     } else {
       need(c.eat("piece"), c, "'Piece N' (or 'the flap')");
       step.number = need_number(c, "a piece number");
@@ -391,6 +393,7 @@ class SentenceReader {
   // "Slip sts 10–18 of the rnd to holder 1, sts 19–27 to holder 2 and sts 28–36 to holder 3":
   // the sts are counted in the rnd as it is before any is slipped, so the last run goes first.
   void hold(Cursor& c) {
+    if (c.eat("the")) return hold_all(c);
     std::vector<Step> runs;
     do {
       Step step{Step::Kind::hold, line_no_};
@@ -406,6 +409,20 @@ class SentenceReader {
     } while (c.eat_char(',') || c.eat("and"));
     end_with_count(c, runs.front());  // checked once the last run (given first) is slipped
     for (auto run = runs.rbegin(); run != runs.rend(); ++run) add(*run);
+  }
+
+  // "Slip the 35 sts of Row 33 to holder 3 — 7 sts": a flat piece's last row, before the piece
+  // is joined in the rnd.
+  void hold_all(Cursor& c) {
+    Step step{Step::Kind::hold_all, line_no_};
+    step.count = need_number(c, "the number of sts to hold");
+    need(c.eat_any({"sts", "st"}), c, "'sts'");
+    need_words(c, {"of", "row"}, "'of Row N'");
+    step.from_row = need_number(c, "a row number");
+    need_words(c, {"to", "holder"}, "'to holder N'");
+    step.number = need_number(c, "a holder number");
+    end_with_count(c, step);
+    add(step);
   }
 
   void need_words(Cursor& c, std::initializer_list<std::string_view> words, const char* expected) {
