@@ -417,13 +417,14 @@ KnitGraph gusset_leg_graph() {
   return std::move(t.g);
 }
 
-KnitGraph strip_joined_in_the_rnd_graph() {
+KnitGraph strip_joined_in_the_rnd_graph(bool leg_in_the_rnd) {
   using T = StitchType;
   KnitGraph g;
   g.source_name = "strip joined in the rnd";
   g.element = "face";
-  g.row_shape = {RowShape::open,   RowShape::open, RowShape::open, RowShape::closed,
-                 RowShape::closed, RowShape::open, RowShape::open};
+  const RowShape leg = leg_in_the_rnd ? RowShape::closed : RowShape::open;
+  g.row_shape = {
+      RowShape::open, RowShape::open, RowShape::open, RowShape::closed, RowShape::closed, leg, leg};
   auto row_of = [&](std::size_t n, T type, std::uint32_t row) {
     std::vector<StitchId> made;
     for (std::size_t i = 0; i < n; ++i) made.push_back(g.add_stitch(type, row, g.size(), 0));
@@ -440,8 +441,12 @@ KnitGraph strip_joined_in_the_rnd_graph() {
   };
   link({c[2], c[1], c[0], b[0], b[1], b[2], d[2], d[1], d[0], e[0], e[1], e[2], e[3], f[0], f[1],
         f[2], f[3]});
-  link({h[0], h[1], h[2], j[2], j[1], j[0]});
-  for (StitchId s : {c[0], b[2], d[0], h[2]}) g.yarn_link[s] = YarnLink::turn;
+  if (leg_in_the_rnd)
+    link({h[0], h[1], h[2], j[0], j[1], j[2]});
+  else
+    link({h[0], h[1], h[2], j[2], j[1], j[0]});
+  for (StitchId s : {c[0], b[2], d[0]}) g.yarn_link[s] = YarnLink::turn;
+  g.yarn_link[h[2]] = leg_in_the_rnd ? YarnLink::shift : YarnLink::turn;
   g.yarn_link[e[3]] = YarnLink::shift;
   auto wale = [&](StitchId maker, StitchId taker, std::uint8_t slot) {
     g.loops.push_back({maker, taker, LoopKind::wale, slot, 0});

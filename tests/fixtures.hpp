@@ -82,8 +82,9 @@ KnitGraph gusset_leg_graph();
 
 // A flat strip joined to work in the rnd: 3 sts cast on flat, 2 rows (b, then d back); a rnd
 // of the same yarn that picks up along the strip's left edge (d2, b2) and right edge (b0, d0)
-// only, then binds off; the strip's sts (d0..d2) go on with a new yarn in a row, bound off.
-KnitGraph strip_joined_in_the_rnd_graph();
+// only, then binds off; the strip's sts (d0..d2) go on with a new yarn in a row, bound off (or,
+// `leg_in_the_rnd`, in a rnd: a new yarn joined to held sts to work in the rnd).
+KnitGraph strip_joined_in_the_rnd_graph(bool leg_in_the_rnd = false);
 
 // How often `what` occurs in `text`.
 std::size_t occurrences(std::string_view text, std::string_view what);

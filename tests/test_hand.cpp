@@ -142,9 +142,9 @@ TEST(HandTarget, SamplesNotCoveredYetNameWhatStopsThem) {
        "face 888 (3nbo, row 59) is a three-needle bind-off in the middle of the work, not in the "
        "first row after the piece is taken up, which is not covered yet"},
       {"samples/teapot/teapot.yaml",
-       "face 2557 (k, row 40) starts Piece 3 on the loops of Piece 1's chain and goes on "
-       "around: a new yarn joined to another piece's sts to work in the rnd (the other pieces' "
-       "sts placed into that rnd) is not covered yet"},
+       "face 1909 (k, row 34) starts a rnd of Piece 2 after rows worked flat on 35 of its 42 "
+       "sts: joining a flat piece in the rnd with the sts its rows left on the needle is not "
+       "covered yet"},
   };
   for (const auto& [sample, named] : cases) {
     std::string error = emit_error(compile_model(sample));
@@ -168,6 +168,19 @@ TEST(HandTarget, AFlatPieceJoinedInTheRndByItsOwnEdgesIsProvenInEveryFormat) {
         "Join a new yarn to the 3 sts of holder 1, the last st of its last row at the tip.",
         "**Joining a flat piece in the round**"})
     EXPECT_NE(pattern.find(line), std::string::npos) << line << "\n" << pattern;
+  EXPECT_EQ(testing::unproven_hand_formats(c), "");
+}
+
+// A new yarn joined to the strip's held sts works them in the rnd: it joins at once.
+TEST(HandTarget, ANewYarnJoinedToHeldStsWorksThemInTheRnd) {
+  Compilation c = compile_knit_graph(testing::strip_joined_in_the_rnd_graph(true), "strip leg");
+  ASSERT_TRUE(c.knittability.knittable) << check_report(c);
+  std::string pattern = emit(c, "hand");
+  EXPECT_NE(pattern.find("Join a new yarn to the 3 sts of holder 1, the last st of its last row "
+                         "at the tip. Pm and join to work in the rnd, being careful not to "
+                         "twist.\n\n**Rnd 1:** Knit.\n"),
+            std::string::npos)
+      << pattern;
   EXPECT_EQ(testing::unproven_hand_formats(c), "");
 }
 

@@ -297,6 +297,7 @@ class NeedleSimulator {
     row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
     pc_.right.assign(loops.rbegin(), loops.rend());
     pc_.live = s.count;
+    pc_.tip_first = true;
   }
 
   // A new piece with its own yarn and needles.
@@ -316,7 +317,10 @@ class NeedleSimulator {
     if (!active_ || pc_.next_number != 1 || pc_.joined)
       fail("Join to work in the rnd: only right after a cast-on");
     pc_.joined = true;
-    pc_.turn_before = false;  // the first rnd starts with the first st cast on
+    // The first rnd starts with the first st cast on; on a spare needle's sts, with the one at
+    // the tip.
+    if (pc_.tip_first) pc_.left.swap(pc_.right);
+    pc_.turn_before = false;
     pc_.place_bor = marker;
   }
 
@@ -1372,6 +1376,7 @@ class NeedleSimulator {
     std::uint32_t number = 0;  // 1-based, in the order the pieces start
     bool joined = false, place_bor = false;
     bool turn_before = true;  // the next row starts by turning the work
+    bool tip_first = false;   // started on a spare needle's sts, the one at the tip worked first
     std::uint32_t bor = kNone;
     std::uint32_t next_number = 1;
     std::optional<Side> last_side;

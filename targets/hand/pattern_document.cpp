@@ -104,10 +104,11 @@ class InstructionWriter {
 
   std::string first_setup_text(const PatternSection& sec) const {
     if (sec.resumed) return take_up_text(sec);
-    if (sec.starts_from) return join_spare_text(*sec.starts_from);
     if (sec.picks_up) return pick_up_text(*sec.picks_up, sec.cast_on);
-    std::string text = fmt::format("Cast on {}{}.", sts(sec.cast_on),
-                                   sec.provisional ? " with a provisional cast-on" : "");
+    std::string text = sec.starts_from
+                           ? join_spare_text(*sec.starts_from)
+                           : fmt::format("Cast on {}{}.", sts(sec.cast_on),
+                                         sec.provisional ? " with a provisional cast-on" : "");
     if (sec.in_round && !sec.joined_in_rnd_at)
       text +=
           fmt::format(" Pm and join to work in the rnd{}, being careful not to twist.",
