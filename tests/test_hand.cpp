@@ -160,13 +160,12 @@ TEST(HandTarget, AFlatPieceJoinedInTheRndByItsOwnEdgesIsProvenInEveryFormat) {
   std::string pattern = emit(c, "hand");
   for (const char* line :
        {"**Row 2 (WS):** Purl.\n\nSlip the 3 sts of Row 2 to holder 1.\n\nPm and join to work in "
-        "the "
-        "rnd: the sts picked up and placed below go on the empty needle after the marker, in "
-        "order.\n\nPick up 2 sts along the left edge of this piece, one in each row from Row 2 "
+        "the rnd: the sts picked up and placed below go on the empty needle after the marker, "
+        "in order.\n\nPick up 2 sts along the left edge of this piece, one in each row from Row 2 "
         "down to Row 1, onto the needle at the beginning of the rnd.\n\n",
         "onto the needle after the first 2 sts of the rnd \u2014 4 sts.\n\n**Rnd 3:** Knit.\n",
         "Join a new yarn to the 3 sts of holder 1, the last st of its last row at the tip.",
-        "**Joining a flat piece in the round**"})
+        "**Joining a flat piece in the round**", "4 rows and rnds."})
     EXPECT_NE(pattern.find(line), std::string::npos) << line << "\n" << pattern;
   EXPECT_EQ(testing::unproven_hand_formats(c), "");
 }

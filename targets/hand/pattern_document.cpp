@@ -583,7 +583,7 @@ class FrontMatter {
   // Short rows add length to part of the piece only; a piece of a cast-on alone (along a
   // split) has no height.
   std::string height(const PatternSection& s, std::uint32_t rows, std::uint32_t short_rows) const {
-    std::string unit = s.in_round ? "rnds" : "rows";
+    std::string unit = s.joined_in_rnd_at ? "rows and rnds" : s.in_round ? "rnds" : "rows";
     if (rows == 0 && short_rows == 0) return "A cast-on only: no rows of its own.";
     if (rows == 0)
       return fmt::format("{} short rows (worked on part of the sts), no whole {}.", short_rows,
