@@ -85,6 +85,10 @@ KnitGraph gusset_leg_graph();
 // only, then binds off; the strip's sts (d0..d2) go on with a new yarn in a row, bound off (or,
 // `leg_in_the_rnd`, in a rnd: a new yarn joined to held sts to work in the rnd).
 KnitGraph strip_joined_in_the_rnd_graph(bool leg_in_the_rnd = false);
+// A flat strip worked on 3 of its 5 sts (short rows leave 2) whose yarn goes round a corner
+// into a rnd: the rnd starts along the edge of the strip's last st (down its left edge), works
+// the 2 sts left and goes up the right edge; the strip's sts go on with a new yarn.
+KnitGraph corner_strip_graph();
 
 // How often `what` occurs in `text`.
 std::size_t occurrences(std::string_view text, std::string_view what);

@@ -142,9 +142,8 @@ TEST(HandTarget, SamplesNotCoveredYetNameWhatStopsThem) {
        "face 888 (3nbo, row 59) is a three-needle bind-off in the middle of the work, not in the "
        "first row after the piece is taken up, which is not covered yet"},
       {"samples/teapot/teapot.yaml",
-       "face 1909 (k, row 34) starts a rnd of Piece 2 after rows worked flat on 35 of its 42 "
-       "sts: joining a flat piece in the rnd with the sts its rows left on the needle is not "
-       "covered yet"},
+       "face 2613 (3nbo, row 48) is a three-needle bind-off in the middle of the work, not in "
+       "the first row after the piece is taken up, which is not covered yet"},
   };
   for (const auto& [sample, named] : cases) {
     std::string error = emit_error(compile_model(sample));
@@ -160,13 +159,30 @@ TEST(HandTarget, AFlatPieceJoinedInTheRndByItsOwnEdgesIsProvenInEveryFormat) {
   std::string pattern = emit(c, "hand");
   for (const char* line :
        {"**Row 2 (WS):** Purl.\n\nSlip the 3 sts of Row 2 to holder 1.\n\nPm and join to work in "
-        "the rnd: the sts picked up and placed below go on the empty needle after the marker, "
-        "in order.\n\nPick up 2 sts along the left edge of this piece, one in each row from Row 2 "
+        "the rnd: the sts picked up and placed below go on the needle after the marker, in "
+        "order.\n\nPick up 2 sts along the left edge of this piece, one in each row from Row 2 "
         "down to Row 1, onto the needle at the beginning of the rnd.\n\n",
         "onto the needle after the first 2 sts of the rnd \u2014 4 sts.\n\n**Rnd 3:** Knit.\n",
         "Join a new yarn to the 3 sts of holder 1, the last st of its last row at the tip.",
         "**Joining a flat piece in the round**", "4 rows and rnds."})
     EXPECT_NE(pattern.find(line), std::string::npos) << line << "\n" << pattern;
+  EXPECT_EQ(testing::unproven_hand_formats(c), "");
+}
+
+// A strip whose yarn goes round a corner into a rnd (the teapot's tube after its strip): the
+// last row ends without turning, and the rnd works the sts its short rows left the same way.
+TEST(HandTarget, AStripGoingRoundACornerIntoTheRndIsProvenInEveryFormat) {
+  Compilation c = compile_knit_graph(testing::corner_strip_graph(), "corner strip");
+  ASSERT_TRUE(c.knittability.knittable) << check_report(c);
+  std::string pattern = emit(c, "hand");
+  EXPECT_NE(pattern.find("**Row 3 (RS):** K3, do not turn.\n\nSlip the 3 sts of Row 3 to holder 1 "
+                         "\u2014 2 sts.\n\nPm and join to work in the rnd"),
+            std::string::npos)
+      << pattern;
+  EXPECT_NE(pattern.find("onto the needle after the first 5 sts of the rnd \u2014 8 sts.\n\n**Rnd "
+                         "4:** Knit.\n"),
+            std::string::npos)
+      << pattern;
   EXPECT_EQ(testing::unproven_hand_formats(c), "");
 }
 
@@ -197,6 +213,8 @@ TEST(HandTarget, AFlatPieceIsJoinedInTheRndWithAnEmptyNeedleAndAMarker) {
       {strip + "Slip the 2 sts of Row 2 to holder 1.\n",
        "p.md:4: Slip the sts of Row 2 to holder 1: the pattern says 2 sts, but the row left 3 sts "
        "on the needle"},
+      {"Cast on 5 sts.\nRow 1 (RS): K3, do not turn.\nRow 2 (WS): P3.\n",
+       "p.md:3: Row 2 (RS): labelled WS, but the RS faces you: the work was not turned"},
       {strip + "Slip the 3 sts of Row 1 to holder 1.\n",
        "p.md:4: Slip the sts of Row 1 to holder 1: the last row worked is Row 2"},
       {"Cast on 6 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\nSlip the 6 sts of Row 1 to "

@@ -78,7 +78,7 @@ class Comparison {
 
   std::optional<Difference> compare_stitch(std::uint32_t x) {
     StitchId s = model_of_[x];
-    if (f_.yarn_link[x] != g_.yarn_link[s])
+    if (f_.yarn_link[x] != g_.yarn_link[s] && !round_a_corner(x, s))
       return differ(x, fmt::format("the pattern {} after it, the model {}",
                                    link_words(f_.yarn_link[x]), link_words(g_.yarn_link[s])));
     StitchType want = mirror_ ? mirrored(g_.type[s]) : g_.type[s];
@@ -115,6 +115,13 @@ class Comparison {
     return std::nullopt;
   }
 
+  // At a corner the model's turn is the knitter's going on without turning (and the other way).
+  bool round_a_corner(std::uint32_t x, StitchId s) const {
+    auto turn_or_shift = [](YarnLink l) { return l == YarnLink::turn || l == YarnLink::shift; };
+    return turn_or_shift(f_.yarn_link[x]) && turn_or_shift(g_.yarn_link[s]) &&
+           turns_a_corner(g_, s);
+  }
+
   // A three-needle bind-off's loops are front and back, a provisional cast-on's the two sides
   // of its split: a mirror keeps them (it swaps left and right only).
   static bool sides_of_a_split(StitchType type) { return type == StitchType::sco; }
@@ -127,6 +134,14 @@ class Comparison {
 };
 
 }  // namespace
+
+bool turns_a_corner(const KnitGraph& g, StitchId s) {
+  StitchId next = g.yarn_next[s];
+  if (next == kNoStitch) return false;
+  for (std::uint32_t l : g.loops_taken_by(next))
+    if (g.loops[l].kind == LoopKind::perpendicular && g.loops[l].maker == s) return true;
+  return false;
+}
 
 std::optional<Difference> first_difference(const Fabric& fabric, const Compilation& model,
                                            bool mirror) {

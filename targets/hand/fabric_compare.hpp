@@ -23,6 +23,13 @@ struct Difference {
   bool type = false;  // its stitch type differs (not only its loops or yarn)
 };
 
+// Where the next st along the yarn takes a loop across the edge of `s` itself (a rnd that starts
+// by picking up along the edge of the row just worked, as the teapot's tube after its strip),
+// the yarn goes round a corner into the course beside: whether the model calls that a turn or
+// a shift, it does not reverse the direction along the needle, and a knitter goes on without
+// turning.
+bool turns_a_corner(const KnitGraph& g, StitchId s);
+
 std::optional<Difference> first_difference(const Fabric& fabric, const Compilation& model,
                                            bool mirror);
 

@@ -112,7 +112,7 @@ class NeedleSimulator {
         check_printed_count(s, "Pick up");
         break;
       case Step::Kind::join_round:
-        join(s.marker);
+        join(s);
         break;
       case Step::Kind::row:
         work_rows(s);
@@ -312,8 +312,8 @@ class NeedleSimulator {
     next_link_ = YarnLink::course;
   }
 
-  void join(bool marker) {
-    if (active_ && pc_.next_number != 1 && !pc_.joined) return join_flat_piece(marker);
+  void join(const Step& s) {
+    if (active_ && pc_.next_number != 1 && !pc_.joined) return join_flat_piece(s);
     if (!active_ || pc_.next_number != 1 || pc_.joined)
       fail("Join to work in the rnd: only right after a cast-on");
     pc_.joined = true;
@@ -321,13 +321,13 @@ class NeedleSimulator {
     // the tip.
     if (pc_.tip_first) pc_.left.swap(pc_.right);
     pc_.turn_before = false;
-    pc_.place_bor = marker;
+    pc_.place_bor = s.marker;
   }
 
   // A flat piece joined to work in the rnd in the middle of its work: its last row's sts were
   // slipped to a holder; the BOR marker goes where the yarn is (the tip of the right needle),
   // and the sts picked up and placed next go in after it.
-  void join_flat_piece(bool marker) {
+  void join_flat_piece(const Step& s) {
     auto of_last_row = [&](std::uint32_t entry) { return made_by_last_row(entry); };
     if (std::any_of(pc_.right.begin(), pc_.right.end(), of_last_row) ||
         std::any_of(pc_.left.begin(), pc_.left.end(), of_last_row))
@@ -335,7 +335,7 @@ class NeedleSimulator {
           "Join to work in the rnd: the sts of Row {} are still on the needle (slip them to a "
           "holder first: the rnd is made of the sts picked up and placed, and those left)",
           pc_.next_number - 1));
-    if (!marker)
+    if (!s.marker)
       fail("Join to work in the rnd: pm for the beginning of the rnd first (where the yarn is)");
     pc_.joined = true;
     pc_.right.push_back(pc_.bor = new_marker());
@@ -815,9 +815,9 @@ class NeedleSimulator {
     if (label && *label != facing)
       fail(fmt::format("labelled {}, but the {} faces you: {}", side_name(*label),
                        side_name(facing),
-                       !pc_.joined       ? "every row turns the work"
-                       : pc_.turn_before ? "the work was turned"
-                                         : "the work was not turned"));
+                       !pc_.turn_before ? "the work was not turned"
+                       : !pc_.joined    ? "every row turns the work"
+                                        : "the work was turned"));
     begin_row(facing);
     run_nodes(p, p.top_begin, p.top_end);
     end_row();
@@ -831,7 +831,7 @@ class NeedleSimulator {
     facing_ = facing;
     position_ = 0;
     row_last_stitch_ = kNone;
-    row_ended_ = false;
+    row_ended_ = not_turned_ = false;
     pending_.clear();
     last_make_ = std::nullopt;
     next_link_ = pc_.turn_before ? YarnLink::turn : YarnLink::shift;
@@ -914,7 +914,7 @@ class NeedleSimulator {
     if (!row_round_ && last_make_ && *last_make_ != HandOp::yo)
       fail(fmt::format("{} at the end of a row: there is no strand after the last st to lift",
                        info(*last_make_).abbreviation));
-    pc_.turn_before = row_ended_ || !pc_.joined;
+    pc_.turn_before = (row_ended_ || !pc_.joined) && !not_turned_;
   }
 
   // For each place on the left needle, the loops from there to the next marker (the tip is at
@@ -1051,6 +1051,9 @@ class NeedleSimulator {
     switch (op) {
       case HandOp::turn:
         row_ended_ = true;
+        return;
+      case HandOp::no_turn:
+        row_ended_ = not_turned_ = true;
         return;
       case HandOp::ds:
         double_stitch();
@@ -1398,7 +1401,8 @@ class NeedleSimulator {
 
   // The row being worked.
   bool in_row_ = false, row_round_ = false;
-  bool row_ended_ = false;  // by w&t or turn
+  bool row_ended_ = false;   // by w&t or turn (or "do not turn")
+  bool not_turned_ = false;  // ... by "do not turn": the next row goes on the same way
   std::uint32_t row_ = 0;
   Side facing_ = Side::rs;
   std::uint32_t position_ = 0;

@@ -273,8 +273,8 @@ class InstructionWriter {
   void write_join_in_the_rnd_before(std::uint32_t row) {
     if (p_.sections[section_].joined_in_rnd_at != row) return;
     add(InstructionLine::Kind::setup, "",
-        "Pm and join to work in the rnd: the sts picked up and placed below go on the empty "
-        "needle after the marker, in order.");
+        "Pm and join to work in the rnd: the sts picked up and placed below go on the needle "
+        "after the marker, in order.");
   }
 
   bool holding_after(std::uint32_t row) const {
@@ -733,11 +733,12 @@ class FrontMatter {
           "are not knit: the rnd works them in the order picked up).");
     if (t_.joins_flat_piece)
       items.push_back(
-          "**Joining a flat piece in the round** (after rows worked flat): once its sts are "
-          "slipped to a holder the needle is empty. Place the BOR marker, put the sts the "
+          "**Joining a flat piece in the round** (after rows worked flat): once the last row's "
+          "sts are slipped to a holder, place the BOR marker where the yarn is, put the sts the "
           "pattern picks up and places next on the needle after it, in order, and work the next "
-          "rnd over them with the yarn still attached at the end of the last row: starting with "
-          "the first st put on, it joins them into a tube.");
+          "rnd over them (and any sts the rows left) with the yarn still attached at the end of "
+          "the last row (after \"do not turn\", without turning the work): starting with the "
+          "first st put on, it joins them into a tube.");
     if (t_.holders > 0)
       items.push_back(
           "**Holders:** \"Slip sts 10\u201318 of the rnd to holder 1\" counts the sts from the "

@@ -7,6 +7,7 @@
 
 #include "common/error.hpp"
 #include "driver/pipeline.hpp"
+#include "hand/fabric_compare.hpp"
 #include "hand/marker_plan.hpp"
 #include "hand/region_markers.hpp"
 
@@ -74,7 +75,7 @@ class Handedness {
       for (std::uint32_t i = 0; i < y_.length[p]; ++i, s = g_.yarn_next[s]) {
         pos_[s] = i;
         reversed_[s] = reversed;
-        if (g_.yarn_link[s] == YarnLink::turn) reversed ^= 1;
+        if (g_.yarn_link[s] == YarnLink::turn && !turns_a_corner(g_, s)) reversed ^= 1;
       }
     }
   }
@@ -970,25 +971,10 @@ class PatternBuilder {
           "itself: joining a flat piece in the rnd with the sts of its last row is not covered "
           "yet (only with those sts slipped to a holder for another piece)",
           g_.describe(row_.front()), section().piece));
-    refuse_sts_left_beside_the_strip(static_cast<std::uint32_t>(held.size()));
     if (held.empty()) return;
     hold(static_cast<std::uint32_t>(out_.rows.size() - 1), held, 0,
          static_cast<std::uint32_t>(held.size()));
     section().holdings.back().whole = true;
-  }
-
-  // Sts that the flat rows left on the needle (the teapot's strip, worked on 35 of 42 sts) and
-  // the rnd works after picking up along the strip's edge: the teapot's rnd takes them on along
-  // the needle in the direction of the last row, although its yarn turns there (a knitter who
-  // turns works them the other way), so no pattern proves it yet.
-  void refuse_sts_left_beside_the_strip(std::uint32_t held) const {
-    if (held == st_.live) return;
-    unsupported(fmt::format(
-        "{} starts a rnd of Piece {} after rows worked flat on {} of its {} sts: joining a flat "
-        "piece in the rnd with the sts its rows left on the needle is not covered yet (the "
-        "model's rnd works them on in the direction of the last row, although its yarn turns "
-        "there)",
-        g_.describe(row_.front()), out_.sections.back().piece, held, st_.live));
   }
 
   // A rnd after rows that turned (a gusset's, round a flap) that leaves the sts of the flap's
@@ -1047,7 +1033,10 @@ class PatternBuilder {
   // at a double stitch first in the next row (at the edge too).
   void end_row(PatternRow& r, bool turns, std::uint32_t takes) {
     r.short_row = turns && (section().in_round || st_.ahead > 0);
-    if (r.short_row && out_.ops.back() != HandOp::wt) out_.ops.push_back(HandOp::turn);
+    if (turns && turns_a_corner(g_, row_.back()))
+      out_.ops.push_back(HandOp::no_turn);
+    else if (r.short_row && out_.ops.back() != HandOp::wt)
+      out_.ops.push_back(HandOp::turn);
     st_.double_stitch_next = out_.turns == TurnMethod::german && g_.type[row_.back()] == T::sr4;
     // A rnd works every st, unless it starts where short rows ended (it then goes on to the
     // beginning of the rnd); a flat row ends at the edge or turns short of it.

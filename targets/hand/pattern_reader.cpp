@@ -701,6 +701,11 @@ class SentenceReader {
       return n;
     }
     if (c.eat("3-needle")) return three_needle_bind_off_sts(c);  // '-' would end a word
+    if (c.eat("do")) {
+      need(c.eat("not") && c.eat("turn"), c, "'do not turn'");
+      n.op = HandOp::no_turn;
+      return n;
+    }
     if (c.eat("sl1")) {
       if (c.eat("back")) {
         n.op = HandOp::slip_back;
