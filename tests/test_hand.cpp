@@ -215,6 +215,11 @@ TEST(HandTarget, AFlatPieceIsJoinedInTheRndWithAnEmptyNeedleAndAMarker) {
        "on the needle"},
       {"Cast on 5 sts.\nRow 1 (RS): K3, do not turn.\nRow 2 (WS): P3.\n",
        "p.md:3: Row 2 (RS): labelled WS, but the RS faces you: the work was not turned"},
+      {"Cast on 6 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\nSlip sts 1\u20133 of the rnd "
+       "to "
+       "holder 1 \u2014 3 sts.\nRnd 2: BO all sts.\nFasten off.\n" +
+           strip + "Slip the 3 sts of Row 2 to holder 1.\n",
+       "p.md:9: Slip the sts of Row 2 to holder 1: it already holds sts"},
       {strip + "Slip the 3 sts of Row 1 to holder 1.\n",
        "p.md:4: Slip the sts of Row 1 to holder 1: the last row worked is Row 2"},
       {"Cast on 6 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\nSlip the 6 sts of Row 1 to "
