@@ -230,7 +230,7 @@ class InstructionWriter {
 
   // "Slip sts 10–18 of the rnd to holder 1, sts 19–27 to holder 2 and sts 28–36 to holder 3."
   void write_holdings_after(std::uint32_t row) {
-    if (write_whole_needle_held_after(row)) return;
+    if (write_flat_row_held_after(row)) return;
     std::string text = holdings_text(row, p_.rows[row].sts_after);
     if (!text.empty()) add(InstructionLine::Kind::setup, "", text);
   }
@@ -256,9 +256,9 @@ class InstructionWriter {
 
   // "Slip the 35 sts of Row 33 to holder 3 — 7 sts.": a flat piece's last row, before the piece
   // is joined in the rnd (the count: the sts that stay on the needle, if any).
-  bool write_whole_needle_held_after(std::uint32_t row) {
+  bool write_flat_row_held_after(std::uint32_t row) {
     for (const PatternSection::Holding& h : p_.sections[section_].holdings)
-      if (h.after_row == row && h.whole) {
+      if (h.after_row == row && h.flat_row) {
         std::uint32_t left = p_.rows[row].sts_after - h.count;
         add(InstructionLine::Kind::setup, "",
             fmt::format("Slip the {} of {} {} to holder {}{}.", sts(h.count),
@@ -269,7 +269,7 @@ class InstructionWriter {
     return false;
   }
 
-  // Before the first rnd of a flat piece joined in the rnd, whose needle is then empty.
+  // Before the first rnd of a flat piece joined in the rnd, its last row then on a holder.
   void write_join_in_the_rnd_before(std::uint32_t row) {
     if (p_.sections[section_].joined_in_rnd_at != row) return;
     add(InstructionLine::Kind::setup, "",
@@ -339,7 +339,7 @@ class InstructionWriter {
   bool holds_a_flat_row(std::uint32_t holder) const {
     for (const PatternSection& sec : p_.sections)
       for (const PatternSection::Holding& h : sec.holdings)
-        if (h.holder == holder && holder != 0) return h.whole;
+        if (h.holder == holder && holder != 0) return h.flat_row;
     return false;
   }
 

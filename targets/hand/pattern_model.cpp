@@ -939,7 +939,7 @@ class PatternBuilder {
     if (sec.in_round || st_.previous_link != YarnLink::turn ||
         g_.yarn_link[row_.back()] != YarnLink::shift || out_.rows.size() == sec.first_row)
       return;
-    hold_the_whole_needle();
+    hold_the_last_row();
     sec.in_round = true;
     sec.joined_in_rnd_at = static_cast<std::uint32_t>(out_.rows.size());
     st_.previous_link = YarnLink::shift;  // the rnd starts at the beginning of the rnd
@@ -960,7 +960,7 @@ class PatternBuilder {
   // The sts of the flat piece's last row go to a holder, in the order the row worked them; the
   // others on the needle (those short rows left) stay for the rnd. A rnd that works some of
   // the last row's sts itself would join them with the sts picked up: not written yet.
-  void hold_the_whole_needle() {
+  void hold_the_last_row() {
     std::vector<std::pair<StitchId, std::uint32_t>> held;
     for (StitchId s : st_.last_row)
       if (info(g_.type[s]).loops_out > 0) held.emplace_back(s, 0);
@@ -974,7 +974,7 @@ class PatternBuilder {
     if (held.empty()) return;
     hold(static_cast<std::uint32_t>(out_.rows.size() - 1), held, 0,
          static_cast<std::uint32_t>(held.size()));
-    section().holdings.back().whole = true;
+    section().holdings.back().flat_row = true;
   }
 
   // A rnd after rows that turned (a gusset's, round a flap) that leaves the sts of the flap's

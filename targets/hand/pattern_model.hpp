@@ -82,11 +82,11 @@ struct PatternSection {
   // Where the sts of one rnd go different ways (to the piece's next rnd, into another piece's
   // rnd, into a join), those the piece does not work itself are slipped to holders after it:
   // `count` sts from the `first` (1-based, from the beginning of the rnd) to holder `holder`.
-  // `whole`: the sts of a flat piece's last row, in the order it worked them, before the piece
+  // `flat_row`: the sts of a flat piece's last row, in the order it worked them, before the piece
   // is joined to work in the rnd.
   struct Holding {
     std::uint32_t after_row, first, count, holder;
-    bool whole = false;
+    bool flat_row = false;
   };
   std::vector<Holding> holdings;
   std::vector<Placement> placements;
