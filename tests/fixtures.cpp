@@ -422,6 +422,37 @@ KnitGraph gusset_leg_graph() {
   return std::move(t.g);
 }
 
+KnitGraph flap_and_strip_graph() {
+  GussetFlap t("flap and strip");
+  const RowShape open = RowShape::open;
+  t.g.row_shape.insert(t.g.row_shape.end(), {open, open, open, open, open});
+  // In the order worked: picked up from d2 and b2, over a3, picked up from h0 and i0.
+  auto e = t.row_of(5, StitchType::k, 4), f = t.row_of(5, StitchType::bo, 5);
+  auto h = t.row_of(2, StitchType::k, 6), i = t.row_of(2, StitchType::k, 7);
+  auto j = t.row_of(2, StitchType::bo, 8);
+  auto m = t.row_of(3, StitchType::k, 9), n = t.row_of(3, StitchType::bo, 10);
+  for (const auto* run : {&e, &f}) t.yarn.insert(t.yarn.end(), run->begin(), run->end());
+  t.link(t.yarn);
+  t.link({h[0], h[1], i[1], i[0], j[0], j[1]});
+  t.link({m[0], m[1], m[2], n[2], n[1], n[0]});
+  t.work_flap(m);
+  // The flap's left edge (d2, b2) down, then the strip's right edge (h0, i0: loop across last) up.
+  for (auto [maker, taker, slot] :
+       {std::tuple{t.d[2], e[0], 0}, {t.b[2], e[1], 0}, {h[0], e[3], 1}, {i[0], e[4], 1}})
+    t.g.loops.push_back(
+        {maker, taker, LoopKind::perpendicular, static_cast<std::uint8_t>(slot), 0});
+  t.loop(t.a[3], e[2], 0);
+  for (int k = 0; k < 2; ++k) {
+    t.loop(t.a[4 + k], h[k], 0);
+    t.loop(h[k], i[k], 0);
+    t.loop(i[k], j[k], 0);
+  }
+  for (int k = 0; k < 5; ++k) t.loop(e[k], f[k], 0);
+  for (int k = 0; k < 3; ++k) t.loop(m[k], n[k], 0);
+  t.finish({t.c[5], t.a[5], e[4]}, {t.b[2], t.d[0], h[1], i[0], m[2]});
+  return std::move(t.g);
+}
+
 KnitGraph strip_joined_in_the_rnd_graph(bool leg_in_the_rnd) {
   using T = StitchType;
   KnitGraph g;

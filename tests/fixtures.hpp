@@ -79,6 +79,11 @@ KnitGraph gusset_graph();
 // edges (d2, b2; b0, d0) and knits a3..a5 only (7 sts; a bind-off), leaving the flap's sts
 // (d0..d2) to a new yarn that works them in a row and binds them off.
 KnitGraph gusset_leg_graph();
+// The gusset's tube with a strip beside its flap: a4, a5 go on as a strip of 2 rows with a new
+// yarn (h, i), and the rnd after the flap picks up down the flap's left edge, knits a3 and
+// picks up the strip's right edge, so the tube waits for the strip (set aside, taken up
+// again); the flap's sts go on with a third yarn.
+KnitGraph flap_and_strip_graph();
 
 // A flat strip joined to work in the rnd: 3 sts cast on flat, 2 rows (b, then d back); a rnd
 // of the same yarn that picks up along the strip's left edge (d2, b2) and right edge (b0, d0)

@@ -151,52 +151,55 @@ TEST(HandTarget, SamplesNotCoveredYetNameWhatStopsThem) {
   }
 }
 
+// A knit graph fixture's hand pattern, each of its formats proven, and each of `lines` in it.
+void expect_proven_with_lines(KnitGraph graph, const char* name,
+                              std::initializer_list<const char*> lines) {
+  Compilation c = compile_knit_graph(std::move(graph), name);
+  ASSERT_TRUE(c.knittability.knittable) << check_report(c);
+  std::string pattern = emit(c, "hand");
+  for (const char* line : lines)
+    EXPECT_NE(pattern.find(line), std::string::npos) << line << "\n" << pattern;
+  EXPECT_EQ(testing::unproven_hand_formats(c), "");
+}
+
 // A piece worked flat that goes on in the rnd by picking up along its own edges (the
 // teapot's second strip): its sts go to a holder, the rnd picks up onto the empty needle.
 TEST(HandTarget, AFlatPieceJoinedInTheRndByItsOwnEdgesIsProvenInEveryFormat) {
-  Compilation c = compile_knit_graph(testing::strip_joined_in_the_rnd_graph(), "strip");
-  ASSERT_TRUE(c.knittability.knittable) << check_report(c);
-  std::string pattern = emit(c, "hand");
-  for (const char* line :
-       {"**Row 2 (WS):** Purl.\n\nSlip the 3 sts of Row 2 to holder 1.\n\nPm and join to work in "
-        "the rnd: the sts picked up and placed below go on the needle after the marker, in "
-        "order.\n\nPick up 2 sts along the left edge of this piece, one in each row from Row 2 "
-        "down to Row 1, onto the needle at the beginning of the rnd.\n\n",
-        "onto the needle after the first 2 sts of the rnd \u2014 4 sts.\n\n**Rnd 3:** Knit.\n",
-        "Join a new yarn to the 3 sts of holder 1, the last st of its last row at the tip.",
-        "**Joining a flat piece in the round**", "4 rows and rnds."})
-    EXPECT_NE(pattern.find(line), std::string::npos) << line << "\n" << pattern;
-  EXPECT_EQ(testing::unproven_hand_formats(c), "");
+  expect_proven_with_lines(
+      testing::strip_joined_in_the_rnd_graph(), "strip",
+      {"**Row 2 (WS):** Purl.\n\nSlip the 3 sts of Row 2 to holder 1.\n\nPm and join to work in "
+       "the rnd: the sts picked up and placed below go on the needle after the marker, in "
+       "order.\n\nPick up 2 sts along the left edge of this piece, one in each row from Row 2 "
+       "down to Row 1, onto the needle at the beginning of the rnd.\n\n",
+       "onto the needle after the first 2 sts of the rnd \u2014 4 sts.\n\n**Rnd 3:** Knit.\n",
+       "Join a new yarn to the 3 sts of holder 1, the last st of its last row at the tip.",
+       "**Joining a flat piece in the round**", "4 rows and rnds."});
 }
 
 // A strip whose yarn goes round a corner into a rnd (the teapot's tube after its strip): the
 // last row ends without turning, and the rnd works the sts its short rows left the same way.
 TEST(HandTarget, AStripGoingRoundACornerIntoTheRndIsProvenInEveryFormat) {
-  Compilation c = compile_knit_graph(testing::corner_strip_graph(), "corner strip");
-  ASSERT_TRUE(c.knittability.knittable) << check_report(c);
-  std::string pattern = emit(c, "hand");
-  EXPECT_NE(pattern.find("**Row 3 (RS):** K3, do not turn.\n\nSlip the 3 sts of Row 3 to holder 1 "
-                         "\u2014 2 sts.\n\nPm and join to work in the rnd"),
-            std::string::npos)
-      << pattern;
-  EXPECT_NE(pattern.find("onto the needle after the first 5 sts of the rnd \u2014 8 sts.\n\n**Rnd "
-                         "4:** Knit.\n"),
-            std::string::npos)
-      << pattern;
-  EXPECT_EQ(testing::unproven_hand_formats(c), "");
+  expect_proven_with_lines(
+      testing::corner_strip_graph(), "corner strip",
+      {"**Row 3 (RS):** K3, do not turn.\n\nSlip the 3 sts of Row 3 to holder 1 \u2014 2 "
+       "sts.\n\nPm and join to work in the rnd",
+       "onto the needle after the first 5 sts of the rnd \u2014 8 sts.\n\n**Rnd 4:** Knit.\n"});
+}
+
+// A tube set aside after its flap, while a strip beside it is worked, slips the flap's sts to
+// a holder as it is taken up again (the teapot's Piece 1).
+TEST(HandTarget, ATubeTakenUpAfterItsFlapSlipsTheFlapsSts) {
+  expect_proven_with_lines(testing::flap_and_strip_graph(), "flap and strip",
+                           {"Take up Piece 1 again with its yarn. Slip sts 1\u20133 of the rnd to "
+                            "holder 2 \u2014 1 st. Pick up 2 sts along the left edge of the flap"});
 }
 
 // A new yarn joined to the strip's held sts works them in the rnd: it joins at once.
 TEST(HandTarget, ANewYarnJoinedToHeldStsWorksThemInTheRnd) {
-  Compilation c = compile_knit_graph(testing::strip_joined_in_the_rnd_graph(true), "strip leg");
-  ASSERT_TRUE(c.knittability.knittable) << check_report(c);
-  std::string pattern = emit(c, "hand");
-  EXPECT_NE(pattern.find("Join a new yarn to the 3 sts of holder 1, the last st of its last row "
-                         "at the tip. Pm and join to work in the rnd, being careful not to "
-                         "twist.\n\n**Rnd 1:** Knit.\n"),
-            std::string::npos)
-      << pattern;
-  EXPECT_EQ(testing::unproven_hand_formats(c), "");
+  expect_proven_with_lines(testing::strip_joined_in_the_rnd_graph(true), "strip leg",
+                           {"Join a new yarn to the 3 sts of holder 1, the last st of its last row "
+                            "at the tip. Pm and join to work in the rnd, being careful not to "
+                            "twist.\n\n**Rnd 1:** Knit.\n"});
 }
 
 // Joining a flat piece in the rnd in the middle of its work: its sts first go to a holder,

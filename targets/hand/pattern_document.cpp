@@ -251,7 +251,7 @@ class InstructionWriter {
     std::string text = "Slip " + runs.front();
     for (std::size_t i = 1; i < runs.size(); ++i)
       text.append(i + 1 == runs.size() ? " and " : ", ").append(runs[i]);
-    return fmt::format("{} {} {} sts.", text, kDash, on_needle - held);
+    return fmt::format("{} {} {}.", text, kDash, sts(on_needle - held));
   }
 
   // "Slip the 35 sts of Row 33 to holder 3 — 7 sts.": a flat piece's last row, before the piece
