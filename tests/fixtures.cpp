@@ -500,6 +500,42 @@ KnitGraph strip_joined_in_the_rnd_graph(bool leg_in_the_rnd) {
   return g;
 }
 
+KnitGraph strip_and_tube_joined_graph() {
+  GraphRows t;
+  t.g.source_name = "strip and tube joined";
+  t.g.element = "face";
+  const RowShape open = RowShape::open, closed = RowShape::closed;
+  t.g.row_shape = {open, open, open, closed, closed, closed, closed};
+  auto c = t.row_of(3, StitchType::co, 0), b = t.row_of(3, StitchType::k, 1);
+  auto d = t.row_of(3, StitchType::k, 2), e = t.row_of(4, StitchType::k, 3);
+  auto r = t.row_of(4, StitchType::k, 4);
+  auto h = t.row_of(7, StitchType::k, 5), j = t.row_of(7, StitchType::bo, 6);
+  std::vector<StitchId> yarn1 = {c[2], c[1], c[0], b[0], b[1], b[2], d[2], d[1], d[0]};
+  yarn1.insert(yarn1.end(), e.begin(), e.end());
+  yarn1.insert(yarn1.end(), r.begin(), r.end());
+  t.link(yarn1);
+  std::vector<StitchId> yarn2(h);
+  yarn2.insert(yarn2.end(), j.begin(), j.end());
+  t.link(yarn2);
+  for (int i = 0; i < 3; ++i) {
+    t.loop(c[i], b[i], 0);
+    t.loop(b[i], d[i], i == 2 ? 1 : 0);
+    t.loop(d[i], h[i], i == 2 ? 1 : 0);
+  }
+  // The strip's left edge (d2, b2: loop across first) down, its right edge (b0, d0) up.
+  for (auto [maker, taker, slot] :
+       {std::tuple{d[2], e[0], 0}, {b[2], e[1], 0}, {b[0], e[2], 1}, {d[0], e[3], 1}})
+    t.g.loops.push_back(
+        {maker, taker, LoopKind::perpendicular, static_cast<std::uint8_t>(slot), 0});
+  for (int i = 0; i < 4; ++i) {
+    t.loop(e[i], r[i], 0);
+    t.loop(r[i], h[3 + i], 0);
+  }
+  for (int i = 0; i < 7; ++i) t.loop(h[i], j[i], 0);
+  t.finish({e[3], h[6]}, {c[0], b[2], d[0]});
+  return std::move(t.g);
+}
+
 KnitGraph corner_strip_graph() {
   GraphRows t;
   t.g.source_name = "corner strip";

@@ -94,6 +94,10 @@ KnitGraph strip_joined_in_the_rnd_graph(bool leg_in_the_rnd = false);
 // into a rnd: the rnd starts along the edge of the strip's last st (down its left edge), works
 // the 2 sts left and goes up the right edge; the strip's sts go on with a new yarn.
 KnitGraph corner_strip_graph();
+// The strip joined in the rnd, its tube (2 rnds) left live: a new yarn starts on the strip's
+// held sts (d0..d2), goes on around over the tube's 4 sts (placed into its first rnd) and
+// binds off.
+KnitGraph strip_and_tube_joined_graph();
 
 // How often `what` occurs in `text`.
 std::size_t occurrences(std::string_view text, std::string_view what);

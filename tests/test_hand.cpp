@@ -202,6 +202,15 @@ TEST(HandTarget, ANewYarnJoinedToHeldStsWorksThemInTheRnd) {
                             "twist.\n\n**Rnd 1:** Knit.\n"});
 }
 
+// A new yarn on held sts that goes on around places another piece's sts into its first rnd.
+TEST(HandTarget, ANewYarnJoinedInTheRndPlacesAnotherPiecesSts) {
+  expect_proven_with_lines(
+      testing::strip_and_tube_joined_graph(), "strip and tube",
+      {"at the tip. Pm and join to work in the rnd, being careful not to twist.\n\nPlace the 4 sts "
+       "of Piece 1 on the needle after the first 3 sts of the rnd, the first st of its last rnd "
+       "first \u2014 7 sts.\n\n**Rnd 1:** Knit.\n"});
+}
+
 // Joining a flat piece in the rnd in the middle of its work: its sts first go to a holder,
 // and a marker marks the beginning of the rnd on the empty needle.
 TEST(HandTarget, AFlatPieceIsJoinedInTheRndWithAnEmptyNeedleAndAMarker) {

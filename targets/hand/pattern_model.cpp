@@ -804,9 +804,8 @@ class PatternBuilder {
   // A spare needle (or chain) not yet on this piece's needle: one set aside waits on its own.
   bool placeable(std::uint32_t from, bool chain) const {
     const PatternSection& spare = out_.sections[from];
-    const auto& start = out_.sections.back().starts_from;
-    bool started_on = start && start->section == from && start->chain == chain;
-    return !placed(from, chain) && !started_on && !spare.set_aside && (spare.left_live || chain);
+    return !placed(from, chain) && !started_on_needle_of(from, chain) && !spare.set_aside &&
+           (spare.left_live || chain);
   }
 
   // Places the sts of the loop's piece (or its chain) after the first `after` sts of the rnd,
@@ -823,6 +822,13 @@ class PatternBuilder {
     p.before_row = static_cast<std::uint32_t>(out_.rows.size());
     section().placements.push_back(p);
     st_.live += p.count;
+  }
+
+  // The piece started on the sts of that section's needle (or chain), not on a holder's: those
+  // it has not worked yet are on its needle.
+  bool started_on_needle_of(std::uint32_t section, bool chain) const {
+    const auto& start = out_.sections.back().starts_from;
+    return start && start->holder == 0 && start->section == section && start->chain == chain;
   }
 
   // The piece started on that holder's sts: those it has not worked yet are on its needle.
@@ -1134,13 +1140,12 @@ class PatternBuilder {
   // (or a chain) placed into its rnd, a holder placed there (or the one it started on), or
   // one of the spare needle it started on?
   bool on_own_needle(StitchId maker, bool chain = false) const {
-    const auto& start = out_.sections.back().starts_from;
     if (holder_of_[maker] != 0)
-      return holder_placed(holder_of_[maker]) || (start && start->holder == holder_of_[maker]);
+      return holder_placed(holder_of_[maker]) || started_on_holder(holder_of_[maker]);
     std::uint32_t from = section_of(maker);
     const PatternSection& worked = out_.sections.back();
-    return c_.yarns.piece_of[maker] == worked.yarn ||
-           (worked.starts_from && worked.starts_from->section == from) || placed(from, chain);
+    return c_.yarns.piece_of[maker] == worked.yarn || started_on_needle_of(from, chain) ||
+           placed(from, chain);
   }
 
   // An edge st that makes a loop across the edge besides its own (an expanding edge) gives
