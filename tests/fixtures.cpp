@@ -323,13 +323,38 @@ KnitGraph heel_turn_graph() {
 
 namespace {
 
+// A knit graph built row by row: its stitches, the loops between them and the yarn's order.
+struct GraphRows {
+  KnitGraph g;
+
+  std::vector<StitchId> row_of(std::size_t n, StitchType type, std::uint32_t row) {
+    std::vector<StitchId> made;
+    for (std::size_t i = 0; i < n; ++i) made.push_back(g.add_stitch(type, row, g.size(), 0));
+    return made;
+  }
+  void loop(StitchId maker, StitchId taker, std::uint8_t slot) {
+    g.loops.push_back({maker, taker, LoopKind::wale, slot, 0});
+  }
+  void link(const std::vector<StitchId>& order) {
+    for (std::size_t i = 0; i + 1 < order.size(); ++i) {
+      g.yarn_next[order[i]] = order[i + 1];
+      g.yarn_link[order[i]] = YarnLink::course;
+    }
+  }
+  void finish(std::initializer_list<StitchId> ends_of_rounds,
+              std::initializer_list<StitchId> turns) {
+    for (StitchId s : ends_of_rounds) g.yarn_link[s] = YarnLink::shift;
+    for (StitchId s : turns) g.yarn_link[s] = YarnLink::turn;
+    g.index_loops();
+  }
+};
+
 // The gusset graphs' tube and flap: 6 sts cast on in the rnd and a rnd (a0..a5), then the flap
 // over a0..a2 worked back and forth (b, then d back: d2, d1, d0), on one yarn.
-struct GussetFlap {
-  KnitGraph g;
+struct GussetFlap : GraphRows {
   std::vector<StitchId> c, a, b, d, yarn;
 
-  explicit GussetFlap(const char* name) : g(tube_with_flap(name)) {
+  explicit GussetFlap(const char* name) : GraphRows{tube_with_flap(name)} {
     c = row_of(6, StitchType::co, 0);
     a = row_of(6, StitchType::k, 1);
     b = row_of(3, StitchType::k, 2);
@@ -343,14 +368,6 @@ struct GussetFlap {
     loop(b[2], d[2], 1);
   }
 
-  std::vector<StitchId> row_of(std::size_t n, StitchType type, std::uint32_t row) {
-    std::vector<StitchId> made;
-    for (std::size_t i = 0; i < n; ++i) made.push_back(g.add_stitch(type, row, g.size(), 0));
-    return made;
-  }
-  void loop(StitchId maker, StitchId taker, std::uint8_t slot) {
-    g.loops.push_back({maker, taker, LoopKind::wale, slot, 0});
-  }
   // Rows run right to left seen from the RS: the flap's left edge is b2 and d2, whose loop
   // across it is their first; b0 and d0 make theirs last. Picked up down the left edge (d2,
   // b2) and up the right one (b0, d0).
@@ -365,18 +382,6 @@ struct GussetFlap {
     loop(d[0], over[0], 0);
     loop(d[1], over[1], 0);
     loop(d[2], over[2], 1);
-  }
-  void link(const std::vector<StitchId>& order) {
-    for (std::size_t i = 0; i + 1 < order.size(); ++i) {
-      g.yarn_next[order[i]] = order[i + 1];
-      g.yarn_link[order[i]] = YarnLink::course;
-    }
-  }
-  void finish(std::initializer_list<StitchId> ends_of_rounds,
-              std::initializer_list<StitchId> turns) {
-    for (StitchId s : ends_of_rounds) g.yarn_link[s] = YarnLink::shift;
-    for (StitchId s : turns) g.yarn_link[s] = YarnLink::turn;
-    g.index_loops();
   }
 };
 
@@ -472,13 +477,45 @@ KnitGraph gusset_leg_graph() {
   return std::move(t.g);
 }
 
-KnitGraph strip_joined_in_the_rnd_graph() {
+KnitGraph flap_and_strip_graph() {
+  GussetFlap t("flap and strip");
+  const RowShape open = RowShape::open;
+  t.g.row_shape.insert(t.g.row_shape.end(), {open, open, open, open, open});
+  // In the order worked: picked up from d2 and b2, over a3, picked up from h0 and i0.
+  auto e = t.row_of(5, StitchType::k, 4), f = t.row_of(5, StitchType::bo, 5);
+  auto h = t.row_of(2, StitchType::k, 6), i = t.row_of(2, StitchType::k, 7);
+  auto j = t.row_of(2, StitchType::bo, 8);
+  auto m = t.row_of(3, StitchType::k, 9), n = t.row_of(3, StitchType::bo, 10);
+  for (const auto* run : {&e, &f}) t.yarn.insert(t.yarn.end(), run->begin(), run->end());
+  t.link(t.yarn);
+  t.link({h[0], h[1], i[1], i[0], j[0], j[1]});
+  t.link({m[0], m[1], m[2], n[2], n[1], n[0]});
+  t.work_flap(m);
+  // The flap's left edge (d2, b2) down, then the strip's right edge (h0, i0: loop across last) up.
+  for (auto [maker, taker, slot] :
+       {std::tuple{t.d[2], e[0], 0}, {t.b[2], e[1], 0}, {h[0], e[3], 1}, {i[0], e[4], 1}})
+    t.g.loops.push_back(
+        {maker, taker, LoopKind::perpendicular, static_cast<std::uint8_t>(slot), 0});
+  t.loop(t.a[3], e[2], 0);
+  for (int k = 0; k < 2; ++k) {
+    t.loop(t.a[4 + k], h[k], 0);
+    t.loop(h[k], i[k], 0);
+    t.loop(i[k], j[k], 0);
+  }
+  for (int k = 0; k < 5; ++k) t.loop(e[k], f[k], 0);
+  for (int k = 0; k < 3; ++k) t.loop(m[k], n[k], 0);
+  t.finish({t.c[5], t.a[5], e[4]}, {t.b[2], t.d[0], h[1], i[0], m[2]});
+  return std::move(t.g);
+}
+
+KnitGraph strip_joined_in_the_rnd_graph(bool leg_in_the_rnd) {
   using T = StitchType;
   KnitGraph g;
   g.source_name = "strip joined in the rnd";
   g.element = "face";
-  g.row_shape = {RowShape::open,   RowShape::open, RowShape::open, RowShape::closed,
-                 RowShape::closed, RowShape::open, RowShape::open};
+  const RowShape leg = leg_in_the_rnd ? RowShape::closed : RowShape::open;
+  g.row_shape = {
+      RowShape::open, RowShape::open, RowShape::open, RowShape::closed, RowShape::closed, leg, leg};
   auto row_of = [&](std::size_t n, T type, std::uint32_t row) {
     std::vector<StitchId> made;
     for (std::size_t i = 0; i < n; ++i) made.push_back(g.add_stitch(type, row, g.size(), 0));
@@ -495,8 +532,12 @@ KnitGraph strip_joined_in_the_rnd_graph() {
   };
   link({c[2], c[1], c[0], b[0], b[1], b[2], d[2], d[1], d[0], e[0], e[1], e[2], e[3], f[0], f[1],
         f[2], f[3]});
-  link({h[0], h[1], h[2], j[2], j[1], j[0]});
-  for (StitchId s : {c[0], b[2], d[0], h[2]}) g.yarn_link[s] = YarnLink::turn;
+  if (leg_in_the_rnd)
+    link({h[0], h[1], h[2], j[0], j[1], j[2]});
+  else
+    link({h[0], h[1], h[2], j[2], j[1], j[0]});
+  for (StitchId s : {c[0], b[2], d[0]}) g.yarn_link[s] = YarnLink::turn;
+  g.yarn_link[h[2]] = leg_in_the_rnd ? YarnLink::shift : YarnLink::turn;
   g.yarn_link[e[3]] = YarnLink::shift;
   auto wale = [&](StitchId maker, StitchId taker, std::uint8_t slot) {
     g.loops.push_back({maker, taker, LoopKind::wale, slot, 0});
@@ -512,6 +553,81 @@ KnitGraph strip_joined_in_the_rnd_graph() {
   for (int i = 0; i < 3; ++i) wale(h[i], j[i], 0);
   g.index_loops();
   return g;
+}
+
+KnitGraph strip_and_tube_joined_graph() {
+  GraphRows t;
+  t.g.source_name = "strip and tube joined";
+  t.g.element = "face";
+  const RowShape open = RowShape::open, closed = RowShape::closed;
+  t.g.row_shape = {open, open, open, closed, closed, closed, closed};
+  auto c = t.row_of(3, StitchType::co, 0), b = t.row_of(3, StitchType::k, 1);
+  auto d = t.row_of(3, StitchType::k, 2), e = t.row_of(4, StitchType::k, 3);
+  auto r = t.row_of(4, StitchType::k, 4);
+  auto h = t.row_of(7, StitchType::k, 5), j = t.row_of(7, StitchType::bo, 6);
+  std::vector<StitchId> yarn1 = {c[2], c[1], c[0], b[0], b[1], b[2], d[2], d[1], d[0]};
+  yarn1.insert(yarn1.end(), e.begin(), e.end());
+  yarn1.insert(yarn1.end(), r.begin(), r.end());
+  t.link(yarn1);
+  std::vector<StitchId> yarn2(h);
+  yarn2.insert(yarn2.end(), j.begin(), j.end());
+  t.link(yarn2);
+  for (int i = 0; i < 3; ++i) {
+    t.loop(c[i], b[i], 0);
+    t.loop(b[i], d[i], i == 2 ? 1 : 0);
+    t.loop(d[i], h[i], i == 2 ? 1 : 0);
+  }
+  // The strip's left edge (d2, b2: loop across first) down, its right edge (b0, d0) up.
+  for (auto [maker, taker, slot] :
+       {std::tuple{d[2], e[0], 0}, {b[2], e[1], 0}, {b[0], e[2], 1}, {d[0], e[3], 1}})
+    t.g.loops.push_back(
+        {maker, taker, LoopKind::perpendicular, static_cast<std::uint8_t>(slot), 0});
+  for (int i = 0; i < 4; ++i) {
+    t.loop(e[i], r[i], 0);
+    t.loop(r[i], h[3 + i], 0);
+  }
+  for (int i = 0; i < 7; ++i) t.loop(h[i], j[i], 0);
+  t.finish({e[3], h[6]}, {c[0], b[2], d[0]});
+  return std::move(t.g);
+}
+
+KnitGraph corner_strip_graph() {
+  GraphRows t;
+  t.g.source_name = "corner strip";
+  t.g.element = "face";
+  const RowShape open = RowShape::open, closed = RowShape::closed;
+  t.g.row_shape = {open, open, open, open, closed, closed, open, open};
+  auto c = t.row_of(5, StitchType::co, 0), b = t.row_of(3, StitchType::k, 1);
+  auto d = t.row_of(3, StitchType::k, 2), r = t.row_of(3, StitchType::k, 3);
+  auto e = t.row_of(8, StitchType::k, 4), f = t.row_of(8, StitchType::bo, 5);
+  auto h = t.row_of(3, StitchType::k, 6), j = t.row_of(3, StitchType::bo, 7);
+  t.link({c[4], c[3], c[2], c[1], c[0], b[0], b[1], b[2], d[2], d[1],
+          d[0], r[0], r[1], r[2], e[0], e[1], e[2], e[3], e[4], e[5],
+          e[6], e[7], f[0], f[1], f[2], f[3], f[4], f[5], f[6], f[7]});
+  t.link({h[0], h[1], h[2], j[2], j[1], j[0]});
+  for (int i = 0; i < 3; ++i) {
+    t.loop(c[i], b[i], 0);
+    t.loop(b[i], d[i], i == 2 ? 1 : 0);
+    t.loop(d[i], r[i], i == 2 ? 1 : 0);
+    t.loop(r[i], h[i], i == 2 ? 1 : 0);
+    t.loop(h[i], j[i], 0);
+  }
+  // The rnd starts round the corner at r2, the last st of the strip's last row: down the
+  // strip's left edge (r2, d2, b2: their loop across it first), over the 2 sts the short rows
+  // left (c3, c4), up the right edge (b0, d0, r0: last).
+  for (auto [maker, taker, slot] : {std::tuple{r[2], e[0], 0},
+                                    {d[2], e[1], 0},
+                                    {b[2], e[2], 0},
+                                    {b[0], e[5], 1},
+                                    {d[0], e[6], 1},
+                                    {r[0], e[7], 1}})
+    t.g.loops.push_back(
+        {maker, taker, LoopKind::perpendicular, static_cast<std::uint8_t>(slot), 0});
+  t.loop(c[3], e[3], 0);
+  t.loop(c[4], e[4], 0);
+  for (int i = 0; i < 8; ++i) t.loop(e[i], f[i], 0);
+  t.finish({e[7]}, {c[0], b[2], d[0], r[2], h[2]});
+  return std::move(t.g);
 }
 
 KnitGraph folded_tube_graph() {

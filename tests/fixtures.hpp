@@ -79,6 +79,11 @@ KnitGraph gusset_graph();
 // edges (d2, b2; b0, d0) and knits a3..a5 only (7 sts; a bind-off), leaving the flap's sts
 // (d0..d2) to a new yarn that works them in a row and binds them off.
 KnitGraph gusset_leg_graph();
+// The gusset's tube with a strip beside its flap: a4, a5 go on as a strip of 2 rows with a new
+// yarn (h, i), and the rnd after the flap picks up down the flap's left edge, knits a3 and
+// picks up the strip's right edge, so the tube waits for the strip (set aside, taken up
+// again); the flap's sts go on with a third yarn.
+KnitGraph flap_and_strip_graph();
 
 // The gusset leg's flap the other way round (as letter-r's), after two rnds (z, a) of 6 sts:
 // its first row (b) goes back over
@@ -90,8 +95,17 @@ KnitGraph reversed_gusset_leg_graph();
 
 // A flat strip joined to work in the rnd: 3 sts cast on flat, 2 rows (b, then d back); a rnd
 // of the same yarn that picks up along the strip's left edge (d2, b2) and right edge (b0, d0)
-// only, then binds off; the strip's sts (d0..d2) go on with a new yarn in a row, bound off.
-KnitGraph strip_joined_in_the_rnd_graph();
+// only, then binds off; the strip's sts (d0..d2) go on with a new yarn in a row, bound off (or,
+// `leg_in_the_rnd`, in a rnd: a new yarn joined to held sts to work in the rnd).
+KnitGraph strip_joined_in_the_rnd_graph(bool leg_in_the_rnd = false);
+// A flat strip worked on 3 of its 5 sts (short rows leave 2) whose yarn goes round a corner
+// into a rnd: the rnd starts along the edge of the strip's last st (down its left edge), works
+// the 2 sts left and goes up the right edge; the strip's sts go on with a new yarn.
+KnitGraph corner_strip_graph();
+// The strip joined in the rnd, its tube (2 rnds) left live: a new yarn starts on the strip's
+// held sts (d0..d2), goes on around over the tube's 4 sts (placed into its first rnd) and
+// binds off.
+KnitGraph strip_and_tube_joined_graph();
 
 // How often `what` occurs in `text`.
 std::size_t occurrences(std::string_view text, std::string_view what);

@@ -133,9 +133,8 @@ TEST(HandTarget, SamplesNotCoveredYetNameWhatStopsThem) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
   const std::pair<const char*, const char*> cases[] = {
       {"samples/teapot/teapot.yaml",
-       "face 1909 (k, row 34) starts a rnd that picks up along the edge of face 1761 (k, row "
-       "33), a row of its own piece worked flat: Piece 2 is joined to work in the rnd in the "
-       "middle of its work"},
+       "face 4704 (k2tog, row 58) works a loop of face 4816 (k, row 57) (Piece 3) in a row that "
+       "is not a whole rnd, where its sts cannot be placed on the needle"},
   };
   for (const auto& [sample, named] : cases) {
     std::string error = emit_error(compile_model(sample));
@@ -143,23 +142,95 @@ TEST(HandTarget, SamplesNotCoveredYetNameWhatStopsThem) {
   }
 }
 
-// A piece worked flat that goes on in the rnd by picking up along its own edges (the
-// teapot's second strip) is refused by name, not written wrong.
-TEST(HandTarget, AFlatPieceJoinedInTheRndByItsOwnEdgesIsNamed) {
-  Compilation c = compile_knit_graph(testing::strip_joined_in_the_rnd_graph(), "strip");
+// A knit graph fixture's hand pattern, each of its formats proven, and each of `lines` in it.
+void expect_proven_with_lines(KnitGraph graph, const char* name,
+                              std::initializer_list<const char*> lines) {
+  Compilation c = compile_knit_graph(std::move(graph), name);
   ASSERT_TRUE(c.knittability.knittable) << check_report(c);
-  std::string error = emit_error(c);
-  EXPECT_NE(error.find("face 10 (k, row 4) starts a rnd that picks up along the edge of face 9 (k, "
-                       "row 3), a row "
-                       "of its own piece worked flat: Piece 1 is joined to work in the rnd"),
-            std::string::npos)
-      << error;
+  std::string pattern = emit(c, "hand");
+  for (const char* line : lines)
+    EXPECT_NE(pattern.find(line), std::string::npos) << line << "\n" << pattern;
+  EXPECT_EQ(testing::unproven_hand_formats(c), "");
 }
 
-TEST(HandTarget, AMakeOneLastInAFlatRowHasNoStrandToLift) {
-  RowPlan plan = {{T::co, T::co, T::co}, {T::m1l, T::k, T::k}, {T::bo, T::bo, T::bo, T::bo}};
-  std::string error = emit_error(compile_stitch_mesh(build_from_rows(plan, Layout::sheet), "edge"));
-  EXPECT_NE(error.find("no strand to lift"), std::string::npos) << error;
+// A piece worked flat that goes on in the rnd by picking up along its own edges (the
+// teapot's second strip): its sts go to a holder, the rnd picks up onto the empty needle.
+TEST(HandTarget, AFlatPieceJoinedInTheRndByItsOwnEdgesIsProvenInEveryFormat) {
+  expect_proven_with_lines(
+      testing::strip_joined_in_the_rnd_graph(), "strip",
+      {"**Row 2 (WS):** Purl.\n\nSlip the 3 sts of Row 2 to holder 1.\n\nPm and join to work in "
+       "the rnd: the sts picked up and placed below go on the needle after the marker, in "
+       "order.\n\nPick up 2 sts along the left edge of this piece, one in each row from Row 2 "
+       "down to Row 1, onto the needle at the beginning of the rnd.\n\n",
+       "onto the needle after the first 2 sts of the rnd \u2014 4 sts.\n\n**Rnd 3:** Knit.\n",
+       "Join a new yarn to the 3 sts of holder 1, the last st of its last row at the tip.",
+       "**Joining a flat piece in the round**", "4 rows and rnds."});
+}
+
+// A strip whose yarn goes round a corner into a rnd (the teapot's tube after its strip): the
+// last row ends without turning, and the rnd works the sts its short rows left the same way.
+TEST(HandTarget, AStripGoingRoundACornerIntoTheRndIsProvenInEveryFormat) {
+  expect_proven_with_lines(
+      testing::corner_strip_graph(), "corner strip",
+      {"**Row 3 (RS):** K3, do not turn.\n\nSlip the 3 sts of Row 3 to holder 1 \u2014 2 "
+       "sts.\n\nPm and join to work in the rnd",
+       "onto the needle after the first 5 sts of the rnd \u2014 8 sts.\n\n**Rnd 4:** Knit.\n"});
+}
+
+// A tube set aside after its flap, while a strip beside it is worked, slips the flap's sts to
+// a holder as it is taken up again (the teapot's Piece 1).
+TEST(HandTarget, ATubeTakenUpAfterItsFlapSlipsTheFlapsSts) {
+  expect_proven_with_lines(testing::flap_and_strip_graph(), "flap and strip",
+                           {"Take up Piece 1 again with its yarn. Slip sts 1\u20133 of the rnd to "
+                            "holder 2 \u2014 1 st. Pick up 2 sts along the left edge of the flap"});
+}
+
+// A new yarn joined to the strip's held sts works them in the rnd: it joins at once.
+TEST(HandTarget, ANewYarnJoinedToHeldStsWorksThemInTheRnd) {
+  expect_proven_with_lines(testing::strip_joined_in_the_rnd_graph(true), "strip leg",
+                           {"Join a new yarn to the 3 sts of holder 1, the last st of its last row "
+                            "at the tip. Pm and join to work in the rnd, being careful not to "
+                            "twist.\n\n**Rnd 1:** Knit.\n"});
+}
+
+// A new yarn on held sts that goes on around places another piece's sts into its first rnd.
+TEST(HandTarget, ANewYarnJoinedInTheRndPlacesAnotherPiecesSts) {
+  expect_proven_with_lines(
+      testing::strip_and_tube_joined_graph(), "strip and tube",
+      {"at the tip. Pm and join to work in the rnd, being careful not to twist.\n\nPlace the 4 sts "
+       "of Piece 1 on the needle after the first 3 sts of the rnd, the first st of its last rnd "
+       "first \u2014 7 sts.\n\n**Rnd 1:** Knit.\n"});
+}
+
+// Joining a flat piece in the rnd in the middle of its work: its sts first go to a holder,
+// and a marker marks the beginning of the rnd on the empty needle.
+TEST(HandTarget, AFlatPieceIsJoinedInTheRndWithAnEmptyNeedleAndAMarker) {
+  const std::string strip = "Cast on 3 sts.\nRow 1 (RS): Knit.\nRow 2 (WS): Purl.\n";
+  const std::pair<std::string, const char*> cases[] = {
+      {strip + "Pm and join to work in the rnd.\n",
+       "p.md:4: Join to work in the rnd: the sts of Row 2 are still on the needle (slip them to a "
+       "holder first: the rnd is made of the sts picked up and placed, and those left)"},
+      {strip + "Slip the 3 sts of Row 2 to holder 1.\nJoin to work in the rnd.\n",
+       "p.md:5: Join to work in the rnd: pm for the beginning of the rnd first (where the yarn "
+       "is)"},
+      {strip + "Slip the 2 sts of Row 2 to holder 1.\n",
+       "p.md:4: Slip the sts of Row 2 to holder 1: the pattern says 2 sts, but the row left 3 sts "
+       "on the needle"},
+      {"Cast on 5 sts.\nRow 1 (RS): K3, do not turn.\nRow 2 (WS): P3.\n",
+       "p.md:3: Row 2 (RS): labelled WS, but the RS faces you: the work was not turned"},
+      {"Cast on 6 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\nSlip sts 1\u20133 of the rnd "
+       "to "
+       "holder 1 \u2014 3 sts.\nRnd 2: BO all sts.\nFasten off.\n" +
+           strip + "Slip the 3 sts of Row 2 to holder 1.\n",
+       "p.md:9: Slip the sts of Row 2 to holder 1: it already holds sts"},
+      {strip + "Slip the 3 sts of Row 1 to holder 1.\n",
+       "p.md:4: Slip the sts of Row 1 to holder 1: the last row worked is Row 2"},
+      {"Cast on 6 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\nSlip the 6 sts of Row 1 to "
+       "holder 1.\n",
+       "p.md:3: Slip the sts of Row 1 to holder 1: only from a piece worked flat (in the rnd, say "
+       "which sts)"},
+  };
+  for (const auto& [pattern, failure] : cases) EXPECT_EQ(failure_of(pattern), failure) << pattern;
 }
 
 // Generates many sheets and tubes with random shaping: the hand simulator is the judge.

@@ -435,6 +435,16 @@ TEST(HandMutations, DecreasesAcrossAGapRejectEveryEditThatChangesTheFabric) {
                    compile_knit_graph(testing::gusset_leg_graph(), "gusset leg"));
   mutate_and_judge("reversed gusset leg (a flap worked back from the end of the rnd)",
                    compile_knit_graph(testing::reversed_gusset_leg_graph(), "reversed gusset leg"));
+  mutate_and_judge("strip joined in the rnd (its sts to a holder, its edges picked up)",
+                   compile_knit_graph(testing::strip_joined_in_the_rnd_graph(), "strip"));
+  mutate_and_judge("tube taken up after its flap (the flap's sts slipped as it is taken up)",
+                   compile_knit_graph(testing::flap_and_strip_graph(), "flap and strip"));
+  mutate_and_judge("strip going round a corner into the rnd (do not turn, sts left)",
+                   compile_knit_graph(testing::corner_strip_graph(), "corner strip"));
+  mutate_and_judge("a new yarn joined in the rnd, another piece's sts placed",
+                   compile_knit_graph(testing::strip_and_tube_joined_graph(), "strip and tube"));
+  mutate_and_judge("strip's sts joined in the rnd with a new yarn",
+                   compile_knit_graph(testing::strip_joined_in_the_rnd_graph(true), "strip leg"));
 }
 
 TEST(HandMutations, JoinsRejectEveryEditThatChangesTheFabric) {

@@ -60,6 +60,8 @@ constexpr std::array kOps{
                                 "slip the next st purlwise, take the yarn back between the "
                                 "needles, slip the st back and turn the work", 1, 1},
   HandOpInfo{O::turn,  "turn",  "turn the work before the end of the row (short row)", 0, 0},
+  HandOpInfo{O::no_turn, "do not turn", "end the row here without turning the work: the next "
+                                "rnd goes on from the edge of the st just worked", 0, 0},
   HandOpInfo{O::ds,    "DS",    "double stitch (German short row): with the yarn in front, "
                                 "slip the first st purlwise and pull the yarn up over the needle "
                                 "to the back, so the st shows two legs", 0, 0},
@@ -182,7 +184,7 @@ bool is_plain(HandOp op) {
   return op == HandOp::k || op == HandOp::p;
 }
 bool ends_row(HandOp op) {
-  return op == HandOp::wt || op == HandOp::turn;
+  return op == HandOp::wt || op == HandOp::turn || op == HandOp::no_turn;
 }
 bool resolves_turn(HandOp op) {
   return op >= HandOp::kw && op <= HandOp::pds;

@@ -53,6 +53,9 @@ enum class HandOp : std::uint8_t {
   // in the next row, and a later row works its two legs as one ("k DS", "p DS").
   wt,
   turn,
+  // "do not turn": the row ends where the yarn goes round a corner into the next rnd, along the
+  // edge of the st just worked (the teapot's tube after its strip): the work is not turned.
+  no_turn,
   ds,
   // AutoKnit turns its short rows on a tuck: "sl1yo" slips the next st with a yo laid over it
   // (a tuck), the row back slips it first ("sl1", the st with its yo as one), and a later row
@@ -92,7 +95,7 @@ std::optional<HandOp> hand_op_from(std::string_view word);  // case-insensitive
 
 bool is_make_one(HandOp op);  // M1L, M1R, M1PL, M1PR, yo
 bool is_plain(HandOp op);     // k, p: written with a count ("k12")
-bool ends_row(HandOp op);     // w&t, turn: the rest of the needle waits
+bool ends_row(HandOp op);     // w&t, turn, do not turn: the rest of the needle waits
 // kw, pw, k DS, p DS: a plain st worked over the loop a short row turned at.
 bool resolves_turn(HandOp op);
 bool works_with_yo(HandOp op);  // brk, brp: a plain st worked over a st and its yo

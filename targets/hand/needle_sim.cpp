@@ -116,7 +116,7 @@ class NeedleSimulator {
         check_printed_count(s, "Pick up");
         break;
       case Step::Kind::join_round:
-        join(s.marker);
+        join(s);
         break;
       case Step::Kind::row:
         work_rows(s);
@@ -152,6 +152,9 @@ class NeedleSimulator {
       case Step::Kind::hold:
         hold(s);
         check_printed_count(s, "Slip sts to holders");
+        break;
+      case Step::Kind::hold_all:
+        hold_all(s);
         break;
       case Step::Kind::place_on_spare:
         place_on_spare_needle(s);
@@ -335,7 +338,10 @@ class NeedleSimulator {
     pc_.bor = kNone;
   }
 
-  void join(bool marker) {
+  // Before a piece's first row, or after its yarn is carried to held sts; or a flat piece in
+  // the middle of its work.
+  void join(const Step& s) {
+    if (active_ && pc_.next_number != 1 && !pc_.joined && !pc_.carried) return join_flat_piece(s);
     if (!active_ || (pc_.next_number != 1 && !pc_.carried) || pc_.joined)
       fail(
           "Join to work in the rnd: only before a piece's first row, or after the yarn is carried "
@@ -346,7 +352,24 @@ class NeedleSimulator {
     // yarn was joined to.
     if (pc_.joined_to_sts) std::reverse(pc_.right.begin(), pc_.right.end());
     pc_.turn_before = false;
-    pc_.place_bor = marker;
+    pc_.place_bor = s.marker;
+  }
+
+  // A flat piece joined to work in the rnd in the middle of its work: its last row's sts were
+  // slipped to a holder; the BOR marker goes where the yarn is (the tip of the right needle),
+  // and the sts picked up and placed next go in after it.
+  void join_flat_piece(const Step& s) {
+    auto of_last_row = [&](std::uint32_t entry) { return made_by_last_row(entry); };
+    if (std::any_of(pc_.right.begin(), pc_.right.end(), of_last_row) ||
+        std::any_of(pc_.left.begin(), pc_.left.end(), of_last_row))
+      fail(fmt::format(
+          "Join to work in the rnd: the sts of Row {} are still on the needle (slip them to a "
+          "holder first: the rnd is made of the sts picked up and placed, and those left)",
+          pc_.next_number - 1));
+    if (!s.marker)
+      fail("Join to work in the rnd: pm for the beginning of the rnd first (where the yarn is)");
+    pc_.joined = true;
+    pc_.right.push_back(pc_.bor = new_marker());
   }
 
   void fasten_off() {
@@ -509,6 +532,39 @@ class NeedleSimulator {
     if (held != s.count)
       fail(fmt::format("Slip sts to holder {} after the {} on it: it holds {}", s.number,
                        sts(s.count), held == 0 ? "no sts" : sts(held)));
+  }
+
+  // "Slip the 35 sts of Row 33 to holder 3": the sts a flat piece's last row left on the needle,
+  // in the order it worked them (before the piece is joined in the rnd); the others stay.
+  void hold_all(const Step& s) {
+    std::string what = fmt::format("Slip the sts of Row {} to holder {}", s.from_row, s.number);
+    if (!active_ || pc_.joined)
+      fail(what + ": only from a piece worked flat (in the rnd, say which sts)");
+    if (holders_.contains(s.number)) fail(what + ": it already holds sts");
+    if (s.from_row + 1 != pc_.next_number)
+      fail(fmt::format("{}: the last row worked is Row {}", what, pc_.next_number - 1));
+    std::vector<std::uint32_t> held = sts_of_last_row_off_the_needle();
+    if (held.size() != s.count)
+      fail(fmt::format("{}: the pattern says {}, but the row left {} on the needle", what,
+                       sts(s.count), sts(static_cast<std::uint32_t>(held.size()))));
+    pc_.live -= s.count;
+    holders_[s.number] = std::move(held);
+    check_printed_count(s, "Slip the sts to holder");
+  }
+
+  // The loops the last row made that are on the needles, in the order it made them; taken off.
+  std::vector<std::uint32_t> sts_of_last_row_off_the_needle() {
+    std::vector<std::uint32_t> off;
+    auto of_last_row = [&](std::uint32_t entry) { return made_by_last_row(entry); };
+    for (std::vector<std::uint32_t>* needle : {&pc_.right, &pc_.left}) {
+      std::copy_if(needle->begin(), needle->end(), std::back_inserter(off), of_last_row);
+      std::erase_if(*needle, of_last_row);
+    }
+    return off;
+  }
+
+  bool made_by_last_row(std::uint32_t entry) {
+    return !is_marker_entry(entry) && fab().row[fab().loop_maker[entry]] == row_;
   }
 
   // A holder's sts from the needle tip: the first or the last st of the run slipped to it.
@@ -805,9 +861,9 @@ class NeedleSimulator {
     if (label && *label != facing)
       fail(fmt::format("labelled {}, but the {} faces you: {}", side_name(*label),
                        side_name(facing),
-                       !pc_.joined       ? "every row turns the work"
-                       : pc_.turn_before ? "the work was turned"
-                                         : "the work was not turned"));
+                       !pc_.turn_before ? "the work was not turned"
+                       : !pc_.joined    ? "every row turns the work"
+                                        : "the work was turned"));
     begin_row(facing);
     run_nodes(p, p.top_begin, p.top_end);
     end_row();
@@ -821,7 +877,7 @@ class NeedleSimulator {
     facing_ = facing;
     position_ = 0;
     row_last_stitch_ = kNone;
-    row_ended_ = false;
+    row_ended_ = not_turned_ = false;
     pending_.clear();
     last_make_ = std::nullopt;
     next_link_ = pc_.turn_before ? YarnLink::turn : YarnLink::shift;
@@ -915,7 +971,7 @@ class NeedleSimulator {
     if (!row_round_ && last_make_ && *last_make_ != HandOp::yo)
       fail(fmt::format("{} at the end of a row: there is no strand after the last st to lift",
                        info(*last_make_).abbreviation));
-    pc_.turn_before = row_ended_ || !pc_.joined;
+    pc_.turn_before = (row_ended_ || !pc_.joined) && !not_turned_;
   }
 
   // For each place on the left needle, the loops from there to the next marker (the tip is at
@@ -1054,6 +1110,9 @@ class NeedleSimulator {
     switch (op) {
       case HandOp::turn:
         row_ended_ = true;
+        return;
+      case HandOp::no_turn:
+        row_ended_ = not_turned_ = true;
         return;
       case HandOp::ds:
         double_stitch();
@@ -1438,7 +1497,8 @@ class NeedleSimulator {
 
   // The row being worked.
   bool in_row_ = false, row_round_ = false;
-  bool row_ended_ = false;  // by w&t or turn
+  bool row_ended_ = false;   // by w&t or turn (or "do not turn")
+  bool not_turned_ = false;  // ... by "do not turn": the next row goes on the same way
   std::uint32_t row_ = 0;
   Side facing_ = Side::rs;
   std::uint32_t position_ = 0;

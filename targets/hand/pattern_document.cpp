@@ -125,9 +125,10 @@ class InstructionWriter {
   }
 
   // " Pm and join to work in the rnd, being careful not to twist." after the cast-on (or the
-  // new yarn joined to another piece's sts) of a piece worked in the rnd.
+  // new yarn joined to another piece's sts) of a piece worked in the rnd from its first row (a
+  // flat piece joined in the rnd later says so before its first rnd).
   std::string join_round_text(const PatternSection& sec) const {
-    if (!sec.in_round) return "";
+    if (!sec.in_round || sec.joined_in_rnd_at) return "";
     return fmt::format(" Pm and join to work in the rnd{}, being careful not to twist.",
                        starts_inside_out(sec) ? " with the WS facing (the tube inside out)" : "");
   }
@@ -190,9 +191,20 @@ class InstructionWriter {
   // beginning of the rnd, the first st of its last rnd first."
   std::string take_up_text(const PatternSection& sec) const {
     std::string text = fmt::format("Take up Piece {} again with its yarn.", sec.piece);
+    if (sec.first_row > 0)  // the sts of its flap another piece works, slipped as it is taken up
+      if (std::string held = holdings_text(sec.first_row - 1, set_aside_with(sec)); !held.empty())
+        text.append(" ").append(held);
     for (const std::string& placed : placement_texts_before(sec.first_row))
       text.append(" ").append(placed);
     return with_count_after_placements(text, sec.first_row);
+  }
+
+  // The sts a piece taken up again was set aside with.
+  std::uint32_t set_aside_with(const PatternSection& taken_up) const {
+    std::uint32_t sts = 0;
+    for (std::uint32_t s = 0; s < section_; ++s)
+      if (p_.sections[s].piece == taken_up.piece) sts = p_.sections[s].live_at_end;
+    return sts;
   }
 
   // What is placed before `row`: holders put on a spare needle first, as they add no st to the
@@ -220,9 +232,9 @@ class InstructionWriter {
           "at the tip.",
           p.count, p.holder, p.second_spare ? "second " : "", p.from_last ? "last" : "first");
     bool cast_on = p.holder == 0 && (p.chain || spare.first_row == spare.end_row);
-    std::string which = cast_on          ? "cast on"
-                        : spare.in_round ? "of its last rnd"
-                                         : "of its last row";
+    std::string which = cast_on                                         ? "cast on"
+                        : spare.in_round && !holds_a_flat_row(p.holder) ? "of its last rnd"
+                                                                        : "of its last row";
     std::string from = p.holder != 0
                            ? fmt::format("holder {}", p.holder)
                            : fmt::format("Piece {}{}", spare.piece, p.chain ? "'s chain" : "");
@@ -235,6 +247,14 @@ class InstructionWriter {
 
   // "Slip sts 10–18 of the rnd to holder 1, sts 19–27 to holder 2 and sts 28–36 to holder 3."
   void write_holdings_after(std::uint32_t row) {
+    if (write_flat_row_held_after(row)) return;
+    std::string text = holdings_text(row, p_.rows[row].sts_after);
+    if (!text.empty()) add(InstructionLine::Kind::setup, "", text);
+  }
+
+  // The holdings after `row` (a row of the section, or the one before a piece is taken up), with
+  // what then stays of the `on_needle` sts.
+  std::string holdings_text(std::uint32_t row, std::uint32_t on_needle) const {
     std::vector<std::string> runs;
     std::uint32_t held = 0;
     for (const PatternSection::Holding& h : p_.sections[section_].holdings) {
@@ -243,12 +263,34 @@ class InstructionWriter {
       runs.push_back(fmt::format("{}{} to holder {}{}", held_sts_text(h),
                                  runs.empty() ? " of the rnd" : "", h.holder, onto_text(h)));
     }
-    if (runs.empty()) return;
+    if (runs.empty()) return "";
     std::string text = "Slip " + runs.front();
     for (std::size_t i = 1; i < runs.size(); ++i)
       text.append(i + 1 == runs.size() ? " and " : ", ").append(runs[i]);
+    return fmt::format("{} {} {}.", text, kDash, sts(on_needle - held));
+  }
+
+  // "Slip the 35 sts of Row 33 to holder 3 — 7 sts.": a flat piece's last row, before the piece
+  // is joined in the rnd (the count: the sts that stay on the needle, if any).
+  bool write_flat_row_held_after(std::uint32_t row) {
+    for (const PatternSection::Holding& h : p_.sections[section_].holdings)
+      if (h.after_row == row && h.flat_row) {
+        std::uint32_t left = p_.rows[row].sts_after - h.count;
+        add(InstructionLine::Kind::setup, "",
+            fmt::format("Slip the {} of {} {} to holder {}{}.", sts(h.count),
+                        rows_word(false, false), p_.rows[row].number, h.holder,
+                        left ? fmt::format(" {} {}", kDash, sts(left)) : ""));
+        return true;
+      }
+    return false;
+  }
+
+  // Before the first rnd of a flat piece joined in the rnd, its last row then on a holder.
+  void write_join_in_the_rnd_before(std::uint32_t row) {
+    if (p_.sections[section_].joined_in_rnd_at != row) return;
     add(InstructionLine::Kind::setup, "",
-        fmt::format("{} {} {} sts.", text, kDash, p_.rows[row].sts_after - held));
+        "Pm and join to work in the rnd: the sts picked up and placed below go on the needle "
+        "after the marker, in order.");
   }
 
   // "sts 10–18", or "st 26".
@@ -310,16 +352,30 @@ class InstructionWriter {
                        p.from_row <= p.to_row ? "up" : "down", row(p.to_row));
   }
 
-  // A gusset's edges are the flap's, rows of the piece being worked.
+  // A gusset's edges are the flap's, rows of the piece being worked (of a flat piece joined in
+  // the rnd, this piece's).
   std::string edge_owner(const PatternSection::PickUp& p) const {
+    const PatternSection& worked = p_.sections[section_];
     std::uint32_t piece = p_.sections[p.section].piece;
-    return piece == p_.sections[section_].piece ? "the flap" : fmt::format("Piece {}", piece);
+    if (piece != worked.piece) return fmt::format("Piece {}", piece);
+    return worked.joined_in_rnd_at ? "this piece" : "the flap";
   }
 
-  // "Join a new yarn to the 3 loops of Piece 1's chain, the first st cast on at the tip."
+  // Does the holder hold the sts of a flat piece's last row (slipped before it was joined in
+  // the rnd)?
+  bool holds_a_flat_row(std::uint32_t holder) const {
+    for (const PatternSection& sec : p_.sections)
+      for (const PatternSection::Holding& h : sec.holdings)
+        if (h.holder == holder && holder != 0) return h.flat_row;
+    return false;
+  }
+
+  // "Join a new yarn to the 3 loops of Piece 1's chain, the first st cast on at the tip." A
+  // holder of sts from two rnds names the st by the order they were slipped; one of a flat
+  // row's, by its row.
   std::string join_spare_text(const PatternSection::Start& start) const {
     const PatternSection& spare = p_.sections[start.section];
-    if (start.holder && p_.sections[section_].in_round)
+    if (start.holder && p_.sections[section_].in_round && !holds_a_flat_row(start.holder))
       return fmt::format(
           "Join a new yarn to the {} of holder {}, the {} st slipped to it at the tip.",
           sts(start.count), start.holder, start.from_last ? "last" : "first");
@@ -327,7 +383,7 @@ class InstructionWriter {
       return fmt::format(
           "Join a new yarn to the {} of holder {}, the {} st of its last {} at the tip.",
           sts(start.count), start.holder, start.from_last ? "last" : "first",
-          spare.in_round ? "rnd" : "row");
+          spare.in_round && !holds_a_flat_row(start.holder) ? "rnd" : "row");
     return fmt::format("Join a new yarn to the {} {} of Piece {}{}, the {} st cast on at the tip.",
                        start.count, start.chain ? "loops" : "sts", spare.piece,
                        start.chain ? "'s chain" : "", start.from_last ? "last" : "first");
@@ -389,7 +445,10 @@ class InstructionWriter {
         ++stop;
       write_carry_before(i);
       // A piece taken up again places its first ones as it is taken up.
-      if (i != first || !p_.sections[section_].resumed) write_placements_before(i);
+      if (i != first || !p_.sections[section_].resumed) {
+        write_join_in_the_rnd_before(i);
+        write_placements_before(i);
+      }
       if (i != first) write_holds_before(i);
       write_row_run(first, i, stop);
       write_holdings_after(stop - 1);
@@ -499,6 +558,7 @@ struct Totals {
   bool provisional = false;        // a provisional cast-on
   bool picks_up = false;           // a piece starts on loops picked up along an edge
   bool picks_up_into_rnd = false;  // loops picked up along an edge go into a rnd
+  bool joins_flat_piece = false;   // a flat piece is joined in the rnd in the middle of its work
   std::uint32_t holders = 0;
   std::uint32_t widest = 0, narrowest_round = 0;
   std::vector<bool> used = std::vector<bool>(kHandOpCount, false);
@@ -517,6 +577,8 @@ Totals totals_of(const HandPattern& p) {
     for (const PatternSection::Holding& h : s.holdings) t.holders = std::max(t.holders, h.holder);
     if (s.joins) continue;
     (s.in_round ? t.round : t.flat) = true;
+    t.flat = t.flat || s.joined_in_rnd_at;
+    t.joins_flat_piece = t.joins_flat_piece || s.joined_in_rnd_at;
     t.widest = std::max(t.widest, s.cast_on);
     if (s.in_round) t.narrowest_round = std::min(t.narrowest_round, s.cast_on);
   }
@@ -575,7 +637,7 @@ class FrontMatter {
   // Short rows add length to part of the piece only; a piece of a cast-on alone (along a
   // split) has no height.
   std::string height(const PatternSection& s, std::uint32_t rows, std::uint32_t short_rows) const {
-    std::string unit = s.in_round ? "rnds" : "rows";
+    std::string unit = s.joined_in_rnd_at ? "rows and rnds" : s.in_round ? "rnds" : "rows";
     if (rows == 0 && short_rows == 0) return "A cast-on only: no rows of its own.";
     if (rows == 0)
       return fmt::format("{} short rows (worked on part of the sts), no whole {}.", short_rows,
@@ -743,6 +805,14 @@ class FrontMatter {
           "of the rnd\"): with the RS facing and no new yarn, put the outer loop of the edge st "
           "of each row named on the needle at that place, one row after the other (the loops "
           "are not knit: the rnd works them in the order picked up).");
+    if (t_.joins_flat_piece)
+      items.push_back(
+          "**Joining a flat piece in the round** (after rows worked flat): once the last row's "
+          "sts are slipped to a holder, place the BOR marker where the yarn is, put the sts the "
+          "pattern picks up and places next on the needle after it, in order, and work the next "
+          "rnd over them (and any sts the rows left) with the yarn still attached at the end of "
+          "the last row (after \"do not turn\", without turning the work): starting with the "
+          "first st put on, it joins them into a tube.");
     if (t_.holders > 0)
       items.push_back(
           "**Holders:** \"Slip sts 10\u201318 of the rnd to holder 1\" counts the sts from the "

@@ -7,6 +7,7 @@
 
 #include "common/error.hpp"
 #include "driver/pipeline.hpp"
+#include "hand/fabric_compare.hpp"
 #include "hand/marker_plan.hpp"
 #include "hand/region_markers.hpp"
 
@@ -578,7 +579,7 @@ class PatternBuilder {
     else
       add_row();
     st_.previous_link = link_[row_.back()];
-    row_before_ = std::move(row_);
+    st_.last_row = std::move(row_);
     row_.clear();
   }
 
@@ -715,7 +716,7 @@ class PatternBuilder {
     const Held& held = holders_[holder - 1];
     section().starts_from = PatternSection::Start{section_of(first.maker), false,
                                                   first.maker == held.last, held.count, holder};
-    section().in_round = g_.yarn_link[row_.back()] == YarnLink::shift;  // a leg of a tube
+    section().in_round = link_[row_.back()] == YarnLink::shift;  // a leg of a tube
     st_.live = st_.ahead = held.count;
   }
 
@@ -778,20 +779,14 @@ class PatternBuilder {
           continue;  // one by one, picked up, or across the gap
         bool chain = is_chain_loop(loop);
         if (std::uint32_t holder = holder_of_[loop.maker]; holder != 0) {
-          if (!holder_placed(holder) && !started_on(holder)) place_holder(holder, loop, taken);
+          if (!holder_placed(holder) && !started_on_holder(holder))
+            place_holder(holder, loop, taken);
         } else if (from != self && placeable(from, chain)) {
           place_spare_needle(loop, taken);
         }
         ++taken;
       }
     place_pieces_worked_later();
-  }
-
-  bool started_on(std::uint32_t holder) const {
-    const PatternSection& worked = out_.sections.back();
-    return (worked.starts_from && worked.starts_from->holder == holder) ||
-           std::any_of(worked.carries.begin(), worked.carries.end(),
-                       [&](const PatternSection::CarryOn& c) { return c.holder == holder; });
   }
 
   // The first row of a piece taken up in the rnd places the pieces beside its band too.
@@ -869,22 +864,33 @@ class PatternBuilder {
     auto& placed = section().placements;
     std::uint32_t row = number_of_[loop.maker];
     std::uint32_t before_row = static_cast<std::uint32_t>(out_.rows.size());
-    if (!placed.empty() && placed.back().edge && placed.back().before_row == before_row &&
-        placed.back().after + placed.back().count == after &&
-        placed.back().section == section_of(loop.maker)) {
+    // The edge seen from the RS: the loop across it is the maker's last (right) or first; the
+    // mirror image swaps them.
+    auto made = g_.loops_made_by(loop.maker);
+    bool right = (g_.loops[made.front()].kind != LoopKind::perpendicular) != out_.mirror;
+    if (goes_on_picking_up(loop, after, right)) {
       ++placed.back().count;
       placed.back().edge->to_row = row;
     } else {
       PatternSection::Placement p{section_of(loop.maker), 1, after, false};
       p.before_row = before_row;
-      // The edge seen from the RS: the loop across it is the maker's last (right) or first;
-      // the mirror image swaps them.
-      auto made = g_.loops_made_by(loop.maker);
-      bool right = (g_.loops[made.front()].kind != LoopKind::perpendicular) != out_.mirror;
       p.edge = PatternSection::PickUp{p.section, row, row, right};
       placed.push_back(p);
     }
     ++st_.live;
+  }
+
+  // Does the loop go on the last pick-up: right after it in the rnd, along the same edge of the
+  // same piece, in the next row (both edges of a flat piece joined in the rnd are side by side
+  // in its first rnd)?
+  bool goes_on_picking_up(const Loop& loop, std::uint32_t after, bool right) const {
+    const auto& placed = out_.sections.back().placements;
+    if (placed.empty() || !placed.back().edge) return false;
+    const PatternSection::Placement& last = placed.back();
+    std::uint32_t row = number_of_[loop.maker], to = last.edge->to_row;
+    return last.before_row == out_.rows.size() && last.after + last.count == after &&
+           last.section == section_of(loop.maker) && last.edge->right == right &&
+           (row + 1 == to || to + 1 == row);
   }
 
   // The sts of the piece taken up, from its first row up to the first whole rnd after it.
@@ -903,9 +909,8 @@ class PatternBuilder {
   // A spare needle (or chain) not yet on this piece's needle: one set aside waits on its own.
   bool placeable(std::uint32_t from, bool chain) const {
     const PatternSection& spare = out_.sections[from];
-    const auto& start = out_.sections.back().starts_from;
-    bool started_on = start && start->section == from && start->chain == chain;
-    return !placed(from, chain) && !started_on && !spare.set_aside && (spare.left_live || chain);
+    return !placed(from, chain) && !started_on_needle_of(from, chain) && !spare.set_aside &&
+           (spare.left_live || chain);
   }
 
   // Places the sts of the loop's piece (or its chain) after the first `after` sts of the rnd,
@@ -922,6 +927,22 @@ class PatternBuilder {
     p.before_row = static_cast<std::uint32_t>(out_.rows.size());
     section().placements.push_back(p);
     st_.live += p.count;
+  }
+
+  // The piece started on the sts of that section's needle (or chain), not on a holder's: those
+  // it has not worked yet are on its needle.
+  bool started_on_needle_of(std::uint32_t section, bool chain) const {
+    const auto& start = out_.sections.back().starts_from;
+    return start && start->holder == 0 && start->section == section && start->chain == chain;
+  }
+
+  // The piece started on that holder's sts (or its yarn was carried on to them): those it has
+  // not worked yet are on its needle.
+  bool started_on_holder(std::uint32_t holder) const {
+    const PatternSection& worked = out_.sections.back();
+    return (worked.starts_from && worked.starts_from->holder == holder) ||
+           std::any_of(worked.carries.begin(), worked.carries.end(),
+                       [&](const PatternSection::CarryOn& c) { return c.holder == holder; });
   }
 
   bool holder_placed(std::uint32_t holder) const {
@@ -1035,11 +1056,14 @@ class PatternBuilder {
   }
 
   // After binding off every st, a row that takes held sts works them with the same yarn,
-  // joined in the rnd (written before the row: the yarn carried to them).
+  // joined in the rnd (written before the row: the yarn carried to them). A rnd that picks up
+  // along the edge of held sts (a flat piece joined in the rnd) works no held st.
   void carry_on_to_held_sts() {
     if (st_.live > 0 || out_.rows.size() == section().first_row) return;
     auto taken = g_.loops_taken_by(row_.front());
-    if (taken.empty() || holder_of_[g_.loops[taken[0]].maker] == 0) return;
+    if (taken.empty() || g_.loops[taken[0]].kind == LoopKind::perpendicular ||
+        holder_of_[g_.loops[taken[0]].maker] == 0)
+      return;
     StitchId first = g_.loops[taken[0]].maker;
     std::uint32_t holder = holder_of_[first];
     const Held& held = holders_[holder - 1];
@@ -1059,9 +1083,11 @@ class PatternBuilder {
   }
 
   void add_row() {
+    join_flat_piece_in_the_rnd();
     bool turns = link_[row_.back()] == YarnLink::turn || ends_between_turns();
     bool first_of_take_up = section().resumed && section().first_row == out_.rows.size();
-    bool full_round = section().in_round && !turns && st_.previous_link != YarnLink::turn;
+    bool full_round =
+        section().in_round && !turns && st_.previous_link != YarnLink::turn && !after_a_corner();
     bool picked_up = section().picks_up && section().first_row == out_.rows.size();
     Side side = (hand_.left_to_right(row_.front()) != out_.mirror) ? Side::ws : Side::rs;
     if (section().in_round && !turns && after_a_row_that_turned()) hold_the_flap_left(side);
@@ -1100,6 +1126,7 @@ class PatternBuilder {
     check_make_one_has_a_strand(r);
     r.end_op = static_cast<std::uint32_t>(out_.ops.size());
     r.sts_after = st_.live;
+    st_.last_side = r.side;
     out_.rows.push_back(r);
     if (full_round) hold_what_others_work(static_cast<std::uint32_t>(out_.rows.size() - 1));
   }
@@ -1144,7 +1171,7 @@ class PatternBuilder {
       return !row.empty() && g_.type[row.back()] == T::tuck &&
              g_.yarn_link[row.back()] == YarnLink::turn;
     };
-    return tuck_turn(row_) || (st_.previous_link == YarnLink::turn && tuck_turn(row_before_));
+    return tuck_turn(row_) || (st_.previous_link == YarnLink::turn && tuck_turn(st_.last_row));
   }
 
   void follow_beginning_of_round(StitchId s, const PatternRow& r) {
@@ -1155,19 +1182,65 @@ class PatternBuilder {
     if (starts_rnd || works_bor_wale(s)) st_.bor_st = s;
   }
 
+  // A flat piece whose next row goes on around (the teapot's second strip going on as a tube
+  // between the strips) is joined to work in the rnd in the middle of its work: the sts of its
+  // last row, all left to other pieces, are slipped to a holder, and the rnd is made of sts
+  // picked up (along the piece's own edges too) and placed onto the empty needle, from the new
+  // beginning of the rnd.
+  void join_flat_piece_in_the_rnd() {
+    PatternSection& sec = section();
+    if (sec.in_round || out_.rows.size() == sec.first_row || !goes_on_around(row_.back())) return;
+    hold_the_last_row();
+    sec.in_round = true;
+    sec.joined_in_rnd_at = static_cast<std::uint32_t>(out_.rows.size());
+    st_.previous_link = YarnLink::shift;  // the rnd starts at the beginning of the rnd
+  }
+
+  // Does the yarn go on around after `last` (as the model and the knitter see it), not round
+  // a corner (which the model calls a turn) or back over the sts just made?
+  bool goes_on_around(StitchId last) const {
+    return link_[last] == YarnLink::shift && g_.yarn_link[last] == YarnLink::shift;
+  }
+
+  // Does the yarn go round a corner after `last` into the next rnd (its next st picks up the
+  // edge of `last`)? The model calls it a turn; the knitter goes on without turning, which a
+  // row of a piece worked flat must say ("do not turn").
+  bool rounds_a_corner(StitchId last) const {
+    return g_.yarn_link[last] == YarnLink::turn && link_[last] == YarnLink::shift;
+  }
+
+  // The sts of the flat piece's last row go to a holder, in the order the row worked them; the
+  // others on the needle (those short rows left) stay for the rnd. A rnd that works some of
+  // the last row's sts itself would join them with the sts picked up: not written yet.
+  void hold_the_last_row() {
+    std::vector<std::pair<StitchId, std::uint32_t>> held;
+    for (StitchId s : st_.last_row)
+      if (info(g_.type[s]).loops_out > 0) held.emplace_back(s, 0);
+    if (!std::all_of(held.begin(), held.end(),
+                     [&](const auto& h) { return left_to_another_piece(h.first); }))
+      unsupported(fmt::format(
+          "{} starts a rnd of Piece {} after rows worked flat, and works sts of its last row "
+          "itself: joining a flat piece in the rnd with the sts of its last row is not covered "
+          "yet (only with those sts slipped to a holder for another piece)",
+          g_.describe(row_.front()), section().piece));
+    if (held.empty()) return;
+    hold(static_cast<std::uint32_t>(out_.rows.size() - 1), held, 0,
+         static_cast<std::uint32_t>(held.size()));
+    section().holdings.back().flat_row = true;
+  }
+
   // A rnd after rows that turned (a gusset's, round a flap) that leaves the sts of the flap's
   // last row to another piece (the flap goes on as a leg of its own): the knitter slips them to
   // a holder first. The flap's rows start at the beginning of the rnd (they follow a rnd), so
   // its sts are the first of the rnd, in the order the rnd goes. (Where the rows before the
-  // rnd are another piece's face, as in the two bars, their sts are placed, not held.)
+  // rnd are another piece's face, as in the two bars, their sts are placed, not held.) A piece
+  // taken up again (the teapot's body between its strips) slips them as it is taken up.
   void hold_the_flap_left(Side rnd_side) {
-    // The row flushed last is the piece's own (not another's, as when it is taken up again).
-    if (row_before_.empty() || c_.yarns.piece_of[row_before_.front()] != section().yarn) return;
     std::vector<std::pair<StitchId, std::uint32_t>> flap;
-    for (StitchId s : row_before_)
+    for (StitchId s : st_.last_row)
       if (left_to_another_piece(s)) flap.emplace_back(s, 0);
     if (flap.empty() || flap.size() >= st_.live || !picks_up_its_own_flap()) return;
-    if (out_.rows.back().side != rnd_side) std::reverse(flap.begin(), flap.end());
+    if (st_.last_side != rnd_side) std::reverse(flap.begin(), flap.end());
     auto held = static_cast<std::uint32_t>(flap.size());
     std::uint32_t live = st_.live;
     hold(static_cast<std::uint32_t>(out_.rows.size() - 1), flap, 0, held);
@@ -1179,8 +1252,14 @@ class PatternBuilder {
   // The row before turned, or went on round from where rows that turned ended (a flap's last
   // row going on to the beginning of the rnd, down the flap's edge).
   bool after_a_row_that_turned() const {
-    return st_.previous_link == YarnLink::turn ||
+    return st_.previous_link == YarnLink::turn || after_a_corner() ||
            (out_.rows.size() > out_.sections.back().first_row && out_.rows.back().partial);
+  }
+
+  // Did the piece's last row go round a corner into this rnd (the teapot's first strip, worked
+  // in short rows in its rnd, going on over the sts they left)?
+  bool after_a_corner() const {
+    return !st_.last_row.empty() && rounds_a_corner(st_.last_row.back());
   }
 
   bool picks_up_its_own_flap() const {
@@ -1223,11 +1302,14 @@ class PatternBuilder {
   // at a double stitch first in the next row (at the edge too).
   void end_row(PatternRow& r, bool turns, std::uint32_t takes) {
     r.short_row = turns && (section().in_round || st_.ahead > 0);
-    if (r.short_row && out_.ops.back() != HandOp::wt) out_.ops.push_back(HandOp::turn);
+    if (rounds_a_corner(row_.back()) && !section().in_round)
+      out_.ops.push_back(HandOp::no_turn);
+    else if (r.short_row && out_.ops.back() != HandOp::wt)
+      out_.ops.push_back(HandOp::turn);
     st_.double_stitch_next = out_.turns == TurnMethod::german && g_.type[row_.back()] == T::sr4;
     // A rnd works every st, unless it starts where short rows ended (it then goes on to the
     // beginning of the rnd); a flat row ends at the edge or turns short of it.
-    bool full_round = r.round && st_.previous_link != YarnLink::turn;
+    bool full_round = r.round && st_.previous_link != YarnLink::turn && !after_a_corner();
     if (full_round && takes != r.sts_before)
       unsupported(fmt::format("the row of {} works {} of the {} live stitches",
                               g_.describe(row_.front()), takes, r.sts_before));
@@ -1342,11 +1424,11 @@ class PatternBuilder {
   // one of the spare needle it started on?
   bool on_own_needle(StitchId maker, bool chain = false) const {
     if (holder_of_[maker] != 0)
-      return holder_placed(holder_of_[maker]) || started_on(holder_of_[maker]);
+      return holder_placed(holder_of_[maker]) || started_on_holder(holder_of_[maker]);
     std::uint32_t from = section_of(maker);
     const PatternSection& worked = out_.sections.back();
-    return c_.yarns.piece_of[maker] == worked.yarn ||
-           (worked.starts_from && worked.starts_from->section == from) || placed(from, chain);
+    return c_.yarns.piece_of[maker] == worked.yarn || started_on_needle_of(from, chain) ||
+           placed(from, chain);
   }
 
   // An edge st that makes a loop across the edge besides its own (an expanding edge) gives
@@ -1354,24 +1436,10 @@ class PatternBuilder {
   // gusset's "pick up and knit") is not written yet.
   void refuse_pick_up_in_the_work(StitchId s, StitchId maker) const {
     if (g_.loops_made_by(maker).size() < 2) return;
-    refuse_joining_a_flat_piece_in_the_rnd(s, maker);
     unsupported(fmt::format(
         "{} picks up a loop along the edge of {} (an expanding perpendicular edge) in the middle "
         "of the work (a gusset's \"pick up and knit\"), which is not covered yet",
         g_.describe(s), g_.describe(maker)));
-  }
-
-  // A flat piece's rnd that picks up along the piece's own edge (the teapot's handle after its
-  // strip) joins it to work in the rnd in the middle of its work: the flat rows' sts are held
-  // and the rnd is made of sts picked up along their edges. Named as a knitter would see it.
-  void refuse_joining_a_flat_piece_in_the_rnd(StitchId s, StitchId maker) const {
-    if (link_[row_.back()] != YarnLink::shift) return;
-    unsupported(fmt::format(
-        "{} starts a rnd that picks up along the edge of {}, a row of its own piece worked "
-        "flat: Piece {} is joined to work in the rnd in the middle of its work (its last "
-        "row's sts held, the rnd picking up and knitting along the edges of its rows), which "
-        "is not covered yet",
-        g_.describe(s), g_.describe(maker), out_.sections.back().piece));
   }
 
   // A st of the piece's own needle across a gap (a heel turn's decrease): worked second, it is
@@ -1530,7 +1598,6 @@ class PatternBuilder {
   std::uint32_t pieces_ = 0;
   HandPattern out_;
   std::vector<StitchId> row_;
-  std::vector<StitchId> row_before_;  // the row flushed last
   // What the knitter has on the needle for the yarn being worked (kept while it is set aside).
   struct Needle {
     std::uint32_t live = 0;
@@ -1546,6 +1613,8 @@ class PatternBuilder {
     StitchId bor_st = kNoStitch;
     Side rnd_side = Side::rs;
     std::optional<std::uint32_t> bor_slipped_at;  // the op of a short row that slipped it
+    std::vector<StitchId> last_row;  // the piece's row flushed last, and the side it faced
+    Side last_side = Side::rs;
   };
   Needle st_;
   std::vector<Needle> set_aside_;               // per yarn

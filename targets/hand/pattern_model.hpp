@@ -43,9 +43,12 @@ struct PatternRow {
 };
 
 struct PatternSection {
-  std::uint32_t yarn = 0;                    // model yarn piece (0-based)
-  std::uint32_t cast_on = 0;                 // stitches cast on
-  bool in_round = false;                     // joined to work in the round after the cast-on
+  std::uint32_t yarn = 0;     // model yarn piece (0-based)
+  std::uint32_t cast_on = 0;  // stitches cast on
+  bool in_round = false;      // joined to work in the round after the cast-on
+  // A flat piece joined to work in the rnd in the middle of its work (its sts slipped to a
+  // holder, the rnd made of sts picked up and placed): the first rnd (into HandPattern::rows).
+  std::optional<std::uint32_t> joined_in_rnd_at;
   std::uint32_t first_row = 0, end_row = 0;  // into HandPattern::rows
   std::uint64_t stitches = 0;                // model stitches worked with this yarn
   std::uint32_t piece = 0;         // 1-based, in the order pieces start (kept when taken up)
@@ -80,9 +83,12 @@ struct PatternSection {
   // Where the sts of one rnd go different ways (to the piece's next rnd, into another piece's
   // rnd, into a join), those the piece does not work itself are slipped to holders after it:
   // `count` sts from the `first` (1-based, from the beginning of the rnd) to holder `holder`.
+  // `flat_row`: the sts of a flat piece's last row, in the order it worked them, before the piece
+  // is joined to work in the rnd.
   struct Holding {
     std::uint32_t after_row, first, count, holder;
     std::uint32_t onto = 0;  // the sts already on the holder, which these go after
+    bool flat_row = false;
   };
   std::vector<Holding> holdings;
   // After binding off every st, the yarn goes on to the sts of a holder (a tube's second leg,

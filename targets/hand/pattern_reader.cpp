@@ -205,9 +205,11 @@ class SentenceReader {
     need_words(c, {"sts", "along", "the"}, "'sts along the right (or left) edge'");
     step.provisional = c.eat("right");
     need(step.provisional || c.eat("left"), c, "'right' or 'left'");
-    need_words(c, {"edge", "of"}, "'edge of Piece N' (or 'of the flap')");
+    need_words(c, {"edge", "of"}, "'edge of Piece N' (or 'of the flap', 'of this piece')");
     if (c.eat("the")) {
       need(c.eat("flap"), c, "'the flap'");  // number 0: the piece on the needle
+    } else if (c.eat("this")) {
+      need(c.eat("piece"), c, "'this piece'");  // a flat piece joined in the rnd: the same
     } else {
       need(c.eat("piece"), c, "'Piece N' (or 'the flap')");
       step.number = need_number(c, "a piece number");
@@ -413,6 +415,7 @@ class SentenceReader {
   // "Slip sts 10–18 of the rnd to holder 1, sts 19–27 to holder 2 and sts 28–36 to holder 3":
   // the sts are counted in the rnd as it is before any is slipped, so the last run goes first.
   void hold(Cursor& c) {
+    if (c.eat("the")) return hold_all(c);
     std::vector<Step> runs;
     do {
       Step step{Step::Kind::hold, line_no_};
@@ -439,6 +442,20 @@ class SentenceReader {
     step.count = need_number(c, "the number of sts on the holder");
     need(c.eat_any({"st", "sts"}), c, "'sts on it)'");
     need_words(c, {"on", "it", ")"}, "'on it)'");
+  }
+
+  // "Slip the 35 sts of Row 33 to holder 3 — 7 sts": a flat piece's last row, before the piece
+  // is joined in the rnd.
+  void hold_all(Cursor& c) {
+    Step step{Step::Kind::hold_all, line_no_};
+    step.count = need_number(c, "the number of sts to hold");
+    need(c.eat_any({"sts", "st"}), c, "'sts'");
+    need_words(c, {"of", "row"}, "'of Row N'");
+    step.from_row = need_number(c, "a row number");
+    need_words(c, {"to", "holder"}, "'to holder N'");
+    step.number = need_number(c, "a holder number");
+    end_with_count(c, step);
+    add(step);
   }
 
   void need_words(Cursor& c, std::initializer_list<std::string_view> words, const char* expected) {
@@ -717,6 +734,11 @@ class SentenceReader {
       return n;
     }
     if (c.eat("3-needle")) return three_needle_bind_off_sts(c);  // '-' would end a word
+    if (c.eat("do")) {
+      need(c.eat("not") && c.eat("turn"), c, "'do not turn'");
+      n.op = HandOp::no_turn;
+      return n;
+    }
     if (c.eat("sl1")) {
       if (c.eat("back")) {
         n.op = HandOp::slip_back;

@@ -62,6 +62,7 @@ struct Step {
     three_needle_bind_off,  // Piece <number> in front, Piece <last> behind, <count> pairs;
                             // from_last: which ends are at the tips (front, back)
     hold,                   // "Slip sts <from_row>–<to_row> of the rnd to holder <number>"
+    hold_all,               // "Slip the <count> sts of Row <from_row> to holder <number>"
     to_spare,               // "Put the <count> sts of holder <number> on a spare needle, ..."
                             // (last 1: "on a second spare needle")
     hold_behind,            // "Hold the <count> sts of Piece <number> behind the needle, the
