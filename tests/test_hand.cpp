@@ -133,8 +133,10 @@ TEST(HandTarget, SamplesNotCoveredYetNameWhatStopsThem) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
   const std::pair<const char*, const char*> cases[] = {
       {"samples/teapot/teapot.yaml",
-       "face 4704 (k2tog, row 58) works a loop of face 4816 (k, row 57) (Piece 3) in a row that "
-       "is not a whole rnd, where its sts cannot be placed on the needle"},
+       "yarn 5 starts with face 4704 (k2tog, row 58), which works face 4703 (k, row 57) across "
+       "a perpendicular edge with face 4816 (k, row 57) of Piece 3 (left on its needle): a new "
+       "yarn on another piece's sts whose rows take the sts beside them, one across each edge "
+       "of a row (2 in its first), as a heel turn does, is not covered yet"},
   };
   for (const auto& [sample, named] : cases) {
     std::string error = emit_error(compile_model(sample));

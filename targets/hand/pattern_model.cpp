@@ -605,7 +605,10 @@ class PatternBuilder {
   // a provisional cast-on.
   void start_from_other_piece() {
     const Loop& first = g_.loops[g_.loops_taken_by(row_.front())[0]];
-    if (first.kind == LoopKind::perpendicular) return start_from_pick_up();
+    if (first.kind == LoopKind::perpendicular) {
+      refuse_start_on_sts_beside_an_edge();
+      return start_from_pick_up();
+    }
     start_from_spare_needle(first);
     // A first row that goes on into the next rnd joins the piece to work in the rnd.
     section().in_round = link_[row_.back()] == YarnLink::shift;
@@ -730,6 +733,35 @@ class PatternBuilder {
         out_.sections.back().yarn + 1, g_.describe(row_.front()),
         out_.sections[section_of(first.maker)].piece, g_.describe(first.maker),
         holder ? fmt::format(", slipped to holder {}", holder) : " left on its needle"));
+  }
+
+  // A first row that picks up along an edge takes loops across it only. One that also works
+  // another piece's sts (the teapot's top: a new yarn on 21 sts of Piece 3's last row, its
+  // first st a k2tog with the st beside them across the edge) takes those beside them one at a
+  // time, as a heel turn does: not covered yet.
+  void refuse_start_on_sts_beside_an_edge() const {
+    std::uint32_t across = 0;
+    std::optional<StitchId> worked;
+    for (StitchId s : row_)
+      for (std::uint32_t l : g_.loops_taken_by(s)) {
+        const Loop& loop = g_.loops[l];
+        if (loop.kind == LoopKind::perpendicular)
+          ++across;
+        else if (loop.maker != kNoStitch && !worked)
+          worked = loop.maker;
+      }
+    if (!worked) return;
+    const PatternSection& from = out_.sections[section_of(*worked)];
+    unsupported(fmt::format(
+        "yarn {} starts with {}, which works {} across a perpendicular edge with {} of Piece {} "
+        "({}): a new yarn on another piece's sts whose rows take the sts beside them, one "
+        "across each edge of a row ({} in its first), as a heel turn does, is not covered yet",
+        out_.sections.back().yarn + 1, g_.describe(row_.front()),
+        g_.describe(g_.loops[g_.loops_taken_by(row_.front())[0]].maker), g_.describe(*worked),
+        from.piece,
+        holder_of_[*worked] ? fmt::format("on holder {}", holder_of_[*worked])
+                            : std::string("left on its needle"),
+        across));
   }
 
   // A provisional cast-on in the middle of a row: the st goes on the needle, the loop of its
