@@ -1116,7 +1116,8 @@ class PatternBuilder {
 
   void add_row() {
     join_flat_piece_in_the_rnd();
-    bool turns = link_[row_.back()] == YarnLink::turn || ends_between_turns();
+    bool turns = link_[row_.back()] == YarnLink::turn || ends_between_turns() ||
+                 rounds_a_corner_short_of_the_marker();
     bool first_of_take_up = section().resumed && section().first_row == out_.rows.size();
     bool full_round =
         section().in_round && !turns && st_.previous_link != YarnLink::turn && !after_a_corner();
@@ -1278,7 +1279,8 @@ class PatternBuilder {
     hold(static_cast<std::uint32_t>(out_.rows.size() - 1), flap, 0, held);
     // A flap whose last row went on to the beginning of the rnd (its first row went back from
     // there) is the rnd's last sts.
-    if (st_.previous_link == YarnLink::shift) section().holdings.back().first = live - held + 1;
+    if (st_.previous_link == YarnLink::shift && !last_row_started_at_the_marker())
+      section().holdings.back().first = live - held + 1;
   }
 
   // The row before turned, or went on round from where rows that turned ended (a flap's last
@@ -1286,6 +1288,20 @@ class PatternBuilder {
   bool after_a_row_that_turned() const {
     return st_.previous_link == YarnLink::turn || after_a_corner() ||
            (out_.rows.size() > out_.sections.back().first_row && out_.rows.back().partial);
+  }
+
+  // A row in the rnd that starts at the beginning of the rnd and goes round a corner into the
+  // next (the teapot's first strip) leaves the sts before the marker: a row that does not turn,
+  // not a rnd. One that ends at the marker (letter-r's flap, worked back from the end of the
+  // rnd) goes on as a rnd.
+  bool rounds_a_corner_short_of_the_marker() const {
+    return out_.sections.back().in_round && rounds_a_corner(row_.back()) &&
+           works_bor_wale(row_.front());
+  }
+
+  // Did the piece's last row start at the beginning of the rnd (on the marker's wale)?
+  bool last_row_started_at_the_marker() const {
+    return !st_.last_row.empty() && st_.bor_st == st_.last_row.front();
   }
 
   // Did the piece's last row go round a corner into this rnd (the teapot's first strip, worked
@@ -1334,7 +1350,7 @@ class PatternBuilder {
   // at a double stitch first in the next row (at the edge too).
   void end_row(PatternRow& r, bool turns, std::uint32_t takes) {
     r.short_row = turns && (section().in_round || st_.ahead > 0);
-    if (rounds_a_corner(row_.back()) && !section().in_round)
+    if (rounds_a_corner(row_.back()) && (!section().in_round || r.short_row))
       out_.ops.push_back(HandOp::no_turn);
     else if (r.short_row && out_.ops.back() != HandOp::wt)
       out_.ops.push_back(HandOp::turn);
