@@ -477,12 +477,22 @@ KnitGraph gusset_leg_graph() {
   return std::move(t.g);
 }
 
-KnitGraph flap_and_strip_graph() {
-  GussetFlap t("flap and strip");
+KnitGraph flap_and_strip_graph(bool round_a_corner) {
+  GussetFlap t(round_a_corner ? "corner flap and strip" : "flap and strip");
   const RowShape open = RowShape::open;
   t.g.row_shape.insert(t.g.row_shape.end(), {open, open, open, open, open});
-  // In the order worked: picked up from d2 and b2, over a3, picked up from h0 and i0.
-  auto e = t.row_of(5, StitchType::k, 4), f = t.row_of(5, StitchType::bo, 5);
+  // The flap's third row (RS, g0..g2 over d0..d2), its yarn going round the corner at g2.
+  std::vector<StitchId> g;
+  if (round_a_corner) {
+    t.g.row_shape.push_back(open);
+    g = t.row_of(3, StitchType::k, 11);
+    t.yarn.insert(t.yarn.end(), g.begin(), g.end());
+    t.work_flap(g);
+  }
+  const std::vector<StitchId>& top = round_a_corner ? g : t.d;
+  // In the order worked: picked up from (g2,) d2 and b2, over a3, picked up from h0 and i0.
+  const std::size_t left = round_a_corner ? 3 : 2;
+  auto e = t.row_of(left + 3, StitchType::k, 4), f = t.row_of(left + 3, StitchType::bo, 5);
   auto h = t.row_of(2, StitchType::k, 6), i = t.row_of(2, StitchType::k, 7);
   auto j = t.row_of(2, StitchType::bo, 8);
   auto m = t.row_of(3, StitchType::k, 9), n = t.row_of(3, StitchType::bo, 10);
@@ -490,21 +500,29 @@ KnitGraph flap_and_strip_graph() {
   t.link(t.yarn);
   t.link({h[0], h[1], i[1], i[0], j[0], j[1]});
   t.link({m[0], m[1], m[2], n[2], n[1], n[0]});
-  t.work_flap(m);
-  // The flap's left edge (d2, b2) down, then the strip's right edge (h0, i0: loop across last) up.
-  for (auto [maker, taker, slot] :
-       {std::tuple{t.d[2], e[0], 0}, {t.b[2], e[1], 0}, {h[0], e[3], 1}, {i[0], e[4], 1}})
+  // The flap's top row's sts go on as m (its left edge st's loop across is its first).
+  for (int k = 0; k < 3; ++k) t.loop(top[k], m[k], k == 2 ? 1 : 0);
+  // The flap's left edge (g2,) d2, b2 down, then the strip's right edge (h0, i0: loop across
+  // last) up.
+  std::vector<std::tuple<StitchId, StitchId, int>> across;
+  if (round_a_corner) across.emplace_back(g[2], e[0], 0);
+  across.insert(across.end(), {{t.d[2], e[left - 2], 0},
+                               {t.b[2], e[left - 1], 0},
+                               {h[0], e[left + 1], 1},
+                               {i[0], e[left + 2], 1}});
+  for (auto [maker, taker, slot] : across)
     t.g.loops.push_back(
         {maker, taker, LoopKind::perpendicular, static_cast<std::uint8_t>(slot), 0});
-  t.loop(t.a[3], e[2], 0);
+  t.loop(t.a[3], e[left], 0);
   for (int k = 0; k < 2; ++k) {
     t.loop(t.a[4 + k], h[k], 0);
     t.loop(h[k], i[k], 0);
     t.loop(i[k], j[k], 0);
   }
-  for (int k = 0; k < 5; ++k) t.loop(e[k], f[k], 0);
+  for (std::size_t k = 0; k < e.size(); ++k) t.loop(e[k], f[k], 0);
   for (int k = 0; k < 3; ++k) t.loop(m[k], n[k], 0);
-  t.finish({t.c[5], t.a[5], e[4]}, {t.b[2], t.d[0], h[1], i[0], m[2]});
+  t.finish({t.c[5], t.a[5], e.back()}, {t.b[2], t.d[0], h[1], i[0], m[2]});
+  if (round_a_corner) t.g.yarn_link[g[2]] = YarnLink::turn;  // the model's turn at the corner
   return std::move(t.g);
 }
 

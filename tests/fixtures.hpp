@@ -82,8 +82,10 @@ KnitGraph gusset_leg_graph();
 // The gusset's tube with a strip beside its flap: a4, a5 go on as a strip of 2 rows with a new
 // yarn (h, i), and the rnd after the flap picks up down the flap's left edge, knits a3 and
 // picks up the strip's right edge, so the tube waits for the strip (set aside, taken up
-// again); the flap's sts go on with a third yarn.
-KnitGraph flap_and_strip_graph();
+// again); the flap's sts go on with a third yarn. `round_a_corner`: the flap has a third row
+// (RS, from the beginning of the rnd), whose yarn goes round the corner into the rnd after it
+// (its next st picks up the edge of the st just made), leaving a3..a5 before the marker.
+KnitGraph flap_and_strip_graph(bool round_a_corner = false);
 
 // The gusset leg's flap the other way round (as letter-r's), after two rnds (z, a) of 6 sts:
 // its first row (b) goes back over

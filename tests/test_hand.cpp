@@ -187,6 +187,18 @@ TEST(HandTarget, ATubeTakenUpAfterItsFlapSlipsTheFlapsSts) {
                             "holder 2 \u2014 1 st. Pick up 2 sts along the left edge of the flap"});
 }
 
+// A flap in the rnd whose last row starts at the beginning of the rnd and goes round a corner
+// into the next rnd (the teapot's Piece 1) is a row that does not turn: it leaves the sts
+// before the marker, and the flap's sts are the first of the rnd when the tube is taken up.
+TEST(HandTarget, AFlapsLastRowRoundACornerInTheRndDoesNotTurn) {
+  expect_proven_with_lines(
+      testing::flap_and_strip_graph(true), "corner flap and strip",
+      {"**Row 4 (RS):** K3, do not turn.\n",
+       "Take up Piece 1 again with its yarn. Slip sts 1\u20133 of the rnd to holder 2 \u2014 1 "
+       "st. Pick up 3 sts along the left edge of the flap, one in each row from Row 4 down to "
+       "Row 2"});
+}
+
 // A new yarn joined to the strip's held sts works them in the rnd: it joins at once.
 TEST(HandTarget, ANewYarnJoinedToHeldStsWorksThemInTheRnd) {
   expect_proven_with_lines(testing::strip_joined_in_the_rnd_graph(true), "strip leg",

@@ -439,6 +439,9 @@ TEST(HandMutations, DecreasesAcrossAGapRejectEveryEditThatChangesTheFabric) {
                    compile_knit_graph(testing::strip_joined_in_the_rnd_graph(), "strip"));
   mutate_and_judge("tube taken up after its flap (the flap's sts slipped as it is taken up)",
                    compile_knit_graph(testing::flap_and_strip_graph(), "flap and strip"));
+  mutate_and_judge(
+      "flap's last row round a corner in the rnd (do not turn, sts before the marker)",
+      compile_knit_graph(testing::flap_and_strip_graph(true), "corner flap and strip"));
   mutate_and_judge("strip going round a corner into the rnd (do not turn, sts left)",
                    compile_knit_graph(testing::corner_strip_graph(), "corner strip"));
   mutate_and_judge("a new yarn joined in the rnd, another piece's sts placed",
