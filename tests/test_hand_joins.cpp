@@ -491,7 +491,12 @@ TEST(HandPieces, TheLetterRIsProvenInEveryFormat) {
        "join to work in the rnd, being careful not to twist.\n",
        "Hold the 7 sts of Piece 1 behind the needle, the last st of its last row at the tip. Hold "
        "the 21 sts of Piece 2 behind the needle, the first st of its last row at the "
-       "tip.\n\n**Rnd 51:** 3-needle BO 28 sts.\n\nFasten off.\n"});
+       "tip.\n\n**Rnd 51:** 3-needle BO 28 sts.\n\nFasten off.\n",
+       // The notions and techniques follow: two spare needles at once, and the gusset's
+       // pick-ups into a rnd worked with the WS facing.
+       "- A second spare needle, for rows that take sts from two at once.\n",
+       "with the side the rnd is worked from (the WS in a rnd labelled (WS)) facing and no new "
+       "yarn"});
 }
 
 // A tube whose last 2 sts wait on a holder and go back on its spare needle before the fold.

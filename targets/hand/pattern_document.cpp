@@ -555,6 +555,7 @@ struct Totals {
   bool flat = false, round = false, joins = false;
   bool partial_bind_off = false;   // a row binds off some of its sts
   bool spare_needles = false;      // a piece waits on one
+  bool second_spare = false;       // rows take sts from two spare needles at once
   bool provisional = false;        // a provisional cast-on
   bool picks_up = false;           // a piece starts on loops picked up along an edge
   bool picks_up_into_rnd = false;  // loops picked up along an edge go into a rnd
@@ -571,8 +572,10 @@ Totals totals_of(const HandPattern& p) {
     t.joins = t.joins || s.joins;
     t.spare_needles = t.spare_needles || s.left_live || s.provisional || !s.holdings.empty();
     t.provisional = t.provisional || s.provisional || s.row_chain > 0;
-    for (const PatternSection::Placement& placed : s.placements)
+    for (const PatternSection::Placement& placed : s.placements) {
       t.picks_up_into_rnd = t.picks_up_into_rnd || placed.edge.has_value();
+      t.second_spare = t.second_spare || placed.second_spare;
+    }
     t.picks_up = t.picks_up || s.picks_up.has_value();
     for (const PatternSection::Holding& h : s.holdings) t.holders = std::max(t.holders, h.holder);
     if (s.joins) continue;
@@ -698,6 +701,8 @@ class FrontMatter {
                                            : ""));
     if (t_.spare_needles)
       items.push_back("A spare needle (or stitch holder) for each piece left to wait on one.");
+    if (t_.second_spare)
+      items.push_back("A second spare needle, for rows that take sts from two at once.");
     if (t_.holders > 0) items.push_back(holders_text(t_.holders));
     if (t_.joins) items.push_back("A third needle for the three-needle bind-off.");
     items.push_back("Tapestry needle for weaving in ends.");
@@ -800,11 +805,12 @@ class FrontMatter {
           "of the edge st of each row named onto the needle, one row after the other (the loops "
           "are not knit: the next row works them, starting with the last one picked up).");
     if (t_.picks_up_into_rnd)
-      items.push_back(
+      items.push_back(fmt::format(
           "**Picking up onto the needle of a rnd** (\"..., onto the needle after the first 18 sts "
-          "of the rnd\"): with the RS facing and no new yarn, put the outer loop of the edge st "
+          "of the rnd\"): with the {} facing and no new yarn, put the outer loop of the edge st "
           "of each row named on the needle at that place, one row after the other (the loops "
-          "are not knit: the rnd works them in the order picked up).");
+          "are not knit: the rnd works them in the order picked up).",
+          p_.ws_rounds ? "side the rnd is worked from (the WS in a rnd labelled (WS))" : "RS"));
     if (t_.joins_flat_piece)
       items.push_back(
           "**Joining a flat piece in the round** (after rows worked flat): once the last row's "
