@@ -364,6 +364,12 @@ TEST(HandRowText, RepeatsAndCountsAKnitterNeedNotKeep) {
   EXPECT_EQ(text({O::k, O::yo, O::k, O::k}), "K1, yo, k2");
   EXPECT_EQ(text({O::p, O::p, O::p}), "Purl");
   EXPECT_EQ(text({O::bo, O::bo}), "BO all sts");
+  // A st slipped onto the left needle from a spare one is no st the row leaves there.
+  std::vector<O> heel = {O::from_spare, O::ssk};
+  heel.resize(20, O::k);
+  heel.push_back(O::from_second_spare_behind);
+  heel.push_back(O::ssk);
+  EXPECT_EQ(text(heel), "Sl1 from spare, ssk, k to last st, sl1 from 2nd spare behind, ssk");
   EXPECT_EQ(hand::row_instructions(crown, hand::Dialect::knitspeak), "*K3, k2tog, repeat from *");
 }
 
