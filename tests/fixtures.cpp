@@ -349,6 +349,43 @@ struct GraphRows {
   }
 };
 
+}  // namespace
+
+KnitGraph heel_turn_on_new_yarn_graph() {
+  using T = StitchType;
+  KnitGraph flat;
+  flat.source_name = "heel turn on a new yarn";
+  flat.element = "face";
+  flat.row_shape.assign(5, RowShape::open);
+  GraphRows r{std::move(flat)};
+  auto c = r.row_of(6, T::co, 0);
+  auto a = r.row_of(6, T::k, 1);
+  auto b = r.row_of(2, T::k2tog, 2);  // b0 over a1 and a2, b1 over a3 and a4
+  auto d = r.row_of(2, T::k2tog, 3);  // d1 over a5 and b1 first, then d0 over b0 and a0
+  auto e = r.row_of(2, T::bo, 4);     // over d0, d1
+  r.link({c[0], c[1], c[2], c[3], c[4], c[5], a[5], a[4], a[3], a[2], a[1], a[0]});
+  r.link({b[0], b[1], d[1], d[0], e[0], e[1]});
+  auto across = [&](StitchId maker, StitchId taker, std::uint8_t slot) {
+    r.g.loops.push_back({maker, taker, LoopKind::perpendicular, 0, slot});
+  };
+  for (int i = 0; i < 6; ++i) r.loop(c[i], a[i], 0);
+  // Rows run right to left seen from the RS (a RS row takes its second slot first).
+  r.g.loops.push_back({a[2], b[0], LoopKind::wale, 0, 0});
+  across(a[1], b[0], 1);
+  across(a[4], b[1], 0);
+  r.g.loops.push_back({a[3], b[1], LoopKind::wale, 0, 1});
+  across(a[5], d[1], 0);
+  r.g.loops.push_back({b[1], d[1], LoopKind::wale, 0, 1});
+  r.loop(b[0], d[0], 0);
+  across(a[0], d[0], 1);
+  r.loop(d[0], e[0], 0);
+  r.loop(d[1], e[1], 0);
+  r.finish({}, {c[5], b[1], d[0]});
+  return std::move(r.g);
+}
+
+namespace {
+
 // The gusset graphs' tube and flap: 6 sts cast on in the rnd and a rnd (a0..a5), then the flap
 // over a0..a2 worked back and forth (b, then d back: d2, d1, d0), on one yarn.
 struct GussetFlap : GraphRows {

@@ -65,6 +65,12 @@ StitchMesh short_row_mesh(StitchType turn = StitchType::sr4);
 // a k2tog into a5, round the end of the needle); a rnd over the band and a4; a bind-off.
 KnitGraph heel_turn_graph();
 
+// A heel turn with a new yarn on a flat piece's last row (the teapot's top): 6 sts cast on and
+// a row (a0..a5) left live; a new yarn on a2 and a3 whose rows take the sts beside them one
+// at a time across each edge (its first row a k2tog into a1 and one into a4, the row back one
+// into a5 and one into a0); a bind-off.
+KnitGraph heel_turn_on_new_yarn_graph();
+
 // A tube closed by a three-needle bind-off of its last rnd folded in half: 6 sts cast on in the
 // rnd, a rnd, and with a new yarn 3 pairs (a2 with a3, a1 with a4, a0 with a5).
 KnitGraph folded_tube_graph();

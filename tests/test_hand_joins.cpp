@@ -197,6 +197,34 @@ TEST(HandGaps, TheHeelTurnIsProvenInEveryFormat) {
   EXPECT_EQ(testing::unproven_hand_formats(c), "");
 }
 
+// "Slip sts 1–2 of Row 1 to holder 1": a run of the sts the last row left, counted in the order
+// it worked them; the row must be the last one worked, the run among its sts, the holder empty.
+TEST(HandGaps, PartingARowOntoHoldersNeedsItsSts) {
+  const std::string row = "Cast on 4 sts.\nRow 1 (RS): Knit.\n";
+  const std::string bind_off = "Row 1 (RS): BO all sts.\nFasten off.\n";
+  EXPECT_EQ(failure_of(row +
+                       "Slip sts 1–2 of Row 1 to holder 1 and sts 3–4 to holder 2.\n"
+                       "Cut the yarn.\nJoin a new yarn to the 2 sts of holder 1, the first "
+                       "st of its last row at the tip.\n" +
+                       bind_off +
+                       "Join a new yarn to the 2 sts of holder 2, the first st of its last row "
+                       "at the tip.\n" +
+                       bind_off),
+            "");
+  EXPECT_EQ(failure_of(row + "Slip sts 1–2 of Row 2 to holder 1.\n"),
+            "p.md:3: Slip sts 1–2 of Row 2 to holder 1: the last row worked is Row 1");
+  EXPECT_EQ(failure_of(row + "Slip sts 3–5 of Row 1 to holder 1.\n"),
+            "p.md:3: Slip sts 3–5 of Row 1 to holder 1: the row left 4 sts on the needle");
+  EXPECT_EQ(failure_of(row + "Slip sts 1–2 of Row 1 to holder 1.\nSlip sts 1–2 of Row 1 "
+                             "to holder 1.\n"),
+            "p.md:4: Slip sts 1–2 of Row 1 to holder 1: it already holds sts");
+  EXPECT_EQ(failure_of(row + "Row 2 (WS): BO all sts.\nFasten off.\nSlip sts 1–2 of Row 1 to "
+                             "holder 1.\n"),
+            "p.md:5: Slip sts 1–2 of Row 1 to holder 1: no piece is on the needle");
+  EXPECT_EQ(failure_of(row + "Slip sts 1–2 of Row 1 to holder 1.\nCut the yarn.\n"),
+            "p.md:4: Fasten off: 2 sts still on the needle; bind them off first");
+}
+
 // A gusset: the rnd after a flap picks up a st in each of the flap's rows along both edges.
 TEST(HandGaps, AGussetIsProvenInEveryFormat) {
   Compilation c = compile_knit_graph(testing::gusset_graph(), "gusset");

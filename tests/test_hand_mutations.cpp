@@ -427,6 +427,8 @@ TEST(HandMutations, PickUpsRejectEveryEditThatChangesTheFabric) {
 TEST(HandMutations, DecreasesAcrossAGapRejectEveryEditThatChangesTheFabric) {
   mutate_and_judge("heel turn (decreases across a gap)",
                    compile_knit_graph(testing::heel_turn_graph(), "heel turn"));
+  mutate_and_judge("heel turn on a new yarn (a row parted onto holders)",
+                   compile_knit_graph(testing::heel_turn_on_new_yarn_graph(), "heel turn"));
   mutate_and_judge("folded tube (three-needle bind-off of a rnd)",
                    compile_knit_graph(testing::folded_tube_graph(), "folded tube"));
   mutate_and_judge("gusset (a flap's edges picked up into the rnd)",

@@ -30,6 +30,11 @@ std::string sts(std::uint32_t n) {
   return fmt::format("{} st{}", n, n == 1 ? "" : "s");
 }
 
+// A piece whose last row went to holders for the pieces that work it: no st to fasten off.
+bool parted_between_pieces(const PatternSection& sec) {
+  return !sec.holdings.empty() && sec.holdings.back().of_row;
+}
+
 std::string cm_and_inches(double cm) {
   return fmt::format("{:.0f} cm ({:.1f} in)", cm, cm / 2.54);
 }
@@ -228,9 +233,10 @@ class InstructionWriter {
       return fmt::format("{}, onto the needle {}.", pick_up_words(*p.edge, p.count), where);
     if (p.to_spare)
       return fmt::format(
-          "Put the {} sts of holder {} on a {}spare needle, the {} st of its last rnd "
+          "Put the {} sts of holder {} on a {}spare needle, the {} st of its last {} "
           "at the tip.",
-          p.count, p.holder, p.second_spare ? "second " : "", p.from_last ? "last" : "first");
+          p.count, p.holder, p.second_spare ? "second " : "", p.from_last ? "last" : "first",
+          holds_a_flat_row(p.holder) ? "row" : "rnd");
     bool cast_on = p.holder == 0 && (p.chain || spare.first_row == spare.end_row);
     std::string which = cast_on                                         ? "cast on"
                         : spare.in_round && !holds_a_flat_row(p.holder) ? "of its last rnd"
@@ -260,13 +266,15 @@ class InstructionWriter {
     for (const PatternSection::Holding& h : p_.sections[section_].holdings) {
       if (h.after_row != row) continue;
       held += h.count;
-      runs.push_back(fmt::format("{}{} to holder {}{}", held_sts_text(h),
-                                 runs.empty() ? " of the rnd" : "", h.holder, onto_text(h)));
+      std::string of = h.of_row ? fmt::format(" of Row {}", p_.rows[row].number) : " of the rnd";
+      runs.push_back(fmt::format("{}{} to holder {}{}", held_sts_text(h), runs.empty() ? of : "",
+                                 h.holder, onto_text(h)));
     }
     if (runs.empty()) return "";
     std::string text = "Slip " + runs.front();
     for (std::size_t i = 1; i < runs.size(); ++i)
       text.append(i + 1 == runs.size() ? " and " : ", ").append(runs[i]);
+    if (on_needle == held) return text + ".";  // a row parted between other pieces
     return fmt::format("{} {} {}.", text, kDash, sts(on_needle - held));
   }
 
@@ -366,7 +374,7 @@ class InstructionWriter {
   bool holds_a_flat_row(std::uint32_t holder) const {
     for (const PatternSection& sec : p_.sections)
       for (const PatternSection::Holding& h : sec.holdings)
-        if (h.holder == holder && holder != 0) return h.flat_row;
+        if (h.holder == holder && holder != 0) return h.flat_row || h.of_row;
     return false;
   }
 
@@ -395,6 +403,7 @@ class InstructionWriter {
                          sts(sec.live_at_end));
     if (sec.left_live)
       return fmt::format("Leave the {} on a spare needle and cut the yarn.", sts(sec.live_at_end));
+    if (parted_between_pieces(sec)) return "Cut the yarn.";
     return "Fasten off.";
   }
 
@@ -732,6 +741,11 @@ class FrontMatter {
   // in the rnd with a new yarn or the yarn carried on from the other leg.
   std::string held_sts_in_the_rnd_technique() const {
     std::string text;
+    if (std::any_of(p_.sections.begin(), p_.sections.end(), parted_between_pieces))
+      text +=
+          " \"Slip sts 1\u20138 of Row 57 to holder 7, ...\" parts the sts a row left on the "
+          "needle between the pieces that work them: it counts them in the order the row "
+          "worked them, the first st worked being st 1.";
     if (says(" on it)"))
       text +=
           " \"(after the 1 st on it)\" slips the sts onto the holder after those it already "

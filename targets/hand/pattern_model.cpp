@@ -342,6 +342,7 @@ class PatternBuilder {
     if (!row_.empty() && g_.type[row_.front()] == T::tnbo && !binds_off_held_pieces())
       join_live_sections();
     flush_row();
+    part_the_last_row_for_a_heel_turn();
     section().left_live = st_.live != 0;  // every loop is taken by another piece
     section().live_at_end = st_.live;
     section().end_row = static_cast<std::uint32_t>(out_.rows.size());
@@ -605,11 +606,12 @@ class PatternBuilder {
   // a provisional cast-on.
   void start_from_other_piece() {
     const Loop& first = g_.loops[g_.loops_taken_by(row_.front())[0]];
-    if (first.kind == LoopKind::perpendicular) {
+    const Loop* on_needle = first.kind == LoopKind::perpendicular ? held_loop_worked() : &first;
+    if (on_needle == nullptr) {
       refuse_start_on_sts_beside_an_edge();
       return start_from_pick_up();
     }
-    start_from_spare_needle(first);
+    start_from_spare_needle(*on_needle);
     // A first row that goes on into the next rnd joins the piece to work in the rnd.
     section().in_round = link_[row_.back()] == YarnLink::shift;
     st_.behind = 0;
@@ -733,6 +735,46 @@ class PatternBuilder {
         out_.sections.back().yarn + 1, g_.describe(row_.front()),
         out_.sections[section_of(first.maker)].piece, g_.describe(first.maker),
         holder ? fmt::format(", slipped to holder {}", holder) : " left on its needle"));
+  }
+
+  // The first loop of a held st the row works along its wales (a row that starts across an
+  // edge, as a heel turn's does, on sts slipped to a holder), if any.
+  const Loop* held_loop_worked() const {
+    for (StitchId s : row_)
+      for (std::uint32_t l : g_.loops_taken_by(s))
+        if (const Loop& loop = g_.loops[l];
+            loop.kind == LoopKind::wale && loop.maker != kNoStitch && holder_of_[loop.maker] != 0)
+          return &loop;
+    return nullptr;
+  }
+
+  // A flat piece's last row whose sts another piece takes one at a time across an edge (the
+  // teapot's top, turned like a heel on some of them) is parted onto holders: a run for each
+  // piece (and each edge) that works them, counted in the order the row worked them.
+  void part_the_last_row_for_a_heel_turn() {
+    if (out_.rows.empty() || out_.rows.back().round || st_.live == 0) return;
+    std::vector<std::pair<StitchId, std::uint32_t>> loops;
+    bool across = false;
+    for (StitchId s : st_.last_row) {
+      auto made = g_.loops_made_by(s);
+      if (made.size() != 1) continue;  // bound off (or an edge st that makes two)
+      const Loop& loop = g_.loops[made[0]];
+      if (loop.taker == kNoStitch || c_.yarns.piece_of[loop.taker] == section().yarn) return;
+      bool edge = loop.kind == LoopKind::perpendicular;
+      across = across || edge;
+      loops.emplace_back(s, 3 * part_[loop.taker] + (edge                            ? 1
+                                                     : loop.kind == LoopKind::joined ? 2
+                                                                                     : 0));
+    }
+    if (!across || loops.size() != st_.live) return;
+    auto row = static_cast<std::uint32_t>(out_.rows.size() - 1);
+    for (std::uint32_t i = 0; i < loops.size();) {
+      std::uint32_t end = i;
+      while (end < loops.size() && loops[end].second == loops[i].second) ++end;
+      hold(row, loops, i, end);
+      section().holdings.back().of_row = true;
+      i = end;
+    }
   }
 
   // A first row that picks up along an edge takes loops across it only. One that also works

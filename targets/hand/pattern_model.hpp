@@ -89,6 +89,9 @@ struct PatternSection {
     std::uint32_t after_row, first, count, holder;
     std::uint32_t onto = 0;  // the sts already on the holder, which these go after
     bool flat_row = false;
+    // `of_row`: a run of a flat piece's last row ("sts 1–30 of Row 57"), counted in the order
+    // the row worked them, the piece's sts parted between the pieces that work them.
+    bool of_row = false;
   };
   std::vector<Holding> holdings;
   // After binding off every st, the yarn goes on to the sts of a holder (a tube's second leg,

@@ -147,6 +147,8 @@ class SentenceReader {
       return carry_on(rest);
     }
     if (mentions(sentence, "fasten off")) return add({Step::Kind::fasten_off, line_no_});
+    // A piece whose sts all went to holders ends with no st to fasten off.
+    if (starts_with_ci(sentence, "cut the yarn")) return add({Step::Kind::fasten_off, line_no_});
     if (c.eat("leave")) return leave(c);
     if (c.eat("take") && c.eat("up")) return take_up(c);
     if (c.eat("pick") && c.eat("up")) return pick_up(c);
@@ -425,7 +427,8 @@ class SentenceReader {
       if (!one) need(c.eat(kEnDash) || c.eat("-"), c, "'–' between the first and the last st");
       step.to_row = one ? step.from_row : need_number(c, "the last st to hold");
       if (step.to_row < step.from_row) fail("expected the sts in increasing order", c.rest());
-      if (runs.empty()) need_words(c, {"of", "the", "rnd"}, "'of the rnd'");
+      if (runs.empty()) step.of_row = of_the_rnd_or_row(c);
+      step.of_row = runs.empty() ? step.of_row : runs.front().of_row;
       need_words(c, {"to", "holder"}, "'to holder N'");
       step.number = need_number(c, "a holder number");
       if (c.eat_char('(')) onto_held_sts(c, step);
@@ -433,6 +436,14 @@ class SentenceReader {
     } while (c.eat_char(',') || c.eat("and"));
     end_with_count(c, runs.front());  // checked once the last run (given first) is slipped
     for (auto run = runs.rbegin(); run != runs.rend(); ++run) add(*run);
+  }
+
+  // "of the rnd" (0), or "of Row 57": the row's number.
+  std::uint32_t of_the_rnd_or_row(Cursor& c) {
+    need(c.eat("of"), c, "'of the rnd' or 'of Row N'");
+    if (c.eat("row")) return need_number(c, "a row number");
+    need_words(c, {"the", "rnd"}, "'of the rnd' or 'of Row N'");
+    return 0;
   }
 
   // "(after the 1 st on it)": the sts go on a holder after those it holds.

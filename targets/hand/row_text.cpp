@@ -10,16 +10,27 @@
 namespace skein::hand {
 namespace {
 
-constexpr std::uint32_t kLongestUnit = 24;   // tokens in one repeated unit
-constexpr std::uint32_t kShortRun = 4;       // shorter plain runs keep their count
-constexpr std::uint32_t kCountableRest = 8;  // "to last N sts" only while N is easy to see
+constexpr std::uint32_t kLongestUnit = 24;  // tokens in one repeated unit
+constexpr std::uint32_t kShortRun = 4;      // shorter plain runs keep their count
+constexpr std::int32_t kCountableRest = 8;  // "to last N sts" only while N is easy to see
+
+bool puts_on_left_needle(HandOp op) {
+  return op == HandOp::from_spare || op == HandOp::from_spare_behind ||
+         op == HandOp::from_second_spare || op == HandOp::from_second_spare_behind ||
+         op == HandOp::slip_back;
+}
 
 // A run of one plain stitch ("k12") or of bind-offs ("BO 8 sts"), or one other operation.
 struct Token {
   HandOp op;
   std::uint32_t count;
   bool operator==(const Token&) const = default;
-  std::uint32_t takes() const { return info(op).takes * count; }
+  // Loops taken off the left needle, less the st a slip onto it puts there first (from a
+  // spare needle, or back from the right needle): "sl1 from spare, ssk" takes one st of its own.
+  std::int32_t takes() const {
+    return (info(op).takes - static_cast<std::int32_t>(puts_on_left_needle(op))) *
+           static_cast<std::int32_t>(count);
+  }
 };
 
 std::vector<Token> tokens_of(std::span<const HandOp> ops) {
@@ -40,7 +51,7 @@ std::vector<Token> tokens_of(std::span<const HandOp> ops) {
 struct Item {
   std::uint32_t begin = 0, length = 1;  // tokens
   std::uint32_t count = 1;              // times the unit is worked
-  std::uint32_t takes = 0;              // loops it takes in all
+  std::int32_t takes = 0;               // loops it takes in all (less those slipped there)
   bool until = false;  // written as "to end" / "to last N sts" / "to m" instead of a count
   bool repeat() const { return count > 1; }
 };
@@ -66,7 +77,7 @@ std::vector<Item> items_of(const std::vector<Token>& t) {
       }
     }
     for (std::uint32_t k = 0; k < best.length; ++k) best.takes += t[i + k].takes();
-    best.takes *= best.count;
+    best.takes *= static_cast<std::int32_t>(best.count);
     items.push_back(best);
     i += best_cover;
   }
@@ -94,16 +105,16 @@ std::string sts(std::uint32_t n) {
 }
 
 // Where an "until" item stops: the end of the row or the next marker, `rest` sts before it.
-std::string until_text(std::uint32_t rest, bool marker) {
+std::string until_text(std::int32_t rest, bool marker) {
   if (marker)
     return rest == 0 ? "to m" : fmt::format("to {} st{} before m", rest, rest == 1 ? "" : "s");
-  return rest == 0 ? "to end" : fmt::format("to last {}", sts(rest));
+  return rest == 0 ? "to end" : fmt::format("to last {}", sts(static_cast<std::uint32_t>(rest)));
 }
 
 // Gives the "until" form to the one repeat of a stretch, or else to its last long plain run,
 // when what follows it is short enough to count at a glance.
 void choose_until(std::vector<Item>& items, const std::vector<Token>& t, std::uint32_t short_run) {
-  std::uint32_t rest = 0;
+  std::int32_t rest = 0;
   auto repeats =
       std::count_if(items.begin(), items.end(), [](const Item& i) { return i.repeat(); });
   for (auto it = items.rbegin(); it != items.rend() && rest <= kCountableRest; ++it) {
@@ -128,7 +139,7 @@ std::string stretch_text(std::span<const HandOp> ops, bool before_marker, Dialec
   bool turns = !ops.empty() && ends_row(ops.back());
   if (before_marker || !turns) choose_until(items, tokens, before_marker ? 1 : kShortRun);
   std::string out;
-  std::uint32_t rest = 0;
+  std::int32_t rest = 0;
   for (const Item& item : items) rest += item.takes;
   for (const Item& item : items) {
     rest -= item.takes;
