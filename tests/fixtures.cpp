@@ -349,15 +349,20 @@ struct GraphRows {
   }
 };
 
+// A graph of `rows` open rows, named for messages, to add stitches to.
+GraphRows open_rows(const char* name, std::size_t rows) {
+  KnitGraph flat;
+  flat.source_name = name;
+  flat.element = "face";
+  flat.row_shape.assign(rows, RowShape::open);
+  return GraphRows{std::move(flat)};
+}
+
 }  // namespace
 
 KnitGraph heel_turn_on_new_yarn_graph() {
   using T = StitchType;
-  KnitGraph flat;
-  flat.source_name = "heel turn on a new yarn";
-  flat.element = "face";
-  flat.row_shape.assign(5, RowShape::open);
-  GraphRows r{std::move(flat)};
+  GraphRows r = open_rows("heel turn on a new yarn", 5);
   auto c = r.row_of(6, T::co, 0);
   auto a = r.row_of(6, T::k, 1);
   auto b = r.row_of(2, T::k2tog, 2);  // b0 over a1 and a2, b1 over a3 and a4
@@ -381,6 +386,36 @@ KnitGraph heel_turn_on_new_yarn_graph() {
   r.loop(d[0], e[0], 0);
   r.loop(d[1], e[1], 0);
   r.finish({}, {c[5], b[1], d[0]});
+  return std::move(r.g);
+}
+
+KnitGraph new_yarn_on_set_aside_needle_graph() {
+  using T = StitchType;
+  GraphRows r = open_rows("new yarn on a set-aside needle", 7);
+  auto c = r.row_of(4, T::co, 0);
+  auto a = r.row_of(4, T::k, 1);     // worked a3 first
+  auto b = r.row_of(2, T::k, 2);     // a short row over a0, a1
+  auto d = r.row_of(2, T::k, 3);     // back over it
+  auto e = r.row_of(2, T::k, 4);     // the new yarn over a2 (worked last of the two), a3
+  auto h = r.row_of(2, T::k, 5);     // back over it, left live
+  auto f = r.row_of(2, T::tnbo, 6);  // Piece 1's d0 with h1, d1 with h0
+  r.link({c[0], c[1], c[2], c[3], a[3], a[2], a[1], a[0], b[0], b[1], d[1], d[0], f[0], f[1]});
+  r.link({e[0], e[1], h[1], h[0]});
+  for (int i = 0; i < 4; ++i) r.loop(c[i], a[i], 0);
+  for (int i = 0; i < 2; ++i) {
+    r.loop(a[i], b[i], 0);
+    r.loop(b[i], d[i], 0);
+    r.loop(a[2 + i], e[i], 0);
+    r.loop(e[i], h[i], 0);
+  }
+  auto join = [&](StitchId maker, StitchId taker, std::uint8_t slot) {
+    r.g.loops.push_back({maker, taker, LoopKind::joined, 0, slot});
+  };
+  join(d[0], f[0], 0);
+  join(h[1], f[0], 1);
+  join(d[1], f[1], 0);
+  join(h[0], f[1], 1);
+  r.finish({}, {c[3], a[0], b[1], d[0], e[1]});
   return std::move(r.g);
 }
 

@@ -71,6 +71,11 @@ KnitGraph heel_turn_graph();
 // into a5 and one into a0); a bind-off.
 KnitGraph heel_turn_on_new_yarn_graph();
 
+// A new yarn on sts a piece set aside left on its needle (the teapot's yarn 4): 4 sts cast on
+// and a row (a3 worked first), a short row and the row back over a0, a1, set aside; a new yarn
+// on a2, a3 (2 rows, left live); the first piece bound off with it by a three-needle bind-off.
+KnitGraph new_yarn_on_set_aside_needle_graph();
+
 // A tube closed by a three-needle bind-off of its last rnd folded in half: 6 sts cast on in the
 // rnd, a rnd, and with a new yarn 3 pairs (a2 with a3, a1 with a4, a0 with a5).
 KnitGraph folded_tube_graph();

@@ -133,9 +133,9 @@ TEST(HandTarget, SamplesNotCoveredYetNameWhatStopsThem) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
   const std::pair<const char*, const char*> cases[] = {
       {"samples/teapot/teapot.yaml",
-       "yarn 4 starts with face 4157 (k, row 66) on the sts of Piece 4 (the first: face 4087 "
-       "(k, row 65)) left on its needle; joining a new yarn to sts another piece leaves is not "
-       "covered yet"},
+       "face 5581 (k, row 90) works a loop of face 4448 (k, row 65) off the needle of Piece 4, "
+       "set aside with sts it works itself later; a knitter would first slip the sts other "
+       "pieces take to holders, which is not covered yet"},
   };
   for (const auto& [sample, named] : cases) {
     std::string error = emit_error(compile_model(sample));
@@ -167,6 +167,17 @@ TEST(HandTarget, AHeelTurnOnANewYarnIsProvenInEveryFormat) {
        "**Row 1 (RS):** Sl1 from spare, k2tog, sl1 from 2nd spare behind, k2tog.\n",
        "**Row 2 (WS):** Sl1 from 2nd spare, p2tog, sl1 from spare behind, p2tog.\n",
        "counts them in the order the row worked them"});
+}
+
+// A new yarn on sts a piece set aside left on its needle (the teapot's yarn 4): they go to a
+// holder before the piece is set aside, counted in the order their row worked them.
+TEST(HandTarget, ANewYarnOnASetAsidePiecesStsIsProvenInEveryFormat) {
+  expect_proven_with_lines(testing::new_yarn_on_set_aside_needle_graph(), "set-aside needle",
+                           {"**Row 2 (WS):** P2, turn.\n\n**Row 3 (RS):** Knit.\n\nSlip sts "
+                            "1–2 of Row 1 to holder 1 — 2 sts.\n\nLeave the 2 sts on the needle "
+                            "and set the yarn aside (do not cut it).\n",
+                            "Join a new yarn to the 2 sts of holder 1, the last st of its last "
+                            "row at the tip.\n"});
 }
 
 // A piece worked flat that goes on in the rnd by picking up along its own edges (the

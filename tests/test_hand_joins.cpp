@@ -215,6 +215,8 @@ TEST(HandGaps, PartingARowOntoHoldersNeedsItsSts) {
             "p.md:3: Slip sts 1–2 of Row 2 to holder 1: the last row worked is Row 1");
   EXPECT_EQ(failure_of(row + "Slip sts 3–5 of Row 1 to holder 1.\n"),
             "p.md:3: Slip sts 3–5 of Row 1 to holder 1: the row left 4 sts on the needle");
+  EXPECT_EQ(failure_of(row + "Row 2 (WS): Purl.\nSlip sts 1–2 of Row 1 to holder 1.\n"),
+            "p.md:4: Slip sts 1–2 of Row 1 to holder 1: the row left 0 sts on the needle");
   EXPECT_EQ(failure_of(row + "Slip sts 1–2 of Row 1 to holder 1.\nSlip sts 1–2 of Row 1 "
                              "to holder 1.\n"),
             "p.md:4: Slip sts 1–2 of Row 1 to holder 1: it already holds sts");

@@ -429,6 +429,9 @@ TEST(HandMutations, DecreasesAcrossAGapRejectEveryEditThatChangesTheFabric) {
                    compile_knit_graph(testing::heel_turn_graph(), "heel turn"));
   mutate_and_judge("heel turn on a new yarn (a row parted onto holders)",
                    compile_knit_graph(testing::heel_turn_on_new_yarn_graph(), "heel turn"));
+  mutate_and_judge(
+      "new yarn on a set-aside piece's sts (an earlier row's sts to a holder)",
+      compile_knit_graph(testing::new_yarn_on_set_aside_needle_graph(), "set-aside needle"));
   mutate_and_judge("folded tube (three-needle bind-off of a rnd)",
                    compile_knit_graph(testing::folded_tube_graph(), "folded tube"));
   mutate_and_judge("gusset (a flap's edges picked up into the rnd)",

@@ -534,12 +534,14 @@ class NeedleSimulator {
                                    s.to_row, s.of_row, s.number);
     if (!active_) fail(what + ": no piece is on the needle");
     if (holders_.contains(s.number)) fail(what + ": it already holds sts");
-    if (s.of_row + 1 != pc_.next_number)
+    if (s.of_row >= pc_.next_number)
       fail(fmt::format("{}: the last row worked is Row {}", what, pc_.next_number - 1));
+    // An earlier row's sts left on the needle (a piece set aside after rows on others) count
+    // as the last row's do.
     std::vector<std::uint32_t> row;
     for (const std::vector<std::uint32_t>* needle : {&pc_.right, &pc_.left})
       std::copy_if(needle->begin(), needle->end(), std::back_inserter(row),
-                   [&](std::uint32_t entry) { return made_by_last_row(entry); });
+                   [&](std::uint32_t entry) { return made_by_row(entry, s.of_row); });
     if (s.from_row == 0 || s.to_row > row.size())
       fail(fmt::format("{}: the row left {} on the needle", what,
                        sts(static_cast<std::uint32_t>(row.size()))));
@@ -588,6 +590,13 @@ class NeedleSimulator {
       std::erase_if(*needle, of_last_row);
     }
     return off;
+  }
+
+  // Made by Row `number` of the piece being worked.
+  bool made_by_row(std::uint32_t entry, std::uint32_t number) {
+    if (is_marker_entry(entry)) return false;
+    const Fabric::RowWorked& r = fab().rows[fab().row[fab().loop_maker[entry]]];
+    return r.piece == pc_.number && r.number == number;
   }
 
   bool made_by_last_row(std::uint32_t entry) {

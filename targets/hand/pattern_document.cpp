@@ -266,7 +266,9 @@ class InstructionWriter {
     for (const PatternSection::Holding& h : p_.sections[section_].holdings) {
       if (h.after_row != row) continue;
       held += h.count;
-      std::string of = h.of_row ? fmt::format(" of Row {}", p_.rows[row].number) : " of the rnd";
+      std::string of =
+          h.of_row ? fmt::format(" of Row {}", h.of_number ? h.of_number : p_.rows[row].number)
+                   : " of the rnd";
       runs.push_back(fmt::format("{}{} to holder {}{}", held_sts_text(h), runs.empty() ? of : "",
                                  h.holder, onto_text(h)));
     }

@@ -646,6 +646,8 @@ class PatternBuilder {
   // chain: the loops' second slot).
   void start_from_spare_needle(const Loop& first) {
     if (first.maker != kNoStitch && g_.type[first.maker] != T::sco) {
+      if (holder_of_[first.maker] == 0 && out_.sections[section_of(first.maker)].set_aside)
+        hold_sts_left_on_set_aside_needle(first.maker);
       if (holder_of_[first.maker] == 0) refuse_start_on_live_sts(first);
       return start_from_holder(first);
     }
@@ -735,6 +737,56 @@ class PatternBuilder {
         out_.sections.back().yarn + 1, g_.describe(row_.front()),
         out_.sections[section_of(first.maker)].piece, g_.describe(first.maker),
         holder ? fmt::format(", slipped to holder {}", holder) : " left on its needle"));
+  }
+
+  // A new yarn that starts on sts a piece set aside left on its needle (the teapot's yarn 4,
+  // on 7 sts of Piece 4's row 65): they go to a holder before the piece is set aside, a run of
+  // that row counted in the order it worked them ("Slip sts 1–7 of Row 8 to holder 12").
+  void hold_sts_left_on_set_aside_needle(StitchId first) {
+    const std::uint32_t yarn = c_.yarns.piece_of[first];
+    std::vector<StitchId> row = sts_of_row(yarn, number_of_[first]);
+    std::vector<std::uint32_t> taken = positions_worked_in(row, yarn);
+    if (taken.back() >= row.size() || taken.back() - taken.front() + 1 != taken.size()) return;
+    const auto count = static_cast<std::uint32_t>(taken.size());
+    holders_.push_back({row[taken.back()], count});
+    spare_left_.push_back(0);
+    spare_second_.push_back(0);
+    for (std::uint32_t i : taken) holder_of_[row[i]] = static_cast<std::uint32_t>(holders_.size());
+    PatternSection& aside = out_.sections[section_of_yarn_[yarn]];
+    PatternSection::Holding& h = aside.holdings.emplace_back(PatternSection::Holding{
+        aside.end_row - 1, taken.front() + 1, count, static_cast<std::uint32_t>(holders_.size())});
+    h.of_row = true;
+    h.of_number = number_of_[first];
+    aside.live_at_end -= count;
+    // Set aside after a row, before the next turns: the sts are behind it (a short row's
+    // others, ahead of it).
+    Needle& needle = set_aside_[yarn];
+    needle.live -= count;
+    (needle.behind >= count ? needle.behind : needle.ahead) -= count;
+  }
+
+  // Where in `row` (of `yarn`) the sts are that the row being built works along their wales,
+  // in order (row.size(): not in it).
+  std::vector<std::uint32_t> positions_worked_in(const std::vector<StitchId>& row,
+                                                 std::uint32_t yarn) const {
+    std::vector<std::uint32_t> taken;
+    for (StitchId s : row_)
+      for (std::uint32_t l : g_.loops_taken_by(s))
+        if (const Loop& loop = g_.loops[l]; loop.kind == LoopKind::wale &&
+                                            loop.maker != kNoStitch &&
+                                            c_.yarns.piece_of[loop.maker] == yarn)
+          taken.push_back(static_cast<std::uint32_t>(std::find(row.begin(), row.end(), loop.maker) -
+                                                     row.begin()));
+    std::sort(taken.begin(), taken.end());
+    return taken;
+  }
+
+  // The sts of a yarn's row (by its number in the piece), in the order it worked them.
+  std::vector<StitchId> sts_of_row(std::uint32_t yarn, std::uint32_t number) const {
+    std::vector<StitchId> row;
+    for (StitchId s = c_.yarns.first[yarn]; s != kNoStitch; s = g_.yarn_next[s])
+      if (number_of_[s] == number && !unwritten_[s]) row.push_back(s);
+    return row;
   }
 
   // The first loop of a held st the row works along its wales (a row that starts across an

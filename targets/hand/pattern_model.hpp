@@ -92,6 +92,9 @@ struct PatternSection {
     // `of_row`: a run of a flat piece's last row ("sts 1–30 of Row 57"), counted in the order
     // the row worked them, the piece's sts parted between the pieces that work them.
     bool of_row = false;
+    // of_row: the row's number when it is not the last the piece worked (a set-aside piece's
+    // needle), else 0.
+    std::uint32_t of_number = 0;
   };
   std::vector<Holding> holdings;
   // After binding off every st, the yarn goes on to the sts of a holder (a tube's second leg,
