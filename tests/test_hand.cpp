@@ -177,7 +177,8 @@ TEST(HandTarget, ANewYarnOnASetAsidePiecesStsIsProvenInEveryFormat) {
                             "1–2 of Row 1 to holder 1 — 2 sts.\n\nLeave the 2 sts on the needle "
                             "and set the yarn aside (do not cut it).\n",
                             "Join a new yarn to the 2 sts of holder 1, the last st of its last "
-                            "row at the tip.\n"});
+                            "row at the tip.\n",
+                            "counts them in the order the row worked them"});
 }
 
 // A piece worked flat that goes on in the rnd by picking up along its own edges (the
