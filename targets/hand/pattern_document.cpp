@@ -236,7 +236,7 @@ class InstructionWriter {
           "Put the {} sts of holder {} on a {}spare needle, the {} st of its last {} "
           "at the tip.",
           p.count, p.holder, p.second_spare ? "second " : "", p.from_last ? "last" : "first",
-          holds_a_flat_row(p.holder) ? "row" : "rnd");
+          spare.in_round && !holds_a_flat_row(p.holder) ? "rnd" : "row");
     bool cast_on = p.holder == 0 && (p.chain || spare.first_row == spare.end_row);
     std::string which = cast_on                                         ? "cast on"
                         : spare.in_round && !holds_a_flat_row(p.holder) ? "of its last rnd"
