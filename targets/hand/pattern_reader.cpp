@@ -183,6 +183,13 @@ class SentenceReader {
     fail(fmt::format("expected {}", what), c.rest());
   }
 
+  // "12 sts" (or "1 st"): the number, then the word.
+  std::uint32_t need_sts(Cursor& c, const char* what) {
+    std::uint32_t n = need_number(c, what);
+    need(c.eat_any({"sts", "st"}), c, "'sts' after the number");
+    return n;
+  }
+
   void need(bool ok, Cursor& c, const char* expected) {
     if (!ok) fail(fmt::format("expected {}", expected), c.rest());
   }
@@ -190,8 +197,7 @@ class SentenceReader {
   // "Cast on 12 sts", "Cast on 12 sts with a provisional cast-on".
   void cast_on(Cursor c) {
     Step step{Step::Kind::cast_on, line_no_};
-    step.count = need_number(c, "the number of sts to cast on");
-    need(c.eat_any({"sts", "st"}), c, "'sts' after the number");
+    step.count = need_sts(c, "the number of sts to cast on");
     if (c.eat("with")) {
       need_words(c, {"a", "provisional", "cast-on"}, "'with a provisional cast-on'");
       step.provisional = true;
@@ -807,8 +813,7 @@ class SentenceReader {
       return n;
     }
     c.eat("rem");
-    n.times = need_number(c, "how many sts to bind off");
-    need(c.eat_any({"sts", "st"}), c, "'sts' after the number");
+    n.times = need_sts(c, "how many sts to bind off");
     return n;
   }
 
@@ -817,8 +822,7 @@ class SentenceReader {
     Node n;
     n.op = HandOp::tnbo;
     need(c.eat("BO"), c, "'3-needle BO N sts'");
-    n.times = need_number(c, "how many sts to bind off");
-    need(c.eat_any({"sts", "st"}), c, "'sts' after the number");
+    n.times = need_sts(c, "how many sts to bind off");
     return n;
   }
 
@@ -826,8 +830,7 @@ class SentenceReader {
   Node provisional_cast_on(Cursor& c) {
     Node n;
     n.op = HandOp::provisional_co;
-    n.times = need_number(c, "how many sts to cast on");
-    need(c.eat_any({"sts", "st"}), c, "'sts' after the number");
+    n.times = need_sts(c, "how many sts to cast on");
     need_words(c, {"with", "a", "provisional", "cast-on"}, "'with a provisional cast-on'");
     return n;
   }
