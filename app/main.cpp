@@ -7,11 +7,13 @@
 #include <chrono>
 #include <filesystem>
 #include <iostream>
+#include <map>
 
 #include "builtin_targets.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "driver/pipeline.hpp"
+#include "labeling/project.hpp"
 #include "labeling/shapes.hpp"
 #include "labeling/stitch_generation.hpp"
 #include "render/svg.hpp"
@@ -101,11 +103,13 @@ std::map<std::string, std::string> settings_for(const Target& target, const std:
                                                 const std::vector<std::string>& given) {
   std::vector<TargetSetting> known = target.settings();
   std::map<std::string, std::string> settings;
+  std::map<std::string, std::string> project =
+      is_project_file(input) ? read_project(input).target : std::map<std::string, std::string>{};
   for (const TargetSetting& s : known) {
-    std::string value = project_target_option(input, s.key);
-    if (value.empty()) continue;
-    check_setting_value(s, value, input + ": target:");
-    settings[s.key] = value;
+    auto value = project.find(s.key);
+    if (value == project.end()) continue;
+    check_setting_value(s, value->second, input + ": target:");
+    settings[s.key] = value->second;
   }
   for (const std::string& pair : given) {
     std::size_t eq = pair.find('=');

@@ -20,7 +20,7 @@ struct TargetOptions {
   std::map<std::string, std::string> settings;
 };
 
-// A choice a target offers (`--set rounds=inside-out`); the first value is the default.
+// A choice a target offers (`--set rounds=inside-out`) and the values it may take.
 struct TargetSetting {
   std::string key;
   std::vector<std::string> values;
