@@ -409,5 +409,25 @@ TEST(Randomized, JoinedAndSplitSheetsScheduleAndProveWithEveryYarnOption) {
   }
 }
 
+// Corner links: a rnd going on into a flap's rows back over the sts just made turns the work
+// in the schedule, and the flap's last row going on down its edge into the rnd shifts, flagged
+// as a corner (letter R's flap in small; the model has them the other way round).
+TEST(CornerLinks, TheScheduleTurnsWhereTheYarnGoesBackAndShiftsRoundACorner) {
+  Compilation c = compile_knit_graph(testing::reversed_gusset_leg_graph(), "flap");
+  ASSERT_TRUE(c.knittability.knittable) << check_report(c);
+  const StitchId last_of_rnd = 17, first_of_flap = 18, flap_corner = 23, plain_rnd_end = 11;
+  EXPECT_EQ(c.knit.yarn_link[last_of_rnd], YarnLink::turn);
+  EXPECT_EQ(c.knit.yarn_link[flap_corner], YarnLink::shift);
+  EXPECT_TRUE(c.knit.flags[flap_corner] & kRoundsACorner);
+  EXPECT_EQ(c.knit.yarn_link[plain_rnd_end], YarnLink::shift);
+  EXPECT_FALSE(c.knit.flags[plain_rnd_end] & kRoundsACorner);
+  auto event_before = [&](StitchId s, EventKind kind) {
+    return std::any_of(c.schedule.events.begin(), c.schedule.events.end(),
+                       [&](const Event& e) { return e.kind == kind && e.stitch == s; });
+  };
+  EXPECT_TRUE(event_before(first_of_flap, EventKind::turn));
+  EXPECT_FALSE(event_before(flap_corner + 1, EventKind::turn));
+}
+
 }  // namespace
 }  // namespace skein

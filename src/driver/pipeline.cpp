@@ -10,6 +10,7 @@
 #include "labeling/stitch_generation.hpp"
 #include "mesh/autoknit_st.hpp"
 #include "mesh/obj_format.hpp"
+#include "transforms/corner_links.hpp"
 #include "transforms/mismatches.hpp"
 #include "transforms/shift_paths.hpp"
 
@@ -67,6 +68,7 @@ Compilation compile_knit_graph(KnitGraph graph, const std::string& name,
   Compilation c;
   c.input = name;
   c.knit = std::move(graph);
+  timed(observe, "corner links", [&] { correct_corner_links(c.knit); });
   timed(observe, "consistency", [&] { check_consistency(c.knit); });
   c.yarns = timed(observe, "yarn pieces", [&] { return find_yarn_pieces(c.knit); });
   c.deps = timed(observe, "dependency graph", [&] { return build_dependency_graph(c.knit); });

@@ -8,6 +8,7 @@
 //   build_knit_graph        knitgraph/from_mesh  StitchMesh       -> KnitGraph
 //   make_mismatches_knittable transforms         KnitGraph        -> joins/splits extruded (§3.2)
 //   read_autoknit_st        mesh/autoknit_st     .st text         -> KnitGraph
+//   correct_corner_links    transforms           KnitGraph        -> links as a knitter works them
 //   check_consistency       knitgraph            KnitGraph        -> (asserts)
 //   find_yarn_pieces        knitgraph            KnitGraph        -> YarnPieces      (§4.2)
 //   build_dependency_graph  depgraph             KnitGraph        -> DependencyGraph (§4.1)

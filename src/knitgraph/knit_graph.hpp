@@ -86,6 +86,8 @@ enum StitchFlag : std::uint8_t {
   kShortRowEnd = 2,     // a short-row face
   kShiftPathStart = 4,  // first stitch after a shift-path edge (beginning of round)
   kExtruded = 8,        // added by the transforms along a join or split (no face of its own)
+  kRoundsACorner = 16,  // the yarn goes on round a corner, down its edge into a round (the
+                        // model's turn there; see transforms/corner_links.hpp)
 };
 
 struct KnitGraph {

@@ -30,12 +30,7 @@ std::string ordinal(std::size_t n) {
 class Comparison {
  public:
   Comparison(const Fabric& f, const Compilation& c, bool mirror)
-      : f_(f),
-        g_(c.knit),
-        c_(c),
-        link_(knitter_links(c.knit)),
-        mirror_(mirror),
-        model_of_(f.size(), kNoStitch) {}
+      : f_(f), g_(c.knit), c_(c), mirror_(mirror), model_of_(f.size(), kNoStitch) {}
 
   std::optional<Difference> run() {
     if (auto d = pair_yarns()) return d;
@@ -84,9 +79,9 @@ class Comparison {
 
   std::optional<Difference> compare_stitch(std::uint32_t x) {
     StitchId s = model_of_[x];
-    if (f_.yarn_link[x] != link_[s])
+    if (f_.yarn_link[x] != g_.yarn_link[s])
       return differ(x, fmt::format("the pattern {} after it, the model {}",
-                                   link_words(f_.yarn_link[x]), link_words(link_[s])));
+                                   link_words(f_.yarn_link[x]), link_words(g_.yarn_link[s])));
     StitchType want = mirror_ ? mirrored(g_.type[s]) : g_.type[s];
     if (f_.type[x] != want) {
       std::optional<Difference> d = differ(
@@ -128,7 +123,6 @@ class Comparison {
   const Fabric& f_;
   const KnitGraph& g_;
   const Compilation& c_;
-  const std::vector<YarnLink> link_;  // as a knitter works them (knitter_links)
   bool mirror_;
   std::vector<StitchId> model_of_;
 };

@@ -44,34 +44,6 @@ void check_supported(const Compilation& c) {
   }
 }
 
-// Does `taker` work a loop of the kind that `maker` made?
-bool works_a_loop_of(const KnitGraph& g, StitchId taker, StitchId maker, LoopKind kind) {
-  if (taker == kNoStitch || maker == kNoStitch) return false;
-  auto taken = g.loops_taken_by(taker);
-  return std::any_of(taken.begin(), taken.end(), [&](std::uint32_t l) {
-    return g.loops[l].maker == maker && g.loops[l].kind == kind;
-  });
-}
-
-bool works_the_wale_of(const KnitGraph& g, StitchId taker, StitchId maker) {
-  return works_a_loop_of(g, taker, maker, LoopKind::wale);
-}
-
-// Does the stitch after `s` pick up the loop `s` makes across the edge (a gusset's rnd going
-// on from the last row of its flap, down the flap's edge), not work its wale?
-bool picks_up_along_its_edge_next(const KnitGraph& g, StitchId s) {
-  StitchId next = g.yarn_next[s];
-  return works_a_loop_of(g, next, s, LoopKind::perpendicular) && !works_the_wale_of(g, next, s);
-}
-
-// Do the two stitches after `s` (after `before`, the one before it) along the yarn work the
-// loops of `s` and of `before`: does the yarn go back over the sts just made?
-bool goes_back_over_the_sts_just_made(const KnitGraph& g, StitchId before, StitchId s) {
-  StitchId next = g.yarn_next[s];
-  return next != kNoStitch && works_the_wale_of(g, next, s) &&
-         works_the_wale_of(g, g.yarn_next[next], before);
-}
-
 // Per model row: does it hold both three-needle bind-off sts and others?
 std::vector<std::uint8_t> rows_binding_off_among_own_sts(const KnitGraph& g) {
   std::vector<std::uint8_t> kinds(g.row_shape.size(), 0);  // bit 0: tnbo; bit 1: other
@@ -233,7 +205,7 @@ bool needs_mirror(const Compilation& c, const Handedness& hand, Rounds rounds) {
 class PatternBuilder {
  public:
   PatternBuilder(const Compilation& c, TurnMethod turns, Rounds rounds)
-      : c_(c), g_(c.knit), link_(knitter_links(c.knit)), hand_(c, link_) {
+      : c_(c), g_(c.knit), link_(c.knit.yarn_link), hand_(c, link_) {
     out_.source = c.input;
     out_.mirror = needs_mirror(c, hand_, rounds);
     out_.turns = turns;
@@ -1323,18 +1295,15 @@ class PatternBuilder {
     st_.previous_link = YarnLink::shift;  // the rnd starts at the beginning of the rnd
   }
 
-  // Does the yarn go on around after `last` (as the model and the knitter see it), not round
-  // a corner (which the model calls a turn) or back over the sts just made?
+  // Does the yarn go on around after `last`, not round a corner or back over the sts just made?
   bool goes_on_around(StitchId last) const {
-    return link_[last] == YarnLink::shift && g_.yarn_link[last] == YarnLink::shift;
+    return link_[last] == YarnLink::shift && !(g_.flags[last] & kRoundsACorner);
   }
 
   // Does the yarn go round a corner after `last` into the next rnd (its next st picks up the
-  // edge of `last`)? The model calls it a turn; the knitter goes on without turning, which a
-  // row of a piece worked flat must say ("do not turn").
-  bool rounds_a_corner(StitchId last) const {
-    return g_.yarn_link[last] == YarnLink::turn && link_[last] == YarnLink::shift;
-  }
+  // edge of `last`)? The knitter goes on without turning, which a row of a piece worked flat
+  // must say ("do not turn").
+  bool rounds_a_corner(StitchId last) const { return g_.flags[last] & kRoundsACorner; }
 
   // The sts of the flat piece's last row go to a holder, in the order the row worked them; the
   // others on the needle (those short rows left) stay for the rnd. A rnd that works some of
@@ -1735,7 +1704,7 @@ class PatternBuilder {
 
   const Compilation& c_;
   const KnitGraph& g_;
-  const std::vector<YarnLink> link_;  // as a knitter works them (knitter_links)
+  const std::vector<YarnLink>& link_;  // as a knitter works them (correct_corner_links)
   Handedness hand_;
   std::uint32_t pieces_ = 0;
   HandPattern out_;
@@ -1786,19 +1755,6 @@ class PatternBuilder {
 };
 
 }  // namespace
-
-std::vector<YarnLink> knitter_links(const KnitGraph& g) {
-  std::vector<YarnLink> links(g.yarn_link.begin(), g.yarn_link.end());
-  std::vector<StitchId> before(g.size(), kNoStitch);
-  for (StitchId s = 0; s < g.size(); ++s)
-    if (g.yarn_next[s] != kNoStitch) before[g.yarn_next[s]] = s;
-  for (StitchId s = 0; s < g.size(); ++s)
-    if (links[s] == YarnLink::shift && goes_back_over_the_sts_just_made(g, before[s], s))
-      links[s] = YarnLink::turn;
-    else if (links[s] == YarnLink::turn && picks_up_along_its_edge_next(g, s))
-      links[s] = YarnLink::shift;
-  return links;
-}
 
 HandPattern build_hand_pattern(const Compilation& c, TurnMethod turns, Rounds rounds) {
   check_supported(c);

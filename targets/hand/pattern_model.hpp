@@ -180,13 +180,6 @@ struct HandPattern {
   }
 };
 
-// How the yarn goes on after each stitch as a knitter works it: the model's links, except
-// that a shift-path whose next stitches work the loops of the stitches just made (the yarn
-// goes back over them, as where a rnd goes on into a flap's rows) turns the work, and a turn
-// whose next stitch picks up along the edge of the st just made (a gusset's rnd going on from
-// its flap's last row, down its edge) goes on into the rnd.
-std::vector<YarnLink> knitter_links(const KnitGraph& g);
-
 // Throws Error naming the stitch when the model needs something hand patterns do not cover
 // yet (joins with a side's own yarn, splits, perpendicular edges, held pieces, stitch graphs
 // without rows). Rows shaped alike get section
