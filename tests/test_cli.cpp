@@ -128,6 +128,12 @@ TEST_F(Cli, AProjectFileCanChooseTheHandTargetsSettings) {
                          "'sideways'"),
             std::string::npos)
       << bad.err;
+  std::string wrapped = project;  // short_rows: {hand: ...} is the short-rows setting
+  wrapped.replace(wrapped.find("method: sr4"), 11, "method: sr4\n  hand: wrap-and-turn");
+  std::ofstream(in_dir("sock.yaml")) << wrapped;
+  CliRun w = skein("compile " + in_dir("sock.yaml") + " -t hand -o " + in_dir("sock.md"));
+  EXPECT_EQ(w.exit_code, 0) << w.err;
+  EXPECT_NE(read("sock.md").find("**Row 45 (RS):** K1, pm, k25, w&t."), std::string::npos);
 }
 
 TEST_F(Cli, UnwritableOutputLeavesNoTemporaryFile) {

@@ -87,7 +87,11 @@ TEST(HandShortRows, TheSockHeelReadsInEitherMethod) {
 
 TEST(HandShortRows, TheProjectFileChoosesTheMethod) {
   Project p = parse_project("mesh: sock.obj\nshort_rows: {hand: wrap-and-turn}\n", "p.yaml");
-  EXPECT_EQ(p.hand_turns, HandTurnMethod::wrap_and_turn);
+  EXPECT_EQ(p.target.at("short-rows"), "wrap-and-turn");
+  Project set = parse_project(
+      "mesh: sock.obj\ntarget: {short-rows: german}\nshort_rows: {hand: wrap-and-turn}\n",
+      "p.yaml");
+  EXPECT_EQ(set.target.at("short-rows"), "german");  // target: says it for the hand target
   try {
     parse_project("mesh: sock.obj\nshort_rows: {hand: wrap}\n", "p.yaml");
     FAIL() << "expected a ParseError";

@@ -136,8 +136,8 @@ void read_short_rows(const Reader& r, const YAML::Node& node, Project& p) {
                return;
              }
              if (key == "hand") {
-               p.hand_turns =
-                   static_cast<HandTurnMethod>(r.choice(v, "hand short-row method", kHandMethods));
+               p.target.try_emplace(
+                   "short-rows", kHandMethods[r.choice(v, "hand short-row method", kHandMethods)]);
                return;
              }
              if (!v.IsSequence())

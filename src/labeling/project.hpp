@@ -14,8 +14,6 @@ namespace skein {
 
 enum class StitchPattern : std::uint8_t { knit, purl, k1p1, k2p2 };
 enum class ShortRowMethod : std::uint8_t { sr4, sr5 };
-// How a hand knitter turns short rows (hand target): German short rows or wrap and turn.
-enum class HandTurnMethod : std::uint8_t { german, wrap_and_turn };
 enum class YarnHandling : std::uint8_t { by_default, extra, own };
 
 // An edge of the coarse mesh named by its two vertices (0-based here, 1-based in the file).
@@ -65,14 +63,15 @@ struct Project {
   StitchPattern pattern = StitchPattern::knit;
   std::map<std::string, StitchPattern> group_patterns;  // OBJ group name -> pattern
   ShortRowMethod short_row_method = ShortRowMethod::sr4;
-  HandTurnMethod hand_turns = HandTurnMethod::german;
   std::vector<ShortRowFaceMark> short_row_faces;
   std::vector<CoarseEdgeRef> mismatch_edges;  // rows stop here (perpendicular mismatches)
   YarnHandling default_yarn = YarnHandling::by_default;
   std::vector<YarnMark> yarn_marks;
-  std::vector<ShiftPathMark> shift_paths;     // coarse side edges a tube's shift-path follows
-  std::uint8_t shift_option = 1;              // for paths skein places (default up-right)
-  std::map<std::string, std::string> target;  // passed through to targets
+  std::vector<ShiftPathMark> shift_paths;  // coarse side edges a tube's shift-path follows
+  std::uint8_t shift_option = 1;           // for paths skein places (default up-right)
+  // Target settings, passed through to targets (`target:`; `short_rows: {hand: M}` is the hand
+  // target's short-rows setting unless `target:` sets it).
+  std::map<std::string, std::string> target;
 };
 
 // Parses project text; `file` names it in messages and resolves `mesh`. Throws ParseError

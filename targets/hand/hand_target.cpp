@@ -10,7 +10,6 @@
 #include "hand/needle_sim.hpp"
 #include "hand/pattern_reader.hpp"
 #include "hand/pattern_writers.hpp"
-#include "labeling/project.hpp"
 
 namespace skein {
 namespace hand {
@@ -35,12 +34,11 @@ constexpr FormatInfo kFormats[] = {
      "the hand-knitting pattern's rows in Stitch-Maps' KnitSpeak"},
 };
 
-// `--set short-rows=...`, else the project file's `short_rows: {hand: ...}`, else German.
-TurnMethod turn_method_of(const Compilation& c, const TargetOptions& options) {
+// `--set short-rows=...`, else the project file's, else German.
+TurnMethod turn_method_of(const TargetOptions& options) {
   auto set = options.settings.find("short-rows");
-  if (set != options.settings.end())
-    return set->second == "german" ? TurnMethod::german : TurnMethod::wrap_and_turn;
-  return is_project_file(c.input) ? read_project(c.input).hand_turns : TurnMethod::german;
+  bool wrapped = set != options.settings.end() && set->second == "wrap-and-turn";
+  return wrapped ? TurnMethod::wrap_and_turn : TurnMethod::german;
 }
 
 Rounds rounds_of(const TargetOptions& options) {
@@ -65,7 +63,7 @@ class HandTarget : public Target {
              "rnds run left to right: mirror the model if most do, or work them WS facing"}};
   }
   void emit(const Compilation& c, const TargetOptions& options, std::ostream& out) const override {
-    HandPattern pattern = build_hand_pattern(c, turn_method_of(c, options), rounds_of(options));
+    HandPattern pattern = build_hand_pattern(c, turn_method_of(options), rounds_of(options));
     Gauge gauge;
     PatternDocument doc = make_document(pattern, dialect_of(options), gauge);
     // `--target hand --dialect knitspeak` writes what hand-knitspeak writes; the page stays a

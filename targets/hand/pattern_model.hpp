@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "hand/hand_ops.hpp"
-#include "labeling/project.hpp"
 #include "schedule/schedule.hpp"
 
 namespace skein {
@@ -19,11 +18,11 @@ struct Compilation;
 
 namespace skein::hand {
 
-// How short rows turn (paper Fig. 10a: the sr4 stitch is where the yarn turns), chosen in the
-// project file (`short_rows: {hand: german}`): German short rows work the st, turn and make it
-// a double stitch (DS), later worked as one ("k DS"); wrap and turn wraps the next st (w&t),
-// later worked with its wrap ("kw").
-using TurnMethod = HandTurnMethod;
+// How short rows turn (paper Fig. 10a: the sr4 stitch is where the yarn turns), the target's
+// short-rows setting (`--set short-rows=german`, or the project's `short_rows: {hand: german}`):
+// German short rows work the st, turn and make it a double stitch (DS), later worked as one ("k
+// DS"); wrap and turn wraps the next st (w&t), later worked with its wrap ("kw").
+enum class TurnMethod : std::uint8_t { german, wrap_and_turn };
 
 // Hand knitting works a rnd right to left with the side facing the knitter. The pattern knits
 // the model's mirror image when most of its rounds run left to right seen from the RS, and
