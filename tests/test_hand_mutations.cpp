@@ -497,6 +497,14 @@ TEST(HandMutations, TheLetterRRejectsEveryEditThatChangesTheFabric) {
   mutate_and_judge("letter R", compile_model("samples/letter-r/letter-r.yaml"));
 }
 
+// The teapot: strips parted from its body and joined in the rnd, a heel turn on a new yarn, an
+// earlier row's sts slipped to two holders as a piece is set aside, a chain and a holder placed
+// on a flat piece's needle as it is taken up again.
+TEST(HandMutations, TheTeapotRejectsEveryEditThatChangesTheFabric) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  mutate_and_judge("teapot", compile_model("samples/teapot/teapot.yaml"));
+}
+
 // AutoKnit's tubes parted along their helix into two legs: the second leg's sts go to one
 // holder (after the sts on it), then a new yarn is joined to them (test-C) or the first leg's
 // yarn is carried on to them from its bind-off (test-B).

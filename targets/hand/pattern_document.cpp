@@ -227,8 +227,11 @@ class InstructionWriter {
   // first: "..., st 16 of its last rnd first."
   std::string placement_text(const PatternSection::Placement& p) const {
     const PatternSection& spare = p_.sections[p.section];
-    std::string where = p.after == 0 ? "at the beginning of the rnd"
-                                     : fmt::format("after the first {} sts of the rnd", p.after);
+    // On a flat piece: counted from the tip of the needle its next row works.
+    const char* along = p_.sections[section_].in_round ? "rnd" : "row";
+    std::string where = p.after == 0
+                            ? fmt::format("at the beginning of the {}", along)
+                            : fmt::format("after the first {} sts of the {}", p.after, along);
     if (p.edge)  // "Pick up 10 sts along ..., onto the needle after the first 18 sts of the rnd."
       return fmt::format("{}, onto the needle {}.", pick_up_words(*p.edge, p.count), where);
     if (p.to_spare)
