@@ -162,6 +162,22 @@ TEST(HandTarget, ANewYarnOnASetAsidePiecesStsIsProvenInEveryFormat) {
                             "counts them in the order the row worked them"});
 }
 
+// The teapot's top in small: a flat piece set aside with an earlier row's sts on two holders,
+// a new yarn on one going on in the rnd round a provisional cast-on and taking the other, the
+// piece taken up again on the chain and the new yarn's held sts, placed on its flat needle.
+TEST(HandTarget, AFlatPieceTakenUpOnAChainIsProvenInEveryFormat) {
+  expect_proven_with_lines(
+      testing::flat_piece_taken_up_on_a_chain_graph(), "flat piece on a chain",
+      {"Slip sts 1–2 of Row 1 to holder 1 and sts 3–4 to holder 2 — 2 sts.\n",
+       "Place the 2 sts of holder 2 on the needle after the first 2 sts of the rnd, the last st "
+       "of its last row first.\n",
+       "**Rnd 3:** CO 2 sts with a provisional cast-on, k to end — 8 sts.\n",
+       "Take up Piece 1 again with its yarn. Place the 2 loops of Piece 2's chain on the needle "
+       "after the first 2 sts of the row, the last st cast on first. Place the 2 sts of holder 3 "
+       "on the needle after the first 4 sts of the row, the last st of its last row first — 6 "
+       "sts.\n\n**Row 4 (RS):** Knit.\n"});
+}
+
 // A piece worked flat that goes on in the rnd by picking up along its own edges (the
 // teapot's second strip): its sts go to a holder, the rnd picks up onto the empty needle.
 TEST(HandTarget, AFlatPieceJoinedInTheRndByItsOwnEdgesIsProvenInEveryFormat) {

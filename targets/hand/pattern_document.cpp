@@ -751,6 +751,12 @@ class FrontMatter {
           " \"Slip sts 1\u20138 of Row 57 to holder 7, ...\" parts the sts a row left on the "
           "needle between the pieces that work them: it counts them in the order the row "
           "worked them, the first st worked being st 1.";
+    if (says(" sts of the row, the "))
+      text +=
+          " On a flat piece \"after the first 7 sts of the row\" counts the sts the next row "
+          "works first, from the tip of the needle that holds them (the last st just worked is "
+          "st 1): slide the placed sts onto that needle after them, the st named first next to "
+          "them, so that the row goes on into them.";
     if (says(" on it)"))
       text +=
           " \"(after the 1 st on it)\" slips the sts onto the holder after those it already "
