@@ -407,6 +407,12 @@ TEST(HandPickUps, RejectsAPickUpThatCannotBeWorkedWithTheReason) {
             "");
   EXPECT_EQ(failure_of(piece + "Cast on 4 sts.\nRow 1 (RS): Knit.\n" + into_rnd),
             "p.md:7: Pick up along Piece 1 onto the needle: only into a piece worked in the rnd");
+  // A pick-up onto the needle counts "of the rnd", never "of the row".
+  std::string into_row = into_rnd;
+  into_row.replace(into_row.find("of the rnd"), 10, "of the row");
+  EXPECT_EQ(failure_of(piece + "Cast on 4 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\n" +
+                       into_row),
+            "p.md:7: Pick up along Piece 1 onto the needle: only into a piece worked in the rnd");
 }
 
 TEST(HandPieces, TheSweaterIsProvenInEveryFormat) {
