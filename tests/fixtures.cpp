@@ -419,6 +419,53 @@ KnitGraph new_yarn_on_set_aside_needle_graph() {
   return std::move(r.g);
 }
 
+KnitGraph flat_piece_taken_up_on_a_chain_graph() {
+  using T = StitchType;
+  GraphRows r = open_rows("flat piece taken up on a chain", 11);
+  for (std::uint32_t rnd : {8u, 9u, 10u}) r.g.row_shape[rnd] = RowShape::closed;
+  auto c = r.row_of(6, T::co, 0), a = r.row_of(6, T::k, 1);  // sts 0-1 left, 2-3 the hole, 4-5
+  auto b = r.row_of(2, T::k, 2), d = r.row_of(2, T::k, 3);   // Piece 1 over a0, a1
+  auto g = r.row_of(6, T::k, 4), j = r.row_of(6, T::bo, 5);  // over d, the chain and h
+  auto e = r.row_of(2, T::k, 6), h = r.row_of(2, T::k, 7);   // the new yarn over a4, a5
+  auto co = r.row_of(2, T::sco, 8);                          // the hole's top: co1, co0
+  auto rnd = r.row_of(6, T::k, 8);  // picks up d1, b1; takes a2, a3; picks up e0, h0
+  auto k = r.row_of(8, T::k, 9), m = r.row_of(8, T::bo, 10);
+  r.link({c[0], c[1], c[2], c[3], c[4], c[5], a[5], a[4], a[3], a[2], a[1], a[0], b[0], b[1],
+          d[1], d[0], g[0], g[1], g[2], g[3], g[4], g[5], j[5], j[4], j[3], j[2], j[1], j[0]});
+  std::vector<StitchId> yarn2 = {e[0], e[1], h[1], h[0], co[1], co[0]};
+  yarn2.insert(yarn2.end(), rnd.begin(), rnd.end());
+  yarn2.insert(yarn2.end(), k.begin(), k.end());
+  yarn2.insert(yarn2.end(), m.begin(), m.end());
+  r.link(yarn2);
+  auto across = [&](StitchId maker, std::uint8_t maker_slot, StitchId taker) {
+    r.g.loops.push_back({maker, taker, LoopKind::perpendicular, maker_slot, 0});
+  };
+  for (int i = 0; i < 6; ++i) {
+    r.loop(c[i], a[i], 0);
+    r.loop(g[i], j[i], 0);
+  }
+  // The edges beside the hole: Piece 1's on the right of its sts, the new yarn's on the left.
+  for (int i = 0; i < 2; ++i) {
+    r.loop(a[i], b[i], 0);
+    r.loop(b[i], d[i], 0);
+    r.loop(d[i], g[i], 0);
+    r.loop(a[4 + i], e[i], 0);
+    r.g.loops.push_back({e[i], h[i], LoopKind::wale, static_cast<std::uint8_t>(i == 0), 0});
+    r.g.loops.push_back({h[i], g[4 + i], LoopKind::wale, static_cast<std::uint8_t>(i == 0), 0});
+    r.loop(co[i], k[1 - i], 0);
+    r.g.loops.push_back({co[i], g[2 + i], LoopKind::split, 1, 0});
+    r.loop(a[2 + i], rnd[2 + i], 0);
+  }
+  across(d[1], 1, rnd[0]);
+  across(b[1], 1, rnd[1]);
+  across(e[0], 0, rnd[4]);
+  across(h[0], 0, rnd[5]);
+  for (int i = 0; i < 6; ++i) r.loop(rnd[i], k[2 + i], 0);
+  for (int i = 0; i < 8; ++i) r.loop(k[i], m[i], 0);
+  r.finish({rnd[5], k[7]}, {c[5], a[0], b[1], d[0], g[5], e[1], h[0]});
+  return std::move(r.g);
+}
+
 namespace {
 
 // The gusset graphs' tube and flap: 6 sts cast on in the rnd and a rnd (a0..a5), then the flap

@@ -76,6 +76,14 @@ KnitGraph heel_turn_on_new_yarn_graph();
 // on a2, a3 (2 rows, left live); the first piece bound off with it by a three-needle bind-off.
 KnitGraph new_yarn_on_set_aside_needle_graph();
 
+// A flat piece taken up again on a provisional cast-on's chain and another piece's held sts
+// (the teapot's top): 6 sts cast on and a row (a5 worked first), 2 rows over a0, a1, set aside
+// (a2, a3 and a4, a5 to two holders); a new yarn over a4, a5 (2 rows, then held) goes on in the
+// rnd round the hole above a2, a3: 2 sts cast on provisionally, its edge and Piece 1's picked
+// up, a2, a3 (8 sts), a rnd and a bind-off; Piece 1's next row works d, the chain and h, and it
+// is bound off.
+KnitGraph flat_piece_taken_up_on_a_chain_graph();
+
 // A tube closed by a three-needle bind-off of its last rnd folded in half: 6 sts cast on in the
 // rnd, a rnd, and with a new yarn 3 pairs (a2 with a3, a1 with a4, a0 with a5).
 KnitGraph folded_tube_graph();

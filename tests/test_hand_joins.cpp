@@ -407,6 +407,12 @@ TEST(HandPickUps, RejectsAPickUpThatCannotBeWorkedWithTheReason) {
             "");
   EXPECT_EQ(failure_of(piece + "Cast on 4 sts.\nRow 1 (RS): Knit.\n" + into_rnd),
             "p.md:7: Pick up along Piece 1 onto the needle: only into a piece worked in the rnd");
+  // A pick-up onto the needle counts "of the rnd", never "of the row".
+  std::string into_row = into_rnd;
+  into_row.replace(into_row.find("of the rnd"), 10, "of the row");
+  EXPECT_EQ(failure_of(piece + "Cast on 4 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\n" +
+                       into_row),
+            "p.md:7: Pick up along Piece 1 onto the needle: only into a piece worked in the rnd");
 }
 
 TEST(HandPieces, TheSweaterIsProvenInEveryFormat) {
@@ -725,6 +731,53 @@ TEST(HandPieces, PlacesASpareNeedleOrAChainIntoARndInTheMiddleOfTheWork) {
             "p.md:9: Join a new yarn: the chain of Piece 1 is not waiting on a spare needle");
   EXPECT_EQ(failure_of(tube_taking_in("", needle_side)),
             "p.md:6: Rnd 2: the pattern says 6 sts, but 4 sts are on the needle");
+}
+
+// A flat piece's next row works placed sts after the first N sts of the needle it works (the
+// teapot's top taken up on a chain and a holder); "of the row" only on a flat piece.
+TEST(HandPieces, PlacingOnAFlatNeedleCountsTheRowsSts) {
+  const std::string spare =
+      "Cast on 3 sts.\nRow 1 (RS): Knit.\nLeave the 3 sts on a spare needle and cut the yarn.\n";
+  auto placed = [&](const std::string& where, const char* piece) {
+    return spare + piece + "Place the 3 sts of Piece 1 on the needle " + where +
+           ", the first st of its last row first \u2014 5 sts.\nRow 2 (WS): P5.\nRow 3 (RS): "
+           "BO all sts.\nFasten off.\n";
+  };
+  const char* flat = "Cast on 2 sts.\nRow 1 (RS): Knit.\n";
+  EXPECT_EQ(failure_of(placed("after the first 2 sts of the row", flat)), "");
+  EXPECT_EQ(failure_of(placed("after the first 3 sts of the row", flat)),
+            "p.md:6: Place the sts of Piece 1: the row has only 2 sts");
+  EXPECT_EQ(failure_of(placed("after the first 2 sts of the rnd", flat)),
+            "p.md:6: Place the sts of Piece 1: only into a piece worked in the rnd");
+  EXPECT_EQ(failure_of(placed("after the first 2 sts of the row",
+                              "Cast on 2 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\n")),
+            "p.md:6: Place the sts of Piece 1: only into a piece worked in the rnd (count them "
+            "'of the rnd')");
+}
+
+// The teapot: its body parted into two strips going on as tubes, a top strip turned like a heel
+// on a new yarn, a second new yarn on sts that strip left on its needle (two runs of an earlier
+// row to holders as it is set aside) going on as a tube round a provisional cast-on, and the
+// strip taken up again on that cast-on's chain and the new yarn's held sts, placed on its flat
+// needle after the sts its next row works first.
+TEST(HandPieces, TheTeapotIsProvenInEveryFormat) {
+  expect_written_and_proven(
+      "samples/teapot/teapot.yaml",
+      {"Slip sts 1\u20137 of Row 8 to holder 12 and sts 8\u201314 to holder 13 \u2014 7 "
+       "sts.\n\nLeave the 7 sts on the needle and set the yarn aside (do not cut it).\n",
+       "Slip the 7 sts of Row 8 to holder 14.\n",
+       "Place the 7 sts of holder 13 on the needle after the first 8 sts of the rnd, the last st "
+       "of its last row first.\n",
+       "**Rnd 9:** CO 7 sts with a provisional cast-on, k to end \u2014 30 sts.\n",
+       "Take up Piece 4 again with its yarn. Put the 8 sts of holder 11 on a second spare needle, "
+       "the last st of its last row at the tip. Place the 7 loops of Piece 5's chain on the "
+       "needle after the first 7 sts of the row, the last st cast on first. Place the 7 sts of "
+       "holder 14 on the needle after the first 14 sts of the row, the last st of its last row "
+       "first \u2014 21 sts.\n\n**Row 17 (RS):** Sl1 from spare, ssk, k to last st, sl1 from 2nd "
+       "spare behind, ssk.\n",
+       "Three-needle bind-off: hold the pieces with RS together: Piece 4 in front, the first st "
+       "of its last row at the needle tip; holder 10 behind, the last st of its last row at the "
+       "tip"});
 }
 
 }  // namespace

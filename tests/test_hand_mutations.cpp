@@ -432,6 +432,9 @@ TEST(HandMutations, DecreasesAcrossAGapRejectEveryEditThatChangesTheFabric) {
   mutate_and_judge(
       "new yarn on a set-aside piece's sts (an earlier row's sts to a holder)",
       compile_knit_graph(testing::new_yarn_on_set_aside_needle_graph(), "set-aside needle"));
+  mutate_and_judge(
+      "flat piece taken up on a chain (a chain and a holder placed on its needle)",
+      compile_knit_graph(testing::flat_piece_taken_up_on_a_chain_graph(), "flat piece on a chain"));
   mutate_and_judge("folded tube (three-needle bind-off of a rnd)",
                    compile_knit_graph(testing::folded_tube_graph(), "folded tube"));
   mutate_and_judge("gusset (a flap's edges picked up into the rnd)",
@@ -495,6 +498,14 @@ TEST(HandMutations, TheLetterHRejectsEveryEditThatChangesTheFabric) {
 TEST(HandMutations, TheLetterRRejectsEveryEditThatChangesTheFabric) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
   mutate_and_judge("letter R", compile_model("samples/letter-r/letter-r.yaml"));
+}
+
+// The teapot: strips parted from its body and joined in the rnd, a heel turn on a new yarn, an
+// earlier row's sts slipped to two holders as a piece is set aside, a chain and a holder placed
+// on a flat piece's needle as it is taken up again.
+TEST(HandMutations, TheTeapotRejectsEveryEditThatChangesTheFabric) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  mutate_and_judge("teapot", compile_model("samples/teapot/teapot.yaml"));
 }
 
 // AutoKnit's tubes parted along their helix into two legs: the second leg's sts go to one

@@ -241,7 +241,7 @@ class NeedleSimulator {
   // Loops picked up along another piece's edge go into the rnd of the piece worked, the first
   // picked up worked first.
   void pick_up_into_rnd(const Step& s, const std::vector<std::uint32_t>& rows) {
-    if (!active_ || !pc_.joined || pc_.bor == kNone)
+    if (!active_ || !pc_.joined || pc_.bor == kNone || !s.round)
       fail(fmt::format(
           "Pick up along Piece {} onto the needle: only into a piece worked in the rnd", s.number));
     std::vector<std::uint32_t> loops;
@@ -415,26 +415,55 @@ class NeedleSimulator {
   // sts from the beginning of the rnd (or, when a row across a gap removed its marker, from
   // where the next rnd starts).
   void place(const Step& s) {
-    if (!active_ || !pc_.joined)
-      fail(fmt::format("Place the sts of Piece {}: only into a piece worked in the rnd", s.number));
+    if (active_ && !pc_.joined && !s.round) return place_into_row(s);
+    if (!active_ || !pc_.joined || !s.round)
+      fail(fmt::format("Place the sts of Piece {}: only into a piece worked in the rnd{}", s.number,
+                       active_ && !s.round ? " (count them 'of the rnd')" : ""));
+    insert_into_rnd(sts_to_place(s), s.last, placing(s));
+    release_placed(s);
+  }
+
+  static std::string placing(const Step& s) {
+    return fmt::format("Place the sts of {} {}", s.holder[0] ? "holder" : "Piece", s.number);
+  }
+
+  // The sts a "Place" sentence takes from a holder, a spare needle or a chain, from the one it
+  // names first; as many as it says.
+  std::vector<std::uint32_t> sts_to_place(const Step& s) const {
     std::vector<std::uint32_t> placed =
         s.holder[0] ? held(s.number, s.from_last[0], "Place the sts")
                     : spare_needle(s.number, s.from_last[0], "Place the sts", s.provisional);
     start_at(placed, s);
     if (placed.size() != s.count)
-      fail(fmt::format("Place the sts of {} {}: the pattern says {}, but {} holds {}",
-                       s.holder[0] ? "holder" : "Piece", s.number, sts(s.count),
+      fail(fmt::format("{}: the pattern says {}, but {} holds {}", placing(s), sts(s.count),
                        s.holder[0]     ? "it"
                        : s.provisional ? "its chain"
                                        : "its needle",
                        placed.size()));
-    insert_into_rnd(
-        placed, s.last,
-        fmt::format("Place the sts of {} {}", s.holder[0] ? "holder" : "Piece", s.number));
+    return placed;
+  }
+
+  void release_placed(const Step& s) {
     if (s.holder[0])
       holders_.erase(s.number);
     else
       spare_needles_.erase({s.number, s.provisional ? kChain : kNeedle});
+  }
+
+  // On a flat piece the next row works them after the first `last` sts of the needle it works
+  // (counted from its tip), the first placed next (the teapot's top, taken up on a chain).
+  void place_into_row(const Step& s) {
+    std::vector<std::uint32_t> placed = sts_to_place(s);
+    std::vector<std::uint32_t>& next_row = pc_.turn_before ? pc_.right : pc_.left;
+    auto at = next_row.end();
+    for (std::uint32_t before = 0; before < s.last; --at) {
+      if (at == next_row.begin())
+        fail(fmt::format("{}: the row has only {}", placing(s), sts(before)));
+      before += !is_marker_entry(*(at - 1));
+    }
+    next_row.insert(at, placed.rbegin(), placed.rend());
+    pc_.live += s.count;
+    release_placed(s);
   }
 
   // A holder's sts go back on a piece's spare needle (before it is folded), after its st

@@ -227,8 +227,11 @@ class InstructionWriter {
   // first: "..., st 16 of its last rnd first."
   std::string placement_text(const PatternSection::Placement& p) const {
     const PatternSection& spare = p_.sections[p.section];
-    std::string where = p.after == 0 ? "at the beginning of the rnd"
-                                     : fmt::format("after the first {} sts of the rnd", p.after);
+    // On a flat piece: counted from the tip of the needle its next row works.
+    const char* along = p_.sections[section_].in_round ? "rnd" : "row";
+    std::string where = p.after == 0
+                            ? fmt::format("at the beginning of the {}", along)
+                            : fmt::format("after the first {} sts of the {}", p.after, along);
     if (p.edge)  // "Pick up 10 sts along ..., onto the needle after the first 18 sts of the rnd."
       return fmt::format("{}, onto the needle {}.", pick_up_words(*p.edge, p.count), where);
     if (p.to_spare)
@@ -748,6 +751,12 @@ class FrontMatter {
           " \"Slip sts 1\u20138 of Row 57 to holder 7, ...\" parts the sts a row left on the "
           "needle between the pieces that work them: it counts them in the order the row "
           "worked them, the first st worked being st 1.";
+    if (says(" sts of the row, the "))
+      text +=
+          " On a flat piece \"after the first 7 sts of the row\" counts the sts the next row "
+          "works first, from the tip of the needle that holds them (the last st just worked is "
+          "st 1): slide the placed sts onto that needle after them, the st named first next to "
+          "them, so that the row goes on into them.";
     if (says(" on it)"))
       text +=
           " \"(after the 1 st on it)\" slips the sts onto the holder after those it already "

@@ -712,45 +712,49 @@ class PatternBuilder {
   }
 
   // A new yarn that starts on sts a piece set aside left on its needle (the teapot's yarn 4,
-  // on 7 sts of Piece 4's row 65): they go to a holder before the piece is set aside, a run of
-  // that row counted in the order it worked them ("Slip sts 1–7 of Row 8 to holder 12").
+  // on 7 sts of Piece 4's row 65, its first rnd on the other 7): each run of that row another
+  // piece's row takes goes to a holder of its own before the piece is set aside, counted in the
+  // order the row worked them ("Slip sts 1–7 of Row 8 to holder 12 and sts 8–14 to holder 13").
   void hold_sts_left_on_set_aside_needle(StitchId first) {
     const std::uint32_t yarn = c_.yarns.piece_of[first];
     std::vector<StitchId> row = sts_of_row(yarn, number_of_[first]);
-    std::vector<std::uint32_t> taken = positions_worked_in(row, yarn);
-    if (taken.back() >= row.size() || taken.back() - taken.front() + 1 != taken.size()) return;
-    const auto count = static_cast<std::uint32_t>(taken.size());
-    holders_.push_back({row[taken.back()], count});
+    for (std::uint32_t i = 0, end = 0; i < row.size(); i = end) {
+      std::uint32_t taker_row = row_taking_from_another_piece(row[i]);
+      for (end = i + 1; end < row.size() && row_taking_from_another_piece(row[end]) == taker_row;)
+        ++end;
+      if (taker_row != kNotTaken) hold_run_of_set_aside_row(yarn, row, i, end);
+    }
+  }
+
+  // The row of another piece that takes the st's loop (kNotTaken: its own piece, or none).
+  static constexpr std::uint32_t kNotTaken = ~0U;
+  std::uint32_t row_taking_from_another_piece(StitchId s) const {
+    auto made = g_.loops_made_by(s);
+    if (made.size() != 1) return kNotTaken;
+    StitchId taker = g_.loops[made[0]].taker;
+    if (taker == kNoStitch || c_.yarns.piece_of[taker] == c_.yarns.piece_of[s]) return kNotTaken;
+    return g_.row[taker];
+  }
+
+  void hold_run_of_set_aside_row(std::uint32_t yarn, const std::vector<StitchId>& row,
+                                 std::uint32_t first, std::uint32_t end) {
+    const std::uint32_t count = end - first;
+    holders_.push_back({row[end - 1], count});
     spare_left_.push_back(0);
     spare_second_.push_back(0);
-    for (std::uint32_t i : taken) holder_of_[row[i]] = static_cast<std::uint32_t>(holders_.size());
+    for (std::uint32_t i = first; i < end; ++i)
+      holder_of_[row[i]] = static_cast<std::uint32_t>(holders_.size());
     PatternSection& aside = out_.sections[section_of_yarn_[yarn]];
     PatternSection::Holding& h = aside.holdings.emplace_back(PatternSection::Holding{
-        aside.end_row - 1, taken.front() + 1, count, static_cast<std::uint32_t>(holders_.size())});
+        aside.end_row - 1, first + 1, count, static_cast<std::uint32_t>(holders_.size())});
     h.of_row = true;
-    h.of_number = number_of_[first];
+    h.of_number = number_of_[row[first]];
     aside.live_at_end -= count;
     // Set aside after a row, before the next turns: the sts are behind it (a short row's
     // others, ahead of it).
     Needle& needle = set_aside_[yarn];
     needle.live -= count;
     (needle.behind >= count ? needle.behind : needle.ahead) -= count;
-  }
-
-  // Where in `row` (of `yarn`) the sts are that the row being built works along their wales,
-  // in order (row.size(): not in it).
-  std::vector<std::uint32_t> positions_worked_in(const std::vector<StitchId>& row,
-                                                 std::uint32_t yarn) const {
-    std::vector<std::uint32_t> taken;
-    for (StitchId s : row_)
-      for (std::uint32_t l : g_.loops_taken_by(s))
-        if (const Loop& loop = g_.loops[l]; loop.kind == LoopKind::wale &&
-                                            loop.maker != kNoStitch &&
-                                            c_.yarns.piece_of[loop.maker] == yarn)
-          taken.push_back(static_cast<std::uint32_t>(std::find(row.begin(), row.end(), loop.maker) -
-                                                     row.begin()));
-    std::sort(taken.begin(), taken.end());
-    return taken;
   }
 
   // The sts of a yarn's row (by its number in the piece), in the order it worked them.
@@ -1023,8 +1027,7 @@ class PatternBuilder {
     p.chain = chain;
     p.start = chain || p.from_last ? 0 : place_in_last_rnd(spare, loop.maker);
     p.before_row = static_cast<std::uint32_t>(out_.rows.size());
-    section().placements.push_back(p);
-    st_.live += p.count;
+    add_placement(p);
   }
 
   // The piece started on the sts of that section's needle (or chain), not on a holder's: those
@@ -1054,8 +1057,17 @@ class PatternBuilder {
     PatternSection::Placement p{section_of(loop.maker), held.count, after, loop.maker == held.last};
     p.before_row = static_cast<std::uint32_t>(out_.rows.size());
     p.holder = holder;
+    add_placement(p);
+  }
+
+  // Placed sts go into the rnd, or on a flat piece after the sts its next row works first (the
+  // teapot's top taken up on a chain and a holder at the end of its row): ahead of the tip once
+  // the work is turned for that row.
+  void add_placement(const PatternSection::Placement& p) {
     section().placements.push_back(p);
     st_.live += p.count;
+    if (!section().in_round)
+      (st_.previous_link == YarnLink::turn ? st_.behind : st_.ahead) += p.count;
   }
 
   // Where a rnd's sts go different ways and the piece works some of them itself, the runs
@@ -1500,7 +1512,9 @@ class PatternBuilder {
   // those rows, the one they take first at its tip; while one spare needle holds sts, a second
   // holder goes on a second one (rows that take a st at each edge). Is it on the second?
   bool take_from_holder_on_spare_needle(StitchId s, std::uint32_t holder, StitchId first) {
-    if (!holder_placed(holder)) put_holder_on_spare_needle(s, holder, first);
+    // A piece set aside and taken up again finds the holder's sts left on their spare needle.
+    if (!holder_placed(holder) && spare_left_[holder - 1] == 0)
+      put_holder_on_spare_needle(s, holder, first);
     --spare_left_[holder - 1];
     return spare_second_[holder - 1] != 0;
   }

@@ -230,7 +230,7 @@ class SentenceReader {
     if (c.eat_char(',')) {
       need_words(c, {"onto", "the", "needle"}, "', onto the needle'");
       step.into_rnd = true;
-      step.last = place_in_rnd(c);
+      step.last = where_on_the_needle(c, step);
     }
     end_with_count(c, step);
     add(step);
@@ -243,8 +243,10 @@ class SentenceReader {
     if (!trim(rest).empty()) fail("expected the end of the sentence", rest);
   }
 
-  // "at the beginning of the rnd" (0) or "after the first 18 sts of the rnd".
-  std::uint32_t place_in_rnd(Cursor& c) {
+  // "at the beginning of the rnd" (0) or "after the first 18 sts of the rnd" (step.round); on
+  // a flat piece "after the first 7 sts of the row" (counted from the tip of the needle the
+  // next row works).
+  std::uint32_t where_on_the_needle(Cursor& c, Step& step) {
     std::uint32_t after = 0;
     if (c.eat("after")) {
       need_words(c, {"the", "first"}, "'after the first N sts'");
@@ -253,7 +255,9 @@ class SentenceReader {
     } else {
       need_words(c, {"at", "the", "beginning"}, "'at the beginning' or 'after the first N sts'");
     }
-    need_words(c, {"of", "the", "rnd"}, "'of the rnd'");
+    need_words(c, {"of", "the"}, "'of the rnd' or 'of the row'");
+    step.round = c.eat("rnd");
+    need(step.round || c.eat("row"), c, "'of the rnd' or 'of the row'");
     return after;
   }
 
@@ -371,7 +375,7 @@ class SentenceReader {
     need_words(c, {"on", "the"}, "'on the needle'");
     if (step.holder[0] && c.eat("spare")) return place_on_spare_needle(c, step);
     need(c.eat("needle"), c, "'on the needle' or 'on the spare needle of Piece N'");
-    step.last = place_in_rnd(c);
+    step.last = where_on_the_needle(c, step);
     need(c.eat_char(','), c, "', the first (or last) st' or ', st N'");
     if (c.eat("st")) {
       step.from_row = need_number(c, "the st placed first");

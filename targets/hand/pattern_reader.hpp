@@ -76,7 +76,7 @@ struct Step {
   std::size_t line = 0;  // 1-based line of the file
   std::uint32_t number = 0, last = 0;
   std::uint32_t count = 0;
-  bool round = false;
+  bool round = false;  // row: a rnd; place, pick_up: counted "of the rnd" (not "of the row")
   bool marker = false;
   std::optional<Side> side;
   std::optional<std::uint32_t> sts;  // the printed stitch count ("— 56 sts")
