@@ -248,7 +248,7 @@ StitchMesh short_row_mesh(StitchType turn) {
   return std::move(b).build();
 }
 
-Compilation sample_turning_at_sr5_faces(const std::string& sample) {
+Compilation sample_turning_at_sr5_faces(const std::string& sample, const std::string& more) {
   std::string dir = std::string(SKEIN_SOURCE_DIR) + "/samples/" + sample + "/";
   std::ifstream in(dir + sample + ".yaml");
   std::string project((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -258,6 +258,7 @@ Compilation sample_turning_at_sr5_faces(const std::string& sample) {
     project.replace(at, 11, "method: sr5");
   else
     project += "short_rows: {method: sr5}\n";
+  project += more;
   // One file per process: ctest runs tests side by side.
   auto path = std::filesystem::temp_directory_path() /
               fmt::format("{}-sr5-{}.yaml", sample, static_cast<long>(::getpid()));

@@ -358,7 +358,7 @@ TEST(HandMutations, WrapAndTurnShortRowsRejectEveryEditThatChangesTheFabric) {
 
 // Short rows turning at sr5 faces, the DS or wrap worked as one st with the sr5's by the
 // decrease above (k DS, kw), with either method: Fig. 9's fixture and the sock's project with
-// `short_rows: {method: sr5}`.
+// `short_rows: {method: sr5}`; the wedge's purled (p DS over a p2tog seen from the RS).
 TEST(HandMutations, Sr5TurnsRejectEveryEditThatChangesTheFabric) {
   Compilation fixture = compile_stitch_mesh(testing::short_row_mesh(StitchType::sr5), "fig. 9");
   Compilation sock = testing::sample_turning_at_sr5_faces("sock");
@@ -369,6 +369,8 @@ TEST(HandMutations, Sr5TurnsRejectEveryEditThatChangesTheFabric) {
     mutate_and_judge(fmt::format("sock with sr5 turns ({})", method), sock,
                      hand_pattern(sock, turns));
   }
+  Compilation purled = testing::sample_turning_at_sr5_faces("short-row-wedge", "pattern: purl\n");
+  mutate_and_judge("purled wedge with sr5 turns (p DS over a p2tog)", purled);
 }
 
 // Rounds that run left to right worked with the WS facing (the tube inside out), not mirrored.

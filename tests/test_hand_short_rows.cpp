@@ -127,6 +127,20 @@ TEST(HandShortRows, TheSockHeelReadsInEitherMethod) {
   EXPECT_TRUE(hand::verify_pattern(wrapped, "sock.md", &c).proven);
 }
 
+// The wedge purled: the decrease over each sr5 is a p2tog (seen from the RS), worked as p DS
+// (or pw) on a RS row.
+TEST(HandShortRows, APurledWedgeTurningAtSr5FacesIsProvenWithEitherMethod) {
+  Compilation c = testing::sample_turning_at_sr5_faces("short-row-wedge", "pattern: purl\n");
+  ASSERT_EQ(std::count(c.knit.type.begin(), c.knit.type.end(), StitchType::p2tog), 4);
+  for (const char* method : {"german", "wrap-and-turn"})
+    EXPECT_EQ(testing::unproven_hand_formats(c, turning(method)), "") << method;
+  std::string german = testing::emit(c, "hand", turning("german"));
+  EXPECT_NE(german.find("**Row 32 (RS):** P to m, sm, p DS, p4, k1, turn.\n"), std::string::npos)
+      << german;
+  EXPECT_NE(testing::emit(c, "hand", turning("wrap-and-turn")).find("sm, pw, p"),
+            std::string::npos);
+}
+
 // A DS (or wrap) over an sr5 is worked as the decrease above it shows from the RS: a k2tog
 // knit, not purled.
 TEST(HandShortRows, AnSr5sDecreaseWorkedAsAnotherStIsFoundWhenTheFabricIsCompared) {
