@@ -18,7 +18,7 @@ struct Compilation;
 
 namespace skein::hand {
 
-// How short rows turn (paper Fig. 10a: the sr4 stitch is where the yarn turns), the target's
+// How short rows turn (paper Fig. 10: the sr4 or sr5 stitch is where the yarn turns), the target's
 // short-rows setting (`--set short-rows=german`, or the project's `short_rows: {hand: german}`):
 // German short rows work the st, turn and make it a double stitch (DS), later worked as one ("k
 // DS"); wrap and turn wraps the next st (w&t), later worked with its wrap ("kw").
