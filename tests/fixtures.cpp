@@ -1,7 +1,13 @@
 #include "fixtures.hpp"
 
+#include <fmt/format.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <tuple>
 
 #include "common/error.hpp"
@@ -240,6 +246,24 @@ StitchMesh short_row_mesh(StitchType turn) {
   for (float x = 2; x < 4; ++x) b.square(x, 3, "bito", T::k);
   for (float x = 0; x < 4; ++x) b.square(x, 4, "boti", T::bo);
   return std::move(b).build();
+}
+
+Compilation sample_turning_at_sr5_faces(const std::string& sample, const std::string& more) {
+  std::string dir = std::string(SKEIN_SOURCE_DIR) + "/samples/" + sample + "/";
+  std::ifstream in(dir + sample + ".yaml");
+  std::string project((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string mesh = "mesh: " + sample + ".obj";
+  project.replace(project.find(mesh), mesh.size(), "mesh: " + dir + sample + ".obj");
+  if (std::size_t at = project.find("method: sr4"); at != std::string::npos)
+    project.replace(at, 11, "method: sr5");
+  else
+    project += "short_rows: {method: sr5}\n";
+  project += more;
+  // One file per process: ctest runs tests side by side.
+  auto path = std::filesystem::temp_directory_path() /
+              fmt::format("{}-sr5-{}.yaml", sample, static_cast<long>(::getpid()));
+  std::ofstream(path) << project;
+  return compile_model(path.string());
 }
 
 std::size_t occurrences(std::string_view text, std::string_view what) {

@@ -59,6 +59,11 @@ StitchMesh expanding_mesh();
 // 9-12 the full row (right to left), 13-16 bind-off.
 StitchMesh short_row_mesh(StitchType turn = StitchType::sr4);
 
+// A sample's project ("sock", "short-row-wedge") with its short rows turning at sr5 faces
+// (`short_rows: {method: sr5}`) and the lines `more` ("pattern: purl\n"), written to the
+// temporary directory (its mesh named by its full path) and compiled.
+Compilation sample_turning_at_sr5_faces(const std::string& sample, const std::string& more = "");
+
 // A heel turn on a tube, as a knit graph: 6 sts cast on in the rnd and a rnd (a0..a5); a band
 // over a0 and a1 worked back and forth that decreases across the gap into the sts beside it
 // (a row ends with a k2tog into a2; the row back starts with a3 slipped back and ends with

@@ -11,11 +11,12 @@
 
 namespace skein::testing {
 
-inline std::string emit(const Compilation& c, const std::string& target) {
+inline std::string emit(const Compilation& c, const std::string& target,
+                        const TargetOptions& options = {}) {
   Registry registry;
   register_builtin_targets(registry);
   std::ostringstream out;
-  registry.target(target)->emit(c, {}, out);
+  registry.target(target)->emit(c, options, out);
   return out.str();
 }
 
@@ -26,11 +27,12 @@ inline VerifyReport verify(const Compilation& c, const std::string& target,
   return registry.simulator_for(target)->verify(text, "pattern", &c, {});
 }
 
-// Each hand format (markdown, page, KnitSpeak) written and proven: the failures, or "".
-inline std::string unproven_hand_formats(const Compilation& c) {
+// Each hand format (markdown, page, KnitSpeak) written (with the target's `options`) and
+// proven: the failures, or "".
+inline std::string unproven_hand_formats(const Compilation& c, const TargetOptions& options = {}) {
   std::string failures;
   for (const char* target : {"hand", "hand-html", "hand-knitspeak"}) {
-    VerifyReport report = verify(c, target, emit(c, target));
+    VerifyReport report = verify(c, target, emit(c, target, options));
     if (!report.proven) failures += std::string(target) + ": " + report.summary + "\n";
   }
   return failures;

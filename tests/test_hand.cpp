@@ -91,7 +91,7 @@ std::string emit_error(const Compilation& c) {
 
 TEST(HandTarget, StitchesNotCoveredYetAreNamed) {
   const std::pair<StitchMesh, const char*> cases[] = {
-      {testing::short_row_mesh(T::sr5), "(sr5), which hand patterns do not cover yet"},
+      {testing::short_row_mesh(T::srn), "(srn), which hand patterns do not cover yet"},
   };
   for (const auto& [mesh, named] : cases) {
     Compilation c = compile_stitch_mesh(mesh, "uncovered");

@@ -339,17 +339,38 @@ TEST(HandMutations, SamplesRejectEveryEditThatChangesTheFabric) {
     mutate_and_judge(sample, compile_model(sample));
 }
 
+std::string hand_pattern(const Compilation& c, hand::TurnMethod turns) {
+  std::ostringstream out;
+  hand::write_markdown(hand::make_document(hand::build_hand_pattern(c, turns)), out);
+  return out.str();
+}
+
 // The same samples' short rows with wrap and turn (German short rows above).
 TEST(HandMutations, WrapAndTurnShortRowsRejectEveryEditThatChangesTheFabric) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
   for (const char* sample :
        {"samples/sock/sock.yaml", "samples/short-row-wedge/short-row-wedge.yaml"}) {
     Compilation c = compile_model(sample);
-    std::ostringstream out;
-    hand::write_markdown(
-        hand::make_document(hand::build_hand_pattern(c, hand::TurnMethod::wrap_and_turn)), out);
-    mutate_and_judge(std::string(sample) + " (wrap and turn)", c, out.str());
+    mutate_and_judge(std::string(sample) + " (wrap and turn)", c,
+                     hand_pattern(c, hand::TurnMethod::wrap_and_turn));
   }
+}
+
+// Short rows turning at sr5 faces, the DS or wrap worked as one st with the sr5's by the
+// decrease above (k DS, kw), with either method: Fig. 9's fixture and the sock's project with
+// `short_rows: {method: sr5}`; the wedge's purled (p DS over a p2tog seen from the RS).
+TEST(HandMutations, Sr5TurnsRejectEveryEditThatChangesTheFabric) {
+  Compilation fixture = compile_stitch_mesh(testing::short_row_mesh(StitchType::sr5), "fig. 9");
+  Compilation sock = testing::sample_turning_at_sr5_faces("sock");
+  for (hand::TurnMethod turns : {hand::TurnMethod::german, hand::TurnMethod::wrap_and_turn}) {
+    const char* method = turns == hand::TurnMethod::german ? "German short rows" : "wrap and turn";
+    mutate_and_judge(fmt::format("Fig. 9 with an sr5 ({})", method), fixture,
+                     hand_pattern(fixture, turns));
+    mutate_and_judge(fmt::format("sock with sr5 turns ({})", method), sock,
+                     hand_pattern(sock, turns));
+  }
+  Compilation purled = testing::sample_turning_at_sr5_faces("short-row-wedge", "pattern: purl\n");
+  mutate_and_judge("purled wedge with sr5 turns (p DS over a p2tog)", purled);
 }
 
 // Rounds that run left to right worked with the WS facing (the tube inside out), not mirrored.

@@ -1,6 +1,7 @@
 // Short rows in hand patterns: German short rows (turn, DS, k DS) and wrap and turn (w&t, kw),
 // flat and in the round, written and proven; and the simulator's reasons for rejecting a turn
 // worked wrong.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -32,32 +33,73 @@ bool has_sr5(const Compilation& c) {
   return std::find(c.knit.type.begin(), c.knit.type.end(), StitchType::sr5) != c.knit.type.end();
 }
 
-// Random sheets with pairs of short rows (generate.hpp): every sr4 sheet is proven with either
-// method; sr5 (the wrap as a loop of its own) is refused by name.
+// Random sheets with pairs of short rows (generate.hpp), turning at sr4 or sr5 faces: every
+// sheet is proven with either method.
 TEST(HandShortRows, RandomShortRowSheetsAreProvenWithEitherMethod) {
-  int proven = 0;
+  int proven[2] = {0, 0};  // sheets without and with sr5 faces
   for (std::uint64_t seed = 0; seed < 60; ++seed) {
     Compilation c = compile_stitch_mesh(short_row_sheet(5 + seed % 9, 6 + seed % 11, seed), "sr");
     ASSERT_TRUE(c.knittability.knittable) << check_report(c);
-    if (has_sr5(c)) {
-      try {
-        hand::build_hand_pattern(c);
-        ADD_FAILURE() << "seed " << seed << ": sr5 was written";
-      } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("(sr5), which hand patterns do not cover yet"),
-                  std::string::npos)
-            << e.what();
-      }
-      continue;
-    }
     for (TurnMethod turns : {TurnMethod::german, TurnMethod::wrap_and_turn}) {
       std::string pattern = markdown(c, turns);
       VerifyReport report = hand::verify_pattern(pattern, "sr.md", &c);
       ASSERT_TRUE(report.proven) << "seed " << seed << ": " << report.summary << "\n" << pattern;
     }
-    ++proven;
+    ++proven[has_sr5(c)];
   }
-  EXPECT_GE(proven, 10);
+  EXPECT_GE(proven[0], 10);
+  EXPECT_GE(proven[1], 10);
+}
+
+TargetOptions turning(const char* method) {
+  TargetOptions options;
+  options.settings["short-rows"] = method;
+  return options;
+}
+
+// Fig. 9 with an sr5 (the turn's loop a loop of its own, which the k2tog above knits together
+// with the sr5's): a knitter's DS or wrap is that loop, so the pattern is the sr4 fixture's
+// word for word, and each is proven against either model: the text cannot tell them apart.
+TEST(HandShortRows, AnSr5TurnReadsAsAnSr4TurnAndIsProvenInEveryFormat) {
+  Compilation sr5 = compile_stitch_mesh(testing::short_row_mesh(StitchType::sr5), "fig. 9");
+  Compilation sr4 = compile_stitch_mesh(testing::short_row_mesh(StitchType::sr4), "fig. 9");
+  for (const char* method : {"german", "wrap-and-turn"}) {
+    EXPECT_EQ(testing::unproven_hand_formats(sr5, turning(method)), "") << method;
+    std::string pattern = testing::emit(sr5, "hand", turning(method));
+    EXPECT_EQ(pattern, testing::emit(sr4, "hand", turning(method))) << method;
+    EXPECT_TRUE(testing::verify(sr4, "hand", pattern).proven) << method;
+  }
+  std::string german = testing::emit(sr5, "hand", turning("german"));
+  EXPECT_NE(german.find("**Row 1 (RS):** K2, pm, k1, turn.\n"), std::string::npos) << german;
+  EXPECT_NE(german.find("**Row 2 (WS):** DS, sm, p2.\n"), std::string::npos);
+  EXPECT_NE(german.find("**Row 3 (RS):** K to m, rm, k DS, k1.\n"), std::string::npos);
+  EXPECT_NE(german.find("- 1 stitch marker.\n"), std::string::npos) << "no rnd to begin";
+}
+
+std::string instructions_of(const std::string& pattern) {
+  return pattern.substr(pattern.find("## Instructions"));
+}
+
+// The sock's and the wedge's projects with `short_rows: {method: sr5}`: the sock's heel turns
+// at 13 sr5 faces (and one sr4, where no st of its face is above), the wedge at 4 (and 5 sr4);
+// each reads as the sample's own pattern and is proven in every format with either method.
+TEST(HandShortRows, SamplesTurningAtSr5FacesAreProvenInEveryFormatWithEitherMethod) {
+  for (auto [sample, turns] : {std::pair{"sock", 13}, std::pair{"short-row-wedge", 4}}) {
+    Compilation c = testing::sample_turning_at_sr5_faces(sample);
+    ASSERT_EQ(std::count(c.knit.type.begin(), c.knit.type.end(), StitchType::sr5), turns);
+    Compilation own =
+        compile_model(fmt::format("{}/samples/{}/{}.yaml", SKEIN_SOURCE_DIR, sample, sample));
+    for (const char* method : {"german", "wrap-and-turn"}) {
+      EXPECT_EQ(testing::unproven_hand_formats(c, turning(method)), "") << sample << method;
+      EXPECT_EQ(instructions_of(testing::emit(c, "hand", turning(method))),
+                instructions_of(testing::emit(own, "hand", turning(method))))
+          << sample << method;
+    }
+  }
+  Compilation c = testing::sample_turning_at_sr5_faces("sock");
+  std::string german = testing::emit(c, "hand", turning("german"));
+  EXPECT_NE(german.find("**Row 46 (WS):** DS, p23, turn.\n"), std::string::npos) << german;
+  EXPECT_NE(german.find("**Rnd 49:** DS, k24, k DS, k1, pm, k to end.\n"), std::string::npos);
 }
 
 // Fig. 9: a pair of short rows turning at an sr4 face, then a full row and a bind-off.
@@ -83,6 +125,59 @@ TEST(HandShortRows, TheSockHeelReadsInEitherMethod) {
   EXPECT_NE(wrapped.find("**Row 47 (RS):** K22, kw, w&t.\n"), std::string::npos);
   EXPECT_NE(wrapped.find("**Short rows (wrap and turn):**"), std::string::npos);
   EXPECT_TRUE(hand::verify_pattern(wrapped, "sock.md", &c).proven);
+}
+
+// The wedge purled: the decrease over each sr5 is a p2tog (seen from the RS), worked as p DS
+// (or pw) on a RS row.
+TEST(HandShortRows, APurledWedgeTurningAtSr5FacesIsProvenWithEitherMethod) {
+  Compilation c = testing::sample_turning_at_sr5_faces("short-row-wedge", "pattern: purl\n");
+  ASSERT_EQ(std::count(c.knit.type.begin(), c.knit.type.end(), StitchType::p2tog), 4);
+  for (const char* method : {"german", "wrap-and-turn"})
+    EXPECT_EQ(testing::unproven_hand_formats(c, turning(method)), "") << method;
+  std::string german = testing::emit(c, "hand", turning("german"));
+  EXPECT_NE(german.find("**Row 32 (RS):** P to m, sm, p DS, p4, k1, turn.\n"), std::string::npos)
+      << german;
+  EXPECT_NE(testing::emit(c, "hand", turning("wrap-and-turn")).find("sm, pw, p"),
+            std::string::npos);
+}
+
+// A DS (or wrap) over an sr5 is worked as the decrease above it shows from the RS: a k2tog
+// knit, not purled.
+TEST(HandShortRows, AnSr5sDecreaseWorkedAsAnotherStIsFoundWhenTheFabricIsCompared) {
+  Compilation c = compile_stitch_mesh(testing::short_row_mesh(StitchType::sr5), "fig. 9");
+  std::string pattern = testing::emit(c, "hand");
+  pattern.replace(pattern.find("rm, k DS"), 8, "rm, p DS");
+  VerifyReport report = testing::verify(c, "hand", pattern);
+  EXPECT_FALSE(report.proven);
+  EXPECT_NE(report.summary.find("Row 3 (RS), st 3 (p): the pattern makes p (as seen from the RS) "
+                                "where the model has k2tog (worked by hand as k)"),
+            std::string::npos)
+      << report.summary;
+}
+
+// An sr5 whose turn loop goes into another st than its own loop: a knitter works a DS or a wrap
+// as one st, so the pattern cannot be written.
+TEST(HandShortRows, AnSr5WhoseLoopsAreNotKnitTogetherIsRefusedByName) {
+  Compilation fixture = compile_stitch_mesh(testing::short_row_mesh(StitchType::sr5), "fig. 9");
+  KnitGraph g = fixture.knit;
+  auto sr5 = static_cast<StitchId>(std::find(g.type.begin(), g.type.end(), StitchType::sr5) -
+                                   g.type.begin());
+  Loop& turn_loop = g.loops[g.loops_made_by(sr5)[1]];
+  StitchId next = g.yarn_next[turn_loop.taker];  // the st after the k2tog along the row
+  Loop& other = g.loops[g.loops_taken_by(next)[0]];
+  std::swap(turn_loop.taker, other.taker);
+  std::swap(turn_loop.taker_slot, other.taker_slot);
+  g.index_loops();
+  Compilation c = compile_knit_graph(std::move(g), "sr5 apart");
+  try {
+    hand::build_hand_pattern(c);
+    FAIL() << "expected an Error";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "hand target: face 7 (sr5, row 2) is an sr5 whose two loops (its st's and the "
+              "turn's) are not knit together by one k2tog, ssk or p2tog above it, as a knitter "
+              "works a double stitch or a wrap with its st; make it an sr4");
+  }
 }
 
 TEST(HandShortRows, TheProjectFileChoosesTheMethod) {

@@ -2,7 +2,9 @@
 // yarn in the order the model's schedule starts them, each stitch along it with the same link
 // (along the row, turn, or on around), the same type as seen from the RS, and the same loops
 // taken, each from the same maker and slot, left to right. A mirror image (left and right
-// swapped) is compared with slots reversed and leaning stitches swapped.
+// swapped) is compared with slots reversed and leaning stitches swapped. The model is read as
+// the pattern works it (worked_by_hand): an sr5 as the st of a DS or wrap, the decrease that
+// knits its two loops together as the plain st of `k DS` / `kw`.
 #pragma once
 
 #include <cstdint>

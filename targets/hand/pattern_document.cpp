@@ -707,7 +707,8 @@ class FrontMatter {
                         fits));
     }
     if (p_.markers == 1)
-      items.push_back("1 stitch marker for the beginning of the round.");
+      items.push_back(t_.round ? "1 stitch marker for the beginning of the round."
+                               : "1 stitch marker.");
     else if (p_.markers > 1)
       items.push_back(fmt::format("{} stitch markers{}.", p_.markers,
                                   t_.round ? ", one of them in another colour for the beginning "

@@ -16,17 +16,41 @@ namespace {
 
 using T = StitchType;
 
-constexpr std::array kSupported = {T::k,   T::p,    T::co,    T::bo,   T::kfb,   T::m1l,
-                                   T::m1r, T::yo,   T::k2tog, T::ssk,  T::p2tog, T::s2kp,
-                                   T::sr4, T::tnbo, T::sco,   T::tuck, T::sl};
+constexpr std::array kSupported = {T::k,   T::p,   T::co,    T::bo,  T::kfb,   T::m1l,
+                                   T::m1r, T::yo,  T::k2tog, T::ssk, T::p2tog, T::s2kp,
+                                   T::sr4, T::sr5, T::tnbo,  T::sco, T::tuck,  T::sl};
 
 [[noreturn]] void unsupported(const std::string& what) {
   throw Error(fmt::format("hand target: {}", what));
 }
 
+// Is `s` a decrease that knits the two loops of an sr5 together, and no other?
+bool knits_an_sr5_as_one(const KnitGraph& g, StitchId s) {
+  auto taken = g.loops_taken_by(s);
+  T t = g.type[s];
+  if (taken.size() != 2 || (t != T::k2tog && t != T::ssk && t != T::p2tog)) return false;
+  StitchId maker = g.loops[taken[0]].maker;
+  return maker != kNoStitch && g.type[maker] == T::sr5 && g.loops[taken[1]].maker == maker;
+}
+
+// A knitter works a DS or a wrap as one st with its st: an sr5's two loops must go into one
+// decrease above it that takes no other loop.
+void check_sr5_knit_together(const KnitGraph& g, StitchId s) {
+  auto made = g.loops_made_by(s);
+  StitchId above = g.loops[made[0]].taker;
+  if (above != kNoStitch && g.loops[made[1]].taker == above && knits_an_sr5_as_one(g, above))
+    return;
+  unsupported(fmt::format(
+      "{} is an sr5 whose two loops (its st's and the turn's) are not knit together by one "
+      "k2tog, ssk or p2tog above it, as a knitter works a double stitch or a wrap with its "
+      "st; make it an sr4",
+      g.describe(s)));
+}
+
 void check_supported(const Compilation& c) {
   const KnitGraph& g = c.knit;
   for (StitchId s = 0; s < g.size(); ++s) {
+    if (g.type[s] == T::sr5) check_sr5_knit_together(g, s);
     if (std::find(kSupported.begin(), kSupported.end(), g.type[s]) != kSupported.end()) continue;
     unsupported(fmt::format("{} is a {} ({}), which hand patterns do not cover yet", g.describe(s),
                             info(g.type[s]).name, abbreviation(g.type[s])));
@@ -1229,7 +1253,7 @@ class PatternBuilder {
       append_ops(s, r);
       pass_beginning_of_round(s, r, false);
       follow_beginning_of_round(s, r);
-      takes += info(g_.type[s]).loops_in - (g_.type[s] == T::tnbo);  // one is held behind
+      takes += info(worked_by_hand(g_, s)).loops_in - (g_.type[s] == T::tnbo);  // one held behind
       move_loops(s);
     }
     refuse_held_sts_left(r);
@@ -1266,7 +1290,7 @@ class PatternBuilder {
   // it, and the rnd places it anew.
   void move_beginning_of_round_to_a_helix() {
     std::uint32_t takes = 0;
-    for (StitchId s : row_) takes += info(g_.type[s]).loops_in;
+    for (StitchId s : row_) takes += info(worked_by_hand(g_, s)).loops_in;
     if (st_.previous_link != YarnLink::turn || takes != st_.live || !turns_on_tucks() ||
         works_bor_wale(row_.front()) || !st_.bor_slipped_at)
       return;
@@ -1429,7 +1453,8 @@ class PatternBuilder {
       out_.ops.push_back(HandOp::no_turn);
     else if (r.short_row && out_.ops.back() != HandOp::wt)
       out_.ops.push_back(HandOp::turn);
-    st_.double_stitch_next = out_.turns == TurnMethod::german && g_.type[row_.back()] == T::sr4;
+    st_.double_stitch_next =
+        out_.turns == TurnMethod::german && worked_by_hand(g_, row_.back()) == T::sr4;
     // A rnd works every st, unless it starts where short rows ended (it then goes on to the
     // beginning of the rnd); a flat row ends at the edge or turns short of it.
     bool full_round = r.round && st_.previous_link != YarnLink::turn && !after_a_corner();
@@ -1443,12 +1468,11 @@ class PatternBuilder {
   // Loops ahead of and behind the needle tip on a flat piece, as the stitch is worked (the row
   // ends at the edge when none is ahead). A wrapped st goes back to the left needle.
   void move_loops(StitchId s) {
-    const StitchTypeInfo& t = info(g_.type[s]);
+    const StitchTypeInfo& t = info(worked_by_hand(g_, s));
     // A provisional cast-on's chain loop is not on the needle.
     std::uint32_t out = g_.type[s] == T::sco ? 1 : t.loops_out;
     st_.live = st_.live + out - t.loops_in;
-    if (section().in_round || (g_.type[s] == T::sr4 && out_.turns == TurnMethod::wrap_and_turn))
-      return;
+    if (section().in_round || (t.type == T::sr4 && out_.turns == TurnMethod::wrap_and_turn)) return;
     if (st_.ahead < t.loops_in)
       unsupported(fmt::format("{} works past the end of the needle", g_.describe(s)));
     st_.ahead -= t.loops_in;
@@ -1640,7 +1664,8 @@ class PatternBuilder {
   // Does `s` work the loop a short row turned at?
   bool works_a_turn(StitchId s) const {
     for (std::uint32_t l : g_.loops_taken_by(s))
-      if (g_.loops[l].maker != kNoStitch && g_.type[g_.loops[l].maker] == T::sr4) return true;
+      if (g_.loops[l].maker != kNoStitch && worked_by_hand(g_, g_.loops[l].maker) == T::sr4)
+        return true;
     return false;
   }
 
@@ -1657,7 +1682,7 @@ class PatternBuilder {
   }
 
   void append_ops(StitchId s, PatternRow& r) {
-    T type = g_.type[s];
+    T type = worked_by_hand(g_, s);
     if (type == T::sr4) {
       out_.ops.push_back(out_.turns == TurnMethod::wrap_and_turn ? HandOp::wt
                          : r.side == Side::rs                    ? HandOp::k
@@ -1769,6 +1794,12 @@ class PatternBuilder {
 };
 
 }  // namespace
+
+StitchType worked_by_hand(const KnitGraph& g, StitchId s) {
+  if (g.type[s] == T::sr5) return T::sr4;
+  if (knits_an_sr5_as_one(g, s)) return g.type[s] == T::p2tog ? T::p : T::k;
+  return g.type[s];
+}
 
 HandPattern build_hand_pattern(const Compilation& c, TurnMethod turns, Rounds rounds) {
   check_supported(c);

@@ -18,7 +18,7 @@ struct Compilation;
 
 namespace skein::hand {
 
-// How short rows turn (paper Fig. 10a: the sr4 stitch is where the yarn turns), the target's
+// How short rows turn (paper Fig. 10: the sr4 or sr5 stitch is where the yarn turns), the target's
 // short-rows setting (`--set short-rows=german`, or the project's `short_rows: {hand: german}`):
 // German short rows work the st, turn and make it a double stitch (DS), later worked as one ("k
 // DS"); wrap and turn wraps the next st (w&t), later worked with its wrap ("kw").
@@ -178,6 +178,13 @@ struct HandPattern {
     return {ops.data() + row.first_op, ops.data() + row.end_op};
   }
 };
+
+// A knitter's short-row turn (a DS, a wrap) is the model's sr4 as well as its sr5 (paper Fig.
+// 10b: the turn's loop a loop of its own, which the stitch above knits together with the
+// sr5's): the pattern works an sr5 as an sr4, and the decrease that takes both of its loops
+// (and no other) as the plain st of `k DS` / `kw` (a p2tog, seen from the RS, as `p DS` /
+// `pw`). The stitch type the pattern works `s` as; the model's own elsewhere.
+StitchType worked_by_hand(const KnitGraph& g, StitchId s);
 
 // Throws Error naming the stitch when the model needs something hand patterns do not cover
 // yet (joins with a side's own yarn, splits, perpendicular edges, held pieces, stitch graphs
