@@ -907,13 +907,13 @@ class FrontMatter {
              "needles, slip the st back to the left needle and turn the work; the next row starts "
              "with the st worked last. The sts beyond wait on the needle. When a later row comes "
              "to a wrapped st, lift the wrap onto the left needle and work it together with the "
-             "st: kw on the RS, pw on the WS.";
+             "st: kw to knit them, pw to purl them.";
     return "**Short rows (German short rows):** a row that ends in \"turn\" stops there: turn the "
            "work; the sts beyond wait on the needle. When the next row begins with DS, bring the "
            "yarn to the front, slip the first st (the one worked last) purlwise and pull the yarn "
            "up over the needle to the back until the st shows two legs: a double stitch. When a "
-           "later row comes to a double stitch, work its two legs together as one st: k DS on "
-           "the RS, p DS on the WS.";
+           "later row comes to a double stitch, work its two legs together as one st: k DS to "
+           "knit them, p DS to purl them.";
   }
 
   // A stitch graph's short rows (AutoKnit's) turn on a tuck, whatever the project chose.
