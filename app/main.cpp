@@ -27,11 +27,20 @@ constexpr int kKnittable = 0;
 constexpr int kNotKnittable = 1;
 constexpr int kBadInput = 2;
 
+// The width of the widest name, so that the descriptions line up.
+template <class Items>
+std::size_t name_column(const Items& items) {
+  std::size_t width = 0;
+  for (const auto* item : items) width = std::max(width, item->name().size());
+  return width;
+}
+
 std::string registry_listing(const Registry& registry) {
   std::string out = "\nTargets (--target):\n";
+  const std::size_t targets = name_column(registry.targets());
   std::string listed, listed_by;  // the last settings listed, and whose they were
   for (const Target* t : registry.targets()) {
-    out += fmt::format("  {:<12} {}\n", t->name(), t->description());
+    out += fmt::format("  {:<{}} {}\n", t->name(), targets, t->description());
     std::string settings;
     for (const TargetSetting& s : t->settings())
       settings += fmt::format("    --set {}={}: {}\n", s.key, fmt::join(s.values, "|"), s.help);
@@ -44,9 +53,10 @@ std::string registry_listing(const Registry& registry) {
     listed_by = t->name();
   }
   out += "\nSimulators (skein verify, compile --verify):\n";
+  const std::size_t simulators = name_column(registry.simulators());
   for (const Simulator* s : registry.simulators())
-    out +=
-        fmt::format("  {:<16} replays --target {}: {}\n", s->name(), s->target(), s->description());
+    out += fmt::format("  {:<{}} replays --target {}: {}\n", s->name(), simulators, s->target(),
+                       s->description());
   out += R"(
 Examples:
   skein check samples/hat/hat.obj
