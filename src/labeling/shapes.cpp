@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -158,9 +159,9 @@ Shape straight_tube(const ShapeSize& s, const std::string& name) {
 
 Shape hat(const ShapeSize& s, const std::string& name) {
   double c = s.circumference > 0 ? s.circumference : 54, l = s.length > 0 ? s.length : 21;
-  double r = c / (2 * kPi), body = l * 0.6;
-  std::vector<double> heights{0, 4}, radii{r, r};
-  for (double h = 4 + 5; h < body; h += 5) heights.push_back(h), radii.push_back(r);
+  double r = c / (2 * kPi), body = l * 0.6, rib = std::min(4.0, body / 2);  // a shallow hat too
+  std::vector<double> heights{0, rib}, radii{r, r};
+  for (double h = rib + 5; h < body; h += 5) heights.push_back(h), radii.push_back(r);
   const double crown[] = {0.85, 0.6, 0.35, 0.15};  // crown rings, fractions of the radius
   for (std::size_t i = 0; i < std::size(crown); ++i) {
     heights.push_back(body + (l - body) * (i + 1) / std::size(crown));
@@ -185,10 +186,11 @@ Shape sock(const ShapeSize& s, const std::string& name) {
   double r = c / (2 * kPi), band = 1.5, foot = c;
   double sin_a = std::min(0.95, 0.3 * c / (2 * r)), cos_a = std::sqrt(1 - sin_a * sin_a);
   Draft d;
-  std::vector<std::uint32_t> below = d.ring(0, r), top = d.ring(3, r);
+  const double cuff = std::min(3.0, leg / 2);  // a short leg still rises above its cuff
+  std::vector<std::uint32_t> below = d.ring(0, r), top = d.ring(cuff, r);
   d.band(below, top, {0, 0, 0}, kUp, "cuff");
   below = top;
-  for (double h = 3 + 4;; h += 4) {
+  for (double h = cuff + 4;; h += 4) {
     std::vector<std::uint32_t> above = d.ring(std::min(h, leg), r);
     d.band(below, above, {0, 0, 0}, kUp, "leg");
     below = std::move(above);
@@ -231,9 +233,10 @@ Shape sweater(const ShapeSize& s, const std::string& name) {
   double c = s.circumference > 0 ? s.circumference : 90, body = s.length > 0 ? s.length : 36;
   double r = c / (2 * kPi), sleeve_r = r * 0.35, sleeve = 40, yoke = 18, dip = sleeve_r * 0.5;
   Draft d;
-  std::vector<std::uint32_t> hem = d.ring(0, r), below = d.ring(5, r);
-  d.band(hem, below, {0, 0, 0}, kUp, "hem");
-  for (double h = 5 + 10;; h += 10) {
+  const double hem = std::min(5.0, body / 2);  // a short body still rises above its hem
+  std::vector<std::uint32_t> bottom = d.ring(0, r), below = d.ring(hem, r);
+  d.band(bottom, below, {0, 0, 0}, kUp, "hem");
+  for (double h = hem + 10;; h += 10) {
     std::vector<std::uint32_t> above = d.ring(std::min(h, body), r);
     d.band(below, above, {0, 0, 0}, kUp, "body");
     below = std::move(above);
@@ -279,7 +282,7 @@ Shape sweater(const ShapeSize& s, const std::string& name) {
                    fmt::format("start:                 # the hem, then both cuffs\n"
                                "  - vertex: {}\n  - vertex: {}\n  - vertex: {}\n"
                                "patterns: {{hem: k2p2, cuff: k2p2, neck: k2p2}}\n",
-                               hem[2] + 1, right_cuff + 1, left_cuff + 1))};
+                               bottom[2] + 1, right_cuff + 1, left_cuff + 1))};
 }
 
 }  // namespace
