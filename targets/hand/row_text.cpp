@@ -207,7 +207,9 @@ std::string row_instructions(std::span<const HandOp> ops, Dialect dialect, bool 
     start = i + 1;
   }
   std::string out;
+  // A stretch with a repeat of its own keeps the star: the sections then repeat in brackets.
   if (end_is_marker && !markers.empty() && !stretches[0].empty() &&
+      stretches[0].find('*') == std::string::npos &&
       std::all_of(markers.begin(), markers.end(), is(HandOp::sm)) &&
       std::all_of(stretches.begin(), stretches.end(),
                   [&](const std::string& s) { return s == stretches[0]; })) {
