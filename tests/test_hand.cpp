@@ -1,5 +1,6 @@
 // The hand target and its simulator: golden patterns of the samples, every format proven,
 // randomized shaped sheets and tubes proven, and the simulator's reasons for rejecting steps.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,6 +16,7 @@
 #include "hand/hand_target.hpp"
 #include "hand/pattern_model.hpp"
 #include "hand/row_text.hpp"
+#include "labeling/shapes.hpp"
 #include "mesh/generate.hpp"
 #include "target_runner.hpp"
 #include "test_hand_plans.hpp"
@@ -291,6 +293,36 @@ TEST(HandRandomized, ShapedSheetsAndTubesAreProven) {
       ASSERT_TRUE(report.proven) << "trial " << trial << " " << target << ": " << report.summary
                                  << "\n"
                                  << pattern;
+    }
+  }
+}
+
+// Every shape `skein new` makes (sheet, tube, hat, sock, sweater), at random sizes, with
+// either short-row method: the pattern a designer gets from it is proven.
+TEST(HandRandomized, ShapesOfRandomSizesAreProven) {
+  std::mt19937_64 rng(23);
+  const std::string dir = ::testing::TempDir();
+  const std::vector<std::string> kinds = shape_kinds();
+  for (int trial = 0; trial < 50; ++trial) {
+    const std::string& kind = kinds[trial % kinds.size()];
+    ShapeSize size;
+    size.circumference = 10 + static_cast<double>(rng() % 80);
+    size.width = 5 + static_cast<double>(rng() % 40);
+    size.length = 4 + static_cast<double>(rng() % 30);
+    std::string name = fmt::format("hand-{}{}", kind, trial);
+    std::string project = write_shape(make_shape(kind, size, name), dir + "/" + name);
+    SCOPED_TRACE(project);
+    Compilation c = compile_model(project);
+    ASSERT_TRUE(c.knittability.knittable) << project << "\n" << check_report(c);
+    TargetOptions options;
+    options.settings["short-rows"] = trial % 2 ? "wrap-and-turn" : "german";
+    std::string target = trial % 4 == 0 ? "hand-html" : "hand";
+    std::string pattern = emit(c, target, options);
+    try {
+      VerifyReport report = verify(c, target, pattern);
+      EXPECT_TRUE(report.proven) << target << ": " << report.summary;
+    } catch (const Error& e) {
+      ADD_FAILURE() << target << ": " << e.what();
     }
   }
 }
