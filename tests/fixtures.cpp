@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <tuple>
 
@@ -248,22 +249,36 @@ StitchMesh short_row_mesh(StitchType turn) {
   return std::move(b).build();
 }
 
-Compilation sample_turning_at_sr5_faces(const std::string& sample, const std::string& more) {
+Compilation sample_variant(const std::string& sample, const std::string& tag,
+                           const std::function<void(std::string&)>& edit) {
   std::string dir = std::string(SKEIN_SOURCE_DIR) + "/samples/" + sample + "/";
   std::ifstream in(dir + sample + ".yaml");
   std::string project((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   std::string mesh = "mesh: " + sample + ".obj";
   project.replace(project.find(mesh), mesh.size(), "mesh: " + dir + sample + ".obj");
-  if (std::size_t at = project.find("method: sr4"); at != std::string::npos)
-    project.replace(at, 11, "method: sr5");
-  else
-    project += "short_rows: {method: sr5}\n";
-  project += more;
+  edit(project);
   // One file per process: ctest runs tests side by side.
   auto path = std::filesystem::temp_directory_path() /
-              fmt::format("{}-sr5-{}.yaml", sample, static_cast<long>(::getpid()));
+              fmt::format("{}-{}-{}.yaml", sample, tag, static_cast<long>(::getpid()));
   std::ofstream(path) << project;
   return compile_model(path.string());
+}
+
+Compilation sample_turning_at_sr5_faces(const std::string& sample, const std::string& more) {
+  return sample_variant(sample, "sr5", [&](std::string& project) {
+    if (std::size_t at = project.find("method: sr4"); at != std::string::npos)
+      project.replace(at, 11, "method: sr5");
+    else
+      project += "short_rows: {method: sr5}\n";
+    project += more;
+  });
+}
+
+Compilation sock_turning_twice_at_a_st() {
+  return sample_variant("sock", "tall-rows", [](std::string& project) {
+    std::string gauge = "gauge: {stitches: 22, rows: 30}";
+    project.replace(project.find(gauge), gauge.size(), "gauge: {stitches: 10, rows: 44}");
+  });
 }
 
 std::size_t occurrences(std::string_view text, std::string_view what) {

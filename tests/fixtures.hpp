@@ -2,6 +2,7 @@
 // type and edge roles given as in the file format (bottom, right, top, left edge order).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -58,6 +59,14 @@ StitchMesh expanding_mesh();
 // bind-off. Faces: 0-3 cast-on, 4-5 first short row, 6 the short-row face, 7-8 second short row,
 // 9-12 the full row (right to left), 13-16 bind-off.
 StitchMesh short_row_mesh(StitchType turn = StitchType::sr4);
+
+// A sample's project (samples/SAMPLE/SAMPLE.yaml) changed by `edit`, written to the temporary
+// directory (its mesh named by its full path; `tag` in the file's name) and compiled.
+Compilation sample_variant(const std::string& sample, const std::string& tag,
+                           const std::function<void(std::string&)>& edit);
+
+// The sock at 10 sts and 44 rows to 10 cm: its heel's short rows turn twice at some sts.
+Compilation sock_turning_twice_at_a_st();
 
 // A sample's project ("sock", "short-row-wedge") with its short rows turning at sr5 faces
 // (`short_rows: {method: sr5}`) and the lines `more` ("pattern: purl\n"), written to the

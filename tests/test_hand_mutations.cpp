@@ -373,6 +373,13 @@ TEST(HandMutations, Sr5TurnsRejectEveryEditThatChangesTheFabric) {
   mutate_and_judge("purled wedge with sr5 turns (p DS over a p2tog)", purled);
 }
 
+// Short rows that turn again at the st the last one turned at (`DS, k8, k DS, turn.`).
+TEST(HandMutations, TurnsAtATurnedStRejectEveryEditThatChangesTheFabric) {
+  Compilation c = testing::sock_turning_twice_at_a_st();
+  mutate_and_judge("sock at 44 rows to 10 cm (k DS, turn)", c,
+                   hand_pattern(c, hand::TurnMethod::german));
+}
+
 // Rounds that run left to right worked with the WS facing (the tube inside out), not mirrored.
 TEST(HandMutations, RndsWorkedWithTheWSFacingRejectEveryEditThatChangesTheFabric) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);

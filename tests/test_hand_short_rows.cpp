@@ -127,6 +127,26 @@ TEST(HandShortRows, TheSockHeelReadsInEitherMethod) {
   EXPECT_TRUE(hand::verify_pattern(wrapped, "sock.md", &c).proven);
 }
 
+// The sock at a row gauge so tall that its heel's short rows turn again at the st the last one
+// turned at: with German short rows the row works that double stitch as one and turns
+// (`k DS, turn`); wrap and turn, which would wrap a wrapped st, is refused by name.
+TEST(HandShortRows, ATurnAtTheStTheLastShortRowTurnedAtWorksItsDoubleStitchFirst) {
+  Compilation c = testing::sock_turning_twice_at_a_st();
+  std::string german = markdown(c, TurnMethod::german);
+  EXPECT_NE(german.find("**Row 69 (RS):** DS, k8, k DS, turn.\n"), std::string::npos) << german;
+  EXPECT_NE(german.find("**Row 70 (WS):** DS, p8, p DS, turn.\n"), std::string::npos);
+  EXPECT_EQ(testing::unproven_hand_formats(c), "");
+  try {
+    markdown(c, TurnMethod::wrap_and_turn);
+    FAIL() << "expected the hand target to refuse a wrap of a wrapped st";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("turns at the st a short row turned at before: wrap "
+                                         "and turn would wrap a wrapped st"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 // The wedge purled: the decrease over each sr5 is a p2tog (seen from the RS), worked as p DS
 // (or pw) on a RS row.
 TEST(HandShortRows, APurledWedgeTurningAtSr5FacesIsProvenWithEitherMethod) {

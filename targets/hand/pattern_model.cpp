@@ -1681,14 +1681,23 @@ class PatternBuilder {
     return knit ? HandOp::kds : HandOp::pds;
   }
 
+  // The st a short row turns at. Turning again at the st the last short row turned at, the
+  // row works its double stitch as one first (a wrapped st cannot be wrapped again).
+  HandOp turning_op(StitchId s, Side side) const {
+    HandOp plain = side == Side::rs ? HandOp::k : HandOp::p;
+    if (!works_a_turn(s)) return out_.turns == TurnMethod::wrap_and_turn ? HandOp::wt : plain;
+    if (out_.turns == TurnMethod::wrap_and_turn)
+      unsupported(
+          fmt::format("{} turns at the st a short row turned at before: wrap and turn "
+                      "would wrap a wrapped st; write the pattern with German short rows "
+                      "(--set short-rows=german)",
+                      g_.describe(s)));
+    return resolving(plain, s);
+  }
+
   void append_ops(StitchId s, PatternRow& r) {
     T type = worked_by_hand(g_, s);
-    if (type == T::sr4) {
-      out_.ops.push_back(out_.turns == TurnMethod::wrap_and_turn ? HandOp::wt
-                         : r.side == Side::rs                    ? HandOp::k
-                                                                 : HandOp::p);
-      return;
-    }
+    if (type == T::sr4) return out_.ops.push_back(turning_op(s, r.side));
     for (std::uint32_t l : g_.loops_taken_by(s))
       if (g_.loops[l].maker != kNoStitch && unwritten_[g_.loops[l].maker])
         unsupported(
