@@ -5,7 +5,6 @@
 
 #include <fmt/format.h>
 
-#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -14,7 +13,6 @@
 #include "builtin_targets.hpp"
 #include "common/error.hpp"
 #include "knitout/course_layout.hpp"
-#include "mesh/autoknit_st.hpp"
 #include "mesh/generate.hpp"
 #include "test_knitout_util.hpp"
 
@@ -127,35 +125,6 @@ TEST(KnitoutFit, WhatIsNotSupportedYetIsNamedWithItsStitch) {
             "made by yarn 2, as a sweater's yoke takes its sleeves), at face 37649 (k, row 373)");
 }
 
-// A stitch graph in AutoKnit's format: one yarn as a helix, each stitch taking the oldest loops
-// on the needles (letters: s cast-on, k knit, i increase, d decrease, e bind-off).
-std::string helix_st(const std::string& letters) {
-  struct Line {
-    char letter;
-    int in[2] = {-1, -1}, out[2] = {-1, -1};
-  };
-  std::vector<Line> lines;
-  std::deque<std::pair<int, int>> live;  // (stitch, out slot) of the loops on the needles
-  for (char letter : letters) {
-    int s = static_cast<int>(lines.size());
-    lines.push_back({letter});
-    int takes = letter == 's' ? 0 : letter == 'd' ? 2 : 1;
-    int makes = letter == 'e' ? 0 : letter == 'i' ? 2 : 1;
-    for (int i = 0; i < takes; ++i) {
-      auto [maker, slot] = live.front();
-      live.pop_front();
-      lines[s].in[i] = maker;
-      lines[static_cast<std::size_t>(maker)].out[slot] = s;
-    }
-    for (int i = 0; i < makes; ++i) live.emplace_back(s, i);
-  }
-  std::string text;
-  for (const Line& l : lines)
-    text +=
-        fmt::format("0 {} a {} {} {} {} 0 0 0\n", l.letter, l.in[0], l.in[1], l.out[0], l.out[1]);
-  return text;
-}
-
 // A stitch graph's helix is read as rounds (one ends before a stitch that takes a loop of it,
 // and where its bind-off starts) and knit as a tube; its bind-off, wherever in the round it
 // starts, is a course of its own.
@@ -177,8 +146,7 @@ TEST(KnitoutStitchGraph, AHelixOfRoundsKnitsAsATubeAndProvesOnEveryProfile) {
                           "eeeeeeeeee",
                           4}}) {
     const char* letters = helix.letters;
-    Compilation c =
-        compile_knit_graph(parse_autoknit_st(helix_st(letters), "helix.st"), "helix.st");
+    Compilation c = testing::compile_letters(letters, "helix.st");
     for (const char* name : kProfiles) {
       knitout::MachineProfile p = shipped_profile(name);
       knitout::ProofResult proof =

@@ -90,8 +90,8 @@ TEST(KnitoutShortRows, ASecondTurnBesideAWrappedLoopWrapsItsOwnStitchGoingBack) 
   std::string text = testing::emit_knitout_text(c, p);
   ASSERT_TRUE(testing::replay_and_prove(text, c, p).proven);
   int back_wraps = 0;
-  for (const knitout::Course& course : knitout::lay_out_pieces(c).front().courses)
-    back_wraps += course.wrap_back;
+  knitout::CourseLayout l = knitout::lay_out_pieces(c).front();  // kept: the loop reads it
+  for (const knitout::Course& course : l.courses) back_wraps += course.wrap_back;
   EXPECT_EQ(back_wraps, 4);
   // "knit - b131 6" then "tuck + b131 6": the same needle, the other way.
   std::size_t at = text.find("knit - b131 6\ntuck + b131 6\n");
@@ -168,6 +168,47 @@ TEST(KnitoutRandomized, ShortRowSheetsProveOnEveryProfile) {
     }
   }
   EXPECT_EQ(proven, 180);
+}
+
+TEST(KnitoutShortRows, ShapingInsideAShortRowProvesOnEveryProfile) {
+  struct Case {
+    const char *letters, *name;
+    long short_rows;
+  };
+  for (auto [letters, name, short_rows] : {Case{testing::kShapedShortRowTube, "tube.st", 2},
+                                           Case{testing::kShapedShortRowSheet, "sheet.st", 4}}) {
+    Compilation c = testing::compile_letters(letters, name);
+    ASSERT_TRUE(c.knittability.knittable) << name;
+    knitout::CourseLayout l = knitout::lay_out_pieces(c).front();
+    auto partial = std::count_if(l.courses.begin(), l.courses.end(),
+                                 [](const knitout::Course& course) { return course.partial; });
+    EXPECT_EQ(partial, short_rows) << name;
+    for (const char* profile : kProfiles) {
+      knitout::MachineProfile p = shipped_profile(profile);
+      knitout::ProofResult proof =
+          testing::replay_and_prove(testing::emit_knitout_text(c, p), c, p);
+      EXPECT_TRUE(proof.proven) << name << " on " << profile << ": " << proof.summary;
+    }
+  }
+}
+
+// The sheet's kfb at f502, in a short row from the right edge: the loops of its row below it
+// (f501, f500) and the four waiting beyond its turn (f496..f499) move one needle left, through
+// the back bed, before it is knit; its second loop gets f501, and the turn wraps f498.
+TEST(KnitoutShortRows, AKfbInAShortRowMovesTheWaitingLoopsToMakeRoom) {
+  std::string text = testing::emit_knitout_text(
+      testing::compile_letters(testing::kShapedShortRowSheet, "sheet.st"),
+      shipped_profile("generic"));
+  std::size_t row4 = text.find(";!source: row 4 transfers");
+  std::size_t row5 = text.find(";!source: row 5", row4);
+  EXPECT_EQ(text.substr(row4, row5 - row4),
+            ";!source: row 4 transfers: lines 25..28 (right to left)\n"
+            "xfer f501 b501\nxfer f500 b500\nxfer f496 b496\nxfer f497 b497\nxfer f498 b498\n"
+            "xfer f499 b499\nrack -1\nxfer b501 f500\nxfer b500 f499\nxfer b496 f495\n"
+            "xfer b497 f496\nxfer b498 f497\nxfer b499 f498\n"
+            ";!source: row 4 knit (short row): lines 25..28 (right to left)\n"
+            "rack 0\nknit - f503 1\nsplit - f502 b502 1\nknit - b502 1\nknit - f500 1\n"
+            "knit - f499 1\ntuck - f498 1\n");
 }
 
 // Emits and proves `c` on each shipped profile; a profile too narrow for it must refuse it for
