@@ -211,6 +211,94 @@ TEST(KnitoutShortRows, AKfbInAShortRowMovesTheWaitingLoopsToMakeRoom) {
             "knit - f499 1\ntuck - f498 1\n");
 }
 
+// Random letters taking exactly `loops` loops: knits, kfbs, k2togs, tucks and slips.
+std::string random_run(std::mt19937_64& rng, std::size_t loops, std::size_t& made) {
+  std::string run;
+  for (std::size_t left = loops; left > 0;) {
+    std::uint64_t r = rng() % 12;
+    char letter = r < 7 ? 'k' : r < 9 ? 'i' : r < 11 && left > 1 ? 'd' : r == 11 ? 't' : 'k';
+    run += letter;
+    left -= letter == 'd' ? 2 : 1;
+    made += letter == 'i' ? 2 : letter == 'd' ? 0 : 1;
+    if (letter == 'd') ++made;
+  }
+  return run;
+}
+
+// A random stitch graph with shaping inside short rows: a tube (rounds, and pairs of short rows
+// from the round's start that turn back past it, then a round from that turn) or a sheet
+// (rows, some of which turn before the edge). Every row keeps at least 4 loops on the needles.
+std::string random_shaped_short_rows(std::mt19937_64& rng, bool tube) {
+  std::size_t n = 6 + rng() % 10;
+  std::string letters(n, 's');
+  std::size_t yarn = n;  // the loops left of the yarn (a sheet's)
+  auto row = [&](std::size_t loops) {
+    std::size_t made = 0;
+    letters += random_run(rng, loops, made);
+    return made;
+  };
+  for (int r = 0, rows = 3 + static_cast<int>(rng() % 6); r < rows; ++r) {
+    if (tube) {
+      n = row(n);  // a round
+      if (n < 4) return random_shaped_short_rows(rng, tube);
+      if (rng() % 2 == 0) continue;
+      std::size_t forward = 1 + rng() % (n - 1), made = row(forward);
+      std::size_t back = 1 + rng() % (n - forward + made - 1);  // back past the round's start
+      letters += '|';
+      std::size_t back_made = row(back);
+      letters += '|';
+      n = n - forward + made - back + back_made;
+      n = row(n);  // a round from the turn
+      if (n < 4) return random_shaped_short_rows(rng, tube);
+      continue;
+    }
+    bool rightward = yarn == 0;
+    std::size_t edge = rightward ? n : yarn, loops = rng() % 3 ? edge : 1 + rng() % edge;
+    letters += '|';
+    std::size_t made = row(loops);
+    n = n - loops + made;
+    yarn = rightward ? made : yarn - loops;
+    if (loops == edge) continue;
+    letters += '|';  // a short row: back over what it made, on to the other edge
+    std::size_t back = rightward ? yarn : n - yarn, back_made = row(back);
+    n = n - back + back_made;
+    yarn = rightward ? 0 : n;
+    if (n < 4) return random_shaped_short_rows(rng, tube);
+  }
+  if (!tube) letters += '|';
+  letters += std::string(n, 'e');
+  return letters;
+}
+
+TEST(KnitoutRandomized, ShapingInsideShortRowsProvesOrIsRefusedInWords) {
+  std::mt19937_64 rng(2019);
+  int proven = 0, refused = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    std::string letters = random_shaped_short_rows(rng, trial % 2);
+    Compilation c = testing::compile_letters(letters.c_str(), "random.st");
+    ASSERT_TRUE(c.knittability.knittable) << letters;
+    for (const char* name : kProfiles) {
+      knitout::MachineProfile p = shipped_profile(name);
+      std::string text;
+      try {
+        text = testing::emit_knitout_text(c, p);
+      } catch (const Error& e) {
+        std::string what = e.what();
+        EXPECT_TRUE(what.find("would gather") != std::string::npos ||
+                    what.find("over the tube's left fold") != std::string::npos)
+            << letters << " on " << name << ": " << what;
+        ++refused;
+        continue;
+      }
+      knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
+      EXPECT_TRUE(proof.proven) << letters << " on " << name << ": " << proof.summary;
+      proven += proof.proven;
+    }
+  }
+  std::cout << "shaped short rows: " << proven << " proven, " << refused << " refused\n";
+  EXPECT_GT(proven, 100);
+}
+
 // Emits and proves `c` on each shipped profile; a profile too narrow for it must refuse it for
 // its needles (counted in `refused`). Returns how many proved.
 int prove_on_every_profile_it_fits(const Compilation& c, const std::string& name, int& refused) {

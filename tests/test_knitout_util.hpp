@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -39,7 +40,7 @@ inline knitout::ProofResult replay_and_prove(const std::string& text, const Comp
 // t tuck, m miss (slip), e bind-off; '|' turns the yarn back (AutoKnit's dir flips). The loops
 // on the needles are kept in order along the fabric: each stitch takes the next ones the yarn
 // meets and leaves its own in their place; past either end the yarn comes round to the other
-// (a tube), which a sheet's letters never ask for.
+// (a tube, cut again where the yarn is), which a sheet's letters never ask for.
 inline std::string stitch_graph_st(const std::string& letters) {
   struct Line {
     char letter;
@@ -59,8 +60,10 @@ inline std::string stitch_graph_st(const std::string& letters) {
     lines.push_back({letter, forward});
     std::size_t takes = letter == 's' ? 0 : letter == 'd' ? 2 : 1;
     int makes = letter == 'e' ? 0 : letter == 'i' ? 2 : 1;
-    if (takes && forward && yarn == fabric.size()) yarn = 0;
-    if (takes && !forward && yarn == 0) yarn = fabric.size();
+    if (forward ? yarn + takes > fabric.size() : yarn < takes) {  // round the tube: cut it
+      std::rotate(fabric.begin(), fabric.begin() + static_cast<std::ptrdiff_t>(yarn), fabric.end());
+      yarn = forward ? 0 : fabric.size();
+    }
     std::size_t first = forward ? yarn : yarn - takes;
     for (std::size_t i = 0; i < takes; ++i) {
       auto [maker, slot] = fabric[first + i];

@@ -235,6 +235,24 @@ void choose_wrap(const KnitGraph& g, StitchId turning, std::uint32_t beyond, Cou
   if (course.wrap != kNoWrap) wrapped[course.wrap] = 1;
 }
 
+// Where a round that starts elsewhere than the round below it is laid out from: its stitch
+// (counted left to right) that takes the loop where the round below started. A decrease across
+// that start (a stitch graph's k2tog) is laid out there when the start is its bottom loop: its
+// other loop comes over the tube's left fold onto it.
+std::uint32_t taker_of_round_start(const KnitGraph& g, const CourseLayout& l, const Course& c,
+                                   std::uint32_t start) {
+  StitchId taker = g.loops[start].taker;
+  auto taken = g.loops_taken_by(taker);
+  if (taken[0] != start && taken[stacking_order(g.type[taker])[0]] != start)
+    unsupported(g,
+                "a decrease whose top loop is where the round below started, in a round that "
+                "starts elsewhere",
+                taker);
+  std::uint32_t i = c.begin;
+  while (l.order[i] != taker) ++i;
+  return c.left_to_right ? i - c.begin : c.end - 1 - i;
+}
+
 // Gives each course a direction, starting with `first`: a turn reverses it, a shift-path keeps
 // it. Returns the index of the first course whose stitches do not take a run of the loops on
 // the needles in order, or 0 when all do; marks short rows and the loops their turns wrap.
@@ -251,6 +269,8 @@ std::size_t assign_directions(const KnitGraph& g, CourseLayout& l, bool first) {
     if (!live.find_run(l, course, run)) return c;
     course.partial = run.count < live.size();
     course.rotated = l.tube && !course.partial && run.first != live.round_start();
+    if (course.rotated)
+      course.layout_start = taker_of_round_start(g, l, course, live.round_start());
     std::uint32_t beyond = live.replace_run(l, course, run);
     bool turns_next =
         c + 1 < l.courses.size() && g.yarn_link[l.order[course.end - 1]] == YarnLink::turn;

@@ -96,19 +96,23 @@ class Emitter {
     std::uint32_t total = 0, front = 0,
                   split = 0;  // split: first stitch (left to right) on the back
   };
+  // The course's stitches left to right along the fabric, from the one laid out first (at a
+  // tube's front left end): a round that starts elsewhere than the round below it is laid out
+  // from the stitch that takes the round's start, so that its loops need not move round.
   template <typename F>
-  void each_left_to_right(const Course& c, F f) const {
-    if (c.left_to_right)
-      for (std::uint32_t i = c.begin; i < c.end; ++i) f(l_.order[i]);
-    else
-      for (std::uint32_t i = c.end; i-- > c.begin;) f(l_.order[i]);
+  void each_in_layout_order(const Course& c, F f) const {
+    std::uint32_t n = c.end - c.begin;
+    for (std::uint32_t k = 0; k < n; ++k) {
+      std::uint32_t j = (k + c.layout_start) % n;
+      f(l_.order[c.left_to_right ? c.begin + j : c.end - 1 - j]);
+    }
   }
   Footprint measure(const Course& c) const {
     Footprint f;
-    each_left_to_right(c, [&](StitchId s) { f.total += footprint(g_.type[s]); });
+    each_in_layout_order(c, [&](StitchId s) { f.total += footprint(g_.type[s]); });
     if (!l_.tube) return f;
     // The back takes what is left once the front holds at least half.
-    each_left_to_right(c, [&](StitchId s) {
+    each_in_layout_order(c, [&](StitchId s) {
       if (2 * f.front < f.total) {
         f.front += footprint(g_.type[s]);
         ++f.split;
@@ -194,7 +198,7 @@ class Emitter {
   bool keep_folds(const Course& c, Footprint& f) const {
     Footprint kept;
     bool on_front = true;
-    each_left_to_right(c, [&](StitchId s) {
+    each_in_layout_order(c, [&](StitchId s) {
       on_front = on_front && live_[taken(s)[stacking_order(g_.type[s])[0]]].home.bed == Bed::f;
       if (!on_front) return;
       kept.front += footprint(g_.type[s]);
@@ -242,7 +246,7 @@ class Emitter {
       sp.knit_slot = knit_slot(g_.type[s], l_.left_to_right[s]);
       aim(s, sp, l_.tube && h.bed == Bed::b);
     }
-    if (c.partial || c.rotated) make_room(c);
+    if (c.partial) make_room(c);
   }
 
   // ---- shaping inside a short row ----
@@ -368,10 +372,8 @@ class Emitter {
   void plan_course(const Course& c, bool first) {
     room_.clear();
     for (auto& bed : shaping_) bed.clear();
-    // A bind-off, like a short row, is knit where its loops wait, and so is a round that starts
-    // elsewhere than the round below it (re-laid out, every loop would move round the tube).
-    if (c.partial || c.rotated || g_.type[l_.order[c.begin]] == StitchType::bo)
-      return plan_in_place(c);
+    // A bind-off, like a short row, is knit where its loops wait (wherever its round starts).
+    if (c.partial || g_.type[l_.order[c.begin]] == StitchType::bo) return plan_in_place(c);
     Footprint f = measure(c);
     // A tube whose halves keep their folds moves no loop between the beds: its right fold may
     // then follow the loops; while loops cross a fold it stays where it is.
@@ -404,7 +406,7 @@ class Emitter {
       q += footprint(g_.type[s]);
       ++index;
     };
-    each_left_to_right(c, [&](StitchId s) { place(s, 0, !first); });
+    each_in_layout_order(c, [&](StitchId s) { place(s, 0, !first); });
     std::int32_t span = static_cast<std::int32_t>(l_.tube ? p_.needles / 2 : p_.needles);
     std::int32_t used = static_cast<std::int32_t>(l_.tube ? std::max(f.front, back) : f.total);
     std::int32_t low = l_.tube ? used - 1 : 0, high = l_.tube ? span - 1 : span - used;
@@ -417,7 +419,7 @@ class Emitter {
     if (l_.tube && !fold_may_move) offset = fold_;
     if (l_.tube) fold_ = offset;
     q = index = 0;
-    each_left_to_right(c, [&](StitchId s) { place(s, offset, false); });
+    each_in_layout_order(c, [&](StitchId s) { place(s, offset, false); });
   }
 
   // ---- output helpers ----
@@ -505,12 +507,24 @@ class Emitter {
           landing.push_back({facing(lp.now), bottom});
         } else {
           landing.push_back({lp.now, bottom});
+          check_stretch(landing.back(), s);
         }
         lp.now = lp.home = bottom;
       }
       emit_moves(to_transit);
       emit_moves(landing);
     }
+  }
+
+  // A loop moved straight from one bed to the other moves as far as the needles lie apart: over
+  // a tube's left fold, as far as the two beds' left ends (a decrease across the round's start,
+  // the bind-off chain), which may exceed what the profile allows.
+  void check_stretch(const Move& m, StitchId s) const {
+    std::int32_t stretch = std::abs(rack_of(m));
+    if (stretch > p_.max_transfer_stretch)
+      throw Error(fmt::format(
+          "{} needs a transfer across {} needles over the tube's left fold, {} allows {}",
+          g_.describe(s), stretch, p_.name, p_.max_transfer_stretch));
   }
 
   // A loop's place along the fabric, left to right in the stitches' frames: the needle on a
@@ -779,6 +793,7 @@ class Emitter {
         w_.xfer(at(here), at(facing(here)));
         here = facing(here);
       }
+      check_stretch({here, there}, l_.order[i]);
       w_.xfer(at(here), at(there));
     }
     const StitchPlan& last = plan_[l_.order[c.end - 1]];

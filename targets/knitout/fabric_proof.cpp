@@ -85,11 +85,10 @@ class Matcher {
     }
     std::uint32_t waiting = wrap_after_[s];
     const Loop& w = g_.loops[waiting];
-    auto made = g_.loops_made_by(s);
+    auto made = g_.loops_made_by(s);  // `last` is the first the yarn makes
     std::uint8_t last_slot = made.empty()
                                  ? 0
-                                 : made_slot_along_yarn(g_.type[s], l_.left_to_right[s],
-                                                        static_cast<std::uint8_t>(made.size() - 1),
+                                 : made_slot_along_yarn(g_.type[s], l_.left_to_right[s], 0,
                                                         static_cast<std::uint8_t>(made.size()));
     bool over_fold = l_.tube && front_half(loop_of_[waiting], w.maker, w.maker_slot) !=
                                     front_half(last, s, last_slot);
