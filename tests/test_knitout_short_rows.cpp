@@ -283,10 +283,8 @@ TEST(KnitoutRandomized, ShapingInsideShortRowsProvesOrIsRefusedInWords) {
       try {
         text = testing::emit_knitout_text(c, p);
       } catch (const Error& e) {
-        std::string what = e.what();
-        EXPECT_TRUE(what.find("would gather") != std::string::npos ||
-                    what.find("over the tube's left fold") != std::string::npos)
-            << letters << " on " << name << ": " << what;
+        EXPECT_NE(std::string(e.what()).find("would gather"), std::string::npos)
+            << letters << " on " << name << ": " << e.what();
         ++refused;
         continue;
       }

@@ -505,9 +505,10 @@ class Emitter {
         if (lp.now.bed == bottom.bed) {
           to_transit.push_back({lp.now, facing(lp.now)});
           landing.push_back({facing(lp.now), bottom});
-        } else {
+        } else if (std::abs(rack_of({lp.now, bottom})) <= p_.max_transfer_stretch) {
           landing.push_back({lp.now, bottom});
-          check_stretch(landing.back(), s);
+        } else {
+          move_across_beds(lp.now, bottom);
         }
         lp.now = lp.home = bottom;
       }
@@ -516,15 +517,23 @@ class Emitter {
     }
   }
 
-  // A loop moved straight from one bed to the other moves as far as the needles lie apart: over
-  // a tube's left fold, as far as the two beds' left ends (a decrease across the round's start,
-  // the bind-off chain), which may exceed what the profile allows.
-  void check_stretch(const Move& m, StitchId s) const {
-    std::int32_t stretch = std::abs(rack_of(m));
-    if (stretch > p_.max_transfer_stretch)
-      throw Error(fmt::format(
-          "{} needs a transfer across {} needles over the tube's left fold, {} allows {}",
-          g_.describe(s), stretch, p_.name, p_.max_transfer_stretch));
+  // A loop moved straight to the other bed. Between a tube's two left ends (a k2tog across the
+  // round's start, the bind-off chain) it may have further to go than one transfer stretches:
+  // it then hops from bed to bed, as far as the profile allows each time, over needles strictly
+  // between the two ends with the parity of the one further right. Those are empty: on that
+  // end's bed they lie beyond its loops, on the other bed they face them and hold none.
+  void move_across_beds(Place from, Place to) {
+    std::int32_t stretch = p_.max_transfer_stretch, parity = std::max(from.needle, to.needle) & 1;
+    Place now = from;
+    while (now.bed == to.bed || std::abs(to.needle - now.needle) > stretch) {
+      std::int32_t dir = to.needle > now.needle ? 1 : -1;
+      std::int32_t n = now.needle + dir * std::min(stretch, std::abs(to.needle - now.needle));
+      if ((n & 1) != parity) n -= dir;
+      Place next{other(now.bed), n};
+      w_.xfer(at(now), at(next));
+      now = next;
+    }
+    w_.xfer(at(now), at(to));
   }
 
   // A loop's place along the fabric, left to right in the stitches' frames: the needle on a
@@ -793,8 +802,7 @@ class Emitter {
         w_.xfer(at(here), at(facing(here)));
         here = facing(here);
       }
-      check_stretch({here, there}, l_.order[i]);
-      w_.xfer(at(here), at(there));
+      move_across_beds(here, there);
     }
     const StitchPlan& last = plan_[l_.order[c.end - 1]];
     Needle tag{last.knit, last.needle};
