@@ -10,6 +10,7 @@
 #include <iostream>
 #include <random>
 
+#include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "fixtures.hpp"
 #include "knitout/course_layout.hpp"
@@ -209,6 +210,25 @@ TEST(KnitoutShortRows, AKfbInAShortRowMovesTheWaitingLoopsToMakeRoom) {
             ";!source: row 4 knit (short row): lines 25..28 (right to left)\n"
             "rack 0\nknit - f503 1\nsplit - f502 b502 1\nknit - b502 1\nknit - f500 1\n"
             "knit - f499 1\ntuck - f498 1\n");
+}
+
+// An 8-needle bed filled by an 8-wide sheet: a short row's kfb would move the loops waiting
+// left of it off the bed's left end, which is refused in words.
+TEST(KnitoutShortRows, MakingRoomOffTheBedIsRefusedInWords) {
+  std::string text = read_file(testing::source_path("machine_profiles/generic.yaml"));
+  text.replace(text.find("needles: 1000"), 13, "needles: 8");
+  std::string path = ::testing::TempDir() + "/eight-needles.yaml";
+  std::ofstream(path) << text;
+  Compilation c = testing::compile_letters("ssssssss|kkkkkkkk|kkkkkkkk|kikk|kkdk|kkkkkkkk|eeeeeeee",
+                                           "sheet.st");
+  try {
+    testing::emit_knitout_text(c, knitout::read_machine_profile(path));
+    ADD_FAILURE() << "not refused";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "sheet.st: making room for a short row's shaping moves the loop of line 17 (k) off "
+              "the bed's left end (generic has needles 0..7)");
+  }
 }
 
 // Random letters taking exactly `loops` loops: knits, kfbs, k2togs, tucks and slips.

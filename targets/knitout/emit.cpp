@@ -361,10 +361,10 @@ class Emitter {
   }
 
   [[noreturn]] void off_the_bed(StitchId s) const {
-    throw Error(
-        fmt::format("{}: making room for a short row's shaping moves {} off the bed's "
-                    "left end ({} has needles 0..{})",
-                    c_.input, g_.describe(s), p_.name, p_.needles - 1));
+    throw Error(fmt::format(
+        "{}: making room for a short row's shaping moves the loop of {} off the bed's left end "
+        "({} has needles 0..{})",
+        c_.input, g_.describe(s), p_.name, p_.needles - 1));
   }
 
   bool shaped() const { return !shaping_[0].empty() || !shaping_[1].empty(); }
