@@ -228,6 +228,7 @@ TEST(KnitoutMutation, EveryEditThatChangesTheFabricOrBreaksARuleIsRejected) {
               testing::shipped_profile("generic"), 150, tally);
   for (auto [letters, name] :
        {std::pair{testing::kShapedShortRowTube, "shaped short rows, tube"},
+        std::pair{testing::kLeftFoldHopTube, "a tube whose bind-off hops over its left fold"},
         std::pair{testing::kShapedShortRowSheet, "shaped short rows, sheet"}})
     run_mutants(fmt::format("{} on swg091n2", name), testing::compile_letters(letters, name),
                 testing::shipped_profile("swg091n2"), 100, tally);

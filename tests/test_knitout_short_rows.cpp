@@ -231,6 +231,20 @@ TEST(KnitoutShortRows, MakingRoomOffTheBedIsRefusedInWords) {
   }
 }
 
+// A lopsided tube's bind-off, starting at a turn, goes from the back's left end (b273) to the
+// front's (f266), 7 needles apart: more than swg091n2's transfers stretch (4), so the chain's
+// loop hops over f269 and b267, needles the half-gauge layout leaves empty there.
+TEST(KnitoutShortRows, ABindOffBetweenFarLeftEndsHopsFromBedToBed) {
+  Compilation c = testing::compile_letters(testing::kLeftFoldHopTube, "hop.st");
+  knitout::MachineProfile p = shipped_profile("swg091n2");
+  std::string text = testing::emit_knitout_text(c, p);
+  EXPECT_NE(text.find("knit - b273 3\nrack -4\nxfer b273 f269\nrack 2\nxfer f269 b267\nrack -1\n"
+                      "xfer b267 f266\nrack 0\nknit + f266 3\n"),
+            std::string::npos);
+  knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
+  EXPECT_TRUE(proof.proven) << proof.summary;
+}
+
 // Random letters taking exactly `loops` loops: knits, kfbs, k2togs, tucks and slips.
 std::string random_run(std::mt19937_64& rng, std::size_t loops, std::size_t& made) {
   std::string run;

@@ -109,6 +109,10 @@ inline const char* const kShapedShortRowSheet =
     "kkkkkkkk|"
     "eeeeeeee";
 
+// A tube left lopsided by shaping inside short rows: its bind-off, which starts at a turn,
+// crosses from one bed's left end to the other's further than swg091n2's transfers stretch.
+inline const char* const kLeftFoldHopTube = "ssssssssdkkdkikdkikkkdkd|id|dkttkkkkkdikk|d|kiieeeee";
+
 inline Compilation compile_letters(const char* letters, const char* name) {
   return compile_knit_graph(parse_autoknit_st(stitch_graph_st(letters), name), name);
 }
