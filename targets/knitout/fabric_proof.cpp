@@ -85,13 +85,13 @@ class Matcher {
     }
     std::uint32_t waiting = wrap_after_[s];
     const Loop& w = g_.loops[waiting];
-    auto made = g_.loops_made_by(s);  // `last` is the first the yarn makes
-    std::uint8_t last_slot = made.empty()
-                                 ? 0
-                                 : made_slot_along_yarn(g_.type[s], l_.left_to_right[s], 0,
-                                                        static_cast<std::uint8_t>(made.size()));
+    auto made = g_.loops_made_by(s);  // `last` is the first of them the yarn makes
+    std::uint8_t turning_slot = made.empty()
+                                    ? 0
+                                    : made_slot_along_yarn(g_.type[s], l_.left_to_right[s], 0,
+                                                           static_cast<std::uint8_t>(made.size()));
     bool over_fold = l_.tube && front_half(loop_of_[waiting], w.maker, w.maker_slot) !=
-                                    front_half(last, s, last_slot);
+                                    front_half(last, s, turning_slot);
     bool back = over_fold != wrap_back_[s];
     Direction on = back ? opposite(f_.loops[last].dir) : f_.loops[last].dir;
     if (fl.dir != on) {
