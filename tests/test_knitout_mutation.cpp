@@ -222,6 +222,16 @@ TEST(KnitoutMutation, EveryEditThatChangesTheFabricOrBreaksARuleIsRejected) {
   run_mutants("sock (short-row heel in a tube) on swg091n2",
               compile_model("samples/sock/sock.yaml"), testing::shipped_profile("swg091n2"), 150,
               tally);
+  // Shaping inside short rows: AutoKnit's test-A (a kfb in a short row, tucks and slips, rounds
+  // that start at a turn) and the two small stitch graphs of test_knitout_short_rows.cpp.
+  run_mutants("AutoKnit test-A on generic", compile_model("samples/autoknit/test-A.st"),
+              testing::shipped_profile("generic"), 150, tally);
+  for (auto [letters, name] :
+       {std::pair{testing::kShapedShortRowTube, "shaped short rows, tube"},
+        std::pair{testing::kLeftFoldHopTube, "a tube whose bind-off hops over its left fold"},
+        std::pair{testing::kShapedShortRowSheet, "shaped short rows, sheet"}})
+    run_mutants(fmt::format("{} on swg091n2", name), testing::compile_letters(letters, name),
+                testing::shipped_profile("swg091n2"), 100, tally);
   int rejected = 0, undetectable = 0;
   std::cout << "knitout mutants: " << tally.total << "\n";
   for (const auto& [verdict, count] : tally.outcome) {

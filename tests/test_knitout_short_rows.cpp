@@ -10,6 +10,7 @@
 #include <iostream>
 #include <random>
 
+#include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "fixtures.hpp"
 #include "knitout/course_layout.hpp"
@@ -90,8 +91,8 @@ TEST(KnitoutShortRows, ASecondTurnBesideAWrappedLoopWrapsItsOwnStitchGoingBack) 
   std::string text = testing::emit_knitout_text(c, p);
   ASSERT_TRUE(testing::replay_and_prove(text, c, p).proven);
   int back_wraps = 0;
-  for (const knitout::Course& course : knitout::lay_out_pieces(c).front().courses)
-    back_wraps += course.wrap_back;
+  knitout::CourseLayout l = knitout::lay_out_pieces(c).front();  // kept: the loop reads it
+  for (const knitout::Course& course : l.courses) back_wraps += course.wrap_back;
   EXPECT_EQ(back_wraps, 4);
   // "knit - b131 6" then "tuck + b131 6": the same needle, the other way.
   std::size_t at = text.find("knit - b131 6\ntuck + b131 6\n");
@@ -168,6 +169,166 @@ TEST(KnitoutRandomized, ShortRowSheetsProveOnEveryProfile) {
     }
   }
   EXPECT_EQ(proven, 180);
+}
+
+TEST(KnitoutShortRows, ShapingInsideAShortRowProvesOnEveryProfile) {
+  struct Case {
+    const char *letters, *name;
+    long short_rows;
+  };
+  for (auto [letters, name, short_rows] : {Case{testing::kShapedShortRowTube, "tube.st", 2},
+                                           Case{testing::kShapedShortRowSheet, "sheet.st", 4}}) {
+    Compilation c = testing::compile_letters(letters, name);
+    ASSERT_TRUE(c.knittability.knittable) << name;
+    knitout::CourseLayout l = knitout::lay_out_pieces(c).front();
+    auto partial = std::count_if(l.courses.begin(), l.courses.end(),
+                                 [](const knitout::Course& course) { return course.partial; });
+    EXPECT_EQ(partial, short_rows) << name;
+    for (const char* profile : kProfiles) {
+      knitout::MachineProfile p = shipped_profile(profile);
+      knitout::ProofResult proof =
+          testing::replay_and_prove(testing::emit_knitout_text(c, p), c, p);
+      EXPECT_TRUE(proof.proven) << name << " on " << profile << ": " << proof.summary;
+    }
+  }
+}
+
+// The sheet's kfb at f502, in a short row from the right edge: the loops of its row below it
+// (f501, f500) and the four waiting beyond its turn (f496..f499) move one needle left, through
+// the back bed, before it is knit; its second loop gets f501, and the turn wraps f498.
+TEST(KnitoutShortRows, AKfbInAShortRowMovesTheWaitingLoopsToMakeRoom) {
+  std::string text = testing::emit_knitout_text(
+      testing::compile_letters(testing::kShapedShortRowSheet, "sheet.st"),
+      shipped_profile("generic"));
+  std::size_t row4 = text.find(";!source: row 4 transfers");
+  std::size_t row5 = text.find(";!source: row 5", row4);
+  EXPECT_EQ(text.substr(row4, row5 - row4),
+            ";!source: row 4 transfers: lines 25..28 (right to left)\n"
+            "xfer f501 b501\nxfer f500 b500\nxfer f496 b496\nxfer f497 b497\nxfer f498 b498\n"
+            "xfer f499 b499\nrack -1\nxfer b501 f500\nxfer b500 f499\nxfer b496 f495\n"
+            "xfer b497 f496\nxfer b498 f497\nxfer b499 f498\n"
+            ";!source: row 4 knit (short row): lines 25..28 (right to left)\n"
+            "rack 0\nknit - f503 1\nsplit - f502 b502 1\nknit - b502 1\nknit - f500 1\n"
+            "knit - f499 1\ntuck - f498 1\n");
+}
+
+// An 8-needle bed filled by an 8-wide sheet: a short row's kfb would move the loops waiting
+// left of it off the bed's left end, which is refused in words.
+TEST(KnitoutShortRows, MakingRoomOffTheBedIsRefusedInWords) {
+  std::string text = read_file(testing::source_path("machine_profiles/generic.yaml"));
+  text.replace(text.find("needles: 1000"), 13, "needles: 8");
+  std::string path = ::testing::TempDir() + "/eight-needles.yaml";
+  std::ofstream(path) << text;
+  Compilation c = testing::compile_letters("ssssssss|kkkkkkkk|kkkkkkkk|kikk|kkdk|kkkkkkkk|eeeeeeee",
+                                           "sheet.st");
+  try {
+    testing::emit_knitout_text(c, knitout::read_machine_profile(path));
+    ADD_FAILURE() << "not refused";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "sheet.st: making room for a short row's shaping moves the loop of line 17 (k) off "
+              "the bed's left end (generic has needles 0..7)");
+  }
+}
+
+// A lopsided tube's bind-off, starting at a turn, goes from the back's left end (b273) to the
+// front's (f266), 7 needles apart: more than swg091n2's transfers stretch (4), so the chain's
+// loop hops over f269 and b267, needles the half-gauge layout leaves empty there.
+TEST(KnitoutShortRows, ABindOffBetweenFarLeftEndsHopsFromBedToBed) {
+  Compilation c = testing::compile_letters(testing::kLeftFoldHopTube, "hop.st");
+  knitout::MachineProfile p = shipped_profile("swg091n2");
+  std::string text = testing::emit_knitout_text(c, p);
+  EXPECT_NE(text.find("knit - b273 3\nrack -4\nxfer b273 f269\nrack 2\nxfer f269 b267\nrack -1\n"
+                      "xfer b267 f266\nrack 0\nknit + f266 3\n"),
+            std::string::npos);
+  knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
+  EXPECT_TRUE(proof.proven) << proof.summary;
+}
+
+// Random letters taking exactly `loops` loops: knits, kfbs, k2togs, tucks and slips.
+std::string random_run(std::mt19937_64& rng, std::size_t loops, std::size_t& made) {
+  std::string run;
+  for (std::size_t left = loops; left > 0;) {
+    std::uint64_t r = rng() % 12;
+    char letter = r < 7 ? 'k' : r < 9 ? 'i' : r < 11 && left > 1 ? 'd' : r == 11 ? 't' : 'k';
+    run += letter;
+    left -= letter == 'd' ? 2 : 1;
+    made += letter == 'i' ? 2 : letter == 'd' ? 0 : 1;
+    if (letter == 'd') ++made;
+  }
+  return run;
+}
+
+// A random stitch graph with shaping inside short rows: a tube (rounds, and pairs of short rows
+// from the round's start that turn back past it, then a round from that turn) or a sheet
+// (rows, some of which turn before the edge). Every row keeps at least 4 loops on the needles.
+std::string random_shaped_short_rows(std::mt19937_64& rng, bool tube) {
+  std::size_t n = 6 + rng() % 10;
+  std::string letters(n, 's');
+  std::size_t yarn = n;  // the loops left of the yarn (a sheet's)
+  auto row = [&](std::size_t loops) {
+    std::size_t made = 0;
+    letters += random_run(rng, loops, made);
+    return made;
+  };
+  for (int r = 0, rows = 3 + static_cast<int>(rng() % 6); r < rows; ++r) {
+    if (tube) {
+      n = row(n);  // a round
+      if (n < 4) return random_shaped_short_rows(rng, tube);
+      if (rng() % 2 == 0) continue;
+      std::size_t forward = 1 + rng() % (n - 1), made = row(forward);
+      std::size_t back = 1 + rng() % (n - forward + made - 1);  // back past the round's start
+      letters += '|';
+      std::size_t back_made = row(back);
+      letters += '|';
+      n = n - forward + made - back + back_made;
+      n = row(n);  // a round from the turn
+      if (n < 4) return random_shaped_short_rows(rng, tube);
+      continue;
+    }
+    bool rightward = yarn == 0;
+    std::size_t edge = rightward ? n : yarn, loops = rng() % 3 ? edge : 1 + rng() % edge;
+    letters += '|';
+    std::size_t made = row(loops);
+    n = n - loops + made;
+    yarn = rightward ? made : yarn - loops;
+    if (loops == edge) continue;
+    letters += '|';  // a short row: back over what it made, on to the other edge
+    std::size_t back = rightward ? yarn : n - yarn, back_made = row(back);
+    n = n - back + back_made;
+    yarn = rightward ? 0 : n;
+    if (n < 4) return random_shaped_short_rows(rng, tube);
+  }
+  if (!tube) letters += '|';
+  letters += std::string(n, 'e');
+  return letters;
+}
+
+TEST(KnitoutRandomized, ShapingInsideShortRowsProvesOrIsRefusedInWords) {
+  std::mt19937_64 rng(2019);
+  int proven = 0, refused = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    std::string letters = random_shaped_short_rows(rng, trial % 2);
+    Compilation c = testing::compile_letters(letters.c_str(), "random.st");
+    ASSERT_TRUE(c.knittability.knittable) << letters;
+    for (const char* name : kProfiles) {
+      knitout::MachineProfile p = shipped_profile(name);
+      std::string text;
+      try {
+        text = testing::emit_knitout_text(c, p);
+      } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("would gather"), std::string::npos)
+            << letters << " on " << name << ": " << e.what();
+        ++refused;
+        continue;
+      }
+      knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
+      EXPECT_TRUE(proof.proven) << letters << " on " << name << ": " << proof.summary;
+      proven += proof.proven;
+    }
+  }
+  std::cout << "shaped short rows: " << proven << " proven, " << refused << " refused\n";
+  EXPECT_GT(proven, 100);
 }
 
 // Emits and proves `c` on each shipped profile; a profile too narrow for it must refuse it for

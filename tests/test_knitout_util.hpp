@@ -1,8 +1,13 @@
 // Helpers shared by the knitout tests: profiles by name, emitting, replaying and proving.
 #pragma once
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "driver/pipeline.hpp"
 #include "golden.hpp"
@@ -10,6 +15,7 @@
 #include "knitout/fabric_proof.hpp"
 #include "knitout/machine_profile.hpp"
 #include "knitout/vbed_simulator.hpp"
+#include "mesh/autoknit_st.hpp"
 
 namespace skein::testing {
 
@@ -28,6 +34,87 @@ inline knitout::ProofResult replay_and_prove(const std::string& text, const Comp
                                              const knitout::MachineProfile& p) {
   knitout::Replay replay = knitout::replay_knitout(text, "out.k", p);
   return knitout::prove_fabric(replay, text, c);
+}
+
+// A stitch graph in AutoKnit's format, one yarn: s cast-on, k knit, i increase, d decrease,
+// t tuck, m miss (slip), e bind-off; '|' turns the yarn back (AutoKnit's dir flips). The loops
+// on the needles are kept in order along the fabric: each stitch takes the next ones the yarn
+// meets and leaves its own in their place; past either end the yarn comes round to the other
+// (a tube, cut again where the yarn is), which a sheet's letters never ask for.
+inline std::string stitch_graph_st(const std::string& letters) {
+  struct Line {
+    char letter;
+    bool forward;
+    int in[2] = {-1, -1}, out[2] = {-1, -1};
+  };
+  std::vector<Line> lines;
+  std::vector<std::pair<int, int>> fabric;  // (stitch, out slot), left to right
+  std::size_t yarn = 0;                     // the loops left of the yarn: fabric[0, yarn)
+  bool forward = true;
+  for (char letter : letters) {
+    if (letter == '|') {
+      forward = !forward;
+      continue;
+    }
+    int s = static_cast<int>(lines.size());
+    lines.push_back({letter, forward});
+    std::size_t takes = letter == 's' ? 0 : letter == 'd' ? 2 : 1;
+    int makes = letter == 'e' ? 0 : letter == 'i' ? 2 : 1;
+    if (forward ? yarn + takes > fabric.size() : yarn < takes) {  // round the tube: cut it
+      std::rotate(fabric.begin(), fabric.begin() + static_cast<std::ptrdiff_t>(yarn), fabric.end());
+      yarn = forward ? 0 : fabric.size();
+    }
+    std::size_t first = forward ? yarn : yarn - takes;
+    for (std::size_t i = 0; i < takes; ++i) {
+      auto [maker, slot] = fabric[first + i];
+      lines[static_cast<std::size_t>(s)].in[i] = maker;
+      lines[static_cast<std::size_t>(maker)].out[slot] = s;
+    }
+    auto at = fabric.erase(fabric.begin() + static_cast<std::ptrdiff_t>(first),
+                           fabric.begin() + static_cast<std::ptrdiff_t>(first + takes));
+    for (int i = makes; i-- > 0;) at = fabric.insert(at, {s, i});
+    yarn = forward ? first + static_cast<std::size_t>(makes) : first;
+  }
+  std::string text;
+  for (const Line& l : lines)
+    text += fmt::format("0 {} {} {} {} {} {} 0 0 0\n", l.letter, l.forward ? 'a' : 'c', l.in[0],
+                        l.in[1], l.out[0], l.out[1]);
+  return text;
+}
+
+// Shaping inside a short row, as AutoKnit's stitch graphs have it. The tube (10 round): a short
+// row from the round's start across the front and into the back with a kfb on the back, so
+// that the two loops waiting beyond its turn (on lower back needles) move down to make room;
+// the short row back with a k2tog, so that they move up again; then two rounds that start at
+// that turn (elsewhere than the round below), knit where their loops wait, and the bind-off.
+// The sheet (8 wide): a short row from the right edge with a kfb, so that the loops waiting
+// left of it move left; one from the left edge with a k2tog, which closes its gap.
+inline const char* const kShapedShortRowTube =
+    "ssssssssss"
+    "kkkkkkkkkk"
+    "kkkkkkik|"
+    "kkdk|"
+    "kkkkkkkkkk"
+    "kkkkkkkkkk"
+    "eeeeeeeeee";
+inline const char* const kShapedShortRowSheet =
+    "ssssssss|"
+    "kkkkkkkk|"
+    "kkkkkkkk|"
+    "kikk|"
+    "kkkkk|"
+    "kkkkkkkkk|"
+    "kkdk|"
+    "kkkk|"
+    "kkkkkkkk|"
+    "eeeeeeee";
+
+// A tube left lopsided by shaping inside short rows: its bind-off, which starts at a turn,
+// crosses from one bed's left end to the other's further than swg091n2's transfers stretch.
+inline const char* const kLeftFoldHopTube = "ssssssssdkkdkikdkikkkdkd|id|dkttkkkkkdikk|d|kiieeeee";
+
+inline Compilation compile_letters(const char* letters, const char* name) {
+  return compile_knit_graph(parse_autoknit_st(stitch_graph_st(letters), name), name);
 }
 
 }  // namespace skein::testing

@@ -157,15 +157,14 @@ class LiveLoops {
     bool whole = run.count == size_;
     std::uint32_t before = whole ? kNoWrap : prev_[run.first];
     std::uint32_t after = whole ? kNoWrap : next_[run.last];
-    std::uint32_t start_at = whole ? 0 : kNoWrap;  // where the round's start lies in the run
+    bool takes_start = whole;
     for (std::uint32_t loop = run.first, n = 0; n < run.count; ++n, loop = next_[loop]) {
       live_[loop] = 0;
-      if (loop == start_) start_at = n;
+      takes_start |= loop == start_;
     }
     size_ -= run.count;
-    std::size_t before_size = size_;
     auto [first, last] = link_made(l, c, before, after);
-    if (start_at != kNoWrap) move_start(first, start_at, size_ - before_size == run.count);
+    if (takes_start) move_start(c);
     if (first == kNoWrap) {  // nothing made (a bind-off): the neighbours close up
       if (before != kNoWrap) next_[before] = after;
       if (after != kNoWrap) prev_[after] = before;
@@ -175,11 +174,14 @@ class LiveLoops {
   }
 
  private:
-  // The round's start moves to the loop made at its place (the first made when the course
-  // makes another number of loops than it takes).
-  void move_start(std::uint32_t first, std::uint32_t at, bool same_count) {
-    start_ = first;
-    for (std::uint32_t n = 0; same_count && n < at; ++n) start_ = next_[start_];
+  // The round's start moves to the loop made at its place: the leftmost loop of the stitch
+  // that takes it (an sr5's own loop, not its turn loop), which is knit where the start was.
+  void move_start(const Course& c) {
+    StitchId taker = g_.loops[start_].taker;
+    auto made = g_.loops_made_by(taker);
+    if (made.empty()) return;  // a bind-off
+    bool sr5 = g_.type[taker] == StitchType::sr5;
+    start_ = made[sr5 ? knit_slot(StitchType::sr5, c.left_to_right) : 0];
   }
 
   // Links the loops `c` makes, left to right, between `before` and `after` (a ring closes on
@@ -233,6 +235,24 @@ void choose_wrap(const KnitGraph& g, StitchId turning, std::uint32_t beyond, Cou
   if (course.wrap != kNoWrap) wrapped[course.wrap] = 1;
 }
 
+// Where a round that starts elsewhere than the round below it is laid out from: its stitch
+// (counted left to right) that takes the loop where the round below started. A decrease across
+// that start (a stitch graph's k2tog) is laid out there when the start is its bottom loop: its
+// other loop comes over the tube's left fold onto it.
+std::uint32_t taker_of_round_start(const KnitGraph& g, const CourseLayout& l, const Course& c,
+                                   std::uint32_t start) {
+  StitchId taker = g.loops[start].taker;
+  auto taken = g.loops_taken_by(taker);
+  if (taken[0] != start && taken[stacking_order(g.type[taker])[0]] != start)
+    unsupported(g,
+                "a decrease whose top loop is where the round below started, in a round that "
+                "starts elsewhere",
+                taker);
+  std::uint32_t i = c.begin;
+  while (l.order[i] != taker) ++i;
+  return c.left_to_right ? i - c.begin : c.end - 1 - i;
+}
+
 // Gives each course a direction, starting with `first`: a turn reverses it, a shift-path keeps
 // it. Returns the index of the first course whose stitches do not take a run of the loops on
 // the needles in order, or 0 when all do; marks short rows and the loops their turns wrap.
@@ -249,6 +269,8 @@ std::size_t assign_directions(const KnitGraph& g, CourseLayout& l, bool first) {
     if (!live.find_run(l, course, run)) return c;
     course.partial = run.count < live.size();
     course.rotated = l.tube && !course.partial && run.first != live.round_start();
+    if (course.rotated)
+      course.layout_start = taker_of_round_start(g, l, course, live.round_start());
     std::uint32_t beyond = live.replace_run(l, course, run);
     bool turns_next =
         c + 1 < l.courses.size() && g.yarn_link[l.order[course.end - 1]] == YarnLink::turn;
@@ -258,29 +280,12 @@ std::size_t assign_directions(const KnitGraph& g, CourseLayout& l, bool first) {
   return 0;
 }
 
-// Whether a stitch can be knit where its loops wait: it takes one loop and leaves one, or it is
-// an sr5 (its turn loop waits on the facing needle), or it knits an sr5's two loops together.
-bool knits_in_place(const KnitGraph& g, StitchId s) {
-  const StitchTypeInfo& t = info(g.type[s]);
-  auto taken = g.loops_taken_by(s);
-  if (t.type == StitchType::sr5 || (taken.size() == 1 && t.loops_out == 1)) return true;
-  if (taken.size() != 2 || t.loops_out != 1) return false;
-  StitchId maker = g.loops[taken[0]].maker;
-  return g.loops[taken[1]].maker == maker && g.type[maker] == StitchType::sr5;
-}
-
-// A short row is knit where its loops wait, so its stitches neither add nor remove needles; an
-// sr5's turn loop waits on the facing needle until one decrease knits it with the sr5's loop.
-void check_short_rows(const KnitGraph& g, const CourseLayout& l) {
-  for (const Course& c : l.courses) {
-    for (std::uint32_t i = c.begin; i < c.end; ++i) {
-      StitchId s = l.order[i];
-      if (c.partial && !knits_in_place(g, s))
-        unsupported(g, "an increase, decrease or bind-off in a short row", s);
-      auto made = g.loops_made_by(s);
-      if (g.type[s] == StitchType::sr5 && g.loops[made[0]].taker != g.loops[made[1]].taker)
-        unsupported(g, "an sr5 whose two loops are not knit together by the stitch above", s);
-    }
+// An sr5's turn loop waits on the facing needle until one decrease knits it with the sr5's loop.
+void check_sr5_turn_loops(const KnitGraph& g, const CourseLayout& l) {
+  for (StitchId s : l.order) {
+    auto made = g.loops_made_by(s);
+    if (g.type[s] == StitchType::sr5 && g.loops[made[0]].taker != g.loops[made[1]].taker)
+      unsupported(g, "an sr5 whose two loops are not knit together by the stitch above", s);
   }
 }
 
@@ -314,11 +319,7 @@ CourseLayout lay_out_piece(const KnitGraph& g, std::vector<StitchId> order) {
   if (bad && assign_directions(g, l, false))
     unsupported(g, "a row whose stitches do not take the loops below in order",
                 l.order[l.courses[bad].begin]);
-  check_short_rows(g, l);
-  for (const Course& course : l.courses)  // a bind-off is knit where its loops wait
-    if (course.rotated && g.type[l.order[course.begin]] != StitchType::bo)
-      unsupported(g, "a round that starts elsewhere than the round below it (its start drifts)",
-                  l.order[course.begin]);
+  check_sr5_turn_loops(g, l);
   l.left_to_right.assign(g.size(), 1);
   for (const Course& course : l.courses)
     for (std::uint32_t i = course.begin; i < course.end; ++i)

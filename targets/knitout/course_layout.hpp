@@ -21,6 +21,9 @@ struct Course {
   bool left_to_right = true;         // the yarn runs left to right in its stitches' frames
   bool partial = false;              // a short row: loops beside it wait on their needles
   bool rotated = false;              // a tube's round that starts elsewhere than the round below it
+  // Its stitch (counted left to right from the first) that takes the round's start: laid out
+  // first, at the tube's front left end, so that its loops need not move round the tube.
+  std::uint32_t layout_start = 0;
   // Where a short row turns beside a waiting loop, the yarn tucks over that loop's needle so
   // the turn leaves no hole; the tuck is knit with the loop. The loop (knit graph index); when
   // another turn wrapped it already, the turning stitch's own loop instead (wrap_back).

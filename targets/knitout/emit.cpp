@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <ostream>
 
 #include "common/error.hpp"
@@ -67,6 +68,8 @@ class Emitter {
     reach_ = p_.max_transfer_stretch / pitch_ * pitch_;
     plan_.resize(g_.size());
     live_.resize(g_.loops.size());
+    index_on_needles_.resize(g_.loops.size());
+    in_course_.resize(g_.loops.size());
     check_fit();
   }
 
@@ -93,19 +96,23 @@ class Emitter {
     std::uint32_t total = 0, front = 0,
                   split = 0;  // split: first stitch (left to right) on the back
   };
+  // The course's stitches left to right along the fabric, from the one laid out first (at a
+  // tube's front left end): a round that starts elsewhere than the round below it is laid out
+  // from the stitch that takes the round's start, so that its loops need not move round.
   template <typename F>
-  void each_left_to_right(const Course& c, F f) const {
-    if (c.left_to_right)
-      for (std::uint32_t i = c.begin; i < c.end; ++i) f(l_.order[i]);
-    else
-      for (std::uint32_t i = c.end; i-- > c.begin;) f(l_.order[i]);
+  void each_in_layout_order(const Course& c, F f) const {
+    std::uint32_t n = c.end - c.begin;
+    for (std::uint32_t k = 0; k < n; ++k) {
+      std::uint32_t j = (k + c.layout_start) % n;
+      f(l_.order[c.left_to_right ? c.begin + j : c.end - 1 - j]);
+    }
   }
   Footprint measure(const Course& c) const {
     Footprint f;
-    each_left_to_right(c, [&](StitchId s) { f.total += footprint(g_.type[s]); });
+    each_in_layout_order(c, [&](StitchId s) { f.total += footprint(g_.type[s]); });
     if (!l_.tube) return f;
     // The back takes what is left once the front holds at least half.
-    each_left_to_right(c, [&](StitchId s) {
+    each_in_layout_order(c, [&](StitchId s) {
       if (2 * f.front < f.total) {
         f.front += footprint(g_.type[s]);
         ++f.split;
@@ -191,7 +198,7 @@ class Emitter {
   bool keep_folds(const Course& c, Footprint& f) const {
     Footprint kept;
     bool on_front = true;
-    each_left_to_right(c, [&](StitchId s) {
+    each_in_layout_order(c, [&](StitchId s) {
       on_front = on_front && live_[taken(s)[stacking_order(g_.type[s])[0]]].home.bed == Bed::f;
       if (!on_front) return;
       kept.front += footprint(g_.type[s]);
@@ -213,16 +220,17 @@ class Emitter {
     sp.travel = rightward ? Direction::plus : Direction::minus;
   }
 
-  // The taken loop that rests where the fabric's loops rest: not an sr5's turn loop, which
-  // waits on the facing needle.
+  // An sr5's turn loop, which waits on the facing needle of the sr5's own loop.
+  bool is_turn_loop(std::uint32_t loop) const {
+    StitchId maker = g_.loops[loop].maker;
+    return g_.type[maker] == StitchType::sr5 &&
+           g_.loops[loop].maker_slot != knit_slot(StitchType::sr5, l_.left_to_right[maker]);
+  }
+
+  // The taken loop that rests where the fabric's loops rest: not an sr5's turn loop.
   std::uint32_t resting_loop(StitchId s) const {
-    for (std::uint32_t loop : taken(s)) {
-      StitchId maker = g_.loops[loop].maker;
-      bool turn_loop =
-          g_.type[maker] == StitchType::sr5 &&
-          g_.loops[loop].maker_slot != knit_slot(StitchType::sr5, l_.left_to_right[maker]);
-      if (!turn_loop) return loop;
-    }
+    for (std::uint32_t loop : taken(s))
+      if (!is_turn_loop(loop)) return loop;
     return taken(s)[0];
   }
 
@@ -238,9 +246,132 @@ class Emitter {
       sp.knit_slot = knit_slot(g_.type[s], l_.left_to_right[s]);
       aim(s, sp, l_.tube && h.bed == Bed::b);
     }
+    if (c.partial) make_room(c);
   }
 
+  // ---- shaping inside a short row ----
+  // A short row is knit where its loops wait. Where its stitches make more loops than they
+  // take (or fewer), the loops on lower needles of that bed, waiting ones included, first move
+  // down (or up) by the difference: room for the new loops (or the gap closed) on the side of
+  // a tube's left fold and a sheet's left edge, so that a tube's right fold stays put.
+  struct Shaping {
+    std::int32_t top = 0;     // a shaped stitch's highest needle on the bed
+    std::int32_t delta = 0;   // the needles it occupies there after, less before
+    std::int32_t upward = 0;  // the deltas of this stitch and those above it on the bed
+  };
+  struct Occupied {  // a stitch's taken loops per bed (front, back)
+    std::array<std::int32_t, 2> count{0, 0}, top{0, 0};
+  };
+  struct RoomMove {
+    std::uint32_t loop;  // a waiting loop
+    Place to;
+  };
+  static std::size_t bed_index(Bed b) { return b == Bed::f ? 0 : 1; }
+
+  // The bed of the fabric a loop lies in: an sr5's turn loop waits on the facing bed.
+  Bed fabric_bed(std::uint32_t loop) const {
+    return is_turn_loop(loop) ? other(live_[loop].home.bed) : live_[loop].home.bed;
+  }
+
+  // Needles a stitch occupies once knit: an sr5's turn loop waits on the facing needle.
+  static std::int32_t needles_after(StitchType t) {
+    return t == StitchType::sr5 ? 1 : static_cast<std::int32_t>(footprint(t));
+  }
+
+  Occupied occupied(StitchId s) const {
+    Occupied o;
+    for (std::uint32_t loop : taken(s)) {
+      if (is_turn_loop(loop)) continue;
+      const Place& h = live_[loop].home;
+      std::size_t b = bed_index(h.bed);
+      o.top[b] = o.count[b]++ ? std::max(o.top[b], h.needle) : h.needle;
+    }
+    return o;
+  }
+
+  // Where the room puts a loop now at `p` (in the fabric): down by the pitch times the
+  // shaping on higher needles of its bed.
+  Place after_room(Place p) const {
+    const std::vector<Shaping>& bed = shaping_[bed_index(p.bed)];
+    auto above = std::upper_bound(bed.begin(), bed.end(), p.needle,
+                                  [](std::int32_t n, const Shaping& sh) { return n < sh.top; });
+    return {p.bed, p.needle - (above == bed.end() ? 0 : above->upward * pitch_)};
+  }
+
+  void make_room(const Course& c) {
+    std::vector<Occupied> occupancy;
+    for (std::uint32_t i = c.begin; i < c.end; ++i) {
+      StitchId s = l_.order[i];
+      StitchPlan& sp = plan_[s];
+      sp.home = fabric_bed(taken(s)[stacking_order(g_.type[s])[0]]);  // a decrease's bottom
+      occupancy.push_back(occupied(s));
+      for (std::size_t b = 0; b < 2; ++b) {
+        std::int32_t delta =
+            (b == bed_index(sp.home) ? needles_after(g_.type[s]) : 0) - occupancy.back().count[b];
+        if (delta) shaping_[b].push_back({occupancy.back().top[b], delta});
+      }
+    }
+    if (!shaped()) return;
+    for (auto& bed : shaping_) {
+      std::sort(bed.begin(), bed.end(),
+                [](const Shaping& a, const Shaping& b) { return a.top < b.top; });
+      for (std::size_t k = bed.size(); k-- > 0;)
+        bed[k].upward = bed[k].delta + (k + 1 < bed.size() ? bed[k + 1].upward : 0);
+    }
+    for (std::uint32_t i = c.begin; i < c.end; ++i)
+      place_in_room(l_.order[i], occupancy[i - c.begin]);
+    move_waiting_loops(c);
+  }
+
+  // A stitch's needles below its (moved) top, as many as it occupies once knit.
+  void place_in_room(StitchId s, const Occupied& o) {
+    StitchPlan& sp = plan_[s];
+    std::size_t b = bed_index(sp.home);
+    std::int32_t top = after_room({sp.home, o.top[b]}).needle;
+    std::int32_t low = top - (needles_after(g_.type[s]) - 1) * pitch_;
+    aim(s, sp, l_.tube && sp.home == Bed::b);
+    std::int32_t knit_at =
+        g_.type[s] == StitchType::sr5 ? 0 : sp.knit_slot;  // its turn loop faces it
+    sp.needle = (sp.step > 0 ? low : top) + knit_at * sp.step;
+    if (low < 0) off_the_bed(s);
+  }
+
+  // The waiting loops the room moves, and those away from their needle (a purl, a kfb's second
+  // loop), which go home first so that the moving stacks find the facing needles empty.
+  void move_waiting_loops(const Course& c) {
+    for (std::uint32_t i = c.begin; i < c.end; ++i)
+      for (std::uint32_t loop : taken(l_.order[i])) in_course_[loop] = 1;
+    for (std::uint32_t loop : on_needles_) {
+      const LoopPlace& lp = live_[loop];
+      Place fabric{fabric_bed(loop), lp.home.needle}, to = after_room(fabric);
+      if (in_course_[loop] || (to == fabric && lp.now == lp.home)) continue;
+      if (is_turn_loop(loop) && to != fabric)
+        throw Error(fmt::format(
+            "not yet supported by the knitout target: shaping in a short row that moves an "
+            "sr5's waiting turn loop, at {}",
+            g_.describe(g_.loops[loop].maker)));
+      if (to.needle < 0) off_the_bed(g_.loops[loop].maker);
+      room_.push_back({loop, {lp.home.bed, to.needle}});
+    }
+    for (std::uint32_t i = c.begin; i < c.end; ++i)
+      for (std::uint32_t loop : taken(l_.order[i])) in_course_[loop] = 0;
+    std::sort(room_.begin(), room_.end(), [](const RoomMove& a, const RoomMove& b) {
+      return std::pair(a.to.bed, a.to.needle) < std::pair(b.to.bed, b.to.needle);
+    });
+  }
+
+  [[noreturn]] void off_the_bed(StitchId s) const {
+    throw Error(fmt::format(
+        "{}: making room for a short row's shaping moves the loop of {} off the bed's left end "
+        "({} has needles 0..{})",
+        c_.input, g_.describe(s), p_.name, p_.needles - 1));
+  }
+
+  bool shaped() const { return !shaping_[0].empty() || !shaping_[1].empty(); }
+
   void plan_course(const Course& c, bool first) {
+    room_.clear();
+    for (auto& bed : shaping_) bed.clear();
     // A bind-off, like a short row, is knit where its loops wait (wherever its round starts).
     if (c.partial || g_.type[l_.order[c.begin]] == StitchType::bo) return plan_in_place(c);
     Footprint f = measure(c);
@@ -275,7 +406,7 @@ class Emitter {
       q += footprint(g_.type[s]);
       ++index;
     };
-    each_left_to_right(c, [&](StitchId s) { place(s, 0, !first); });
+    each_in_layout_order(c, [&](StitchId s) { place(s, 0, !first); });
     std::int32_t span = static_cast<std::int32_t>(l_.tube ? p_.needles / 2 : p_.needles);
     std::int32_t used = static_cast<std::int32_t>(l_.tube ? std::max(f.front, back) : f.total);
     std::int32_t low = l_.tube ? used - 1 : 0, high = l_.tube ? span - 1 : span - used;
@@ -288,7 +419,7 @@ class Emitter {
     if (l_.tube && !fold_may_move) offset = fold_;
     if (l_.tube) fold_ = offset;
     q = index = 0;
-    each_left_to_right(c, [&](StitchId s) { place(s, offset, false); });
+    each_in_layout_order(c, [&](StitchId s) { place(s, offset, false); });
   }
 
   // ---- output helpers ----
@@ -312,7 +443,7 @@ class Emitter {
   void transition(const Course& c) {
     source(c, "transfers");
     std::vector<std::uint8_t> ready(c.end - c.begin, 0);  // already on its knit needle
-    go_home(c, ready, !fits_one_stage(c));
+    go_home(c, ready, !fits_one_stage(c) || shaped());
     merge_decreases(c);
     shift_stacks(c, ready);
     send_purls(c, ready);
@@ -332,8 +463,17 @@ class Emitter {
 
   // Loops knit on the other bed (purls, kfb's second loop) go back to their home needle,
   // unless (when not `staged`) the next stitch takes that loop alone right where it is.
+  // A waiting loop the room moves, or that the course's turn wraps, goes home too (a kfb's
+  // second loop waits on the facing needle until then), so that the wrap lies where it rests.
   void go_home(const Course& c, std::vector<std::uint8_t>& ready, bool staged) {
     std::vector<Move> moves;
+    auto send_home = [&](std::uint32_t loop) {
+      LoopPlace& lp = live_[loop];
+      if (lp.now != lp.home) moves.push_back({lp.now, lp.home});
+      lp.now = lp.home;
+    };
+    for (const RoomMove& r : room_) send_home(r.loop);
+    if (c.wrap != kNoWrap && !c.wrap_back) send_home(c.wrap);
     for (std::uint32_t i = c.begin; i < c.end; ++i) {
       StitchId s = l_.order[i];
       const StitchPlan& sp = plan_[s];
@@ -365,14 +505,35 @@ class Emitter {
         if (lp.now.bed == bottom.bed) {
           to_transit.push_back({lp.now, facing(lp.now)});
           landing.push_back({facing(lp.now), bottom});
-        } else {
+        } else if (std::abs(rack_of({lp.now, bottom})) <= p_.max_transfer_stretch) {
           landing.push_back({lp.now, bottom});
+        } else {
+          move_across_beds(lp.now, bottom);
         }
         lp.now = lp.home = bottom;
       }
       emit_moves(to_transit);
       emit_moves(landing);
     }
+  }
+
+  // A loop moved straight to the other bed. Between a tube's two left ends (a k2tog across the
+  // round's start, the bind-off chain) it may have further to go than one transfer stretches:
+  // it then hops from bed to bed, as far as the profile allows each time, over needles strictly
+  // between the two ends with the parity of the one further right. Those are empty: on that
+  // end's bed they lie beyond its loops, on the other bed they face them and hold none.
+  void move_across_beds(Place from, Place to) {
+    std::int32_t stretch = p_.max_transfer_stretch, parity = std::max(from.needle, to.needle) & 1;
+    Place now = from;
+    while (now.bed == to.bed || std::abs(to.needle - now.needle) > stretch) {
+      std::int32_t dir = to.needle > now.needle ? 1 : -1;
+      std::int32_t n = now.needle + dir * std::min(stretch, std::abs(to.needle - now.needle));
+      if ((n & 1) != parity) n -= dir;
+      Place next{other(now.bed), n};
+      w_.xfer(at(now), at(next));
+      now = next;
+    }
+    w_.xfer(at(now), at(to));
   }
 
   // A loop's place along the fabric, left to right in the stitches' frames: the needle on a
@@ -394,8 +555,9 @@ class Emitter {
   // go straight over once the others have left for the facing needles.
   void shift_stacks(const Course& c, const std::vector<std::uint8_t>& ready) {
     struct Stack {
-      StitchId stitch;
+      StitchId stitch;  // kNoStitch for a waiting loop the room moves
       Place now, target;
+      std::uint32_t waiting = kNoWrap;
     };
     std::vector<Stack> stacks;
     bool crossing = false;
@@ -405,6 +567,7 @@ class Emitter {
       stacks.push_back({s, live_[taken(s)[0]].now, {plan_[s].home, plan_[s].needle}});
       crossing |= stacks.back().now.bed != stacks.back().target.bed;
     }
+    for (const RoomMove& r : room_) stacks.push_back({kNoStitch, live_[r.loop].now, r.to, r.loop});
     for (bool moved = true; moved;) {
       moved = false;
       std::vector<Move> to_transit, over, landing;
@@ -424,8 +587,13 @@ class Emitter {
       emit_moves(over);
       emit_moves(landing);
     }
-    for (const Stack& st : stacks)
+    for (const Stack& st : stacks) {
+      if (st.stitch == kNoStitch) {
+        live_[st.waiting] = {st.target, st.target};
+        continue;
+      }
       for (std::uint32_t loop : taken(st.stitch)) live_[loop].now = live_[loop].home = st.target;
+    }
   }
 
   // One stage's stop toward `target`: along the bed by at most the reach, or, when some loops
@@ -456,7 +624,22 @@ class Emitter {
     if (slot < loops.size()) live_[loops[slot]] = {now, plan_[s].home_of(slot)};
   }
 
+  // The loops on the needles (made and not yet taken), for a short row's shaping to move.
+  void track_loops(StitchId s) {
+    for (std::uint32_t loop : taken(s)) {
+      std::uint32_t last = on_needles_.back();
+      on_needles_[index_on_needles_[loop]] = last;
+      index_on_needles_[last] = index_on_needles_[loop];
+      on_needles_.pop_back();
+    }
+    for (std::uint32_t loop : g_.loops_made_by(s)) {
+      index_on_needles_[loop] = static_cast<std::uint32_t>(on_needles_.size());
+      on_needles_.push_back(loop);
+    }
+  }
+
   void knit_stitch(StitchId s) {
+    track_loops(s);
     const StitchPlan& sp = plan_[s];
     Needle n{sp.knit, sp.needle};
     StitchType t = g_.type[s];
@@ -619,7 +802,7 @@ class Emitter {
         w_.xfer(at(here), at(facing(here)));
         here = facing(here);
       }
-      w_.xfer(at(here), at(there));
+      move_across_beds(here, there);
     }
     const StitchPlan& last = plan_[l_.order[c.end - 1]];
     Needle tag{last.knit, last.needle};
@@ -642,6 +825,10 @@ class Emitter {
   std::int32_t fold_ = 0;         // a tube's right fold: front f2R faces back b2R+1 beside it
   std::vector<StitchPlan> plan_;  // per stitch, for the course being knit
   std::vector<LoopPlace> live_;   // per loop of the knit graph
+  std::vector<std::uint32_t> on_needles_, index_on_needles_;  // the loops made, not yet taken
+  std::array<std::vector<Shaping>, 2> shaping_;  // a short row's shaped stitches, per bed
+  std::vector<RoomMove> room_;                   // the waiting loops the shaping moves
+  std::vector<std::uint8_t> in_course_;          // per loop: taken by the course being planned
   std::string carrier_;
 };
 

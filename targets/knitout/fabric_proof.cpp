@@ -84,8 +84,14 @@ class Matcher {
       return false;
     }
     std::uint32_t waiting = wrap_after_[s];
-    bool over_fold = l_.tube && front_half(loop_of_[waiting], g_.type[g_.loops[waiting].maker]) !=
-                                    front_half(last, g_.type[s]);
+    const Loop& w = g_.loops[waiting];
+    auto made = g_.loops_made_by(s);  // `last` is the first of them the yarn makes
+    std::uint8_t turning_slot = made.empty()
+                                    ? 0
+                                    : made_slot_along_yarn(g_.type[s], l_.left_to_right[s], 0,
+                                                           static_cast<std::uint8_t>(made.size()));
+    bool over_fold = l_.tube && front_half(loop_of_[waiting], w.maker, w.maker_slot) !=
+                                    front_half(last, s, turning_slot);
     bool back = over_fold != wrap_back_[s];
     Direction on = back ? opposite(f_.loops[last].dir) : f_.loops[last].dir;
     if (fl.dir != on) {
@@ -96,9 +102,14 @@ class Matcher {
     wraps_.emplace(g_.loops[waiting].taker, x);
     return true;
   }
-  // Whether a loop made by a stitch of type `t` belongs to a tube's front half (a purl's loop
-  // is made on the bed facing its half).
-  bool front_half(LoopId x, StitchType t) const { return f_.loops[x].front != is_purl(t); }
+  // Whether the loop `x`, made in slot `slot` of `maker`, belongs to a tube's front half: a
+  // purl's loop and a kfb's second loop are made on the bed facing their half.
+  bool front_half(LoopId x, StitchId maker, std::uint8_t slot) const {
+    StitchType t = g_.type[maker];
+    bool facing = is_purl(t) || (t == StitchType::kfb &&
+                                 slot != knit_slot(StitchType::kfb, l_.left_to_right[maker]));
+    return f_.loops[x].front != facing;
+  }
   bool is_wrap(StitchId s, LoopId x) const {
     auto [first, last] = wraps_.equal_range(s);
     return std::any_of(first, last, [x](const auto& w) { return w.second == x; });
