@@ -373,11 +373,14 @@ TEST(HandMutations, Sr5TurnsRejectEveryEditThatChangesTheFabric) {
   mutate_and_judge("purled wedge with sr5 turns (p DS over a p2tog)", purled);
 }
 
-// Short rows that turn again at the st the last one turned at (`DS, k8, k DS, turn.`).
+// Short rows that turn again at the st the last one turned at (`DS, k8, k DS, turn.`; with
+// wrap and turn `K8, w&t.` at the wrapped st, which then has two wraps).
 TEST(HandMutations, TurnsAtATurnedStRejectEveryEditThatChangesTheFabric) {
   Compilation c = testing::sock_turning_twice_at_a_st();
   mutate_and_judge("sock at 44 rows to 10 cm (k DS, turn)", c,
                    hand_pattern(c, hand::TurnMethod::german));
+  mutate_and_judge("sock at 44 rows to 10 cm (w&t at a wrapped st)", c,
+                   hand_pattern(c, hand::TurnMethod::wrap_and_turn));
 }
 
 // Rounds that run left to right worked with the WS facing (the tube inside out), not mirrored.

@@ -129,22 +129,21 @@ TEST(HandShortRows, TheSockHeelReadsInEitherMethod) {
 
 // The sock at a row gauge so tall that its heel's short rows turn again at the st the last one
 // turned at: with German short rows the row works that double stitch as one and turns
-// (`k DS, turn`); wrap and turn, which would wrap a wrapped st, is refused by name.
+// (`k DS, turn`); with wrap and turn it wraps the wrapped st again (`w&t`), and `kw` later works
+// both wraps with it; either is proven in every format.
 TEST(HandShortRows, ATurnAtTheStTheLastShortRowTurnedAtWorksItsDoubleStitchFirst) {
   Compilation c = testing::sock_turning_twice_at_a_st();
   std::string german = markdown(c, TurnMethod::german);
   EXPECT_NE(german.find("**Row 69 (RS):** DS, k8, k DS, turn.\n"), std::string::npos) << german;
   EXPECT_NE(german.find("**Row 70 (WS):** DS, p8, p DS, turn.\n"), std::string::npos);
+  EXPECT_EQ(german.find("two wraps"), std::string::npos);
   EXPECT_EQ(testing::unproven_hand_formats(c), "");
-  try {
-    markdown(c, TurnMethod::wrap_and_turn);
-    FAIL() << "expected the hand target to refuse a wrap of a wrapped st";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("turns at the st a short row turned at before: wrap "
-                                         "and turn would wrap a wrapped st"),
-              std::string::npos)
-        << e.what();
-  }
+  std::string wrapped = markdown(c, TurnMethod::wrap_and_turn);
+  EXPECT_NE(wrapped.find("**Row 69 (RS):** K8, w&t.\n"), std::string::npos) << wrapped;
+  EXPECT_NE(wrapped.find("**Row 70 (WS):** P8, w&t.\n"), std::string::npos);
+  EXPECT_NE(wrapped.find("When w&t comes to a st that is already wrapped, wrap it again"),
+            std::string::npos);
+  EXPECT_EQ(testing::unproven_hand_formats(c, turning("wrap-and-turn")), "");
 }
 
 // The wedge purled: the decrease over each sr5 is a p2tog (seen from the RS), worked as p DS
@@ -226,6 +225,12 @@ TEST(HandShortRows, ProvesHandWrittenShortRows) {
                        "Row 2 (RS): K5, w&t.\nRow 3 (WS): P3, w&t.\nRnd 4: K3, kw, k to end.\n"
                        "Rnd 5: K1, kw, k to end.\nRnd 6: BO all sts.\nFasten off.\n"),
             "");
+  // A w&t at a wrapped st wraps it again; kw works both wraps with it.
+  EXPECT_EQ(failure_of("Cast on 8 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\n"
+                       "Row 2 (RS): K5, w&t.\nRow 3 (WS): P3, w&t.\nRow 4 (RS): K3, w&t.\n"
+                       "Row 5 (WS): P3, w&t.\nRnd 6: K3, kw, k to end.\nRnd 7: K1, kw, k to end.\n"
+                       "Rnd 8: BO all sts.\nFasten off.\n"),
+            "");
 }
 
 TEST(HandShortRows, RejectsATurnWorkedWrongWithTheRowAndTheReason) {
@@ -243,6 +248,9 @@ TEST(HandShortRows, RejectsATurnWorkedWrongWithTheRowAndTheReason) {
                        "Row 3 (RS): K3, k DS, k2.\n"),
             "p.md:4: Row 3 (RS): k DS: the next st is wrapped, not a double stitch");
   const std::string rnd = "Cast on 8 sts. Pm and join to work in the rnd.\nRnd 1: Knit.\n";
+  EXPECT_EQ(failure_of(rnd + "Row 2 (RS): K5, w&t.\nRow 3 (WS): P3, w&t.\n"
+                             "Row 4 (RS): K3, w&t.\nRow 5 (WS): P3, w&t.\nRow 6 (RS): K3, k1.\n"),
+            "p.md:7: Row 6 (RS): k: the next st is wrapped (2 wraps): work it with kw");
   EXPECT_EQ(failure_of(rnd + "Row 2 (RS): K5.\n"),
             "p.md:3: Row 2 (RS): a row worked in the rnd ends where the work turns: end it with "
             "w&t or turn");

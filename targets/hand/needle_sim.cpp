@@ -1253,11 +1253,14 @@ class NeedleSimulator {
     last_make_.reset();
   }
 
-  // w&t: the st just slipped and wrapped goes back to the left needle, and the work turns.
+  // w&t: the st just slipped and wrapped goes back to the left needle, and the work turns. A
+  // wrapped st wrapped again keeps its wraps: it has one more.
   void wrap_and_turn() {
     std::uint32_t loop = pc_.right.back();
+    std::uint32_t slipped = fab().taken.back();
     pc_.right.pop_back();
     turn_mark_[loop] = kWrapped;
+    wraps_[loop] = (turn_mark_[slipped] == kWrapped ? wraps_[slipped] : 0) + 1;
     push_left(loop);
     row_ended_ = true;
   }
@@ -1373,6 +1376,7 @@ class NeedleSimulator {
   void check_turn_loop(HandOp op, std::uint32_t loop) const {
     // A st is slipped as it is; a decrease takes a st and its yo as one of its sts.
     if (op == HandOp::sl1 || (turn_mark_[loop] == kWithYo && info(op).takes > 1)) return;
+    if (op == HandOp::wt && turn_mark_[loop] == kWrapped) return;  // wrapped again
     std::uint8_t needs = op == HandOp::kw || op == HandOp::pw     ? kWrapped
                          : op == HandOp::kds || op == HandOp::pds ? kDouble
                          : works_with_yo(op)                      ? kWithYo
@@ -1385,9 +1389,13 @@ class NeedleSimulator {
                        : turn_mark_[loop] == kWrapped ? "wrapped, not a double stitch"
                                                       : "a double stitch, not wrapped"));
     fail(fmt::format("{}: the next st is {}: work it with {}", info(op).abbreviation,
-                     turn_mark_[loop] == kWrapped ? "wrapped" : "a double stitch",
+                     turn_mark_[loop] == kWrapped ? wrapped(loop) : "a double stitch",
                      turn_mark_[loop] == kWrapped ? (facing_ == Side::rs ? "kw" : "pw")
                                                   : (facing_ == Side::rs ? "k DS" : "p DS")));
+  }
+
+  std::string wrapped(std::uint32_t loop) const {
+    return wraps_[loop] == 1 ? "wrapped" : fmt::format("wrapped ({} wraps)", wraps_[loop]);
   }
 
   [[noreturn]] void with_yo_or_not(HandOp op, std::uint32_t loop) const {
@@ -1504,6 +1512,7 @@ class NeedleSimulator {
     auto loop = static_cast<std::uint32_t>(f.loop_maker.size());
     f.loop_maker.push_back(maker);
     turn_mark_.push_back(kPlainLoop);
+    wraps_.push_back(0);
     f.loop_picked.push_back(0);
     f.loop_index.push_back(maker == kNone ? 0 : f.made[maker]++);
     return loop;
@@ -1533,6 +1542,7 @@ class NeedleSimulator {
   // Per loop: whether a short row turned at it, and how.
   static constexpr std::uint8_t kPlainLoop = 0, kWrapped = 1, kDouble = 2, kWithYo = 3;
   std::vector<std::uint8_t> turn_mark_;
+  std::vector<std::uint8_t> wraps_;  // per wrapped loop: how many times (w&t over a wrapped st)
 
   // The piece being worked: what a knitter sets aside with its yarn and takes up again.
   struct Piece {

@@ -907,13 +907,25 @@ class FrontMatter {
              "needles, slip the st back to the left needle and turn the work; the next row starts "
              "with the st worked last. The sts beyond wait on the needle. When a later row comes "
              "to a wrapped st, lift the wrap onto the left needle and work it together with the "
-             "st: kw to knit them, pw to purl them.";
+             "st: kw to knit them, pw to purl them." +
+             std::string(wraps_a_wrapped_st() ? wrapping_a_wrapped_st() : "");
     return "**Short rows (German short rows):** a row that ends in \"turn\" stops there: turn the "
            "work; the sts beyond wait on the needle. When the next row begins with DS, bring the "
            "yarn to the front, slip the first st (the one worked last) purlwise and pull the yarn "
            "up over the needle to the back until the st shows two legs: a double stitch. When a "
            "later row comes to a double stitch, work its two legs together as one st: k DS to "
            "knit them, p DS to purl them.";
+  }
+
+  bool wraps_a_wrapped_st() const {
+    return std::ranges::any_of(p_.rows, [](const PatternRow& r) { return r.wraps_again; });
+  }
+
+  // Heel-turn patterns' double-wrapped st: wrapped again, resolved with both its wraps.
+  static const char* wrapping_a_wrapped_st() {
+    return " When w&t comes to a st that is already wrapped, wrap it again as it is (do not "
+           "work its wrap): it now has two wraps. kw and pw lift all of a st's wraps and work "
+           "them together with the st, as one st.";
   }
 
   // A stitch graph's short rows (AutoKnit's) turn on a tuck, whatever the project chose.

@@ -1682,22 +1682,20 @@ class PatternBuilder {
   }
 
   // The st a short row turns at. Turning again at the st the last short row turned at, the
-  // row works its double stitch as one first (a wrapped st cannot be wrapped again).
-  HandOp turning_op(StitchId s, Side side) const {
-    HandOp plain = side == Side::rs ? HandOp::k : HandOp::p;
-    if (!works_a_turn(s)) return out_.turns == TurnMethod::wrap_and_turn ? HandOp::wt : plain;
-    if (out_.turns == TurnMethod::wrap_and_turn)
-      unsupported(
-          fmt::format("{} turns at the st a short row turned at before: wrap and turn "
-                      "would wrap a wrapped st; write the pattern with German short rows "
-                      "(--set short-rows=german)",
-                      g_.describe(s)));
-    return resolving(plain, s);
+  // row works its double stitch as one first, or wraps the wrapped st again (heel-turn patterns
+  // do: the st then has two wraps, and kw / pw later work both with it).
+  HandOp turning_op(StitchId s, PatternRow& r) const {
+    HandOp plain = r.side == Side::rs ? HandOp::k : HandOp::p;
+    if (out_.turns == TurnMethod::wrap_and_turn) {
+      r.wraps_again = works_a_turn(s);
+      return HandOp::wt;
+    }
+    return works_a_turn(s) ? resolving(plain, s) : plain;
   }
 
   void append_ops(StitchId s, PatternRow& r) {
     T type = worked_by_hand(g_, s);
-    if (type == T::sr4) return out_.ops.push_back(turning_op(s, r.side));
+    if (type == T::sr4) return out_.ops.push_back(turning_op(s, r));
     for (std::uint32_t l : g_.loops_taken_by(s))
       if (g_.loops[l].maker != kNoStitch && unwritten_[g_.loops[l].maker])
         unsupported(

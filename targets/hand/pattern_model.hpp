@@ -36,9 +36,10 @@ struct PatternRow {
   bool round = false;
   Side side = Side::rs;  // the side facing the knitter (rnds: the WS when worked inside out)
   std::uint32_t sts_before = 0, sts_after = 0;
-  bool bind_off = false;   // the row binds off every stitch
-  bool short_row = false;  // ends where the work turns, with sts left on the left needle
-  bool partial = false;    // works only some of the sts (short rows and the rows back)
+  bool bind_off = false;     // the row binds off every stitch
+  bool short_row = false;    // ends where the work turns, with sts left on the left needle
+  bool partial = false;      // works only some of the sts (short rows and the rows back)
+  bool wraps_again = false;  // ends with a w&t at a st a short row wrapped before
 };
 
 struct PatternSection {

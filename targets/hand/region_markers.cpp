@@ -246,6 +246,7 @@ class SectionPlanner {
         unresolved += turns_left(op);
         ++ordinal;
       }
+      unresolved -= r.wraps_again ? 1 : 0;  // that w&t wraps a st still to be resolved
       if (open && !marked && !r.partial && unresolved == 0) {
         blocks.back().end = i;
         open = false;
