@@ -131,7 +131,7 @@ TEST(HandShortRows, TheSockHeelReadsInEitherMethod) {
 // turned at: with German short rows the row works that double stitch as one and turns
 // (`k DS, turn`); with wrap and turn it wraps the wrapped st again (`w&t`), and `kw` later works
 // both wraps with it; either is proven in every format.
-TEST(HandShortRows, ATurnAtTheStTheLastShortRowTurnedAtWorksItsDoubleStitchFirst) {
+TEST(HandShortRows, ATurnAtTheStTheLastShortRowTurnedAtWorksItsDoubleStitchFirstOrWrapsItAgain) {
   Compilation c = testing::sock_turning_twice_at_a_st();
   std::string german = markdown(c, TurnMethod::german);
   EXPECT_NE(german.find("**Row 69 (RS):** DS, k8, k DS, turn.\n"), std::string::npos) << german;
