@@ -235,9 +235,7 @@ TEST(KnitoutShortRows, MakingRoomOffTheBedIsRefusedInWords) {
 // front's (f266), 7 needles apart: more than swg091n2's transfers stretch (4), so the chain's
 // loop hops over f269 and b267, needles the half-gauge layout leaves empty there.
 TEST(KnitoutShortRows, ABindOffBetweenFarLeftEndsHopsFromBedToBed) {
-  Compilation c = testing::compile_letters(testing::kLeftFoldHopTube, "hop.st");
-  knitout::MachineProfile p = shipped_profile("swg091n2");
-  std::string text = testing::emit_knitout_text(c, p);
+  auto [c, p, text] = testing::emit_letters(testing::kLeftFoldHopTube, "hop.st", "swg091n2");
   EXPECT_NE(text.find("knit - b273 3\nrack -4\nxfer b273 f269\nrack 2\nxfer f269 b267\nrack -1\n"
                       "xfer b267 f266\nrack 0\nknit + f266 3\n"),
             std::string::npos);
