@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <iostream>
+#include <random>
 
 #include "knitout/course_layout.hpp"
 #include "test_knitout_util.hpp"
@@ -67,6 +69,43 @@ TEST(KnitoutParting, PartedTubesProveOnEveryProfile) {
           testing::replay_and_prove(testing::emit_knitout_text(c, p), c, p);
       EXPECT_TRUE(proof.proven) << name << " on " << profile << ": " << proof.summary;
     }
+}
+
+// A random tube parting into two legs: rounds with shaping, then a short round whose last
+// stitches are the first leg's first round, more rounds of that leg and its bind-off, then
+// rounds of what is left and the last bind-off. Every ring keeps at least 2 loops.
+std::string random_parted_tube(std::mt19937_64& rng) {
+  std::size_t n = 6 + rng() % 10;
+  std::string letters(n, 's');
+  auto rounds = [&](std::size_t& loops, std::uint64_t count, const char* after) {
+    for (std::uint64_t r = 0; r < count; ++r) {
+      std::size_t made = 0;
+      letters += testing::random_run(rng, loops, made);
+      letters += after;
+      loops = made;
+    }
+  };
+  rounds(n, 1 + rng() % 3, "");
+  if (n < 6) return random_parted_tube(rng);
+  std::size_t before = rng() % (n - 4), leg = 2 + rng() % (n - before - 3), made = 0;
+  letters += testing::random_run(rng, before, made) + "(";
+  std::size_t rest = made + n - before - leg;
+  rounds(leg, 1, ")");
+  rounds(leg, rng() % 3, ")");
+  if (leg < 2 || rest < 2) return random_parted_tube(rng);
+  letters += std::string(leg, 'e');
+  rounds(rest, 1 + rng() % 3, "");
+  if (rest < 2) return random_parted_tube(rng);
+  return letters + std::string(rest, 'e');
+}
+
+TEST(KnitoutRandomized, PartedTubesProveOrAreRefusedInWords) {
+  std::mt19937_64 rng(2019);
+  int proven = 0, refused = 0;
+  for (int trial = 0; trial < 60; ++trial)
+    testing::prove_or_refuse_gathering(random_parted_tube(rng), proven, refused);
+  std::cout << "parted tubes: " << proven << " proven, " << refused << " refused\n";
+  EXPECT_GT(proven, 100);
 }
 
 }  // namespace

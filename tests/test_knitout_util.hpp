@@ -2,13 +2,16 @@
 #pragma once
 
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include <algorithm>
+#include <random>
 #include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "common/error.hpp"
 #include "driver/pipeline.hpp"
 #include "golden.hpp"
 #include "knitout/emit.hpp"
@@ -156,6 +159,42 @@ inline EmittedLetters emit_letters(const char* letters, const char* name,
   EmittedLetters e{compile_letters(letters, name), shipped_profile(profile), ""};
   e.text = emit_knitout_text(e.c, e.p);
   return e;
+}
+
+// Random letters taking exactly `loops` loops: knits, kfbs, k2togs, tucks and slips.
+inline std::string random_run(std::mt19937_64& rng, std::size_t loops, std::size_t& made) {
+  std::string run;
+  for (std::size_t left = loops; left > 0;) {
+    std::uint64_t r = rng() % 12;
+    char letter = r < 7 ? 'k' : r < 9 ? 'i' : r < 11 && left > 1 ? 'd' : r == 11 ? 't' : 'k';
+    run += letter;
+    left -= letter == 'd' ? 2 : 1;
+    made += letter == 'i' ? 2 : letter == 'd' ? 0 : 1;
+    if (letter == 'd') ++made;
+  }
+  return run;
+}
+
+// Emits and proves random letters on every shipped profile: each proves (counted in `proven`)
+// or is refused because a needle would gather more loops than the profile allows (`refused`).
+inline void prove_or_refuse_gathering(const std::string& letters, int& proven, int& refused) {
+  Compilation c = compile_letters(letters.c_str(), "random.st");
+  ASSERT_TRUE(c.knittability.knittable) << letters;
+  for (const char* name : {"swg091n2", "kniterate", "generic"}) {
+    knitout::MachineProfile p = shipped_profile(name);
+    std::string text;
+    try {
+      text = emit_knitout_text(c, p);
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("would gather"), std::string::npos)
+          << letters << " on " << name << ": " << e.what();
+      ++refused;
+      continue;
+    }
+    knitout::ProofResult proof = replay_and_prove(text, c, p);
+    EXPECT_TRUE(proof.proven) << letters << " on " << name << ": " << proof.summary;
+    proven += proof.proven;
+  }
 }
 
 }  // namespace skein::testing
