@@ -135,9 +135,10 @@ std::string why_undetectable(const Mutant& m, const std::vector<std::string>& or
   auto op = [&](std::size_t i) { return words(original[i]).front(); };
   if (m.kind == "swap" && op(m.lines[0]) == "xfer" && op(m.lines[1]) == "xfer")
     return "two transfers in one transfer pass swapped (they commute)";
-  if (m.kind == "swap" && (op(m.lines[0]) == "xfer") != (op(m.lines[1]) == "xfer") &&
+  auto moves = [&](std::size_t i) { return op(i) == "xfer" || op(i) == "drop"; };
+  if (m.kind == "swap" && moves(m.lines[0]) != moves(m.lines[1]) &&
       disjoint_needles(original[m.lines[0]], original[m.lines[1]]))
-    return "a transfer and a stitch on other needles swapped (they commute)";
+    return "a transfer or drop and a stitch on other needles swapped (they commute)";
   if (m.kind == "drop" && op(m.lines[0]) == "xfer")
     return comes_straight_back(original, m.lines[0])
                ? "a transfer that a later one undoes before the loop is used (a redundant pair)"
@@ -226,10 +227,15 @@ TEST(KnitoutMutation, EveryEditThatChangesTheFabricOrBreaksARuleIsRejected) {
   // that start at a turn) and the two small stitch graphs of test_knitout_short_rows.cpp.
   run_mutants("AutoKnit test-A on generic", compile_model("samples/autoknit/test-A.st"),
               testing::shipped_profile("generic"), 150, tally);
+  // A bind-off of part of the work: AutoKnit's test-B and two small tubes parted by one.
+  run_mutants("AutoKnit test-B on generic", compile_model("samples/autoknit/test-B.st"),
+              testing::shipped_profile("generic"), 150, tally);
   for (auto [letters, name] :
        {std::pair{testing::kShapedShortRowTube, "shaped short rows, tube"},
         std::pair{testing::kLeftFoldHopTube, "a tube whose bind-off hops over its left fold"},
-        std::pair{testing::kShapedShortRowSheet, "shaped short rows, sheet"}})
+        std::pair{testing::kShapedShortRowSheet, "shaped short rows, sheet"},
+        std::pair{testing::kPartedTube, "a tube parted into two legs"},
+        std::pair{testing::kHalfBoundOffTube, "a tube half bound off"}})
     run_mutants(fmt::format("{} on swg091n2", name), testing::compile_letters(letters, name),
                 testing::shipped_profile("swg091n2"), 100, tally);
   int rejected = 0, undetectable = 0;

@@ -235,28 +235,12 @@ TEST(KnitoutShortRows, MakingRoomOffTheBedIsRefusedInWords) {
 // front's (f266), 7 needles apart: more than swg091n2's transfers stretch (4), so the chain's
 // loop hops over f269 and b267, needles the half-gauge layout leaves empty there.
 TEST(KnitoutShortRows, ABindOffBetweenFarLeftEndsHopsFromBedToBed) {
-  Compilation c = testing::compile_letters(testing::kLeftFoldHopTube, "hop.st");
-  knitout::MachineProfile p = shipped_profile("swg091n2");
-  std::string text = testing::emit_knitout_text(c, p);
+  auto [c, p, text] = testing::emit_letters(testing::kLeftFoldHopTube, "hop.st", "swg091n2");
   EXPECT_NE(text.find("knit - b273 3\nrack -4\nxfer b273 f269\nrack 2\nxfer f269 b267\nrack -1\n"
                       "xfer b267 f266\nrack 0\nknit + f266 3\n"),
             std::string::npos);
   knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
   EXPECT_TRUE(proof.proven) << proof.summary;
-}
-
-// Random letters taking exactly `loops` loops: knits, kfbs, k2togs, tucks and slips.
-std::string random_run(std::mt19937_64& rng, std::size_t loops, std::size_t& made) {
-  std::string run;
-  for (std::size_t left = loops; left > 0;) {
-    std::uint64_t r = rng() % 12;
-    char letter = r < 7 ? 'k' : r < 9 ? 'i' : r < 11 && left > 1 ? 'd' : r == 11 ? 't' : 'k';
-    run += letter;
-    left -= letter == 'd' ? 2 : 1;
-    made += letter == 'i' ? 2 : letter == 'd' ? 0 : 1;
-    if (letter == 'd') ++made;
-  }
-  return run;
 }
 
 // A random stitch graph with shaping inside short rows: a tube (rounds, and pairs of short rows
@@ -268,7 +252,7 @@ std::string random_shaped_short_rows(std::mt19937_64& rng, bool tube) {
   std::size_t yarn = n;  // the loops left of the yarn (a sheet's)
   auto row = [&](std::size_t loops) {
     std::size_t made = 0;
-    letters += random_run(rng, loops, made);
+    letters += testing::random_run(rng, loops, made);
     return made;
   };
   for (int r = 0, rows = 3 + static_cast<int>(rng() % 6); r < rows; ++r) {
@@ -307,26 +291,8 @@ std::string random_shaped_short_rows(std::mt19937_64& rng, bool tube) {
 TEST(KnitoutRandomized, ShapingInsideShortRowsProvesOrIsRefusedInWords) {
   std::mt19937_64 rng(2019);
   int proven = 0, refused = 0;
-  for (int trial = 0; trial < 60; ++trial) {
-    std::string letters = random_shaped_short_rows(rng, trial % 2);
-    Compilation c = testing::compile_letters(letters.c_str(), "random.st");
-    ASSERT_TRUE(c.knittability.knittable) << letters;
-    for (const char* name : kProfiles) {
-      knitout::MachineProfile p = shipped_profile(name);
-      std::string text;
-      try {
-        text = testing::emit_knitout_text(c, p);
-      } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("would gather"), std::string::npos)
-            << letters << " on " << name << ": " << e.what();
-        ++refused;
-        continue;
-      }
-      knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
-      EXPECT_TRUE(proof.proven) << letters << " on " << name << ": " << proof.summary;
-      proven += proof.proven;
-    }
-  }
+  for (int trial = 0; trial < 60; ++trial)
+    testing::prove_or_refuse_gathering(random_shaped_short_rows(rng, trial % 2), proven, refused);
   std::cout << "shaped short rows: " << proven << " proven, " << refused << " refused\n";
   EXPECT_GT(proven, 100);
 }

@@ -2,13 +2,16 @@
 #pragma once
 
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include <algorithm>
+#include <random>
 #include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "common/error.hpp"
 #include "driver/pipeline.hpp"
 #include "golden.hpp"
 #include "knitout/emit.hpp"
@@ -40,7 +43,9 @@ inline knitout::ProofResult replay_and_prove(const std::string& text, const Comp
 // t tuck, m miss (slip), e bind-off; '|' turns the yarn back (AutoKnit's dir flips). The loops
 // on the needles are kept in order along the fabric: each stitch takes the next ones the yarn
 // meets and leaves its own in their place; past either end the yarn comes round to the other
-// (a tube, cut again where the yarn is), which a sheet's letters never ask for.
+// (a tube, cut again where the yarn is), which a sheet's letters never ask for. A tube parts
+// into legs with '(' before a leg's first stitch and ')' after its last: the yarn comes round
+// the leg, back to the loop that first stitch made (the other loops wait).
 inline std::string stitch_graph_st(const std::string& letters) {
   struct Line {
     char letter;
@@ -50,10 +55,13 @@ inline std::string stitch_graph_st(const std::string& letters) {
   std::vector<Line> lines;
   std::vector<std::pair<int, int>> fabric;  // (stitch, out slot), left to right
   std::size_t yarn = 0;                     // the loops left of the yarn: fabric[0, yarn)
-  bool forward = true;
+  bool forward = true, leg_starts = false;
+  std::size_t leg = 0;  // where the leg's first loop lies in the fabric
   for (char letter : letters) {
-    if (letter == '|') {
-      forward = !forward;
+    if (letter == '|' || letter == '(' || letter == ')') {
+      forward = forward != (letter == '|');
+      leg_starts = letter == '(';
+      if (letter == ')') yarn = leg;
       continue;
     }
     int s = static_cast<int>(lines.size());
@@ -65,6 +73,7 @@ inline std::string stitch_graph_st(const std::string& letters) {
       yarn = forward ? 0 : fabric.size();
     }
     std::size_t first = forward ? yarn : yarn - takes;
+    if (leg_starts) leg = first, leg_starts = false;
     for (std::size_t i = 0; i < takes; ++i) {
       auto [maker, slot] = fabric[first + i];
       lines[static_cast<std::size_t>(s)].in[i] = maker;
@@ -113,8 +122,79 @@ inline const char* const kShapedShortRowSheet =
 // crosses from one bed's left end to the other's further than swg091n2's transfers stretch.
 inline const char* const kLeftFoldHopTube = "ssssssssdkkdkikdkikkkdkd|id|dkttkkkkkdikk|d|kiieeeee";
 
+// A tube (8 around) parting into two legs, as AutoKnit's test-B does: a short round of 6 from
+// the round's start (its last 4 stitches the first leg's, across the right fold, 2 on each
+// bed), the first leg knit round once more and bound off while the other 4 loops wait; the
+// yarn goes on to the second leg, knit round once and bound off.
+inline const char* const kPartedTube =
+    "ssssssss"
+    "kkkkkkkk"
+    "kk(kkkk)"
+    "kkkk)"
+    "eeee"
+    "kkkk"
+    "eeee";
+// A tube (8 around) whose first half (its front) is bound off; the yarn goes on to knit the
+// other half (the back) round twice, re-spaced over both beds, and binds it off.
+inline const char* const kHalfBoundOffTube =
+    "ssssssss"
+    "kkkkkkkk"
+    "eeee"
+    "kkkk"
+    "kkkk"
+    "eeee";
+
 inline Compilation compile_letters(const char* letters, const char* name) {
   return compile_knit_graph(parse_autoknit_st(stitch_graph_st(letters), name), name);
+}
+
+// A stitch graph's letters compiled and emitted for a shipped profile.
+struct EmittedLetters {
+  Compilation c;
+  knitout::MachineProfile p;
+  std::string text;
+};
+inline EmittedLetters emit_letters(const char* letters, const char* name,
+                                   const std::string& profile) {
+  EmittedLetters e{compile_letters(letters, name), shipped_profile(profile), ""};
+  e.text = emit_knitout_text(e.c, e.p);
+  return e;
+}
+
+// Random letters taking exactly `loops` loops: knits, kfbs, k2togs, tucks and slips.
+inline std::string random_run(std::mt19937_64& rng, std::size_t loops, std::size_t& made) {
+  std::string run;
+  for (std::size_t left = loops; left > 0;) {
+    std::uint64_t r = rng() % 12;
+    char letter = r < 7 ? 'k' : r < 9 ? 'i' : r < 11 && left > 1 ? 'd' : r == 11 ? 't' : 'k';
+    run += letter;
+    left -= letter == 'd' ? 2 : 1;
+    made += letter == 'i' ? 2 : letter == 'd' ? 0 : 1;
+    if (letter == 'd') ++made;
+  }
+  return run;
+}
+
+// Emits and proves random letters on every shipped profile: each proves (counted in `proven`)
+// or is refused because a needle would gather more loops than the profile allows (`refused`).
+inline void prove_or_refuse_gathering(const std::string& letters, int& proven, int& refused) {
+  Compilation c = compile_letters(letters.c_str(), "random.st");
+  ASSERT_TRUE(c.knittability.knittable) << letters;
+  for (const char* name : {"swg091n2", "kniterate", "generic"}) {
+    knitout::MachineProfile p = shipped_profile(name);
+    std::string text;
+    try {
+      text = emit_knitout_text(c, p);
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("would gather"), std::string::npos)
+          << letters << " on " << name << ": " << e.what();
+      ++refused;
+      continue;
+    }
+    knitout::ProofResult proof = replay_and_prove(text, c, p);
+    EXPECT_TRUE(proof.proven) << letters << " on " << name << ": " << proof.summary;
+    proven += proof.proven;
+  }
 }
 
 }  // namespace skein::testing

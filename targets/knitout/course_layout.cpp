@@ -80,22 +80,25 @@ std::vector<Course> split_into_courses(const KnitGraph& g, const std::vector<Sti
   return courses;
 }
 
+// A bind-off course may come before the last (part of the work bound off, as a tube's first
+// leg, while the rest waits and is knit on after it); the last course is all bind-off.
 void check_borders(const KnitGraph& g, const CourseLayout& l) {
   const Course& first = l.courses.front();
-  const Course& last = l.courses.back();
-  for (std::uint32_t i = 0; i < l.order.size(); ++i) {
-    StitchId s = l.order[i];
-    bool in_first = i < first.end, in_last = i >= last.begin;
-    if (in_first != (g.type[s] == StitchType::co))
-      unsupported(g,
-                  in_first ? "a first row that is not all cast-on stitches"
-                           : "a cast-on stitch above the first row",
-                  s);
-    if (in_last != (g.type[s] == StitchType::bo))
-      unsupported(g,
-                  in_last ? "a last row that is not all bind-off stitches"
-                          : "a bind-off stitch below the last row",
-                  s);
+  for (const Course& c : l.courses) {
+    bool bind_off = is_bind_off(g, l.order[c.begin]), last = &c == &l.courses.back();
+    for (std::uint32_t i = c.begin; i < c.end; ++i) {
+      StitchId s = l.order[i];
+      bool in_first = i < first.end;
+      if (in_first != (g.type[s] == StitchType::co))
+        unsupported(g,
+                    in_first ? "a first row that is not all cast-on stitches"
+                             : "a cast-on stitch above the first row",
+                    s);
+      if (last && !is_bind_off(g, s))
+        unsupported(g, "a last row that is not all bind-off stitches", s);
+      if (bind_off != is_bind_off(g, s))
+        unsupported(g, "a bind-off and other stitches in one course, with no turn between", s);
+    }
   }
   if (l.tube) return;
   for (std::size_t c = 1; c < l.courses.size(); ++c)
@@ -168,6 +171,7 @@ class LiveLoops {
     if (first == kNoWrap) {  // nothing made (a bind-off): the neighbours close up
       if (before != kNoWrap) next_[before] = after;
       if (after != kNoWrap) prev_[after] = before;
+      if (takes_start) start_ = after;  // the rest's rounds start where the bind-off ended
       return kNoWrap;
     }
     return c.left_to_right ? after : before;
@@ -179,7 +183,7 @@ class LiveLoops {
   void move_start(const Course& c) {
     StitchId taker = g_.loops[start_].taker;
     auto made = g_.loops_made_by(taker);
-    if (made.empty()) return;  // a bind-off
+    if (made.empty()) return;  // a bind-off: see replace_run
     bool sr5 = g_.type[taker] == StitchType::sr5;
     start_ = made[sr5 ? knit_slot(StitchType::sr5, c.left_to_right) : 0];
   }

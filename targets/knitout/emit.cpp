@@ -81,8 +81,8 @@ class Emitter {
       const Course& course = l_.courses[i];
       plan_course(course, false);
       transition(course);
-      if (i + 1 == l_.courses.size()) {
-        bind_off(course);
+      if (g_.type[l_.order[course.begin]] == StitchType::bo) {
+        bind_off(course, i + 1 == l_.courses.size());
       } else {
         knit_course(course);
         wrap_turn(course);
@@ -787,10 +787,13 @@ class Emitter {
   }
 
   // Chain bind-off: knit a loop, move it onto the next stitch's needle, knit both, and so on;
-  // then a tag knit back and forth on the last needle, the yarn out, and the tag dropped.
-  void bind_off(const Course& c) {
-    source(c, "bind-off");
+  // then a tag knit back and forth on the last needle, the yarn out, and the tag dropped. A
+  // bind-off of part of the work (the rest knit on after it) drops its last loop instead: the
+  // yarn goes on through it to the next course, as a knitter's does, and its needles are free.
+  void bind_off(const Course& c, bool last_course) {
+    source(c, last_course ? "bind-off" : "bind-off (part of the work; the rest goes on)");
     for (std::uint32_t i = c.begin; i < c.end; ++i) {
+      track_loops(l_.order[i]);
       const StitchPlan& sp = plan_[l_.order[i]];
       Place here{sp.knit, sp.needle};
       w_.rack(0);
@@ -806,6 +809,7 @@ class Emitter {
     }
     const StitchPlan& last = plan_[l_.order[c.end - 1]];
     Needle tag{last.knit, last.needle};
+    if (!last_course) return w_.drop(tag);
     if (p_.tag_rows) w_.line(fmt::format(";!source: tag: {} rows on the last loop", p_.tag_rows));
     Direction d = last.travel;
     for (std::uint32_t row = 0; row < p_.tag_rows; ++row) {

@@ -61,6 +61,8 @@ class Matcher {
           return false;
         }
       }
+      if (previous_bo != kNoLoop && t != StitchType::bo && !chain_let_go(s, previous_bo, why))
+        return false;
       if (!stitch_matches(s, t, &yarn[pos], previous_bo, why)) return false;
       if (wrap_after_[s] != kNoWrap && !wrap_matches(s, yarn[pos], yarn[pos + n - 1], why))
         return false;
@@ -101,6 +103,16 @@ class Matcher {
     }
     wraps_.emplace(g_.loops[waiting].taker, x);
     return true;
+  }
+  // A bind-off of part of the work, which the yarn leaves for `next`, drops its chain's last
+  // loop `x` (the yarn goes on through it), so that its needles are free for the rest.
+  bool chain_let_go(StitchId next, LoopId x, std::string& why) const {
+    if (f_.loops[x].dropped) return true;
+    why = fmt::format(
+        "the bind-off before {} leaves its last loop ({}) on the needle: a "
+        "bind-off of part of the work drops it",
+        g_.describe(next), where(x));
+    return false;
   }
   // Whether the loop `x`, made in slot `slot` of `maker`, belongs to a tube's front half: a
   // purl's loop and a kfb's second loop are made on the bed facing their half.
