@@ -32,6 +32,22 @@ bool goes_back_over_the_sts_just_made(const KnitGraph& g, StitchId before, Stitc
          works_the_wale_of(g, g.yarn_next[next], before);
 }
 
+// Does the stitch after `s` work the loop beside one that `s` took across a gap (a band's
+// last row going on round the needle past the gap it decreased into, as letter-h's band does
+// after an odd number of rows)? The yarn goes on in the same direction: no turn.
+bool goes_on_past_the_gap_next(const KnitGraph& g, const std::vector<StitchId>& before,
+                               StitchId s) {
+  StitchId next = g.yarn_next[s];
+  if (works_the_wale_of(g, next, s)) return false;
+  auto taken = g.loops_taken_by(s);
+  return std::any_of(taken.begin(), taken.end(), [&](std::uint32_t l) {
+    const Loop& across = g.loops[l];
+    return across.kind == LoopKind::perpendicular && across.maker != kNoStitch &&
+           (works_the_wale_of(g, next, g.yarn_next[across.maker]) ||
+            works_the_wale_of(g, next, before[across.maker]));
+  });
+}
+
 }  // namespace
 
 void correct_corner_links(KnitGraph& g) {
@@ -43,6 +59,8 @@ void correct_corner_links(KnitGraph& g) {
       g.yarn_link[s] = YarnLink::turn;
     else if (g.yarn_link[s] == YarnLink::turn && picks_up_along_its_edge_next(g, s))
       g.yarn_link[s] = YarnLink::shift, g.flags[s] |= kRoundsACorner;
+    else if (g.yarn_link[s] == YarnLink::turn && goes_on_past_the_gap_next(g, before, s))
+      g.yarn_link[s] = YarnLink::shift, g.flags[s] |= kRoundsACorner | kPastAGap;
 }
 
 }  // namespace skein
