@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "builtin_targets.hpp"
+#include "common/error.hpp"
 #include "driver/pipeline.hpp"
 #include "fixtures.hpp"
 #include "hand/hand_target.hpp"
@@ -504,6 +505,37 @@ TEST(HandPieces, TheLetterHIsProvenInEveryFormat) {
        "- Piece 2: Width: 4 cm (1.4 in), 7 sts at the widest. A cast-on only: no rows of its "
        "own.\n",
        "sts at the widest. 24 short rows (worked on part of the sts), no whole rnds.\n"});
+}
+
+// The letter H at 13 sts and 18 rows to 10 cm: its band across the gaps has an odd number of
+// rows, so its last (RS) row goes on round the needle past the gap without turning, and the
+// rnd after it starts there (the pattern wrote `turn` and a WS rnd, which did not prove).
+TEST(HandPieces, TheLetterHAtAnotherGaugeGoesOnPastTheGapAfterAnOddBand) {
+  Compilation c = testing::sample_at_gauge("letter-h", 13, 18);
+  std::string text = emit(c, "hand");
+  EXPECT_NE(text.find("**Row 27 (RS):** Sl1 back, ssk, k2, ssk, do not turn \u2014 12 sts.\n"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("**Rnd 28:** Pm, k to end.\n"), std::string::npos) << text;
+  EXPECT_EQ(testing::unproven_hand_formats(c), "");
+}
+
+// The letter R at 27 sts and 39 rows to 10 cm: its bowl's rows take sts from Piece 1's spare
+// needle and from holder 3's at once, which `sl1 from spare` cannot tell apart: refused by
+// name (the pattern wrote `sl1 from spare` for both).
+TEST(HandPieces, TheLetterRAtAnotherGaugeRefusesTwoSpareNeedlesItCannotName) {
+  Compilation c = testing::sample_at_gauge("letter-r", 27, 39);
+  try {
+    emit(c, "hand");
+    FAIL() << "expected the hand target to refuse rows taking from two first spare needles";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(
+                  "across a perpendicular edge from the spare needle of Piece 1 while the sts of "
+                  "holder 3 wait on a spare needle for the same rows: 'sl1 from spare' cannot "
+                  "say which"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 // The letter R: a flap worked back from the end of a rnd (the model's shift-path there is a

@@ -519,6 +519,8 @@ TEST(HandMutations, HoldersRejectEveryEditThatChangesTheFabric) {
 TEST(HandMutations, TheLetterHRejectsEveryEditThatChangesTheFabric) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
   mutate_and_judge("letter H", compile_model("samples/letter-h/letter-h.yaml"));
+  mutate_and_judge("letter H at 13 sts/18 rows (a band's last row that does not turn)",
+                   testing::sample_at_gauge("letter-h", 13, 18));
 }
 
 // The letter R: a three-needle bind-off said before a rnd in the middle of a piece's work,

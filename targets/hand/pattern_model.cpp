@@ -1523,7 +1523,8 @@ class PatternBuilder {
       if (holder_of_[maker] != 0)
         second = take_from_holder_on_spare_needle(s, holder_of_[maker], maker);
       else
-        refuse_edge_loop_off_spare_needle(s, maker);
+        refuse_edge_loop_off_spare_needle(s, maker),
+            refuse_piece_beside_a_held_spare_needle(s, maker);
       out_.ops.push_back(
           second ? (worked == 0 ? HandOp::from_second_spare : HandOp::from_second_spare_behind)
                  : (worked == 0 ? HandOp::from_spare : HandOp::from_spare_behind));
@@ -1634,6 +1635,21 @@ class PatternBuilder {
           "{} works a loop of {} across a perpendicular edge from the needle of Piece {}, set "
           "aside, not from a spare needle, which is not covered yet",
           g_.describe(s), g_.describe(maker), from.piece));
+  }
+
+  // `sl1 from spare` takes from a holder put on the spare needle while it holds sts, or else
+  // from the one piece waiting on a spare needle: a st of that piece taken while a holder's sts
+  // are there (letter-r at 27 sts/39 rows: its bowl's rows take Piece 1's sts and holder 3's)
+  // would need rows that name each spare needle, which are not written yet.
+  void refuse_piece_beside_a_held_spare_needle(StitchId s, StitchId maker) const {
+    for (std::size_t h = 0; h < holders_.size(); ++h)
+      if (spare_left_[h] > 0 && spare_second_[h] == 0)
+        unsupported(fmt::format(
+            "{} works a loop of {} across a perpendicular edge from the spare needle of Piece "
+            "{} while the sts of holder {} wait on a spare needle for the same rows: "
+            "'sl1 from spare' cannot say which, and rows that name each spare needle are not "
+            "covered yet",
+            g_.describe(s), g_.describe(maker), out_.sections[section_of(maker)].piece, h + 1));
   }
 
   // Sts of another piece's spare needle are placed into a rnd that works them. A piece set
