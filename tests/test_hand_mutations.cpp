@@ -528,6 +528,8 @@ TEST(HandMutations, TheLetterHRejectsEveryEditThatChangesTheFabric) {
 TEST(HandMutations, TheLetterRRejectsEveryEditThatChangesTheFabric) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
   mutate_and_judge("letter R", compile_model("samples/letter-r/letter-r.yaml"));
+  mutate_and_judge("letter R at 27 sts/39 rows (two spare needles beside a piece's, an odd flap)",
+                   testing::sample_at_gauge("letter-r", 27, 39));
 }
 
 // The teapot: strips parted from its body and joined in the rnd, a heel turn on a new yarn, an
