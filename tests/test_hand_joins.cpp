@@ -520,6 +520,19 @@ TEST(HandPieces, TheLetterHAtAnotherGaugeGoesOnPastTheGapAfterAnOddBand) {
   EXPECT_EQ(testing::unproven_hand_formats(c), "");
 }
 
+// The two bars at 28 sts and 26 rows to 10 cm: each bar's face has an odd number of rows, so
+// its last row goes on into the rnd that places the other pieces' sts and comes round to the
+// face's (the pattern wrote a turn there, and refused other gauges for rows it could not give a
+// RS and a WS).
+TEST(HandPieces, TheTwoBarsAtAnotherGaugeGoOnIntoTheRndAfterAnOddFace) {
+  Compilation c = testing::sample_at_gauge("two-bars", 28, 26);
+  std::string text = emit(c, "hand");
+  EXPECT_EQ(testing::occurrences(text, "**Row 30 (RS):** Sl1 from spare, ssk, k10, do not turn.\n"),
+            2u)
+      << text;
+  EXPECT_EQ(testing::unproven_hand_formats(c), "");
+}
+
 // The letter R at 27 sts and 39 rows to 10 cm: its bowl's rows take sts from Piece 1's spare
 // needle and from holder 3's at once (holder 3 goes on a second spare needle; the pattern wrote
 // `sl1 from spare` for both), and its flap has an odd number of rows, worked back from the end

@@ -512,6 +512,8 @@ TEST(HandMutations, HoldersRejectEveryEditThatChangesTheFabric) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
   mutate_and_judge("three bars", compile_model("samples/three-bars/three-bars.yaml"));
   mutate_and_judge("two bars", compile_model("samples/two-bars/two-bars.yaml"));
+  mutate_and_judge("two bars at 28 sts/26 rows (a face's last row that does not turn)",
+                   testing::sample_at_gauge("two-bars", 28, 26));
 }
 
 // The letter H: a band across gaps between the legs, and a fold whose pairs take held sts

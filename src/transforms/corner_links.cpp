@@ -32,20 +32,17 @@ bool goes_back_over_the_sts_just_made(const KnitGraph& g, StitchId before, Stitc
          works_the_wale_of(g, g.yarn_next[next], before);
 }
 
-// Does the stitch after `s` work the loop beside one that `s` took across a gap (a band's
-// last row going on round the needle past the gap it decreased into, as letter-h's band does
-// after an odd number of rows)? The yarn goes on in the same direction: no turn.
-bool goes_on_past_the_gap_next(const KnitGraph& g, const std::vector<StitchId>& before,
-                               StitchId s) {
-  StitchId next = g.yarn_next[s];
-  if (works_the_wale_of(g, next, s)) return false;
-  auto taken = g.loops_taken_by(s);
-  return std::any_of(taken.begin(), taken.end(), [&](std::uint32_t l) {
-    const Loop& across = g.loops[l];
-    return across.kind == LoopKind::perpendicular && across.maker != kNoStitch &&
-           (works_the_wale_of(g, next, g.yarn_next[across.maker]) ||
-            works_the_wale_of(g, next, before[across.maker]));
-  });
+// Does the rnd after `s` end on the st `s` made, without starting on it? The yarn goes on round
+// the needle, no turn: a band's last row going on past the gap it decreased into (letter-h's
+// after an odd number of rows), a face's last row going on into the rnd that places the other
+// pieces' sts and comes round to the face's (the two bars').
+bool comes_round_to_it(const KnitGraph& g, StitchId s) {
+  StitchId last = g.yarn_next[s];
+  if (last == kNoStitch || g.row_shape[g.row[last]] != RowShape::closed ||
+      works_the_wale_of(g, last, s))
+    return false;
+  while (g.yarn_link[last] == YarnLink::course) last = g.yarn_next[last];
+  return works_the_wale_of(g, last, s);
 }
 
 }  // namespace
@@ -59,8 +56,8 @@ void correct_corner_links(KnitGraph& g) {
       g.yarn_link[s] = YarnLink::turn;
     else if (g.yarn_link[s] == YarnLink::turn && picks_up_along_its_edge_next(g, s))
       g.yarn_link[s] = YarnLink::shift, g.flags[s] |= kRoundsACorner;
-    else if (g.yarn_link[s] == YarnLink::turn && goes_on_past_the_gap_next(g, before, s))
-      g.yarn_link[s] = YarnLink::shift, g.flags[s] |= kRoundsACorner | kPastAGap;
+    else if (g.yarn_link[s] == YarnLink::turn && comes_round_to_it(g, s))
+      g.yarn_link[s] = YarnLink::shift, g.flags[s] |= kRoundsACorner | kGoesOnRound;
 }
 
 }  // namespace skein

@@ -1219,7 +1219,7 @@ class PatternBuilder {
   void add_row() {
     join_flat_piece_in_the_rnd();
     bool turns = link_[row_.back()] == YarnLink::turn || ends_between_turns() ||
-                 rounds_a_corner_short_of_the_marker() || (g_.flags[row_.back()] & kPastAGap);
+                 rounds_a_corner_short_of_the_marker() || (g_.flags[row_.back()] & kGoesOnRound);
     bool first_of_take_up = section().resumed && section().first_row == out_.rows.size();
     bool full_round =
         section().in_round && !turns && st_.previous_link != YarnLink::turn && !after_a_corner();
