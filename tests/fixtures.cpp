@@ -264,6 +264,20 @@ Compilation sample_variant(const std::string& sample, const std::string& tag,
   return compile_model(path.string());
 }
 
+Compilation sample_at_gauge(const std::string& sample, int stitches, int rows) {
+  return sample_variant(
+      sample, fmt::format("gauge-{}-{}", stitches, rows), [&](std::string& project) {
+        std::string gauge = fmt::format("gauge: {{stitches: {}, rows: {}}}", stitches, rows);
+        std::size_t at = project.find("\ngauge:");
+        if (at == std::string::npos) {
+          project += "\n" + gauge + "\n";
+          return;
+        }
+        std::size_t end = project.find('\n', at + 1);
+        project.replace(at + 1, end - at - 1, gauge);
+      });
+}
+
 Compilation sample_turning_at_sr5_faces(const std::string& sample, const std::string& more) {
   return sample_variant(sample, "sr5", [&](std::string& project) {
     if (std::size_t at = project.find("method: sr4"); at != std::string::npos)

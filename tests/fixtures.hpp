@@ -65,6 +65,9 @@ StitchMesh short_row_mesh(StitchType turn = StitchType::sr4);
 Compilation sample_variant(const std::string& sample, const std::string& tag,
                            const std::function<void(std::string&)>& edit);
 
+// A sample's project at another gauge (`gauge: {stitches: S, rows: R}` replaced or added).
+Compilation sample_at_gauge(const std::string& sample, int stitches, int rows);
+
 // The sock at 10 sts and 44 rows to 10 cm: its heel's short rows turn twice at some sts.
 Compilation sock_turning_twice_at_a_st();
 

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "builtin_targets.hpp"
+#include "common/error.hpp"
 #include "driver/pipeline.hpp"
 #include "fixtures.hpp"
 #include "hand/hand_target.hpp"
@@ -504,6 +505,48 @@ TEST(HandPieces, TheLetterHIsProvenInEveryFormat) {
        "- Piece 2: Width: 4 cm (1.4 in), 7 sts at the widest. A cast-on only: no rows of its "
        "own.\n",
        "sts at the widest. 24 short rows (worked on part of the sts), no whole rnds.\n"});
+}
+
+// The letter H at 13 sts and 18 rows to 10 cm: its band across the gaps has an odd number of
+// rows, so its last (RS) row goes on round the needle past the gap without turning, and the
+// rnd after it starts there (the pattern wrote `turn` and a WS rnd, which did not prove).
+TEST(HandPieces, TheLetterHAtAnotherGaugeGoesOnPastTheGapAfterAnOddBand) {
+  Compilation c = testing::sample_at_gauge("letter-h", 13, 18);
+  std::string text = emit(c, "hand");
+  EXPECT_NE(text.find("**Row 27 (RS):** Sl1 back, ssk, k2, ssk, do not turn \u2014 12 sts.\n"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("**Rnd 28:** Pm, k to end.\n"), std::string::npos) << text;
+  EXPECT_EQ(testing::unproven_hand_formats(c), "");
+}
+
+// The two bars at 28 sts and 26 rows to 10 cm: each bar's face has an odd number of rows, so
+// its last row goes on into the rnd that places the other pieces' sts and comes round to the
+// face's (the pattern wrote a turn there, and refused other gauges for rows it could not give a
+// RS and a WS).
+TEST(HandPieces, TheTwoBarsAtAnotherGaugeGoOnIntoTheRndAfterAnOddFace) {
+  Compilation c = testing::sample_at_gauge("two-bars", 28, 26);
+  std::string text = emit(c, "hand");
+  EXPECT_EQ(testing::occurrences(text, "**Row 30 (RS):** Sl1 from spare, ssk, k10, do not turn.\n"),
+            2u)
+      << text;
+  EXPECT_EQ(testing::unproven_hand_formats(c), "");
+}
+
+// The letter R at 27 sts and 39 rows to 10 cm: its bowl's rows take sts from Piece 1's spare
+// needle and from holder 3's at once (holder 3 goes on a second spare needle; the pattern wrote
+// `sl1 from spare` for both), and its flap has an odd number of rows, worked back from the end
+// of the rnd, whose sts are still the rnd's last (the pattern slipped the first ones).
+TEST(HandPieces, TheLetterRAtAnotherGaugeNamesEachSpareNeedleAndHoldsItsOddFlap) {
+  Compilation c = testing::sample_at_gauge("letter-r", 27, 39);
+  std::string text = emit(c, "hand");
+  for (const char* line :
+       {"Slip sts 9\u201332 of the rnd to holder 1 \u2014 8 sts.\n",
+        "Put the 11 sts of holder 3 on a second spare needle, the last st of its last rnd at the "
+        "tip.\n\n**Row 28 (RS):** Sl1 from 2nd spare, ssk, k24, sl1 from spare behind, ssk, "
+        "turn.\n"})
+    EXPECT_NE(text.find(line), std::string::npos) << line << "\n" << text;
+  EXPECT_EQ(testing::unproven_hand_formats(c), "");
 }
 
 // The letter R: a flap worked back from the end of a rnd (the model's shift-path there is a

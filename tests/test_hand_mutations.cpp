@@ -515,6 +515,8 @@ TEST(HandMutations, HoldersRejectEveryEditThatChangesTheFabric) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
   mutate_and_judge("three bars", compile_model("samples/three-bars/three-bars.yaml"));
   mutate_and_judge("two bars", compile_model("samples/two-bars/two-bars.yaml"));
+  mutate_and_judge("two bars at 28 sts/26 rows (a face's last row that does not turn)",
+                   testing::sample_at_gauge("two-bars", 28, 26));
 }
 
 // The letter H: a band across gaps between the legs, and a fold whose pairs take held sts
@@ -522,6 +524,8 @@ TEST(HandMutations, HoldersRejectEveryEditThatChangesTheFabric) {
 TEST(HandMutations, TheLetterHRejectsEveryEditThatChangesTheFabric) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
   mutate_and_judge("letter H", compile_model("samples/letter-h/letter-h.yaml"));
+  mutate_and_judge("letter H at 13 sts/18 rows (a band's last row that does not turn)",
+                   testing::sample_at_gauge("letter-h", 13, 18));
 }
 
 // The letter R: a three-needle bind-off said before a rnd in the middle of a piece's work,
@@ -529,6 +533,8 @@ TEST(HandMutations, TheLetterHRejectsEveryEditThatChangesTheFabric) {
 TEST(HandMutations, TheLetterRRejectsEveryEditThatChangesTheFabric) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
   mutate_and_judge("letter R", compile_model("samples/letter-r/letter-r.yaml"));
+  mutate_and_judge("letter R at 27 sts/39 rows (two spare needles beside a piece's, an odd flap)",
+                   testing::sample_at_gauge("letter-r", 27, 39));
 }
 
 // The teapot: strips parted from its body and joined in the rnd, a heel turn on a new yarn, an

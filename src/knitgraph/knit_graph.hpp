@@ -88,6 +88,8 @@ enum StitchFlag : std::uint8_t {
   kExtruded = 8,        // added by the transforms along a join or split (no face of its own)
   kRoundsACorner = 16,  // the yarn goes on round a corner, down its edge into a round (the
                         // model's turn there; see transforms/corner_links.hpp)
+  kGoesOnRound = 32,    // with kRoundsACorner: a row in the rnd whose yarn goes on round into
+                        // the rnd after it without turning (a band's or a face's last row)
 };
 
 struct KnitGraph {

@@ -32,6 +32,19 @@ bool goes_back_over_the_sts_just_made(const KnitGraph& g, StitchId before, Stitc
          works_the_wale_of(g, g.yarn_next[next], before);
 }
 
+// Does the rnd after `s` end on the st `s` made, without starting on it? The yarn goes on round
+// the needle, no turn: a band's last row going on past the gap it decreased into (letter-h's
+// after an odd number of rows), a face's last row going on into the rnd that places the other
+// pieces' sts and comes round to the face's (the two bars').
+bool comes_round_to_it(const KnitGraph& g, StitchId s) {
+  StitchId last = g.yarn_next[s];
+  if (last == kNoStitch || g.row_shape[g.row[last]] != RowShape::closed ||
+      works_the_wale_of(g, last, s))
+    return false;
+  while (g.yarn_link[last] == YarnLink::course) last = g.yarn_next[last];
+  return works_the_wale_of(g, last, s);
+}
+
 }  // namespace
 
 void correct_corner_links(KnitGraph& g) {
@@ -43,6 +56,8 @@ void correct_corner_links(KnitGraph& g) {
       g.yarn_link[s] = YarnLink::turn;
     else if (g.yarn_link[s] == YarnLink::turn && picks_up_along_its_edge_next(g, s))
       g.yarn_link[s] = YarnLink::shift, g.flags[s] |= kRoundsACorner;
+    else if (g.yarn_link[s] == YarnLink::turn && comes_round_to_it(g, s))
+      g.yarn_link[s] = YarnLink::shift, g.flags[s] |= kRoundsACorner | kGoesOnRound;
 }
 
 }  // namespace skein

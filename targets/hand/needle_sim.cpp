@@ -1279,15 +1279,18 @@ class NeedleSimulator {
   // The next st of the one piece waiting on a spare needle (in the order its last row worked
   // them) joins the work at the tip of the left needle.
   void slip_from_spare(bool behind) {
-    if (spare_for_rows_[0].empty() && spare_needles_.size() != 1)
-      fail(fmt::format("sl1 from spare: {} pieces wait on spare needles; which one is meant?",
-                       spare_needles_.size()));
-    // The spare needle a holder was put on, or else the one piece waiting on a spare needle.
+    // The spare needle a holder was put on, or else the one piece whose sts wait on a spare
+    // needle (a provisional cast-on's chain holds no sts to slip).
     bool holder = !spare_for_rows_[0].empty();
-    std::vector<std::uint32_t>& spare =
-        holder ? spare_for_rows_[0] : spare_needles_.begin()->second;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> waiting;
+    for (const auto& [key, loops] : spare_needles_)
+      if (key.second == kNeedle) waiting.push_back(key);
+    if (!holder && waiting.size() != 1)
+      fail(fmt::format("sl1 from spare: {} pieces wait on spare needles; which one is meant?",
+                       waiting.size()));
+    std::vector<std::uint32_t>& spare = holder ? spare_for_rows_[0] : spare_needles_[waiting[0]];
     slip_onto_left_needle(spare, behind, "sl1 from spare");
-    if (spare.empty() && !holder) spare_needles_.clear();
+    if (spare.empty() && !holder) spare_needles_.erase(waiting[0]);
   }
 
   // "sl1 from 2nd spare": from the second of two holders put on spare needles.

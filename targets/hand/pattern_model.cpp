@@ -1219,7 +1219,7 @@ class PatternBuilder {
   void add_row() {
     join_flat_piece_in_the_rnd();
     bool turns = link_[row_.back()] == YarnLink::turn || ends_between_turns() ||
-                 rounds_a_corner_short_of_the_marker();
+                 rounds_a_corner_short_of_the_marker() || (g_.flags[row_.back()] & kGoesOnRound);
     bool first_of_take_up = section().resumed && section().first_row == out_.rows.size();
     bool full_round =
         section().in_round && !turns && st_.previous_link != YarnLink::turn && !after_a_corner();
@@ -1257,6 +1257,7 @@ class PatternBuilder {
       move_loops(s);
     }
     refuse_held_sts_left(r);
+    note_flap_back_from_the_end(r, takes);
     end_row(r, turns, takes);
     check_make_one_has_a_strand(r);
     r.end_op = static_cast<std::uint32_t>(out_.ops.size());
@@ -1376,9 +1377,11 @@ class PatternBuilder {
     auto held = static_cast<std::uint32_t>(flap.size());
     std::uint32_t live = st_.live;
     hold(static_cast<std::uint32_t>(out_.rows.size() - 1), flap, 0, held);
-    // A flap whose last row went on to the beginning of the rnd (its first row went back from
-    // there) is the rnd's last sts.
-    if (st_.previous_link == YarnLink::shift && !last_row_started_at_the_marker())
+    // A flap whose last row went on to the beginning of the rnd, or whose first row went back
+    // from there (after an odd number of rows its last ends away from it), is the rnd's last
+    // sts.
+    if ((st_.previous_link == YarnLink::shift && !last_row_started_at_the_marker()) ||
+        st_.flap_back_from_the_end)
       section().holdings.back().first = live - held + 1;
   }
 
@@ -1479,6 +1482,16 @@ class PatternBuilder {
     st_.behind += out;
   }
 
+  // Rows after a row that went on from a rnd over all its sts and turned at its end (letter-r's
+  // flap) work back over the rnd's last sts.
+  void note_flap_back_from_the_end(const PatternRow& r, std::uint32_t takes) {
+    if (r.round)
+      st_.flap_back_from_the_end = false;
+    else if (section().in_round && link_[row_.back()] == YarnLink::turn && takes == r.sts_before &&
+             out_.rows.size() > section().first_row && out_.rows.back().round)
+      st_.flap_back_from_the_end = true;
+  }
+
   void note_band_from_rnd(const PatternRow& r) {
     if (r.round) st_.band_from_rnd.reset();
     if (!r.round && section().in_round && st_.previous_link == YarnLink::shift)
@@ -1548,7 +1561,8 @@ class PatternBuilder {
     bool in_use[2] = {false, false};
     for (std::size_t h = 0; h < holders_.size(); ++h)
       if (spare_left_[h] > 0) in_use[spare_second_[h]] = true;
-    if (in_use[0] && in_use[1])
+    bool second = in_use[0] || taken_beside_a_waiting_piece(s, holder);
+    if (second && in_use[1])
       unsupported(fmt::format(
           "{} works a st of holder {} across a perpendicular edge while two spare needles still "
           "hold sts for the rows: a third spare needle is not covered yet",
@@ -1557,10 +1571,30 @@ class PatternBuilder {
     p.before_row = static_cast<std::uint32_t>(out_.rows.size());
     p.holder = holder;
     p.to_spare = true;
-    p.second_spare = in_use[0];
+    p.second_spare = second;
     section().placements.push_back(p);
     spare_left_[holder - 1] = held.count;
-    spare_second_[holder - 1] = in_use[0];
+    spare_second_[holder - 1] = second;
+  }
+
+  // Do the rows that take the holder's sts (from `s` on, while it holds sts) also take sts of
+  // a piece waiting on a spare needle (letter-r at 27 sts/39 rows: its bowl takes Piece 1's sts
+  // at one edge and holder 3's at the other)? `sl1 from spare` then means that piece's needle,
+  // and the holder goes on a second one.
+  bool taken_beside_a_waiting_piece(StitchId s, std::uint32_t holder) const {
+    std::uint32_t left = holders_[holder - 1].count;
+    for (; s != kNoStitch && left > 0; s = g_.yarn_next[s])
+      for (std::uint32_t l : g_.loops_taken_by(s)) {
+        const Loop& loop = g_.loops[l];
+        if (loop.kind != LoopKind::perpendicular || loop.maker == kNoStitch ||
+            picked_up_along_an_edge(loop))
+          continue;
+        if (holder_of_[loop.maker] == holder)
+          --left;
+        else if (holder_of_[loop.maker] == 0 && !on_own_needle(loop.maker))
+          return true;
+      }
+    return false;
   }
 
   // The latest section of the yarn that worked `maker`.
@@ -1764,6 +1798,7 @@ class PatternBuilder {
     bool bor_removed = false;  // by a row across the gap; the next rnd places a new one
     // The row (and its first op) that went on from the end of the last rnd.
     std::optional<std::pair<std::uint32_t, std::uint32_t>> band_from_rnd;
+    bool flap_back_from_the_end = false;  // rows in the rnd that turned at its end
     YarnLink previous_link = YarnLink::none;
     // The BOR marker sits before the loop of this st's wale (the latest st worked there), and
     // the side the rnds are worked with.
