@@ -99,13 +99,18 @@ class Comparison {
     if (f_.made[x] != made)
       return differ(x, fmt::format("it makes {} loop(s), the model's stitch {}", f_.made[x], made));
     std::vector<std::uint32_t> taken = f_.rs_taken(x);
-    std::vector<Loop> model_taken = taken_by_hand(s);
-    if (taken.size() != model_taken.size())
-      return differ(x, fmt::format("it takes {} loop(s), the model's stitch {}", taken.size(),
-                                   model_taken.size()));
+    // The decrease that knits an sr5's two loops together takes them as the one loop of the DS
+    // or wrap a knitter works (the sr4's).
+    auto model_taken = g_.loops_taken_by(s);
+    bool as_one = g_.type[s] != StitchType::sr5 && worked != g_.type[s];
+    std::size_t model_count = as_one ? 1 : model_taken.size();
+    if (taken.size() != model_count)
+      return differ(
+          x, fmt::format("it takes {} loop(s), the model's stitch {}", taken.size(), model_count));
     for (std::size_t i = 0; i < taken.size(); ++i) {
       bool flip_taken = mirror_ && g_.type[s] != StitchType::tnbo;
-      const Loop& want_loop = model_taken[flip_taken ? taken.size() - 1 - i : i];
+      Loop want_loop = g_.loops[model_taken[flip_taken ? taken.size() - 1 - i : i]];
+      if (as_one) want_loop.maker_slot = 0;
       std::uint32_t maker = f_.loop_maker[taken[i]];
       std::uint32_t slot = f_.rs_slot(taken[i]);
       if (mirror_ && !sides_of_a_split(f_.type[maker])) slot = f_.made[maker] - 1 - slot;
@@ -117,18 +122,6 @@ class Comparison {
                            want_loop.maker_slot + 1));
     }
     return std::nullopt;
-  }
-
-  // The loops the model's stitch takes, left to right: the decrease that knits an sr5's two
-  // loops together takes them as the one loop of the DS or wrap a knitter works (the sr4's).
-  std::vector<Loop> taken_by_hand(StitchId s) const {
-    std::vector<Loop> loops;
-    for (std::uint32_t l : g_.loops_taken_by(s)) loops.push_back(g_.loops[l]);
-    if (g_.type[s] != StitchType::sr5 && worked_by_hand(g_, s) != g_.type[s]) {
-      loops.resize(1);
-      loops[0].maker_slot = 0;
-    }
-    return loops;
   }
 
   // A three-needle bind-off's loops are front and back, a provisional cast-on's the two sides
