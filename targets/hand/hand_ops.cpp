@@ -69,10 +69,10 @@ constexpr std::array kOps{
                                 "purlwise and take the yarn over the needle to the back (a tuck: "
                                 "the st is not worked, the yo lies over it)", 1, 1},
   HandOpInfo{O::sl1,   "sl1",   "slip the next st purlwise (a st with its yo: both as one)", 1, 1},
-  HandOpInfo{O::kw,    "kw",    "knit the wrapped st together with its wrap: lift the wrap "
-                                "onto the left needle and knit it with the st", 1, 1},
-  HandOpInfo{O::pw,    "pw",    "purl the wrapped st together with its wrap: lift the wrap "
-                                "from the RS onto the left needle and purl it with the st", 1, 1},
+  HandOpInfo{O::kw,    "kw",    "knit the wrapped st together with its wrap (or wraps): lift "
+                                "them onto the left needle and knit them with the st", 1, 1},
+  HandOpInfo{O::pw,    "pw",    "purl the wrapped st together with its wrap (or wraps): lift "
+                                "them from the RS onto the left needle and purl them with the st", 1, 1},
   HandOpInfo{O::kds,   "k DS",  "knit the two legs of the double stitch together as one st",
                                 1, 1},
   HandOpInfo{O::pds,   "p DS",  "purl the two legs of the double stitch together as one st",
