@@ -82,9 +82,8 @@ std::vector<std::uint8_t> rows_binding_off_among_own_sts(const KnitGraph& g) {
 // or are taken, by two stitches of one row tell which way that row ran.
 class Handedness {
  public:
-  Handedness(const Compilation& c, const std::vector<YarnLink>& links)
+  explicit Handedness(const Compilation& c)
       : g_(c.knit),
-        link_(links),
         y_(c.yarns),
         pos_(g_.size(), 0),
         reversed_(g_.size(), 0),
@@ -106,8 +105,8 @@ class Handedness {
         pos_[s] = i;
         reversed_[s] = reversed;
         first_in_row_[s] = row_starts;
-        row_starts = link_[s] != YarnLink::course;
-        if (link_[s] == YarnLink::turn) reversed ^= 1;
+        row_starts = g_.yarn_link[s] != YarnLink::course;
+        if (g_.yarn_link[s] == YarnLink::turn) reversed ^= 1;
       }
     }
   }
@@ -116,7 +115,8 @@ class Handedness {
   // are neighbours whose order along the yarn says nothing of left and right.
   bool meet_across_the_start_of_a_rnd(StitchId a, StitchId b) const {
     bool side_by_side = pos_[a] + 1 == pos_[b] || pos_[b] + 1 == pos_[a];
-    return !side_by_side && (link_[a] == YarnLink::shift || link_[b] == YarnLink::shift);
+    return !side_by_side &&
+           (g_.yarn_link[a] == YarnLink::shift || g_.yarn_link[b] == YarnLink::shift);
   }
 
   void decide_first_rows() {
@@ -169,7 +169,7 @@ class Handedness {
     if (made.size() != 2) return;
     const Loop &a = g_.loops[made[0]], &b = g_.loops[made[1]];
     if ((a.kind == LoopKind::perpendicular) == (b.kind == LoopKind::perpendicular)) return;
-    bool first = first_in_row_[s], last = link_[s] != YarnLink::course;
+    bool first = first_in_row_[s], last = g_.yarn_link[s] != YarnLink::course;
     if (first == last) return;
     const Loop& across = a.kind == LoopKind::perpendicular ? a : b;
     bool on_the_right = across.maker_slot == 1;
@@ -181,7 +181,7 @@ class Handedness {
   // loops of an earlier piece's row one after another (a leg joined to sts a tube left on a
   // holder) runs as that row ran, or against it if it takes them in the other order.
   std::optional<bool> as_the_row_it_takes(std::uint32_t p) const {
-    for (StitchId s = y_.first[p]; link_[s] == YarnLink::course; s = g_.yarn_next[s]) {
+    for (StitchId s = y_.first[p]; g_.yarn_link[s] == YarnLink::course; s = g_.yarn_next[s]) {
       StitchId a = first_maker(s), b = first_maker(g_.yarn_next[s]);
       if (a == kNoStitch || b == kNoStitch || y_.piece_of[a] >= p || g_.row[a] != g_.row[b])
         continue;
@@ -203,7 +203,6 @@ class Handedness {
   }
 
   const KnitGraph& g_;
-  const std::vector<YarnLink>& link_;
   const YarnPieces& y_;
   std::vector<std::uint32_t> pos_;      // index along its yarn piece
   std::vector<std::uint8_t> reversed_;  // runs against the first row of its piece
@@ -229,7 +228,7 @@ bool needs_mirror(const Compilation& c, const Handedness& hand, Rounds rounds) {
 class PatternBuilder {
  public:
   PatternBuilder(const Compilation& c, TurnMethod turns, Rounds rounds)
-      : c_(c), g_(c.knit), link_(c.knit.yarn_link), hand_(c, link_) {
+      : c_(c), g_(c.knit), hand_(c) {
     out_.source = c.input;
     out_.mirror = needs_mirror(c, hand_, rounds);
     out_.turns = turns;
@@ -283,7 +282,7 @@ class PatternBuilder {
   // piece's own sts ends that row.
   void add_stitch(StitchId s) {
     row_.push_back(s);
-    if (link_[s] != YarnLink::course && (g_.type[s] != T::tnbo || binds_off_in_a_row()))
+    if (g_.yarn_link[s] != YarnLink::course && (g_.type[s] != T::tnbo || binds_off_in_a_row()))
       flush_row();
   }
 
@@ -575,7 +574,7 @@ class PatternBuilder {
       cast_on();
     else
       add_row();
-    st_.previous_link = link_[row_.back()];
+    st_.previous_link = g_.yarn_link[row_.back()];
     st_.last_row = std::move(row_);
     row_.clear();
   }
@@ -594,7 +593,7 @@ class PatternBuilder {
     section().cast_on = st_.live = st_.behind = static_cast<std::uint32_t>(row_.size());
     for (StitchId s : row_) number_of_[s] = 0;
     st_.ahead = 0;
-    section().in_round = link_[row_.back()] == YarnLink::shift;
+    section().in_round = g_.yarn_link[row_.back()] == YarnLink::shift;
     st_.cast_on_done = true;
   }
 
@@ -609,7 +608,7 @@ class PatternBuilder {
     }
     start_from_spare_needle(*on_needle);
     // A first row that goes on into the next rnd joins the piece to work in the rnd.
-    section().in_round = link_[row_.back()] == YarnLink::shift;
+    section().in_round = g_.yarn_link[row_.back()] == YarnLink::shift;
     st_.behind = 0;
     st_.cast_on_done = true;
   }
@@ -719,7 +718,7 @@ class PatternBuilder {
     const Held& held = holders_[holder - 1];
     section().starts_from = PatternSection::Start{section_of(first.maker), false,
                                                   first.maker == held.last, held.count, holder};
-    section().in_round = link_[row_.back()] == YarnLink::shift;  // a leg of a tube
+    section().in_round = g_.yarn_link[row_.back()] == YarnLink::shift;  // a leg of a tube
     st_.live = st_.ahead = held.count;
   }
 
@@ -1024,8 +1023,8 @@ class PatternBuilder {
     const std::vector<StitchId>& all = deferred_[out_.sections.back().yarn];
     std::size_t row_start = 0;
     for (std::size_t i = 0; i < all.size(); ++i) {
-      if (g_.type[all[i]] == T::tnbo || link_[all[i]] == YarnLink::course) continue;
-      if (row_start > 0 && link_[all[i]] != YarnLink::turn)
+      if (g_.type[all[i]] == T::tnbo || g_.yarn_link[all[i]] == YarnLink::course) continue;
+      if (row_start > 0 && g_.yarn_link[all[i]] != YarnLink::turn)
         return {all.begin(), all.begin() + static_cast<std::ptrdiff_t>(row_start)};
       row_start = i + 1;
     }
@@ -1218,7 +1217,7 @@ class PatternBuilder {
 
   void add_row() {
     join_flat_piece_in_the_rnd();
-    bool turns = link_[row_.back()] == YarnLink::turn || ends_between_turns() ||
+    bool turns = g_.yarn_link[row_.back()] == YarnLink::turn || ends_between_turns() ||
                  rounds_a_corner_short_of_the_marker() || (g_.flags[row_.back()] & kGoesOnRound);
     bool first_of_take_up = section().resumed && section().first_row == out_.rows.size();
     bool full_round =
@@ -1334,7 +1333,7 @@ class PatternBuilder {
 
   // Does the yarn go on around after `last`, not round a corner or back over the sts just made?
   bool goes_on_around(StitchId last) const {
-    return link_[last] == YarnLink::shift && !(g_.flags[last] & kRoundsACorner);
+    return g_.yarn_link[last] == YarnLink::shift && !(g_.flags[last] & kRoundsACorner);
   }
 
   // Does the yarn go round a corner after `last` into the next rnd (its next st picks up the
@@ -1436,7 +1435,7 @@ class PatternBuilder {
   // the needle: a row that turns (before its sts are left for a join), not a rnd.
   bool ends_between_turns() const {
     StitchId last = row_.back();
-    return out_.sections.back().in_round && link_[last] == YarnLink::none &&
+    return out_.sections.back().in_round && g_.yarn_link[last] == YarnLink::none &&
            st_.previous_link == YarnLink::turn && info(g_.type[last]).loops_out > 0;
   }
 
@@ -1487,8 +1486,9 @@ class PatternBuilder {
   void note_flap_back_from_the_end(const PatternRow& r, std::uint32_t takes) {
     if (r.round)
       st_.flap_back_from_the_end = false;
-    else if (section().in_round && link_[row_.back()] == YarnLink::turn && takes == r.sts_before &&
-             out_.rows.size() > section().first_row && out_.rows.back().round)
+    else if (section().in_round && g_.yarn_link[row_.back()] == YarnLink::turn &&
+             takes == r.sts_before && out_.rows.size() > section().first_row &&
+             out_.rows.back().round)
       st_.flap_back_from_the_end = true;
   }
 
@@ -1784,7 +1784,6 @@ class PatternBuilder {
 
   const Compilation& c_;
   const KnitGraph& g_;
-  const std::vector<YarnLink>& link_;  // as a knitter works them (correct_corner_links)
   Handedness hand_;
   std::uint32_t pieces_ = 0;
   HandPattern out_;
