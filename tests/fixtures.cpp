@@ -289,10 +289,7 @@ Compilation sample_turning_at_sr5_faces(const std::string& sample, const std::st
 }
 
 Compilation sock_turning_twice_at_a_st() {
-  return sample_variant("sock", "tall-rows", [](std::string& project) {
-    std::string gauge = "gauge: {stitches: 22, rows: 30}";
-    project.replace(project.find(gauge), gauge.size(), "gauge: {stitches: 10, rows: 44}");
-  });
+  return sample_at_gauge("sock", 10, 44);
 }
 
 std::size_t occurrences(std::string_view text, std::string_view what) {
