@@ -44,8 +44,9 @@ TEST(KnitoutProfile, ShippedNamesAreFoundFromTheSourceTree) {
   } catch (const UsageError& e) {
     EXPECT_EQ(
         std::string(e.what()),
-        "no machine profile 'swg999' in machine_profiles/ (looked beside the current directory "
-        "and the skein executable); known profiles: generic, kniterate, swg091n2");
+        "no machine profile 'swg999' (looked for machine_profiles/ in the current directory, in "
+        "$XDG_DATA_HOME/skein or ~/.local/share/skein, beside the skein executable and in its "
+        "prefix's share/skein); known profiles: generic, kniterate, swg091n2");
   }
   EXPECT_THROW(knitout::load_machine_profile(""), UsageError);
 }

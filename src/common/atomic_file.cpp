@@ -17,6 +17,11 @@ namespace skein {
 
 void write_file_atomically(const std::string& path,
                            const std::function<void(std::ostream&)>& write) {
+  std::error_code ec;
+  std::filesystem::file_type type = std::filesystem::symlink_status(path, ec).type();
+  if (type != std::filesystem::file_type::not_found && type != std::filesystem::file_type::none &&
+      type != std::filesystem::file_type::regular)
+    throw IoError(fmt::format("cannot write {}: it is not a regular file", path));
   std::string temp = fmt::format("{}.tmp{}", path, ::getpid());
   try {
     {
@@ -26,7 +31,8 @@ void write_file_atomically(const std::string& path,
       out.flush();
       if (!out) throw IoError(fmt::format("cannot write {}: {}", path, std::strerror(errno)));
     }
-    std::filesystem::rename(temp, path);
+    std::filesystem::rename(temp, path, ec);
+    if (ec) throw IoError(fmt::format("cannot write {}: {}", path, ec.message()));
   } catch (...) {
     std::error_code ignored;
     std::filesystem::remove(temp, ignored);

@@ -8,7 +8,8 @@
 
 namespace skein {
 
-// Base of every error a user can cause; the CLI prints what() and exits non-zero.
+// Base of every error a user can cause; the CLI prints what() and exits 2 (3 for
+// UnsupportedError).
 class Error : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
@@ -43,6 +44,13 @@ class IoError : public Error {
 
 // A command-line request that does not make sense (unknown target, missing option, ...).
 class UsageError : public Error {
+ public:
+  using Error::Error;
+};
+
+// A valid input that this target cannot express (yet, or on this machine): names the structure
+// (stitch, row, piece) and what the target lacks. The CLI exits 3, not 2: the input is fine.
+class UnsupportedError : public Error {
  public:
   using Error::Error;
 };

@@ -8,10 +8,8 @@
 #include <optional>
 #include <set>
 
-#include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "labeling/yarn_plan.hpp"
-#include "mesh/obj_format.hpp"
 
 namespace skein {
 namespace {
@@ -737,11 +735,6 @@ GeneratedStitchMesh generate_stitch_mesh(const CoarseMesh& coarse, const Labelin
 GeneratedStitchMesh build_project(const Project& project) {
   CoarseMesh coarse = read_coarse_mesh(project.mesh);
   return generate_stitch_mesh(coarse, label_coarse_mesh(coarse, project), project);
-}
-
-void write_generated_stitch_mesh(const std::string& project_path, const std::string& output) {
-  GeneratedStitchMesh g = build_project(read_project(project_path));
-  write_file_atomically(output, [&](std::ostream& out) { write_stitch_mesh(g.mesh, out); });
 }
 
 std::string describe_generation(const CoarseMesh& coarse, const Labeling& labeling,

@@ -42,9 +42,6 @@ GeneratedStitchMesh generate_stitch_mesh(const CoarseMesh& coarse, const Labelin
 // Reads the project's mesh, labels it and generates the stitch mesh.
 GeneratedStitchMesh build_project(const Project& project);
 
-// `skein generate`: builds the project's stitch mesh and writes it (atomically) as .obj.
-void write_generated_stitch_mesh(const std::string& project_path, const std::string& output);
-
 // A readable account of the labelling and the counts, one line per coarse face (golden tests).
 std::string describe_generation(const CoarseMesh& coarse, const Labeling& labeling,
                                 const GeneratedStitchMesh& generated);

@@ -215,31 +215,32 @@ void render_coarse_mesh_svg(const CoarseMesh& m, const Labeling& labeling, const
                {kShortRow, {kKnit.fill, "quad"}}, unit);
 }
 
-void render_file(const std::string& input, const std::string& output, bool coarse) {
+std::string render_file(const std::string& input, bool coarse, std::ostream& out) {
   if (is_project_file(input)) {
     Project project = read_project(input);
     CoarseMesh mesh = read_coarse_mesh(project.mesh);
     Labeling labeling = label_coarse_mesh(mesh, project);
-    if (coarse)
-      return write_file_atomically(
-          output, [&](std::ostream& o) { render_coarse_mesh_svg(mesh, labeling, input, o); });
+    if (coarse) {
+      render_coarse_mesh_svg(mesh, labeling, input, out);
+      return fmt::format("the labelled coarse mesh of {}, {} faces", input, mesh.num_faces());
+    }
     GeneratedStitchMesh g = generate_stitch_mesh(mesh, labeling, project);
-    return write_file_atomically(
-        output, [&](std::ostream& o) { render_stitch_mesh_svg(g.mesh, input, o); });
+    render_stitch_mesh_svg(g.mesh, input, out);
+    return fmt::format("the stitch mesh of {}, {} stitches", input, g.mesh.num_faces());
   }
   std::string text = read_file(input);
   if (text.find("#~skein-stitch-mesh") != std::string::npos) {
     StitchMesh mesh = parse_stitch_mesh(text, input);
-    return write_file_atomically(output,
-                                 [&](std::ostream& o) { render_stitch_mesh_svg(mesh, input, o); });
+    render_stitch_mesh_svg(mesh, input, out);
+    return fmt::format("the stitch mesh {}, {} stitches", input, mesh.num_faces());
   }
   Project project;
   project.file = input;
   project.mesh = input;
   CoarseMesh mesh = read_coarse_mesh(input);
-  Labeling labeling = label_coarse_mesh(mesh, project);
-  write_file_atomically(output,
-                        [&](std::ostream& o) { render_coarse_mesh_svg(mesh, labeling, input, o); });
+  render_coarse_mesh_svg(mesh, label_coarse_mesh(mesh, project), input, out);
+  return fmt::format("the coarse mesh {}, labelled from its lowest boundary, {} faces", input,
+                     mesh.num_faces());
 }
 
 }  // namespace skein

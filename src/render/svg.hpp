@@ -19,7 +19,8 @@ void render_coarse_mesh_svg(const CoarseMesh& mesh, const Labeling& labeling,
 
 // INPUT is a stitch mesh (.obj with the skein header), a project (.yaml: its generated stitch
 // mesh, or with `coarse` its labelled coarse mesh) or a plain coarse OBJ (labelled from its
-// lowest boundary). Writes OUTPUT atomically.
-void render_file(const std::string& input, const std::string& output, bool coarse);
+// lowest boundary). Writes the SVG to `out`; returns what it drew, for the success line ("the
+// stitch mesh of sock.yaml, 4606 stitches").
+std::string render_file(const std::string& input, bool coarse, std::ostream& out);
 
 }  // namespace skein

@@ -21,7 +21,7 @@ constexpr std::array kSupported = {T::k,   T::p,   T::co,    T::bo,  T::kfb,   T
                                    T::sr4, T::sr5, T::tnbo,  T::sco, T::tuck,  T::sl};
 
 [[noreturn]] void unsupported(const std::string& what) {
-  throw Error(fmt::format("hand target: {}", what));
+  throw UnsupportedError(fmt::format("hand target: {}", what));
 }
 
 // Is `s` a decrease that knits the two loops of an sr5 together, and no other?

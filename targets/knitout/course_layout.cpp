@@ -9,7 +9,7 @@ namespace skein::knitout {
 namespace {
 
 [[noreturn]] void unsupported(const KnitGraph& g, const std::string& what, StitchId s) {
-  throw Error(
+  throw UnsupportedError(
       fmt::format("not yet supported by the knitout target: {}, at {}", what, g.describe(s)));
 }
 

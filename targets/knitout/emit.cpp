@@ -129,7 +129,7 @@ class Emitter {
     check_width();
     check_needle_loads();
     if (reach_ < pitch_)
-      throw Error(fmt::format("{} allows no sideways transfer (racking.max_transfer_stretch {})",
+      throw UnsupportedError(fmt::format("{} allows no sideways transfer (racking.max_transfer_stretch {})",
                               p_.name, p_.max_transfer_stretch));
   }
 
@@ -144,7 +144,7 @@ class Emitter {
                  half = static_cast<std::int32_t>(widest / 2);
     fold_ = (span + half) / 2 - 1;
     if (widest > p_.needles)
-      throw Error(fmt::format("{} needs {} needles{} (row {}, from {}), {} has {}", c_.input,
+      throw UnsupportedError(fmt::format("{} needs {} needles{} (row {}, from {}), {} has {}", c_.input,
                               widest, l_.tube ? " in half gauge" : "", at_course->row + 1,
                               g_.describe(l_.order[at_course->begin]), p_.name, p_.needles));
   }
@@ -158,17 +158,17 @@ class Emitter {
                     gathered = wraps[s] + (g_.type[s] == StitchType::bo ? 1 : 0);
       for (std::uint32_t loop : taken(s)) gathered += held[loop];
       if (gathered > p_.max_loops_per_needle && gathered > in)
-        throw Error(fmt::format(
+        throw UnsupportedError(fmt::format(
             "{} would gather {} loops on one needle (with tucked loops, short-row wraps or the "
             "bind-off chain), {} allows {}",
             g_.describe(s), gathered, p_.name, p_.max_loops_per_needle));
       if (in > p_.max_loops_per_needle)
-        throw Error(
+        throw UnsupportedError(
             fmt::format("a {}-to-1 decrease exceeds the {} loop{} per needle {} allows, at {}", in,
                         p_.max_loops_per_needle, p_.max_loops_per_needle == 1 ? "" : "s", p_.name,
                         g_.describe(s)));
       if (in == 3 && reach_ < 2 * pitch_)
-        throw Error(
+        throw UnsupportedError(
             fmt::format("a 3-to-1 decrease needs transfers across {} needles, {} allows {}, at {}",
                         2 * pitch_, p_.name, p_.max_transfer_stretch, g_.describe(s)));
     }
@@ -346,7 +346,7 @@ class Emitter {
       Place fabric{fabric_bed(loop), lp.home.needle}, to = after_room(fabric);
       if (in_course_[loop] || (to == fabric && lp.now == lp.home)) continue;
       if (is_turn_loop(loop) && to != fabric)
-        throw Error(fmt::format(
+        throw UnsupportedError(fmt::format(
             "not yet supported by the knitout target: shaping in a short row that moves an "
             "sr5's waiting turn loop, at {}",
             g_.describe(g_.loops[loop].maker)));
@@ -361,7 +361,7 @@ class Emitter {
   }
 
   [[noreturn]] void off_the_bed(StitchId s) const {
-    throw Error(fmt::format(
+    throw UnsupportedError(fmt::format(
         "{}: making room for a short row's shaping moves the loop of {} off the bed's left end "
         "({} has needles 0..{})",
         c_.input, g_.describe(s), p_.name, p_.needles - 1));
@@ -872,7 +872,7 @@ std::vector<std::string> piece_carriers(const Compilation& c, const MachineProfi
         name != p.draw_carrier)
       carriers.push_back(name);
   if (carriers.size() < pieces)
-    throw Error(
+    throw UnsupportedError(
         fmt::format("{} has {} yarn pieces, one carrier each, and {} has only {} carriers "
                     "for them{}",
                     c.input, pieces, p.name, carriers.size(),

@@ -5,9 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <optional>
 
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
@@ -227,13 +229,31 @@ MachineProfile parse_profile(const std::string& path, const std::string& text) {
   return p;
 }
 
+// The user's own profiles: $XDG_DATA_HOME/skein/machine_profiles, else
+// ~/.local/share/skein/machine_profiles (none when neither variable is set).
+std::optional<fs::path> user_profile_directory() {
+  const char* data = std::getenv("XDG_DATA_HOME");
+  if (data && fs::path(data).is_absolute()) return fs::path(data) / "skein" / "machine_profiles";
+  const char* home = std::getenv("HOME");
+  if (home && *home) return fs::path(home) / ".local" / "share" / "skein" / "machine_profiles";
+  return std::nullopt;
+}
+
+// Where a profile name is looked up, first match first: machine_profiles/ in the current
+// directory, the user's folder, then beside the executable and in each folder above it both
+// machine_profiles/ (build/skein in a checkout) and share/skein/machine_profiles/ (bin/skein
+// installed under a prefix).
 std::vector<fs::path> profile_directories() {
-  std::vector<fs::path> dirs{fs::current_path() / "machine_profiles"};
+  std::vector<fs::path> dirs;
   std::error_code ec;
+  fs::path here = fs::current_path(ec);
+  if (!ec) dirs.push_back(here / "machine_profiles");
+  if (std::optional<fs::path> user = user_profile_directory()) dirs.push_back(*user);
   fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if (!ec)
     for (fs::path dir = exe.parent_path(); !dir.empty(); dir = dir.parent_path()) {
       dirs.push_back(dir / "machine_profiles");
+      dirs.push_back(dir / "share" / "skein" / "machine_profiles");
       if (dir == dir.root_path()) break;
     }
   return dirs;
@@ -278,22 +298,23 @@ MachineProfile load_machine_profile(const std::string& name_or_path) {
   std::string names;
   for (const std::string& n : shipped_profile_names()) names += (names.empty() ? "" : ", ") + n;
   throw UsageError(
-      fmt::format("no machine profile '{}' in machine_profiles/ (looked beside the "
-                  "current directory and the skein executable); known profiles: {}",
+      fmt::format("no machine profile '{}' (looked for machine_profiles/ in the current "
+                  "directory, in $XDG_DATA_HOME/skein or ~/.local/share/skein, beside the skein "
+                  "executable and in its prefix's share/skein); known profiles: {}",
                   name_or_path, names.empty() ? "none" : names));
 }
 
 std::vector<std::string> shipped_profile_names() {
+  std::vector<std::string> names;
   for (const fs::path& dir : profile_directories()) {
     std::error_code ec;
     if (!fs::is_directory(dir, ec)) continue;
-    std::vector<std::string> names;
     for (const auto& entry : fs::directory_iterator(dir, ec))
       if (entry.path().extension() == ".yaml") names.push_back(entry.path().stem().string());
-    std::sort(names.begin(), names.end());
-    if (!names.empty()) return names;
   }
-  return {};
+  std::sort(names.begin(), names.end());
+  names.erase(std::unique(names.begin(), names.end()), names.end());
+  return names;
 }
 
 }  // namespace skein::knitout

@@ -59,11 +59,12 @@ struct MachineProfile {
 // Reads and checks the profile file at `path`.
 MachineProfile read_machine_profile(const std::string& path);
 
-// `name_or_path` is a shipped profile's name (looked up in machine_profiles/ beside the current
-// directory, then beside the executable and its parent folders) or the path of a .yaml file.
+// `name_or_path` is a shipped profile's name (looked up in machine_profiles/ in the current
+// directory, then in the user's $XDG_DATA_HOME/skein or ~/.local/share/skein, then beside the
+// executable, its parent folders and their share/skein) or the path of a .yaml file.
 MachineProfile load_machine_profile(const std::string& name_or_path);
 
-// The names of the shipped profiles that can be found, sorted.
+// The names of the profiles that can be found in all those folders, sorted.
 std::vector<std::string> shipped_profile_names();
 
 }  // namespace skein::knitout

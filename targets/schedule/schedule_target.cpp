@@ -77,7 +77,7 @@ class ScheduleReplay {
     }
   }
 
-  VerifyReport run(std::string_view text) {
+  VerifyReport run(std::string_view text) try {
     std::size_t line_no = 0;
     for (std::size_t pos = 0; pos < text.size();) {
       std::size_t end = text.find('\n', pos);
@@ -89,11 +89,21 @@ class ScheduleReplay {
       replay_line(line_no, line);
     }
     return finish();
+  } catch (const Mismatch& m) {
+    return {false, m.what};
   }
 
  private:
+  // A well-formed schedule that is not the model's: not proven, as opposed to a malformed one.
+  struct Mismatch {
+    std::string what;
+  };
+
   [[noreturn]] void fail(std::size_t line_no, std::string_view line, const std::string& why) {
     throw ParseError(file_, line_no, std::string(line), why);
+  }
+  [[noreturn]] void differs(std::size_t line_no, std::string_view line, const std::string& why) {
+    throw Mismatch{fmt::format("{}:{}: {}\n  {:>5} | {}", file_, line_no, why, line_no, line)};
   }
 
   static std::string_view trim(std::string_view s) {
@@ -125,7 +135,7 @@ class ScheduleReplay {
     active_ = !what.starts_with("end") && !what.starts_with("hold");
     if (!c_) return;
     if (yarn_ >= c_->yarns.size())
-      fail(line_no, raw, fmt::format("the model has {} yarn pieces", c_->yarns.size()));
+      differs(line_no, raw, fmt::format("the model has {} yarn pieces", c_->yarns.size()));
   }
 
   void replay_stitch(std::size_t line_no, std::string_view raw, StitchId s, std::string_view abbr) {
@@ -133,26 +143,26 @@ class ScheduleReplay {
     if (!active_) fail(line_no, raw, "a stitch is worked while no yarn is started or resumed");
     if (!c_) return;
     const KnitGraph& g = c_->knit;
-    if (s >= g.size()) fail(line_no, raw, fmt::format("the model has {} stitches", g.size()));
+    if (s >= g.size()) differs(line_no, raw, fmt::format("the model has {} stitches", g.size()));
     if (abbr != abbreviation(g.type[s]))
-      fail(line_no, raw,
+      differs(line_no, raw,
            fmt::format("{} is a {}, not a {}", g.describe(s), abbreviation(g.type[s]), abbr));
-    if (done_[s]) fail(line_no, raw, fmt::format("{} is worked a second time", g.describe(s)));
+    if (done_[s]) differs(line_no, raw, fmt::format("{} is worked a second time", g.describe(s)));
     for (auto e : boost::make_iterator_range(in_edges(s, c_->deps))) {
       StitchId before = static_cast<StitchId>(source(e, c_->deps));
       if (!done_[before])
-        fail(line_no, raw,
+        differs(line_no, raw,
              fmt::format("{} is worked before {}, which it waits for: {}", g.describe(s),
                          g.describe(before), explain(c_->deps[e].reason)));
     }
     if (c_->yarns.piece_of[s] != yarn_)
-      fail(line_no, raw,
+      differs(line_no, raw,
            fmt::format("{} belongs to yarn {}, not yarn {}", g.describe(s),
                        c_->yarns.piece_of[s] + 1, yarn_ + 1));
     StitchId previous = last_[yarn_];
     bool follows = previous == kNoStitch ? c_->yarns.first[yarn_] == s : g.yarn_next[previous] == s;
     if (!follows)
-      fail(line_no, raw,
+      differs(line_no, raw,
            fmt::format("{} does not come next along yarn {}", g.describe(s), yarn_ + 1));
     done_[s] = 1;
     last_[yarn_] = s;

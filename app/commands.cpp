@@ -1,0 +1,228 @@
+#include "commands.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include "common/atomic_file.hpp"
+#include "common/error.hpp"
+#include "common/output_file.hpp"
+#include "driver/pipeline.hpp"
+#include "labeling/coarse_mesh.hpp"
+#include "labeling/project.hpp"
+#include "labeling/shapes.hpp"
+#include "labeling/stitch_generation.hpp"
+#include "mesh/obj_format.hpp"
+#include "render/svg.hpp"
+
+namespace skein::cli {
+namespace {
+
+StageObserver progress_printer(bool verbose) {
+  if (!verbose) return {};
+  return [](const char* stage, std::chrono::duration<double> took) {
+    std::cerr << fmt::format("skein: {:<18} {:8.1f} ms\n", stage, took.count() * 1000);
+  };
+}
+
+// Where a command reports: standard output, unless its output goes there.
+std::ostream& report_stream(const OutputFile& out) {
+  return out.is_standard_output() ? std::cerr : std::cout;
+}
+
+// The files a command reads besides INPUT's own: a project's coarse mesh, a machine profile
+// named by path. An output may replace none of them.
+std::vector<std::string> inputs_of(const std::string& input, const std::string& machine = "") {
+  std::vector<std::string> inputs{input};
+  if (is_project_file(input)) inputs.push_back(read_project(input).mesh);
+  std::error_code ec;
+  if (!machine.empty() && std::filesystem::exists(machine, ec)) inputs.push_back(machine);
+  return inputs;
+}
+
+const Target& find_target(const Registry& registry, const std::string& name) {
+  if (const Target* t = registry.target(name)) return *t;
+  std::string known;
+  for (const Target* t : registry.targets()) known += (known.empty() ? "" : ", ") + t->name();
+  throw UsageError(fmt::format("unknown target '{}'; known targets: {}", name, known));
+}
+
+const Simulator& simulator_for(const Registry& registry, const Target& target) {
+  if (const Simulator* s = registry.simulator_for(target.name())) return *s;
+  throw UsageError(fmt::format("target '{}' has no simulator", target.name()));
+}
+
+void check_dialect(const Target& target, const std::string& dialect) {
+  if (dialect.empty()) return;
+  std::vector<std::string> valid = target.dialects();
+  if (std::find(valid.begin(), valid.end(), dialect) != valid.end()) return;
+  if (valid.empty())
+    throw UsageError(fmt::format("target '{}' has no dialects; drop --dialect", target.name()));
+  throw UsageError(fmt::format("unknown dialect '{}' for target '{}'; valid dialects: {}", dialect,
+                               target.name(), fmt::join(valid, ", ")));
+}
+
+void check_setting_value(const TargetSetting& s, const std::string& value,
+                         const std::string& where) {
+  if (std::find(s.values.begin(), s.values.end(), value) == s.values.end())
+    throw UsageError(fmt::format("{} {}: expected {}, found '{}'", where, s.key,
+                                 fmt::join(s.values, " or "), value));
+}
+
+// `--set KEY=VALUE` pairs, checked against what the target offers, over the project file's
+// `target:` keys that the target knows (the others are for other targets).
+std::map<std::string, std::string> settings_for(const Target& target, const std::string& input,
+                                                const std::vector<std::string>& given) {
+  std::vector<TargetSetting> known = target.settings();
+  std::map<std::string, std::string> settings;
+  std::map<std::string, std::string> project =
+      is_project_file(input) ? read_project(input).target : std::map<std::string, std::string>{};
+  for (const TargetSetting& s : known) {
+    auto value = project.find(s.key);
+    if (value == project.end()) continue;
+    check_setting_value(s, value->second, input + ": target:");
+    settings[s.key] = value->second;
+  }
+  for (const std::string& pair : given) {
+    std::size_t eq = pair.find('=');
+    std::string key = pair.substr(0, eq);
+    auto s = std::find_if(known.begin(), known.end(), [&](const auto& k) { return k.key == key; });
+    if (s == known.end()) {
+      std::vector<std::string> keys;
+      for (const TargetSetting& k : known) keys.push_back(k.key);
+      throw UsageError(fmt::format(
+          "target '{}' has no setting '{}'; {}", target.name(), key,
+          keys.empty() ? "it has none" : fmt::format("its settings: {}", fmt::join(keys, ", "))));
+    }
+    std::string value = eq == std::string::npos ? "" : pair.substr(eq + 1);
+    check_setting_value(*s, value, "--set");
+    settings[key] = value;
+  }
+  return settings;
+}
+
+int report_verification(const VerifyReport& report, std::ostream& out) {
+  out << report.summary << '\n';
+  return report.proven ? kDone : kNotKnittable;
+}
+
+// The model to compile or prove against; prints why not and returns false when it is not
+// knittable.
+bool knittable(const Compilation& c, const std::string& nothing_done) {
+  if (c.knittability.knittable) return true;
+  std::cerr << check_report(c) << fmt::format("skein: {}\n", nothing_done);
+  return false;
+}
+
+// The target whose output `file` is: --target if given, else the one whose extension it has.
+const Target& target_of(const Registry& registry, const std::string& file,
+                        const std::string& given) {
+  if (!given.empty()) return find_target(registry, given);
+  std::string extension = std::filesystem::path(file).extension().string();
+  for (const Target* t : registry.targets())
+    if (t->default_extension() == extension) return *t;
+  throw UsageError(fmt::format("cannot tell which target wrote {}; pass --target", file));
+}
+
+// `new -o NAME`, `-o NAME.yaml` (or .yml) and `-o NAME.obj` all mean the project NAME.yaml
+// beside the coarse mesh NAME.obj: {project, mesh}.
+std::pair<std::filesystem::path, std::filesystem::path> new_project_paths(const std::string& o) {
+  if (o == "-")
+    throw UsageError("skein new writes two files (NAME.obj and NAME.yaml): -o - cannot hold them");
+  std::filesystem::path given(o), stem = given;
+  std::string extension = given.extension().string();
+  bool project_given = extension == ".yaml" || extension == ".yml";
+  if (project_given || extension == ".obj") stem.replace_extension();
+  if (stem.filename().empty() || stem.filename() == "." || stem.filename() == "..")
+    throw UsageError(fmt::format("-o {}: expected a project NAME (writes NAME.obj and NAME.yaml)",
+                                 o));
+  std::filesystem::path mesh = stem;
+  mesh += ".obj";
+  std::filesystem::path project = stem;
+  project += ".yaml";
+  return {project_given ? given : project, mesh};
+}
+
+}  // namespace
+
+int run_check(const Request& r) {
+  Compilation c = compile_model(r.input, progress_printer(r.verbose));
+  std::cout << check_report(c);
+  return c.knittability.knittable ? kDone : kNotKnittable;
+}
+
+int run_compile(const Registry& registry, const Request& r) {
+  const Target& target = find_target(registry, r.target);
+  check_dialect(target, r.options.dialect);
+  TargetOptions options = r.options;
+  options.settings = settings_for(target, r.input, r.settings);
+  if (options.machine.empty()) options.machine = project_target_option(r.input, "machine");
+  const Simulator* simulator = r.verify ? &simulator_for(registry, target) : nullptr;
+  OutputFile out(r.output, {r.force, inputs_of(r.input, options.machine)});
+  Compilation c = compile_model(r.input, progress_printer(r.verbose));
+  if (!knittable(c, fmt::format("nothing written to {}", out.name()))) return kNotKnittable;
+  std::ostringstream text;  // kept for the simulator when verifying
+  if (simulator) {
+    target.emit(c, options, text);
+    out.write_text(text.str());
+  } else {
+    out.write([&](std::ostream& o) { target.emit(c, options, o); });
+  }
+  std::ostream& report = report_stream(out);
+  report << fmt::format("wrote {} ({} target, {} stitches, {} yarn piece{})\n", out.name(),
+                        target.name(), c.knit.size(), c.yarns.size(),
+                        c.yarns.size() == 1 ? "" : "s");
+  if (!simulator) return kDone;
+  return report_verification(simulator->verify(text.str(), out.name(), &c, options), report);
+}
+
+int run_verify(const Registry& registry, const Request& r) {
+  const Target& target = target_of(registry, r.input, r.target);
+  const Simulator& simulator = simulator_for(registry, target);
+  std::string text = read_file(r.input);
+  if (r.against.empty())
+    return report_verification(simulator.verify(text, r.input, nullptr, r.options), std::cout);
+  Compilation c = compile_model(r.against, progress_printer(r.verbose));
+  if (!knittable(c, fmt::format("{} cannot be proven against it", r.input))) return kNotKnittable;
+  return report_verification(simulator.verify(text, r.input, &c, r.options), std::cout);
+}
+
+int run_new(const Request& r) {
+  ShapeSize size;
+  if (!r.circumference.empty()) size.circumference = parse_length_cm(r.circumference);
+  if (!r.width.empty()) size.width = parse_length_cm(r.width);
+  if (!r.length.empty()) size.length = parse_length_cm(r.length);
+  auto [project_path, mesh_path] = new_project_paths(r.output);
+  // Both checked before either is written: an edited project is never half replaced.
+  OutputFile project(project_path.string(), {r.force, {}}), mesh(mesh_path.string(), {r.force, {}});
+  Shape shape = make_shape(r.shape, size, mesh_path.stem().string());
+  mesh.write([&](std::ostream& out) { write_coarse_mesh(shape.mesh, out); });
+  project.write_text(shape.project);
+  std::cout << fmt::format("wrote {} and {}\n", mesh.name(), project.name());
+  return kDone;
+}
+
+int run_generate(const Request& r) {
+  OutputFile out(r.output, {r.force, inputs_of(r.input)});
+  GeneratedStitchMesh g = build_project(read_project(r.input));
+  out.write([&](std::ostream& o) { write_stitch_mesh(g.mesh, o); });
+  report_stream(out) << fmt::format("wrote {} (the stitch mesh of {}, {} stitches)\n", out.name(),
+                                    r.input, g.mesh.num_faces());
+  return kDone;
+}
+
+int run_render(const Request& r) {
+  OutputFile out(r.output, {r.force, inputs_of(r.input)});
+  std::string drawn;
+  out.write([&](std::ostream& o) { drawn = render_file(r.input, r.coarse, o); });
+  report_stream(out) << fmt::format("wrote {} ({})\n", out.name(), drawn);
+  return kDone;
+}
+
+}  // namespace skein::cli
