@@ -140,8 +140,8 @@ std::pair<std::filesystem::path, std::filesystem::path> new_project_paths(const 
   bool project_given = extension == ".yaml" || extension == ".yml";
   if (project_given || extension == ".obj") stem.replace_extension();
   if (stem.filename().empty() || stem.filename() == "." || stem.filename() == "..")
-    throw UsageError(fmt::format("-o {}: expected a project NAME (writes NAME.obj and NAME.yaml)",
-                                 o));
+    throw UsageError(
+        fmt::format("-o {}: expected a project NAME (writes NAME.obj and NAME.yaml)", o));
   std::filesystem::path mesh = stem;
   mesh += ".obj";
   std::filesystem::path project = stem;

@@ -17,11 +17,13 @@ constexpr const char* kExitCodes =
 // Each command's examples; the overview shows the first of a few.
 const std::map<std::string, std::string>& examples() {
   static const std::map<std::string, std::string> kExamples{
-      {"check", R"(  skein check samples/hat/hat.obj                 # knittable? rows, yarn pieces, counts
+      {"check",
+       R"(  skein check samples/hat/hat.obj                 # knittable? rows, yarn pieces, counts
   skein check samples/sweater/sweater.yaml        # a project: coarse mesh -> stitch mesh
   skein check samples/autoknit/test-B.st          # an AutoKnit stitch graph
 )"},
-      {"compile", R"(  skein compile samples/hat/hat.obj -t hand -o hat.md --verify   # a pattern, proven
+      {"compile",
+       R"(  skein compile samples/hat/hat.obj -t hand -o hat.md --verify   # a pattern, proven
   skein compile samples/hat/hat.obj -t knitout -m swg091n2 -o hat.k --verify
   skein compile samples/sock/sock.yaml -t hand --set rounds=inside-out -o sock.md
   skein compile samples/hat/hat.obj -t schedule -o -              # to standard output
@@ -31,7 +33,8 @@ const std::map<std::string, std::string>& examples() {
   skein verify hat.md --against samples/hat/hat.obj
   skein verify hat.schedule                       # well formed? (no proof without --against)
 )"},
-      {"new", R"(  skein new sock --circumference 20cm --length 15cm -o mysock   # mysock.obj + mysock.yaml
+      {"new",
+       R"(  skein new sock --circumference 20cm --length 15cm -o mysock   # mysock.obj + mysock.yaml
   skein new hat --circumference 54cm -o hats/hat.yaml  # hats/hat.yaml + hats/hat.obj
   skein new sheet --width 20cm --length 10cm -o swatch --force  # replace an older swatch
 )"},

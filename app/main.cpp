@@ -50,8 +50,7 @@ int run_reporting_errors(const std::string& doing, const std::function<int()>& c
 }
 
 CLI::Option* add_output(CLI::App& command, Request& r, const std::string& what) {
-  return command.add_option("-o,--output", r.output, what + "; - for standard output")
-      ->required();
+  return command.add_option("-o,--output", r.output, what + "; - for standard output")->required();
 }
 
 void add_force(CLI::App& command, Request& r) {
@@ -133,9 +132,8 @@ int main(int argc, char** argv) {
 
   if (*check) return run_reporting_errors("checking " + r.input, [&] { return run_check(r); });
   if (*compile)
-    return run_reporting_errors(
-        fmt::format("compiling {} for the {} target", r.input, r.target),
-        [&] { return run_compile(registry, r); });
+    return run_reporting_errors(fmt::format("compiling {} for the {} target", r.input, r.target),
+                                [&] { return run_compile(registry, r); });
   if (*verify)
     return run_reporting_errors("verifying " + r.input, [&] { return run_verify(registry, r); });
   if (*new_cmd)

@@ -51,5 +51,6 @@ endif()
 file(READ "${prefix}/share/skein/machine_profiles/generic.yaml" generic)
 string(REPLACE "name: generic" "name: mine" mine "${generic}")
 file(WRITE "${user_data}/skein/machine_profiles/mine.yaml" "${mine}")
-run_installed(0 "valid on mine" verify out.k -m mine)
+run_installed(0 "valid on mine"
+              verify out.k -m mine --against "${SOURCE_DIR}/samples/hat/hat.obj")
 file(REMOVE_RECURSE "${work}")

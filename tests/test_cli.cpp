@@ -122,7 +122,8 @@ TEST_F(Cli, AProjectFileCanChooseTheHandTargetsSettings) {
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(read("sock.md").find("**Rnd 1 (WS):**"), std::string::npos);
   std::ofstream(in_dir("sock.yaml")) << project << "target: {rounds: sideways}\n";
-  CliRun bad = skein("compile " + in_dir("sock.yaml") + " -t hand -o " + in_dir("sock.md"));
+  CliRun bad =
+      skein("compile " + in_dir("sock.yaml") + " -t hand -o " + in_dir("sock.md") + " --force");
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("sock.yaml: target: rounds: expected mirror or inside-out, found "
                          "'sideways'"),
@@ -131,7 +132,8 @@ TEST_F(Cli, AProjectFileCanChooseTheHandTargetsSettings) {
   std::string wrapped = project;  // short_rows: {hand: ...} is the short-rows setting
   wrapped.replace(wrapped.find("method: sr4"), 11, "method: sr4\n  hand: wrap-and-turn");
   std::ofstream(in_dir("sock.yaml")) << wrapped;
-  CliRun w = skein("compile " + in_dir("sock.yaml") + " -t hand -o " + in_dir("sock.md"));
+  CliRun w =
+      skein("compile " + in_dir("sock.yaml") + " -t hand -o " + in_dir("sock.md") + " --force");
   EXPECT_EQ(w.exit_code, 0) << w.err;
   EXPECT_NE(read("sock.md").find("**Row 45 (RS):** K1, pm, k25, w&t."), std::string::npos);
 }
@@ -144,6 +146,8 @@ TEST_F(Cli, UnwritableOutputLeavesNoTemporaryFile) {
   EXPECT_TRUE(outputs().empty());
 }
 
+// A well-formed schedule that is not the model's is not proven (exit 1), like a hand pattern or
+// knitout that knits other fabric; a malformed one is bad input (exit 2).
 TEST_F(Cli, VerifyRejectsATamperedScheduleWithItsLine) {
   ASSERT_EQ(
       skein("compile samples/rib-swatch/rib-swatch.obj -t schedule -o " + in_dir("s.schedule"))
@@ -156,13 +160,89 @@ TEST_F(Cli, VerifyRejectsATamperedScheduleWithItsLine) {
   std::ofstream(in_dir("s.schedule")) << text;
   CliRun r =
       skein("verify " + in_dir("s.schedule") + " --against samples/rib-swatch/rib-swatch.obj");
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("face 21 (k, row 2) is a k, not a p"), std::string::npos) << r.err;
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(r.out,
+            in_dir("s.schedule") + ":47: face 21 (k, row 2) is a k, not a p\n     47 |     21 p\n");
+  text.replace(text.find("    21 p\n"), 9, "    21\n");
+  std::ofstream(in_dir("s.schedule")) << text;
+  CliRun malformed =
+      skein("verify " + in_dir("s.schedule") + " --against samples/rib-swatch/rib-swatch.obj");
+  EXPECT_EQ(malformed.exit_code, 2);
+  EXPECT_EQ(malformed.err, "skein: error: " + in_dir("s.schedule") +
+                               ":47: expected a stitch line '<number> <stitch>', a 'yarn', 'row', "
+                               "'turn' or 'marker' line\n     47 |     21\n");
+}
+
+TEST_F(Cli, AValidInputTheTargetCannotKnitExitsThree) {
+  CliRun r =
+      skein("compile samples/sweater/sweater.yaml -t knitout -m swg091n2 -o " + in_dir("s.k"));
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_EQ(r.err,
+            "skein: unsupported: not yet supported by the knitout target: pieces joined on the bed "
+            "(yarn 1 takes loops made by yarn 2, as a sweater's yoke takes its sleeves), at face "
+            "37649 (k, row 373)\n");
+  EXPECT_TRUE(outputs().empty());
+}
+
+TEST_F(Cli, VerifyingAgainstAnUnknittableModelIsNotProven) {
+  ASSERT_EQ(
+      skein("compile samples/rib-swatch/rib-swatch.obj -t schedule -o " + in_dir("s.schedule"))
+          .exit_code,
+      0);
+  CliRun r =
+      skein("verify " + in_dir("s.schedule") + " --against samples/unknittable/fig13-deadlock.obj");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("samples/unknittable/fig13-deadlock.obj: NOT knittable\n"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.substr(r.err.rfind("skein: ")),
+            "skein: " + in_dir("s.schedule") + " cannot be proven against it\n");
+}
+
+TEST_F(Cli, AnOverlongPathIsBadInputSaidInWords) {
+  std::string name = in_dir(std::string(5000, 'a'));
+  CliRun read = skein("check " + name + ".obj");
+  EXPECT_EQ(read.exit_code, 2);
+  EXPECT_EQ(read.err, "skein: error: cannot open '" + name + ".obj': File name too long\n");
+  CliRun written = skein("compile samples/hat/hat.obj -t schedule -o " + name);
+  EXPECT_EQ(written.exit_code, 2);
+  EXPECT_EQ(written.err, "skein: error: cannot write " + name + ": File name too long\n");
+}
+
+TEST_F(Cli, EachCommandsHelpHasItsOwnExamplesNotTheTargetList) {
+  CliRun compile = skein("compile --help");
+  EXPECT_EQ(compile.exit_code, 0);
+  EXPECT_NE(compile.out.find("Targets: hand, hand-html, hand-knitspeak, knitout, schedule (skein "
+                             "--help describes each and its --set settings).\n"),
+            std::string::npos)
+      << compile.out;
+  EXPECT_NE(compile.out.find("  skein compile samples/hat/hat.obj -t schedule -o -"),
+            std::string::npos)
+      << compile.out;
+  EXPECT_EQ(compile.out.find("Simulators"), std::string::npos) << compile.out;
+  EXPECT_EQ(compile.out.find("--set rounds=mirror|inside-out"), std::string::npos) << compile.out;
+  for (const char* command : {"check", "new", "generate", "render"}) {
+    CliRun r = skein(std::string(command) + " --help");
+    EXPECT_EQ(r.exit_code, 0) << command;
+    EXPECT_NE(r.out.find("Examples:\n  skein " + std::string(command) + " "), std::string::npos)
+        << r.out;
+    EXPECT_EQ(r.out.find("Targets"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("Exit codes: 0 done"), std::string::npos) << r.out;
+  }
+  EXPECT_NE(skein("new --help")
+                .out.find("NAME or NAME.yaml: writes the project NAME.yaml and its "
+                          "mesh NAME.obj"),
+            std::string::npos);
 }
 
 TEST_F(Cli, HelpListsTargetsAndSimulatorsFromTheRegistry) {
   CliRun r = skein("--help");
   EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.out.find("Exit codes: 0 done (knittable, written, proven); 1 not knittable or not "
+                       "proven; 2 bad input\nor usage; 3 valid input that the target cannot do "
+                       "(yet, or on this machine); 4 internal\nerror.\n"),
+            std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("schedule "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("schedule-replay"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("Examples:"), std::string::npos) << r.out;

@@ -61,8 +61,7 @@ TEST_F(CliOutputs, AnExistingOutputIsReplacedOnlyWithForce) {
   EXPECT_EQ(read("hat.schedule"), "mine\n");
   CliRun forced = skein("compile samples/hat/hat.obj -t schedule -o " + out + " --force");
   EXPECT_EQ(forced.exit_code, 0) << forced.err;
-  EXPECT_EQ(forced.out,
-            "wrote " + out + " (schedule target, 2048 stitches, 1 yarn piece)\n");
+  EXPECT_EQ(forced.out, "wrote " + out + " (schedule target, 2048 stitches, 1 yarn piece)\n");
   EXPECT_EQ(read("hat.schedule").rfind(";!skein-schedule 1\n", 0), 0u);
   write("s.svg", "mine\n");
   expect_refused(skein("render samples/swatch/swatch.yaml -o " + in_dir("s.svg")),
@@ -107,9 +106,9 @@ TEST_F(CliOutputs, ASymbolicLinksTargetIsReplacedOnlyWithForceAndTheLinkStays) {
   // A link to an input is that input.
   std::string hat = copy_sample("hat", "hat.obj");
   fs::create_symlink("hat.obj", dir_ / "hat.md");
-  expect_refused(skein("compile " + hat + " -t hand -o " + in_dir("hat.md") + " --force"),
-                 "cannot write " + in_dir("hat.md") + ": it is an input of this command (" + hat +
-                     ")");
+  expect_refused(
+      skein("compile " + hat + " -t hand -o " + in_dir("hat.md") + " --force"),
+      "cannot write " + in_dir("hat.md") + ": it is an input of this command (" + hat + ")");
   EXPECT_TRUE(fs::is_symlink(dir_ / "hat.md"));
 }
 
@@ -139,9 +138,11 @@ TEST_F(CliOutputs, NewNeverOverwritesAnEditedProjectWithoutForce) {
   EXPECT_EQ(made.out, "wrote " + sock + ".obj and " + sock + ".yaml\n");
   write("sock.yaml", read("sock.yaml") + "# edited\n");
   std::string edited = read("sock.yaml");
-  expect_refused(skein("new sock -o " + sock), sock + ".yaml already exists; pass --force to replace it");
+  expect_refused(skein("new sock -o " + sock),
+                 sock + ".yaml already exists; pass --force to replace it");
   fs::remove(dir_ / "sock.yaml");  // the mesh alone is refused too: no half-replaced project
-  expect_refused(skein("new sock -o " + sock), sock + ".obj already exists; pass --force to replace it");
+  expect_refused(skein("new sock -o " + sock),
+                 sock + ".obj already exists; pass --force to replace it");
   EXPECT_FALSE(fs::exists(dir_ / "sock.yaml"));
   write("sock.yaml", edited);
   CliRun forced = skein("new sock -o " + sock + " --force");
@@ -165,14 +166,14 @@ TEST_F(CliOutputs, RenderAndGenerateSayWhatTheyWrote) {
   CliRun svg = skein("render samples/swatch/swatch.yaml -o " + in_dir("s.svg"));
   EXPECT_EQ(svg.exit_code, 0) << svg.err;
   EXPECT_EQ(svg.out, "wrote " + in_dir("s.svg") +
-                         " (the stitch mesh of samples/swatch/swatch.yaml, 0 stitches)\n");
+                         " (the stitch mesh of samples/swatch/swatch.yaml, 2024 stitches)\n");
   CliRun coarse = skein("render samples/swatch/swatch.yaml --coarse -o " + in_dir("c.svg"));
   EXPECT_EQ(coarse.out, "wrote " + in_dir("c.svg") +
-                            " (the labelled coarse mesh of samples/swatch/swatch.yaml, 0 faces)\n");
+                            " (the labelled coarse mesh of samples/swatch/swatch.yaml, 4 faces)\n");
   CliRun mesh = skein("generate samples/swatch/swatch.yaml -o " + in_dir("s.obj"));
   EXPECT_EQ(mesh.exit_code, 0) << mesh.err;
   EXPECT_EQ(mesh.out, "wrote " + in_dir("s.obj") +
-                          " (the stitch mesh of samples/swatch/swatch.yaml, 0 stitches)\n");
+                          " (the stitch mesh of samples/swatch/swatch.yaml, 2024 stitches)\n");
 }
 
 }  // namespace

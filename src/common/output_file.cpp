@@ -36,9 +36,9 @@ std::string non_regular_kind(fs::file_type type) {
 void refuse_non_regular(const std::string& path, fs::file_type type) {
   std::string kind = non_regular_kind(type);
   if (kind.empty()) return;
-  throw UsageError(fmt::format(
-      "cannot write {}: it is {}, not a regular file{}", path, kind,
-      type == fs::file_type::directory ? "" : " (-o - writes to standard output)"));
+  throw UsageError(
+      fmt::format("cannot write {}: it is {}, not a regular file{}", path, kind,
+                  type == fs::file_type::directory ? "" : " (-o - writes to standard output)"));
 }
 
 void refuse_inputs(const std::string& path, const std::vector<std::string>& inputs) {

@@ -146,24 +146,24 @@ class ScheduleReplay {
     if (s >= g.size()) differs(line_no, raw, fmt::format("the model has {} stitches", g.size()));
     if (abbr != abbreviation(g.type[s]))
       differs(line_no, raw,
-           fmt::format("{} is a {}, not a {}", g.describe(s), abbreviation(g.type[s]), abbr));
+              fmt::format("{} is a {}, not a {}", g.describe(s), abbreviation(g.type[s]), abbr));
     if (done_[s]) differs(line_no, raw, fmt::format("{} is worked a second time", g.describe(s)));
     for (auto e : boost::make_iterator_range(in_edges(s, c_->deps))) {
       StitchId before = static_cast<StitchId>(source(e, c_->deps));
       if (!done_[before])
         differs(line_no, raw,
-             fmt::format("{} is worked before {}, which it waits for: {}", g.describe(s),
-                         g.describe(before), explain(c_->deps[e].reason)));
+                fmt::format("{} is worked before {}, which it waits for: {}", g.describe(s),
+                            g.describe(before), explain(c_->deps[e].reason)));
     }
     if (c_->yarns.piece_of[s] != yarn_)
       differs(line_no, raw,
-           fmt::format("{} belongs to yarn {}, not yarn {}", g.describe(s),
-                       c_->yarns.piece_of[s] + 1, yarn_ + 1));
+              fmt::format("{} belongs to yarn {}, not yarn {}", g.describe(s),
+                          c_->yarns.piece_of[s] + 1, yarn_ + 1));
     StitchId previous = last_[yarn_];
     bool follows = previous == kNoStitch ? c_->yarns.first[yarn_] == s : g.yarn_next[previous] == s;
     if (!follows)
       differs(line_no, raw,
-           fmt::format("{} does not come next along yarn {}", g.describe(s), yarn_ + 1));
+              fmt::format("{} does not come next along yarn {}", g.describe(s), yarn_ + 1));
     done_[s] = 1;
     last_[yarn_] = s;
   }
