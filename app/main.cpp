@@ -167,6 +167,7 @@ int run_compile(const Registry& registry, const std::string& input, const std::s
                            target.name(), c.knit.size(), c.yarns.size(),
                            c.yarns.size() == 1 ? "" : "s");
   if (!verify) return kKnittable;
+  options.strict = true;  // skein's own output keeps to every rule
   const Simulator* simulator = registry.simulator_for(target.name());
   if (!simulator) throw UsageError(fmt::format("target '{}' has no simulator", target.name()));
   return report_verification(simulator->verify(read_file(output), output, &c, options));
@@ -178,7 +179,8 @@ const Target& target_of(const Registry& registry, const std::string& file,
   if (!given.empty()) return find_target(registry, given);
   std::string extension = std::filesystem::path(file).extension().string();
   for (const Target* t : registry.targets())
-    if (t->default_extension() == extension) return *t;
+    for (const std::string& known : t->extensions())
+      if (known == extension) return *t;
   throw UsageError(fmt::format("cannot tell which target wrote {}; pass --target", file));
 }
 
@@ -245,7 +247,10 @@ int main(int argc, char** argv) {
   verify_cmd->add_option("--against", against, "the input it must reproduce, stitch for stitch");
   verify_cmd->add_option("-t,--target", target_name,
                          "the target that wrote OUT (default: by extension)");
-  verify_cmd->add_option("-m,--machine", options.machine, "machine profile name or path");
+  verify_cmd->add_option("-m,--machine", options.machine,
+                         "machine profile name or path (default: from the file's ;;Machine:)");
+  verify_cmd->add_flag("--strict", options.strict,
+                       "every rule an error, as for skein's own output (compile --verify)");
 
   std::string shape_kind;
   std::string circumference, width, length;
