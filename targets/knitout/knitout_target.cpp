@@ -5,10 +5,10 @@
 #include "common/error.hpp"
 #include "driver/pipeline.hpp"
 #include "knitout/emit.hpp"
-#include "knitout/fabric_proof.hpp"
 #include "knitout/fabric_report.hpp"
 #include "knitout/machine_profile.hpp"
 #include "knitout/vbed_simulator.hpp"
+#include "knitout/whole_file_proof.hpp"
 
 namespace skein {
 namespace {
@@ -63,7 +63,7 @@ class VbedSimulator : public Simulator {
     if (!against->knittability.knittable)
       throw Error(
           fmt::format("{} is not knittable, so no knitout of it can be proven", against->input));
-    knitout::ProofResult proof = knitout::prove_fabric(replay, text, *against);
+    knitout::ProofResult proof = knitout::prove_whole_file(replay, text, *against);
     report.proven = proof.proven;
     report.summary =
         fmt::format("{}; {}\n{}{}", valid, proof.summary, findings_text(replay, profile), shop);

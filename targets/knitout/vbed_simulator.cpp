@@ -681,10 +681,10 @@ ProfileChoice choose_profile(std::string_view text, const std::string& file,
   }
   c.profile = load_machine_profile("generic");
   c.options.check_machine = false;
-  c.how = named.empty()
-              ? " (note: the file names no ;;Machine:; give --machine to replay it on one)"
-              : fmt::format(" (note: no profile knows ;;Machine: {}; give --machine for one)",
-                            named);
+  c.how =
+      named.empty()
+          ? " (note: the file names no ;;Machine:; give --machine to replay it on one)"
+          : fmt::format(" (note: no profile knows ;;Machine: {}; give --machine for one)", named);
   return c;
 }
 
