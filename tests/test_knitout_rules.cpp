@@ -208,11 +208,12 @@ TEST(VbedFabricReport, SaysWhatTheFileKnits) {
   EXPECT_EQ(f.left_on_needles, 1u);  // b30
   EXPECT_EQ(f.long_floats, 1u);      // f4 to b30: 26 needles, generic's max_float is 10
   EXPECT_EQ(f.idle_tucks, 1u);       // b31
-  EXPECT_EQ(knitout::fabric_summary(f, p),
-            "  fabric: 1 piece; 8 knit, 1 purl, 5 tuck, 0 split (0 decreases)\n"
-            "  loops dropped that unravel: 5, loops left on the needles: 1\n"
-            "  stitches pulled through nothing: 1, floats longer than 10 needles: 1, tucks that "
-            "hold nothing: 1");
+  EXPECT_EQ(
+      knitout::fabric_summary(f, p),
+      "  fabric: 1 piece; 8 knit on the front bed, 1 on the back, 5 tuck, 0 split (0 decreases)\n"
+      "  loops dropped that unravel: 5, loops left on the needles: 1\n"
+      "  stitches pulled through nothing: 1, floats longer than 10 needles: 1, tucks that "
+      "hold nothing: 1");
 }
 
 }  // namespace

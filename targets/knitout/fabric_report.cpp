@@ -71,7 +71,8 @@ FabricReport fabric_report(const Replay& replay) {
 
 std::string fabric_summary(const FabricReport& r, const MachineProfile& p) {
   return fmt::format(
-      "  fabric: {} piece{}; {} knit, {} purl, {} tuck, {} split ({} decreases)\n"
+      "  fabric: {} piece{}; {} knit on the front bed, {} on the back, {} tuck, {} split ({} "
+      "decreases)\n"
       "  loops dropped that unravel: {}, loops left on the needles: {}\n"
       "  stitches pulled through nothing: {}, floats longer than {} needles: {}, tucks that hold "
       "nothing: {}",

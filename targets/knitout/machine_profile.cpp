@@ -309,7 +309,7 @@ std::optional<MachineProfile> profile_for_machine(const std::string& header) {
   if (header.empty()) return std::nullopt;
   for (const std::string& name : shipped_profile_names()) {
     MachineProfile p = load_machine_profile(name);
-    if (!p.back_end.empty() && p.is_machine(header)) return p;
+    if (p.is_machine(header)) return p;
   }
   return std::nullopt;
 }
