@@ -126,7 +126,8 @@ const Target& target_of(const Registry& registry, const std::string& file,
   if (!given.empty()) return find_target(registry, given);
   std::string extension = std::filesystem::path(file).extension().string();
   for (const Target* t : registry.targets())
-    if (t->default_extension() == extension) return *t;
+    for (const std::string& known : t->extensions())
+      if (known == extension) return *t;
   throw UsageError(fmt::format("cannot tell which target wrote {}; pass --target", file));
 }
 
@@ -179,6 +180,7 @@ int run_compile(const Registry& registry, const Request& r) {
                         target.name(), c.knit.size(), c.yarns.size(),
                         c.yarns.size() == 1 ? "" : "s");
   if (!simulator) return kDone;
+  options.strict = true;  // skein's own output keeps to every rule
   return report_verification(simulator->verify(text.str(), out.name(), &c, options), report);
 }
 

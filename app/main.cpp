@@ -92,7 +92,10 @@ int main(int argc, char** argv) {
   verify->add_option("OUT", r.input, "a file a target wrote")->required();
   verify->add_option("--against", r.against, "the input it must reproduce, stitch for stitch");
   verify->add_option("-t,--target", r.target, "the target that wrote OUT (default: by extension)");
-  verify->add_option("-m,--machine", r.options.machine, "machine profile name or path");
+  verify->add_option("-m,--machine", r.options.machine,
+                     "machine profile name or path (default: from the file's ;;Machine:)");
+  verify->add_flag("--strict", r.options.strict,
+                   "every rule an error, as for skein's own output (compile --verify)");
 
   auto* new_cmd = app.add_subcommand("new", "write a parametric coarse mesh and its project file");
   new_cmd->add_option("KIND", r.shape, "sheet, tube, hat, sock or sweater")->required();

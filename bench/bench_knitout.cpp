@@ -1,5 +1,6 @@
 // The knitout target on 1M-stitch models: writing the knitout, replaying it on the virtual
-// v-bed (every rule checked), and replaying plus proving the fabric against the model, each
+// v-bed (every rule checked), replaying as `skein verify FILE` does with its fabric report,
+// and replaying plus proving the fabric against the model, each
 // timed on its own. The model is compiled once per case, outside the timing. The profile is
 // the generic one widened to 4000 needles so that every case fits.
 //
@@ -14,9 +15,10 @@
 
 #include "driver/pipeline.hpp"
 #include "knitout/emit.hpp"
-#include "knitout/fabric_proof.hpp"
+#include "knitout/fabric_report.hpp"
 #include "knitout/machine_profile.hpp"
 #include "knitout/vbed_simulator.hpp"
+#include "knitout/whole_file_proof.hpp"
 #include "labeling/shapes.hpp"
 #include "mesh/generate.hpp"
 
@@ -107,10 +109,28 @@ void BM_KnitoutVerify(benchmark::State& state) {
   const std::string& text = knitout_of(static_cast<KnitoutCase>(state.range(0)));
   for (auto _ : state) {
     knitout::Replay r = knitout::replay_knitout(text, "bench.k", profile());
-    knitout::ProofResult proof = knitout::prove_fabric(r, text, c);
+    knitout::ProofResult proof = knitout::prove_whole_file(r, text, c);
     if (!proof.proven) state.SkipWithError(proof.summary.c_str());
   }
   state.counters["stitches"] = c.knit.size();
+}
+
+// What `skein verify FILE` does without --against: the replay by each rule's severity, and the
+// fabric report.
+void BM_KnitoutFabricReport(benchmark::State& state) {
+  const std::string& text = knitout_of(static_cast<KnitoutCase>(state.range(0)));
+  std::uint64_t ops = 0, loops = 0;
+  for (auto _ : state) {
+    knitout::Replay r = knitout::replay_knitout(text, "bench.k", profile(), {.strict = false});
+    knitout::FabricReport f = knitout::fabric_report(r);
+    ops = r.stats.operations;
+    loops = f.knits + f.purls + f.tucks + f.splits;
+    benchmark::DoNotOptimize(f);
+  }
+  state.counters["operations"] = static_cast<double>(ops);
+  state.counters["loops"] = static_cast<double>(loops);
+  state.counters["ops_per_second"] =
+      benchmark::Counter(static_cast<double>(ops), benchmark::Counter::kIsIterationInvariantRate);
 }
 
 #define KNITOUT_CASES \
@@ -118,6 +138,7 @@ void BM_KnitoutVerify(benchmark::State& state) {
 BENCHMARK(BM_KnitoutEmit) KNITOUT_CASES;
 BENCHMARK(BM_KnitoutReplay) KNITOUT_CASES;
 BENCHMARK(BM_KnitoutVerify) KNITOUT_CASES;
+BENCHMARK(BM_KnitoutFabricReport) KNITOUT_CASES;
 
 }  // namespace
 }  // namespace skein

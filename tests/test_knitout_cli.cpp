@@ -31,6 +31,37 @@ TEST_F(KnitoutCli, CompilesVerifiesAndProvesTheHat) {
   EXPECT_EQ(proven.exit_code, 0) << proven.out << proven.err;
 }
 
+// Third-party files as their authors would run them: no --machine, no --target.
+TEST_F(KnitoutCli, AForeignFileIsReplayedOnTheMachineItNames) {
+  const std::string dir = "tests/data/knitout-foreign/knitout-examples/";
+  testing::CliRun named = skein("verify " + dir + "icord-cast-on.k");
+  EXPECT_EQ(named.exit_code, 1) << named.err;  // valid; nothing to prove it against
+  EXPECT_NE(named.out.find("every operation is valid on swg091n2 (the file's ;;Machine: SWGN2)"),
+            std::string::npos)
+      << named.out;
+  EXPECT_NE(named.out.find("note: line 613: needle f-1 is outside the bed: swg091n2 has needles "
+                           "0..539 [needle-off-bed: knitout-to-dat] (98 times)"),
+            std::string::npos)
+      << named.out;
+  EXPECT_NE(named.out.find("fabric: 1 piece; 530 knit on the front bed, 110 on the back, 30 tuck"),
+            std::string::npos)
+      << named.out;
+  testing::CliRun unnamed = skein("verify " + dir + "rectangle.knitout");
+  EXPECT_EQ(unnamed.exit_code, 1) << unnamed.err;
+  EXPECT_NE(unnamed.out.find("every operation is valid on generic (note: the file names no "
+                             ";;Machine:; give --machine to replay it on one)"),
+            std::string::npos)
+      << unnamed.out;
+  testing::CliRun strict = skein("verify " + dir + "icord-cast-on.k --strict");
+  EXPECT_EQ(strict.exit_code, 2);
+  EXPECT_NE(strict.err.find("needle f-1 is outside the bed"), std::string::npos) << strict.err;
+  testing::CliRun autoknit = skein("verify tests/data/knitout-foreign/autoknit-knitout/test-A.k");
+  EXPECT_EQ(autoknit.exit_code, 2);
+  EXPECT_NE(autoknit.err.find("test-A.k:162: carrier '0' is not named in the ;;Carriers: header"),
+            std::string::npos)
+      << autoknit.err;
+}
+
 // The sock's short-row heel on the Kniterate, and the sweater refused in words (exit 3: valid
 // input the target cannot knit; no file).
 TEST_F(KnitoutCli, TheSockIsProvenAndTheSweaterRefused) {

@@ -71,9 +71,10 @@ std::string error_after_edit(const std::string& from, const std::string& to) {
 TEST(KnitoutProfile, ABadOrUnknownFieldNamesTheFileLineAndField) {
   EXPECT_EQ(error_after_edit("sliders: true", "slider: true"),
             "line 16: unknown field 'slider' in the profile; did you mean 'sliders'? (known: name, "
-            "description, machine, gauge, "
+            "description, machine, machine_names, back_end, gauge, "
             "needles, position, width_header, carriers, racking, max_loops_per_needle, sliders, "
-            "knit_empty_needle, yarn, stitch_number, speed_number, cast_on, bind_off, timing)");
+            "knit_empty_needle, yarn, stitch_number, speed_number, max_float, cast_on, bind_off, "
+            "timing)");
   EXPECT_EQ(error_after_edit("  max: 4 ", "  maximum: 4 "),
             "line 12: unknown field 'maximum' in 'racking'; did you mean 'max'? (known: max, "
             "fractions, max_transfer_stretch)");

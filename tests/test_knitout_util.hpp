@@ -15,9 +15,9 @@
 #include "driver/pipeline.hpp"
 #include "golden.hpp"
 #include "knitout/emit.hpp"
-#include "knitout/fabric_proof.hpp"
 #include "knitout/machine_profile.hpp"
 #include "knitout/vbed_simulator.hpp"
+#include "knitout/whole_file_proof.hpp"
 #include "mesh/autoknit_st.hpp"
 
 namespace skein::testing {
@@ -36,7 +36,7 @@ inline std::string emit_knitout_text(const Compilation& c, const knitout::Machin
 inline knitout::ProofResult replay_and_prove(const std::string& text, const Compilation& c,
                                              const knitout::MachineProfile& p) {
   knitout::Replay replay = knitout::replay_knitout(text, "out.k", p);
-  return knitout::prove_fabric(replay, text, c);
+  return knitout::prove_whole_file(replay, text, c);
 }
 
 // A stitch graph in AutoKnit's format, one yarn: s cast-on, k knit, i increase, d decrease,

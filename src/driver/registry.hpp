@@ -18,6 +18,7 @@ struct TargetOptions {
   std::string dialect;  // one of the target's dialects(); empty: its default
   // --set KEY=VALUE, then the project file's `target:` keys the target knows.
   std::map<std::string, std::string> settings;
+  bool strict = false;  // simulators: the target's own strictest rules (compile --verify)
 };
 
 // A choice a target offers (`--set rounds=inside-out`) and the values it may take.
@@ -33,6 +34,8 @@ class Target {
   virtual std::string name() const = 0;
   virtual std::string description() const = 0;
   virtual std::string default_extension() const = 0;  // ".txt", ".k", ".md"
+  // Every extension its files are known by (`skein verify` finds the target by it).
+  virtual std::vector<std::string> extensions() const { return {default_extension()}; }
   // The dialects --dialect may name (the hand target: "standard", "knitspeak"); none by default.
   virtual std::vector<std::string> dialects() const { return {}; }
   // The settings --set may give; none by default.

@@ -393,6 +393,7 @@ ProofResult prove_fabric(const Replay& r, std::string_view text, const Compilati
       return result;
     }
     const auto& yarn = r.fabric.by_carrier[m.carrier];
+    result.pieces.push_back({m.carrier, m.start, m.needed});
     result.first_line =
         std::min<std::size_t>(result.first_line, r.fabric.loops[yarn[m.start]].line);
     result.last_line =

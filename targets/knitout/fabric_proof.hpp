@@ -30,6 +30,11 @@ struct ProofResult {
   // When proven: the lines that make the input's first and last loops (what lies outside is
   // border, waste yarn or tag).
   std::size_t first_line = 0, last_line = 0;
+  // When proven: each piece's loops, a run of its carrier's yarn (Fabric::by_carrier).
+  struct Run {
+    std::size_t carrier = 0, start = 0, count = 0;
+  };
+  std::vector<Run> pieces;
 };
 
 // `text` is the replayed file, quoted in the message when the proof fails.

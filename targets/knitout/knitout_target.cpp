@@ -5,9 +5,10 @@
 #include "common/error.hpp"
 #include "driver/pipeline.hpp"
 #include "knitout/emit.hpp"
-#include "knitout/fabric_proof.hpp"
+#include "knitout/fabric_report.hpp"
 #include "knitout/machine_profile.hpp"
 #include "knitout/vbed_simulator.hpp"
+#include "knitout/whole_file_proof.hpp"
 
 namespace skein {
 namespace {
@@ -21,39 +22,51 @@ class KnitoutTarget : public Target {
            "another, cast-on to bind-off";
   }
   std::string default_extension() const override { return ".k"; }
+  std::vector<std::string> extensions() const override { return {".k", ".knitout"}; }
   void emit(const Compilation& c, const TargetOptions& options, std::ostream& out) const override {
     knitout::emit_knitout(c, knitout::load_machine_profile(options.machine), out);
   }
 };
+
+std::string findings_text(const knitout::Replay& replay, const knitout::MachineProfile& p) {
+  std::string out;
+  for (const knitout::Finding& f : replay.findings)
+    out += fmt::format("  {}\n", knitout::finding_line(f, p));
+  return out;
+}
 
 class VbedSimulator : public Simulator {
  public:
   std::string name() const override { return "vbed"; }
   std::string target() const override { return "knitout"; }
   std::string description() const override {
-    return "replays any knitout on a machine profile, rejects the first invalid operation, "
-           "reports passes, transfers and time, and proves the fabric against the input";
+    return "replays any knitout on the machine its header names (or --machine), stops at the "
+           "first error, reports warnings, passes, time and the fabric it makes, and proves the "
+           "fabric against the input";
   }
   VerifyReport verify(const std::string& text, const std::string& file, const Compilation* against,
                       const TargetOptions& options) const override {
-    knitout::MachineProfile profile = knitout::load_machine_profile(options.machine);
-    knitout::Replay replay = knitout::replay_knitout(text, file, profile);
-    std::string shop = knitout::shop_summary(replay, profile);
+    knitout::ProfileChoice chosen =
+        knitout::choose_profile(text, file, options.machine, options.strict);
+    const knitout::MachineProfile& profile = chosen.profile;
+    knitout::Replay replay = knitout::replay_knitout(text, file, profile, chosen.options);
+    std::string shop = knitout::shop_summary(replay, profile) + "\n" +
+                       knitout::fabric_summary(knitout::fabric_report(replay), profile);
+    std::string valid =
+        fmt::format("{}: every operation is valid on {}{}", file, profile.name, chosen.how);
     VerifyReport report;
     if (!against) {
-      report.summary = fmt::format(
-          "{}: every operation is valid on {}\n{}\n  give --against INPUT "
-          "to prove the fabric",
-          file, profile.name, shop);
+      report.summary = fmt::format("{}\n{}{}\n  give --against INPUT to prove the fabric", valid,
+                                   findings_text(replay, profile), shop);
       return report;
     }
     if (!against->knittability.knittable)
       throw Error(
           fmt::format("{} is not knittable, so no knitout of it can be proven", against->input));
-    knitout::ProofResult proof = knitout::prove_fabric(replay, text, *against);
+    knitout::ProofResult proof = knitout::prove_whole_file(replay, text, *against);
     report.proven = proof.proven;
-    report.summary = fmt::format("{}: every operation is valid on {}; {}\n{}", file, profile.name,
-                                 proof.summary, shop);
+    report.summary =
+        fmt::format("{}; {}\n{}{}", valid, proof.summary, findings_text(replay, profile), shop);
     return report;
   }
 };

@@ -4,6 +4,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -154,6 +155,11 @@ MachineProfile parse_profile(const std::string& path, const std::string& text) {
       r.fail(n.Mark(), fmt::format("field '{}' must be a list such as [0, 0.25]", f));
     for (const auto& item : n) p.rack_fractions.push_back(r.number(item, f, 0, 0.75));
   };
+  auto names = [&](const YAML::Node& n, const std::string& f) {
+    if (!n.IsSequence())
+      r.fail(n.Mark(), fmt::format("field '{}' must be a list such as [SWG091N2, SWGN2]", f));
+    for (const auto& item : n) p.machine_names.push_back(r.text(item, f));
+  };
   auto choice_to = [&](std::string& out, std::initializer_list<const char*> allowed) -> Read {
     return [&r, &out, allowed](const YAML::Node& n, const std::string& f) {
       out = r.choice(n, f, allowed);
@@ -164,6 +170,8 @@ MachineProfile parse_profile(const std::string& path, const std::string& text) {
       {"name", true, text_to(r, p.name)},
       {"description", true, text_to(r, p.description)},
       {"machine", true, text_to(r, p.machine)},
+      {"machine_names", false, names},
+      {"back_end", false, text_to(r, p.back_end)},
       {"gauge", true, number_to(r, p.gauge, 1, 100)},
       {"needles", true, whole_to(r, p.needles, 8, 100000)},
       {"position", true, choice_to(p.position, {"Left", "Center", "Right", "Keep"})},
@@ -184,6 +192,7 @@ MachineProfile parse_profile(const std::string& path, const std::string& text) {
           {"draw_carrier", false, text_to(r, p.draw_carrier)}})},
       {"stitch_number", false, whole_to(r, p.stitch_number, 1, 255)},
       {"speed_number", false, whole_to(r, p.speed_number, 1, 10000)},
+      {"max_float", false, whole_to(r, p.max_float, 1, 10000)},
       {"cast_on", true, map_of(r, {
           {"style", true, choice_to(style, {"alternating-tuck"})},
           {"waste_rows", true, whole_to(r, p.waste_rows, 0, 200)}})},
@@ -262,7 +271,10 @@ std::vector<fs::path> profile_directories() {
 }  // namespace
 
 bool MachineProfile::rack_allowed(std::int32_t quarters) const {
-  if (std::abs(quarters) > max_rack * 4) return false;
+  return std::abs(quarters) <= max_rack * 4 && rack_fraction_allowed(quarters);
+}
+
+bool MachineProfile::rack_fraction_allowed(std::int32_t quarters) const {
   int fraction = ((quarters % 4) + 4) % 4;
   return std::any_of(rack_fractions.begin(), rack_fractions.end(),
                      [&](double f) { return static_cast<int>(f * 4) == fraction; });
@@ -272,6 +284,16 @@ std::string MachineProfile::carriers_line() const {
   std::string line;
   for (const std::string& c : carriers) line += (line.empty() ? "" : " ") + c;
   return line;
+}
+
+bool MachineProfile::is_machine(const std::string& header) const {
+  auto same = [&](const std::string& known) {
+    return std::equal(known.begin(), known.end(), header.begin(), header.end(), [](char a, char b) {
+      return std::tolower(static_cast<unsigned char>(a)) ==
+             std::tolower(static_cast<unsigned char>(b));
+    });
+  };
+  return same(machine) || std::any_of(machine_names.begin(), machine_names.end(), same);
 }
 
 MachineProfile read_machine_profile(const std::string& path) {
@@ -302,6 +324,15 @@ MachineProfile load_machine_profile(const std::string& name_or_path) {
                   "directory, in $XDG_DATA_HOME/skein or ~/.local/share/skein, beside the skein "
                   "executable and in its prefix's share/skein); known profiles: {}",
                   name_or_path, names.empty() ? "none" : names));
+}
+
+std::optional<MachineProfile> profile_for_machine(const std::string& header) {
+  if (header.empty()) return std::nullopt;
+  for (const std::string& name : shipped_profile_names()) {
+    MachineProfile p = load_machine_profile(name);
+    if (p.is_machine(header)) return p;
+  }
+  return std::nullopt;
 }
 
 std::vector<std::string> shipped_profile_names() {

@@ -13,6 +13,18 @@
 namespace skein::knitout {
 namespace {
 
+// The magic line, the header and the line after it: all that is ever quoted by number.
+std::vector<std::string_view> header_lines(std::string_view text) {
+  std::vector<std::string_view> lines;
+  for (std::size_t pos = 0; pos < text.size();) {
+    std::size_t end = std::min(text.find('\n', pos), text.size());
+    lines.push_back(text.substr(pos, end - pos));
+    if (lines.size() > 1 && !lines.back().starts_with(";;")) break;
+    pos = end + 1;
+  }
+  return lines;
+}
+
 constexpr std::uint32_t kMaxStack = 15;  // the most loops a profile may allow on one needle
 
 struct Stack {
@@ -42,21 +54,28 @@ struct PassTracker {
 
 class VirtualBed {
  public:
-  VirtualBed(const std::string& file, const MachineProfile& profile, std::string_view text)
+  VirtualBed(const std::string& file, const MachineProfile& profile, std::string_view text,
+             ReplayOptions options)
       : file_(file),
         p_(profile),
+        options_(options),
         text_(text),
         lines_(header_lines(text)),
         line_count_(count_lines(text)) {
     n_ = static_cast<std::int32_t>(p_.needles);
+    for (std::size_t r = 0; r < severity_.size(); ++r)
+      severity_[r] = rule_severity(static_cast<Rule>(r), p_, options_.strict);
   }
 
   Replay run() {
     r_.header = parse_header(lines_, file_);
     check_header();
     keep_ = r_.header.position.empty() || r_.header.position == "Keep";
-    lo_ = keep_ ? 0 : -n_;
-    hi_ = keep_ ? n_ : 2 * n_;
+    // Strict, with Keep, the bed is exactly 0..n-1; otherwise the back end places the design,
+    // and any n needles in a row may be used: the v-bed keeps room for them.
+    bool exact = keep_ && severity(Rule::needle_off_bed) == Severity::error;
+    lo_ = exact ? 0 : -2 * n_;
+    hi_ = exact ? n_ : 3 * n_;
     for (auto& bed : beds_) bed.assign(static_cast<std::size_t>(hi_ - lo_), Stack{});
     carriers_.assign(r_.header.carriers.size(), Carrier{});
     r_.fabric.by_carrier.assign(r_.header.carriers.size(), {});
@@ -64,6 +83,7 @@ class VirtualBed {
     r_.fabric.parents.reserve(line_count_);
     r_.stats.min_needle = std::numeric_limits<std::int32_t>::max();
     r_.stats.max_needle = std::numeric_limits<std::int32_t>::min();
+    last_slot_.assign(r_.header.carriers.size(), kNoSlot);
     std::string error;
     Op op;
     // Operations are read straight from the text, a line at a time.
@@ -93,6 +113,34 @@ class VirtualBed {
     throw ParseError(file_, line_, std::string(current_), why);
   }
 
+  Severity severity(Rule rule) const { return severity_[static_cast<std::size_t>(rule)]; }
+
+  // Breaks `rule` at the current line: an error stops the replay; a warning or a note is kept
+  // (its first message and a count) and the replay goes on. The message is made at most once.
+  template <typename Message>
+  void breaks(Rule rule, Message&& message) {
+    Severity s = severity(rule);
+    if (s == Severity::off) return;
+    if (s == Severity::error) fail(message());
+    record(rule, s, line_, message);
+  }
+  template <typename Message>
+  void breaks_header(std::size_t line, Rule rule, Message&& message) {
+    Severity s = severity(rule);
+    if (s == Severity::off) return;
+    if (s == Severity::error) fail_header(line, message());
+    record(rule, s, line, message);
+  }
+  template <typename Message>
+  void record(Rule rule, Severity s, std::size_t line, Message& message) {
+    Finding& f = found_[static_cast<std::size_t>(rule)];
+    if (f.count++ > 0) return;
+    f.rule = rule;
+    f.severity = s;
+    f.line = line;
+    f.message = message();
+  }
+
   // Sums of at most 255 per block fit a byte, so the compiler can count 16 or 32 bytes an
   // instruction (std::count widens every byte to 64 bits: 6% of a replay).
   static std::size_t count_lines(std::string_view text) {
@@ -106,17 +154,6 @@ class VirtualBed {
     return lines;
   }
 
-  // The magic line, the header and the line after it: all that is ever quoted by number.
-  static std::vector<std::string_view> header_lines(std::string_view text) {
-    std::vector<std::string_view> lines;
-    for (std::size_t pos = 0; pos < text.size();) {
-      std::size_t end = std::min(text.find('\n', pos), text.size());
-      lines.push_back(text.substr(pos, end - pos));
-      if (lines.size() > 1 && !lines.back().starts_with(";;")) break;
-      pos = end + 1;
-    }
-    return lines;
-  }
   std::size_t next_line(std::size_t pos) const {
     const void* end = std::memchr(text_.data() + pos, '\n', text_.size() - pos);
     return end ? static_cast<std::size_t>(static_cast<const char*>(end) - text_.data()) + 1
@@ -135,45 +172,66 @@ class VirtualBed {
                   fmt::format("missing the ;;Carriers: header ({} needs ';;Carriers: {}')", p_.name,
                               p_.carriers_line()));
     if (h.carriers != p_.carriers)
-      fail_header(h.carriers_line,
-                  fmt::format("{} needs ';;Carriers: {}'", p_.name, p_.carriers_line()));
+      breaks_header(h.carriers_line, Rule::carriers_line, [&] {
+        return fmt::format("{} needs ';;Carriers: {}'", p_.name, p_.carriers_line());
+      });
     auto header_line = [&](std::string_view key) {
       for (std::size_t i = 1; i < h.first_op_line - 1; ++i)
         if (lines_[i].starts_with(fmt::format(";;{}:", key))) return i + 1;
       return std::size_t{1};
     };
-    if (!h.machine.empty() && h.machine != p_.machine)
-      fail_header(header_line("Machine"),
-                  fmt::format("the file is for machine '{}', profile {} is '{}'", h.machine,
-                              p_.name, p_.machine));
-    if (!h.gauge.empty() && std::strtod(h.gauge.c_str(), nullptr) != p_.gauge)
-      fail_header(header_line("Gauge"), fmt::format("the file is for gauge {}, {} is gauge {}",
-                                                    h.gauge, p_.name, p_.gauge));
+    if (options_.check_machine && !h.machine.empty() && !p_.is_machine(h.machine))
+      breaks_header(header_line("Machine"), Rule::machine_header, [&] {
+        return fmt::format("the file is for machine '{}', profile {} is '{}'", h.machine, p_.name,
+                           p_.machine);
+      });
+    if (options_.check_machine && !h.gauge.empty() &&
+        std::strtod(h.gauge.c_str(), nullptr) != p_.gauge)
+      breaks_header(header_line("Gauge"), Rule::gauge_header, [&] {
+        return fmt::format("the file is for gauge {}, {} is gauge {}", h.gauge, p_.name, p_.gauge);
+      });
     if (!h.width.empty() && std::stoul(h.width) > p_.needles)
-      fail_header(header_line("Width"), fmt::format("the file asks for {} needles, {} has {}",
-                                                    h.width, p_.name, p_.needles));
+      breaks_header(header_line("Width"), Rule::width_header, [&] {
+        return fmt::format("the file asks for {} needles, {} has {}", h.width, p_.name, p_.needles);
+      });
   }
 
   // ---- needles ----
   Stack& at(Needle n) {
     if (is_slider(n.bed) && !p_.sliders)
-      fail(fmt::format("{} is a slider, and {} has no sliders", needle_name(n), p_.name));
-    if (n.index < lo_ || n.index >= hi_)  // with Keep, lo_..hi_ is exactly the bed
-      fail(fmt::format("needle {} is outside the bed: {} has needles 0..{}", needle_name(n),
-                       p_.name, n_ - 1));
+      breaks(Rule::no_sliders, [&] {
+        return fmt::format("{} is a slider, and {} has no sliders", needle_name(n), p_.name);
+      });
+    if (keep_ && (n.index < 0 || n.index >= n_))
+      breaks(Rule::needle_off_bed, [&] {
+        return fmt::format("needle {} is outside the bed: {} has needles 0..{}", needle_name(n),
+                           p_.name, n_ - 1);
+      });
+    if (n.index < lo_ || n.index >= hi_)
+      fail(fmt::format("needle {} is further from 0 than the v-bed tracks on {} ({}..{})",
+                       needle_name(n), p_.name, lo_, hi_ - 1));
     ShopStats& s = r_.stats;
     s.min_needle = std::min(s.min_needle, n.index);
     s.max_needle = std::max(s.max_needle, n.index);
     if (s.max_needle - s.min_needle >= n_)
-      fail(fmt::format("the needles used span {}..{} ({} needles), {} has {}", s.min_needle,
-                       s.max_needle, s.max_needle - s.min_needle + 1, p_.name, n_));
+      breaks(Rule::needle_span, [&] {
+        return fmt::format("the needles used span {}..{} ({} needles), {} has {}", s.min_needle,
+                           s.max_needle, s.max_needle - s.min_needle + 1, p_.name, n_);
+      });
     return beds_[static_cast<int>(n.bed)][static_cast<std::size_t>(n.index - lo_)];
   }
 
   void push(Stack& s, Needle n, LoopId loop) {
     if (s.size >= p_.max_loops_per_needle)
-      fail(fmt::format("{} would hold {} loops, {} allows {} per needle", needle_name(n),
-                       s.size + 1, p_.name, p_.max_loops_per_needle));
+      breaks(Rule::loops_per_needle, [&] {
+        return fmt::format("{} would hold {} loops, {} allows {} per needle", needle_name(n),
+                           s.size + 1, p_.name, p_.max_loops_per_needle);
+      });
+    if (s.size >= kMaxStack)
+      breaks(Rule::needle_overfull, [&] {
+        return fmt::format("{} would hold {} loops, more than the v-bed tracks", needle_name(n),
+                           s.size + 1);
+      });
     s.loop[s.size++] = loop;
   }
 
@@ -193,22 +251,28 @@ class VirtualBed {
     CarrierMask pending = 0;
     each(op.carriers, [&](Carrier& c, std::size_t i) {
       if (c.state == CarrierState::out)
-        fail(fmt::format("carrier {} is not in (bring it in with {} first)", r_.header.carriers[i],
-                         p_.hook == YarnHook::inhook ? "inhook" : "in"));
+        breaks(Rule::carrier_not_in, [&] {
+          return fmt::format("carrier {} is not in (bring it in with {} first)",
+                             r_.header.carriers[i], p_.hook == YarnHook::inhook ? "inhook" : "in");
+        });
       if (c.state == CarrierState::pending) pending |= c.in_set;
     });
     if (pending) {
       if (pending != op.carriers)
-        fail(fmt::format(
-            "the first use of carriers {} must use exactly the set brought in together ({})",
-            names(op.carriers), names(pending)));
+        breaks(Rule::first_use_set, [&] {
+          return fmt::format(
+              "the first use of carriers {} must use exactly the set brought in together ({})",
+              names(op.carriers), names(pending));
+        });
       if (op.dir != p_.first_pass)
-        fail(fmt::format("the first pass after bringing in carrier {} must go {} on {}, found {}",
-                         names(op.carriers), direction_char(p_.first_pass), p_.name,
-                         direction_char(op.dir)));
+        breaks(Rule::first_pass_direction, [&] {
+          return fmt::format(
+              "the first pass after bringing in carrier {} must go {} on {}, found {}",
+              names(op.carriers), direction_char(p_.first_pass), p_.name, direction_char(op.dir));
+        });
     }
     // The hook holds the yarn's end beside the first stitch, on the side the carrier came from.
-    if (pending & hook_) {
+    if ((pending & hook_) && p_.hook == YarnHook::inhook) {
       hook_edge_ = op.a.index;
       hook_side_ = opposite(op.dir);
     }
@@ -223,11 +287,13 @@ class VirtualBed {
   void check_hook_clear(Needle n) {
     bool beyond = hook_side_ == Direction::plus ? n.index > hook_edge_ : n.index < hook_edge_;
     if (beyond)
-      fail(
-          fmt::format("{} is blocked by the yarn-inserting hook, which holds carrier {} {} of "
-                      "needle {} until releasehook",
-                      needle_name(n), names(hook_),
-                      hook_side_ == Direction::plus ? "right" : "left", hook_edge_));
+      breaks(Rule::hook_blocks, [&] {
+        return fmt::format(
+            "{} is blocked by the yarn-inserting hook, which holds carrier {} {} of needle {} "
+            "until releasehook",
+            needle_name(n), names(hook_), hook_side_ == Direction::plus ? "right" : "left",
+            hook_edge_);
+      });
   }
   void check_hook_clear(const Op& op) {
     switch (op.code) {
@@ -248,30 +314,51 @@ class VirtualBed {
 
   void bring_in(const Op& op) {
     bool hook = op.code == OpCode::inhook;
-    if (hook && p_.hook != YarnHook::inhook)
-      fail(fmt::format("{} has no yarn-inserting hook: use 'in'", p_.name));
+    if (hook) check_has_hook("in");
     if (hook && hook_)
-      fail(fmt::format("the yarn-inserting hook still holds carrier {}: releasehook it first",
-                       names(hook_)));
+      breaks(Rule::hook_busy, [&] {
+        return fmt::format("the yarn-inserting hook still holds carrier {}: releasehook it first",
+                           names(hook_));
+      });
     each(op.carriers, [&](Carrier& c, std::size_t i) {
       if (c.state != CarrierState::out)
-        fail(fmt::format("carrier {} is already in", r_.header.carriers[i]));
+        breaks(Rule::carrier_already_in,
+               [&] { return fmt::format("carrier {} is already in", r_.header.carriers[i]); });
       c = Carrier{CarrierState::pending, hook, false, op.carriers, line_, ++pieces_};
       ++r_.stats.yarn_pieces;
     });
     if (hook) hook_ = op.carriers;
   }
 
+  // An inhook, releasehook or outhook on a machine without a hook: its back end uses in / out.
+  void check_has_hook(const char* instead) {
+    if (p_.hook == YarnHook::inhook) return;
+    breaks(Rule::no_hook, [&] {
+      return severity(Rule::no_hook) == Severity::error
+                 ? fmt::format("{} has no yarn-inserting hook{}", p_.name,
+                               *instead ? fmt::format(": use '{}'", instead) : " to release")
+                 : fmt::format(
+                       "{} has no yarn-inserting hook: its back end knits inhook as in, "
+                       "outhook as out",
+                       p_.name);
+    });
+  }
+
   void release_hook(const Op& op) {
-    if (p_.hook != YarnHook::inhook)
-      fail(fmt::format("{} has no yarn-inserting hook to release", p_.name));
+    check_has_hook("");
     if (hook_ != op.carriers)
-      fail(hook_
-               ? fmt::format("the hook holds carrier {}, not {}", names(hook_), names(op.carriers))
-               : fmt::format("releasehook {}, but the hook holds nothing", names(op.carriers)));
+      breaks(Rule::releasehook_mismatch, [&] {
+        return hook_
+                   ? fmt::format("the hook holds carrier {}, not {}", names(hook_),
+                                 names(op.carriers))
+                   : fmt::format("releasehook {}, but the hook holds nothing", names(op.carriers));
+      });
     each(op.carriers, [&](Carrier& c, std::size_t i) {
       if (!c.stitched)
-        fail(fmt::format("releasehook before carrier {} has made a stitch", r_.header.carriers[i]));
+        breaks(Rule::releasehook_early, [&] {
+          return fmt::format("releasehook before carrier {} has made a stitch",
+                             r_.header.carriers[i]);
+        });
       c.hooked = false;
     });
     hook_ = 0;
@@ -280,30 +367,42 @@ class VirtualBed {
 
   void take_out(const Op& op) {
     bool hook = op.code == OpCode::outhook;
-    if (hook && p_.hook != YarnHook::inhook)
-      fail(fmt::format("{} has no yarn-inserting hook: use 'out'", p_.name));
+    if (hook) check_has_hook("out");
     if (hook && hook_)
-      fail(fmt::format("outhook while the hook still holds carrier {}: releasehook it first",
-                       names(hook_)));
+      breaks(Rule::hook_busy, [&] {
+        return fmt::format("outhook while the hook still holds carrier {}: releasehook it first",
+                           names(hook_));
+      });
     each(op.carriers, [&](Carrier& c, std::size_t i) {
       const std::string& name = r_.header.carriers[i];
-      if (c.state == CarrierState::out) fail(fmt::format("carrier {} is not in", name));
+      if (c.state == CarrierState::out)
+        breaks(Rule::out_not_in, [&] { return fmt::format("carrier {} is not in", name); });
       if (!c.stitched)
-        fail(fmt::format("carrier {} is taken out without having made a stitch", name));
+        breaks(Rule::out_without_stitch, [&] {
+          return fmt::format("carrier {} is taken out without having made a stitch", name);
+        });
       if (c.hooked)
-        fail(fmt::format("carrier {} is still held by the hook: releasehook {} first", name, name));
+        breaks(Rule::out_while_hooked, [&] {
+          return fmt::format("carrier {} is still held by the hook: releasehook {} first", name,
+                             name);
+        });
       c.state = CarrierState::out;
+      last_slot_[i] = kNoSlot;
     });
     carriers_in_ &= ~op.carriers;
   }
 
   // ---- racking and alignment ----
   void set_rack(std::int32_t quarters) {
-    if (!p_.rack_allowed(quarters))
-      fail(std::abs(quarters) > p_.max_rack * 4
-               ? fmt::format("rack {} is beyond the racking limit of {} (±{})", quarters / 4.0,
-                             p_.name, p_.max_rack)
-               : fmt::format("rack {} has a fraction {} does not allow", quarters / 4.0, p_.name));
+    if (std::abs(quarters) > p_.max_rack * 4)
+      breaks(Rule::rack_limit, [&] {
+        return fmt::format("rack {} is beyond the racking limit of {} (±{})", quarters / 4.0,
+                           p_.name, p_.max_rack);
+      });
+    if (!p_.rack_fraction_allowed(quarters))
+      breaks(Rule::rack_fraction, [&] {
+        return fmt::format("rack {} has a fraction {} does not allow", quarters / 4.0, p_.name);
+      });
     if (quarters != rack_) ++r_.stats.racks;
     rack_ = quarters;
   }
@@ -311,20 +410,28 @@ class VirtualBed {
   void check_transfer(const Op& op) {
     const char* what = op.code == OpCode::split ? "split" : "xfer";
     if (is_slider(op.a.bed) && is_slider(op.b.bed))
-      fail(fmt::format("{} {} {} moves from slider to slider", what, needle_name(op.a),
-                       needle_name(op.b)));
+      breaks(Rule::transfer_slider_slider, [&] {
+        return fmt::format("{} {} {} moves from slider to slider", what, needle_name(op.a),
+                           needle_name(op.b));
+      });
     if (is_front(op.a.bed) == is_front(op.b.bed))
-      fail(fmt::format("{} {} {} stays on one bed: loops move only between front and back", what,
-                       needle_name(op.a), needle_name(op.b)));
+      breaks(Rule::transfer_same_bed, [&] {
+        return fmt::format("{} {} {} stays on one bed: loops move only between front and back",
+                           what, needle_name(op.a), needle_name(op.b));
+      });
     Needle front = is_front(op.a.bed) ? op.a : op.b, back = is_front(op.a.bed) ? op.b : op.a;
     if (rack_ % 4 != 0 || front.index * 4 != back.index * 4 + rack_)
-      fail(fmt::format("{} and {} are not aligned at rack {} ({} faces f{})", needle_name(op.a),
-                       needle_name(op.b), rack_ / 4.0, needle_name(back),
-                       rack_ % 4 ? fmt::format("{}", back.index + rack_ / 4.0)
-                                 : fmt::format("{}", back.index + rack_ / 4)));
+      breaks(Rule::transfer_misaligned, [&] {
+        return fmt::format("{} and {} are not aligned at rack {} ({} faces f{})", needle_name(op.a),
+                           needle_name(op.b), rack_ / 4.0, needle_name(back),
+                           rack_ % 4 ? fmt::format("{}", back.index + rack_ / 4.0)
+                                     : fmt::format("{}", back.index + rack_ / 4));
+      });
     if (std::abs(rack_) > p_.max_transfer_stretch * 4)
-      fail(fmt::format("{} at rack {} stretches a loop {} needles, {} allows {}", what, rack_ / 4,
-                       std::abs(rack_ / 4), p_.name, p_.max_transfer_stretch));
+      breaks(Rule::transfer_stretch, [&] {
+        return fmt::format("{} at rack {} stretches a loop {} needles, {} allows {}", what,
+                           rack_ / 4, std::abs(rack_ / 4), p_.name, p_.max_transfer_stretch);
+      });
   }
 
   // ---- loops ----
@@ -348,6 +455,7 @@ class VirtualBed {
     }
     r_.fabric.loops.push_back(l);
     each(yarn, [&](Carrier&, std::size_t c) {
+      count_float(c, n.index);
       std::vector<LoopId>& along = r_.fabric.by_carrier[c];
       if (along.empty()) along.reserve(line_count_);
       along.push_back(id);
@@ -355,14 +463,29 @@ class VirtualBed {
     return id;
   }
 
+  // The yarn from a carrier's last loop to this one floats across the needles between.
+  void count_float(std::size_t carrier, std::int32_t needle) {
+    std::int32_t& last = last_slot_[carrier];
+    if (last != kNoSlot && p_.max_float && std::abs(needle - last) > std::int32_t(p_.max_float))
+      ++r_.stats.long_floats;
+    last = needle;
+  }
+
   void stitch_op(const Op& op) {
     if (op.code == OpCode::split && is_slider(op.a.bed))
-      fail(fmt::format("split cannot start from a slider ({})", needle_name(op.a)));
-    if (is_slider(op.a.bed))
-      fail(fmt::format("{} on a slider ({}): sliders only hold loops moved there", op_name(op.code),
-                       needle_name(op.a)));
+      breaks(Rule::split_from_slider, [&] {
+        return fmt::format("split cannot start from a slider ({})", needle_name(op.a));
+      });
+    else if (is_slider(op.a.bed))
+      breaks(Rule::stitch_on_slider, [&] {
+        return fmt::format("{} on a slider ({}): sliders only hold loops moved there",
+                           op_name(op.code), needle_name(op.a));
+      });
     if (op.code == OpCode::miss) {
-      if (!op.carriers) fail("miss needs carriers (a miss without yarn does nothing)");
+      if (!op.carriers)
+        breaks(Rule::miss_without_carriers, [] {
+          return std::string("miss needs carriers (a miss without yarn does nothing)");
+        });
       use_carriers(op);
       count_pass(op, false);
       ++r_.stats.misses;
@@ -374,11 +497,18 @@ class VirtualBed {
              : op.code == OpCode::split ? transfer(op)
                                         : void(at(op.a));
     if (op.code == OpCode::split) check_transfer(op);
-    if (s.size == 0 && op.code != OpCode::tuck) ++r_.stats.empty_knits;
-    if (s.size == 0 && op.code != OpCode::tuck && p_.knit_empty_needle_is_error)
-      fail(fmt::format(
-          "{} on {}, which holds no loop ({} treats knitting an empty needle as an error)",
-          op_name(op.code), needle_name(op.a), p_.name));
+    if (s.size == 0 && op.code != OpCode::tuck) {
+      ++r_.stats.empty_knits;
+      breaks(Rule::knit_empty_needle, [&] {
+        return severity(Rule::knit_empty_needle) == Severity::error
+                   ? fmt::format(
+                         "{} on {}, which holds no loop ({} treats knitting an empty "
+                         "needle as an error)",
+                         op_name(op.code), needle_name(op.a), p_.name)
+                   : fmt::format("{} on {}, which holds no loop: a new loop held by nothing",
+                                 op_name(op.code), needle_name(op.a));
+      });
+    }
     use_carriers(op);
     count_pass(op, false);
     if (op.code == OpCode::tuck) {
@@ -462,7 +592,9 @@ class VirtualBed {
       case OpCode::drop:
         return drop(op.a);
       case OpCode::amiss:
-        if (is_slider(op.a.bed)) fail(fmt::format("amiss on a slider ({})", needle_name(op.a)));
+        if (is_slider(op.a.bed))
+          breaks(Rule::stitch_on_slider,
+                 [&] { return fmt::format("amiss on a slider ({})", needle_name(op.a)); });
         at(op.a);
         return;
       case OpCode::xfer:
@@ -482,8 +614,13 @@ class VirtualBed {
     current_ = last_op_line_ ? last_op_ : lines_.back();
     for (std::size_t c = 0; c < carriers_.size(); ++c)
       if (carriers_[c].state != CarrierState::out)
-        fail(fmt::format("carrier {} is still in at the end of the file (take it out with {})",
-                         r_.header.carriers[c], p_.hook == YarnHook::inhook ? "outhook" : "out"));
+        breaks(Rule::carrier_left_in, [&] {
+          return fmt::format("carrier {} is still in at the end of the file (take it out with {})",
+                             r_.header.carriers[c],
+                             p_.hook == YarnHook::inhook ? "outhook" : "out");
+        });
+    for (const Finding& f : found_)
+      if (f.count) r_.findings.push_back(f);
     for (const auto& bed : beds_)
       for (const Stack& s : bed) r_.stats.loops_left += s.size;
     ShopStats& s = r_.stats;
@@ -493,8 +630,14 @@ class VirtualBed {
                 static_cast<double>(s.racks) * p_.seconds_per_rack;
   }
 
+  static constexpr std::int32_t kNoSlot = std::numeric_limits<std::int32_t>::min();
+
   std::string file_;
   const MachineProfile& p_;
+  ReplayOptions options_;
+  std::array<Severity, static_cast<std::size_t>(Rule::count)> severity_{};
+  std::array<Finding, static_cast<std::size_t>(Rule::count)> found_{};
+  std::vector<std::int32_t> last_slot_;  // per carrier: where its last loop was (for floats)
   std::string_view text_;
   std::vector<std::string_view> lines_;  // the header's lines only
   // Counted, not bounded by bytes / 8: that reserved twice the memory, and past glibc's largest
@@ -518,9 +661,36 @@ class VirtualBed {
 
 }  // namespace
 
-Replay replay_knitout(std::string_view text, const std::string& file,
-                      const MachineProfile& profile) {
-  return VirtualBed(file, profile, text).run();
+Header read_header(std::string_view text, const std::string& file) {
+  return parse_header(header_lines(text), file);
+}
+
+ProfileChoice choose_profile(std::string_view text, const std::string& file,
+                             const std::string& machine, bool strict) {
+  ProfileChoice c;
+  c.options.strict = strict;
+  if (!machine.empty()) {
+    c.profile = load_machine_profile(machine);
+    return c;
+  }
+  std::string named = read_header(text, file).machine;
+  if (auto known = profile_for_machine(named)) {
+    c.profile = std::move(*known);
+    c.how = fmt::format(" (the file's ;;Machine: {})", named);
+    return c;
+  }
+  c.profile = load_machine_profile("generic");
+  c.options.check_machine = false;
+  c.how =
+      named.empty()
+          ? " (note: the file names no ;;Machine:; give --machine to replay it on one)"
+          : fmt::format(" (note: no profile knows ;;Machine: {}; give --machine for one)", named);
+  return c;
+}
+
+Replay replay_knitout(std::string_view text, const std::string& file, const MachineProfile& profile,
+                      ReplayOptions options) {
+  return VirtualBed(file, profile, text, options).run();
 }
 
 std::string shop_summary(const Replay& r, const MachineProfile& p) {
@@ -536,10 +706,8 @@ std::string shop_summary(const Replay& r, const MachineProfile& p) {
       p.name, p.description, s.min_needle, s.max_needle, s.stitch_passes + s.transfer_passes,
       s.stitch_passes, s.transfer_passes, s.knits, s.tucks, s.splits, s.misses, s.transfers,
       s.racks, s.loops_dropped, s.loops_left, s.yarn_pieces,
-      s.empty_knits
-          ? fmt::format(", knits on empty needles: {} (allowed on {})", s.empty_knits, p.name)
-          : "",
-      minutes, static_cast<int>(s.seconds - minutes * 60));
+      s.empty_knits ? fmt::format(", knits on empty needles: {}", s.empty_knits) : "", minutes,
+      static_cast<int>(s.seconds - minutes * 60));
 }
 
 }  // namespace skein::knitout

@@ -13,6 +13,7 @@
 
 #include "knitout/knitout_ops.hpp"
 #include "knitout/machine_profile.hpp"
+#include "knitout/vbed_rules.hpp"
 
 namespace skein::knitout {
 
@@ -51,6 +52,7 @@ struct ShopStats {
   std::uint64_t loops_dropped = 0;
   std::uint64_t loops_left = 0;       // still on the needles after the last line
   std::uint64_t empty_knits = 0;      // knits and splits of empty needles (where allowed)
+  std::uint64_t long_floats = 0;      // yarn between two loops crossing more than max_float
   std::uint64_t yarn_pieces = 0;      // in / inhook of a carrier
   std::uint64_t needles_crossed = 0;  // summed width of the passes
   std::int32_t min_needle = 0, max_needle = 0;
@@ -61,11 +63,32 @@ struct Replay {
   Header header;
   Fabric fabric;
   ShopStats stats;
+  std::vector<Finding> findings;  // the rules broken at warning or note, in the order of Rule
 };
 
-// Replays `text` (read from `file`) on `profile`. Throws ParseError at the first invalid line.
-Replay replay_knitout(std::string_view text, const std::string& file,
-                      const MachineProfile& profile);
+struct ReplayOptions {
+  bool strict = true;  // every rule an error (skein's own output); else each rule's severity
+  // Whether ;;Machine: and ;;Gauge: are checked against the profile (not when the profile is
+  // the generic one standing in for a machine no profile knows).
+  bool check_machine = true;
+};
+
+// The magic line and the header of `text` (throws ParseError on a bad one).
+Header read_header(std::string_view text, const std::string& file);
+
+// The profile a file is replayed on: `machine` (--machine) if given, else the shipped profile
+// its ;;Machine: header names, else the generic one (and `how` says so).
+struct ProfileChoice {
+  MachineProfile profile;
+  ReplayOptions options;
+  std::string how;  // for the summary: "" (given), " (the file's ;;Machine: SWGN2)", a note
+};
+ProfileChoice choose_profile(std::string_view text, const std::string& file,
+                             const std::string& machine, bool strict);
+
+// Replays `text` (read from `file`) on `profile`. Throws ParseError at the first error.
+Replay replay_knitout(std::string_view text, const std::string& file, const MachineProfile& profile,
+                      ReplayOptions options = {});
 
 // Several lines for people: passes, transfers, racks, drops, yarn pieces, time.
 std::string shop_summary(const Replay& replay, const MachineProfile& profile);
