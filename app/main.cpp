@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <optional>
+#include <sstream>
 
 #include "builtin_targets.hpp"
 #include "common/atomic_file.hpp"
@@ -52,7 +54,7 @@ std::string registry_listing(const Registry& registry) {
     listed = settings;
     listed_by = t->name();
   }
-  out += "\nSimulators (skein verify, compile --verify):\n";
+  out += "\nSimulators (skein verify; compile proves with them unless --no-verify):\n";
   const std::size_t simulators = name_column(registry.simulators());
   for (const Simulator* s : registry.simulators())
     out += fmt::format("  {:<{}} replays --target {}: {}\n", s->name(), simulators, s->target(),
@@ -61,10 +63,10 @@ std::string registry_listing(const Registry& registry) {
 Examples:
   skein check samples/hat/hat.obj
   skein compile samples/hat/hat.obj --target schedule -o hat.schedule
-  skein compile samples/rib-swatch/rib-swatch.obj --target schedule -o swatch.schedule --verify
+  skein compile samples/rib-swatch/rib-swatch.obj --target schedule -o swatch.schedule
   skein verify hat.schedule --against samples/hat/hat.obj
-  skein compile samples/hat/hat.obj --target hand -o hat.md --verify      # a printable pattern
-  skein compile samples/hat/hat.obj -t knitout -m swg091n2 -o hat.k --verify
+  skein compile samples/hat/hat.obj --target hand -o hat.md   # a proven, printable pattern
+  skein compile samples/hat/hat.obj -t knitout -m swg091n2 -o hat.k
   skein verify hat.k -m kniterate --against samples/hat/hat.obj
   skein check samples/autoknit/test-B.st
   skein new sock --circumference 20cm --length 15cm -o mysock   # writes mysock.obj + mysock.yaml
@@ -150,6 +152,8 @@ int report_verification(const VerifyReport& report) {
   return report.proven ? kKnittable : kNotKnittable;
 }
 
+// Emits the output, proves it in the target's simulator (when the target has one and `verify`
+// is on) and writes it only then: a pattern or program that fails its proof is never written.
 int run_compile(const Registry& registry, const std::string& input, const std::string& target_name,
                 TargetOptions options, const std::vector<std::string>& settings,
                 const std::string& output, bool verify, bool verbose) {
@@ -162,14 +166,22 @@ int run_compile(const Registry& registry, const std::string& input, const std::s
     std::cerr << check_report(c) << fmt::format("skein: nothing written to {}\n", output);
     return kNotKnittable;
   }
-  write_file_atomically(output, [&](std::ostream& out) { target.emit(c, options, out); });
+  std::ostringstream text;
+  target.emit(c, options, text);
+  const Simulator* simulator = verify ? registry.simulator_for(target.name()) : nullptr;
+  std::optional<VerifyReport> proof;
+  if (simulator) proof = simulator->verify(text.str(), output, &c, options);
+  if (proof && !proof->proven) {
+    std::cerr << proof->summary << '\n'
+              << fmt::format("skein: not proven; nothing written to {} (--no-verify writes it)\n",
+                             output);
+    return kNotKnittable;
+  }
+  write_file_atomically(output, [&](std::ostream& out) { out << text.str(); });
   std::cout << fmt::format("wrote {} ({} target, {} stitches, {} yarn piece{})\n", output,
                            target.name(), c.knit.size(), c.yarns.size(),
                            c.yarns.size() == 1 ? "" : "s");
-  if (!verify) return kKnittable;
-  const Simulator* simulator = registry.simulator_for(target.name());
-  if (!simulator) throw UsageError(fmt::format("target '{}' has no simulator", target.name()));
-  return report_verification(simulator->verify(read_file(output), output, &c, options));
+  return proof ? report_verification(*proof) : kKnittable;
 }
 
 // The target whose output `file` is: --target if given, else the one whose extension it has.
@@ -220,7 +232,6 @@ int main(int argc, char** argv) {
 
   std::string input, output, target_name, against, file;
   TargetOptions options;
-  bool verify = false;
 
   auto* check =
       app.add_subcommand("check", "validate INPUT and report knittability, rows, yarn pieces");
@@ -238,7 +249,11 @@ int main(int argc, char** argv) {
   std::vector<std::string> settings;
   compile->add_option("--set", settings,
                       "KEY=VALUE: a target's setting (see the list below); repeatable");
-  compile->add_flag("--verify", verify, "replay the output in the target's simulator");
+  bool no_verify = false;
+  compile->add_flag("--no-verify", no_verify,
+                    "write without replaying the output in the target's simulator first");
+  compile->add_flag("--verify")
+      ->description("kept for old scripts: compile proves its output by default");
 
   auto* verify_cmd = app.add_subcommand("verify", "replay OUT in its target's simulator");
   verify_cmd->add_option("OUT", file, "a file a target wrote")->required();
@@ -282,7 +297,8 @@ int main(int argc, char** argv) {
     if (*render) return render_file(input, output, coarse), kKnittable;
     if (*generate) return write_generated_stitch_mesh(input, output), kKnittable;
     if (*compile)
-      return run_compile(registry, input, target_name, options, settings, output, verify, verbose);
+      return run_compile(registry, input, target_name, options, settings, output, !no_verify,
+                         verbose);
     return run_verify(registry, file, against, target_name, options, verbose);
   } catch (const Error& e) {
     std::cerr << "skein: error: " << e.what() << '\n';

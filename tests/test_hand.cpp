@@ -308,7 +308,7 @@ TEST(HandRandomized, ShapesOfRandomSizesAreProven) {
     ShapeSize size;
     size.circumference = 10 + static_cast<double>(rng() % 80);
     size.width = 5 + static_cast<double>(rng() % 40);
-    size.length = 4 + static_cast<double>(rng() % 30);
+    size.length = 4 + static_cast<double>(rng() % 80);  // a sweater's body of 48 cm or more
     std::string name = fmt::format("hand-{}{}", kind, trial);
     std::string project = write_shape(make_shape(kind, size, name), dir + "/" + name);
     SCOPED_TRACE(project);

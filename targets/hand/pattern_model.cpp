@@ -942,7 +942,9 @@ class PatternBuilder {
   }
 
   // A piece worked in the rnd is placed from the st first worked, wherever its last rnd
-  // began: that st's place in the rnd (1-based; 0 when it is the first).
+  // began: that st's place among the sts its needle holds (1-based; 0 when it is the first).
+  // The needle holds the loops the last rnd left: a st bound off there holds none, an
+  // increase two.
   std::uint32_t place_in_last_rnd(const PatternSection& spare, StitchId maker) const {
     std::uint32_t at = 1;
     for (StitchId s = spare.last_row_ends[0]; s != kNoStitch && s != maker; s = g_.yarn_next[s]) {
@@ -951,7 +953,7 @@ class PatternBuilder {
             fmt::format("{} of Piece {} is worked first after it is placed, but it is "
                         "not in its last rnd, which is not covered yet",
                         g_.describe(maker), spare.piece));
-      ++at;
+      at += static_cast<std::uint32_t>(g_.loops_made_by(s).size());
     }
     return at == 1 ? 0 : at;
   }
