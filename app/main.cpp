@@ -265,9 +265,10 @@ int main(int argc, char** argv) {
   std::string shape_kind;
   std::string circumference, width, length;
   auto* new_cmd = app.add_subcommand("new", "write a parametric coarse mesh and its project file");
-  new_cmd->add_option("KIND", shape_kind, "sheet, tube, hat, sock or sweater")->required();
+  new_cmd->add_option("KIND", shape_kind, fmt::format("{}", fmt::join(shape_kinds(), ", ")))
+      ->required();
   new_cmd->add_option("--circumference", circumference,
-                      "tube, hat, sock or chest size (e.g. 40cm)");
+                      "tube, hat, sock, mitten or hip size, chest (e.g. 40cm)");
   new_cmd->add_option("--width", width, "sheet width (e.g. 20cm)");
   new_cmd->add_option("--length", length, "length or height (e.g. 20cm)");
   new_cmd->add_option("-o,--output", output, "NAME: writes NAME.obj and NAME.yaml")->required();

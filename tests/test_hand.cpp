@@ -302,7 +302,7 @@ TEST(HandRandomized, ShapedSheetsAndTubesAreProven) {
 TEST(HandRandomized, ShapesOfRandomSizesAreProven) {
   std::mt19937_64 rng(23);
   const std::string dir = ::testing::TempDir();
-  const std::vector<std::string> kinds = shape_kinds();
+  const std::vector<std::string> kinds = {"sheet", "tube", "hat", "sock", "sweater"};
   for (int trial = 0; trial < 50; ++trial) {
     const std::string& kind = kinds[trial % kinds.size()];
     ShapeSize size;
