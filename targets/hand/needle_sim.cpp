@@ -718,8 +718,11 @@ class NeedleSimulator {
       fail(fmt::format("three-needle bind-off: the pattern says {} pairs, but the needles hold {}",
                        pairs, f.size()));
     if (s.own_yarn) {
+      // The yarn turns from the front piece's last row when its last st is at the tip; with
+      // its first st there, the yarn goes on round from the end of its last rnd into it.
+      bool round = pc_.joined;
       active_ = true;
-      next_link_ = YarnLink::turn;  // the yarn turns from the front piece's last row
+      next_link_ = !s.from_last[0] && round ? YarnLink::shift : YarnLink::turn;
     } else {
       start_piece();
     }
