@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "common/atomic_file.hpp"
@@ -164,24 +165,28 @@ int run_compile(const Registry& registry, const Request& r) {
   TargetOptions options = r.options;
   options.settings = settings_for(target, r.input, r.settings);
   if (options.machine.empty()) options.machine = project_target_option(r.input, "machine");
-  const Simulator* simulator = r.verify ? &simulator_for(registry, target) : nullptr;
+  // A simulator proves the output before it is written: an unproven output is never left behind.
+  const Simulator* simulator = r.verify ? registry.simulator_for(target.name()) : nullptr;
   OutputFile out(r.output, {r.force, inputs_of(r.input, options.machine)});
   Compilation c = compile_model(r.input, progress_printer(r.verbose));
   if (!knittable(c, fmt::format("nothing written to {}", out.name()))) return kNotKnittable;
-  std::ostringstream text;  // kept for the simulator when verifying
-  if (simulator) {
-    target.emit(c, options, text);
-    out.write_text(text.str());
-  } else {
-    out.write([&](std::ostream& o) { target.emit(c, options, o); });
+  std::ostringstream text;
+  target.emit(c, options, text);
+  std::optional<VerifyReport> proof;
+  options.strict = true;  // skein's own output keeps to every rule
+  if (simulator) proof = simulator->verify(text.str(), out.name(), &c, options);
+  if (proof && !proof->proven) {
+    std::cerr << proof->summary << '\n'
+              << fmt::format("skein: not proven; nothing written to {} (--no-verify writes it)\n",
+                             out.name());
+    return kNotKnittable;
   }
+  out.write_text(text.str());
   std::ostream& report = report_stream(out);
   report << fmt::format("wrote {} ({} target, {} stitches, {} yarn piece{})\n", out.name(),
                         target.name(), c.knit.size(), c.yarns.size(),
                         c.yarns.size() == 1 ? "" : "s");
-  if (!simulator) return kDone;
-  options.strict = true;  // skein's own output keeps to every rule
-  return report_verification(simulator->verify(text.str(), out.name(), &c, options), report);
+  return proof ? report_verification(*proof, report) : kDone;
 }
 
 int run_verify(const Registry& registry, const Request& r) {

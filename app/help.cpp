@@ -23,8 +23,8 @@ const std::map<std::string, std::string>& examples() {
   skein check samples/autoknit/test-B.st          # an AutoKnit stitch graph
 )"},
       {"compile",
-       R"(  skein compile samples/hat/hat.obj -t hand -o hat.md --verify   # a pattern, proven
-  skein compile samples/hat/hat.obj -t knitout -m swg091n2 -o hat.k --verify
+       R"(  skein compile samples/hat/hat.obj -t hand -o hat.md   # a pattern, proven before it is written
+  skein compile samples/hat/hat.obj -t knitout -m swg091n2 -o hat.k
   skein compile samples/sock/sock.yaml -t hand --set rounds=inside-out -o sock.md
   skein compile samples/hat/hat.obj -t schedule -o -              # to standard output
   skein compile samples/hat/hat.obj -t hand -o hat.md --force     # replace hat.md
@@ -74,7 +74,7 @@ std::string target_listing(const Registry& registry) {
     listed = settings;
     listed_by = t->name();
   }
-  out += "\nSimulators (skein verify, compile --verify):\n";
+  out += "\nSimulators (skein verify; compile proves with them unless --no-verify):\n";
   const std::size_t simulators = name_column(registry.simulators());
   for (const Simulator* s : registry.simulators())
     out += fmt::format("  {:<{}} replays --target {}: {}\n", s->name(), simulators, s->target(),

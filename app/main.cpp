@@ -1,6 +1,7 @@
 // skein: a knitting compiler. This file parses the command line, runs one command
 // (commands.cpp) and turns whatever it throws into a message and an exit code.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <yaml-cpp/exceptions.h>
 
 #include <CLI/CLI.hpp>
@@ -13,6 +14,7 @@
 #include "commands.hpp"
 #include "common/error.hpp"
 #include "help.hpp"
+#include "labeling/shapes.hpp"
 
 namespace {
 
@@ -86,7 +88,11 @@ int main(int argc, char** argv) {
                       "how the target spells its output (hand: standard or knitspeak)");
   compile->add_option("--set", r.settings,
                       "KEY=VALUE: a target's setting (skein --help lists them); repeatable");
-  compile->add_flag("--verify", r.verify, "replay the output in the target's simulator");
+  bool no_verify = false;
+  compile->add_flag("--no-verify", no_verify,
+                    "write without replaying the output in the target's simulator first");
+  compile->add_flag("--verify")
+      ->description("kept for old scripts: compile proves its output by default");
 
   auto* verify = app.add_subcommand("verify", "replay OUT in its target's simulator");
   verify->add_option("OUT", r.input, "a file a target wrote")->required();
@@ -95,12 +101,13 @@ int main(int argc, char** argv) {
   verify->add_option("-m,--machine", r.options.machine,
                      "machine profile name or path (default: from the file's ;;Machine:)");
   verify->add_flag("--strict", r.options.strict,
-                   "every rule an error, as for skein's own output (compile --verify)");
+                   "every rule an error, as for skein's own output (compile)");
 
   auto* new_cmd = app.add_subcommand("new", "write a parametric coarse mesh and its project file");
-  new_cmd->add_option("KIND", r.shape, "sheet, tube, hat, sock or sweater")->required();
+  new_cmd->add_option("KIND", r.shape, fmt::format("{}", fmt::join(shape_kinds(), ", ")))
+      ->required();
   new_cmd->add_option("--circumference", r.circumference,
-                      "tube, hat, sock or chest size (e.g. 40cm)");
+                      "tube, hat, sock, mitten or hip size, chest (e.g. 40cm)");
   new_cmd->add_option("--width", r.width, "sheet width (e.g. 20cm)");
   new_cmd->add_option("--length", r.length, "length or height (e.g. 20cm)");
   new_cmd
@@ -134,6 +141,7 @@ int main(int argc, char** argv) {
   }
 
   if (*check) return run_reporting_errors("checking " + r.input, [&] { return run_check(r); });
+  r.verify = !no_verify;
   if (*compile)
     return run_reporting_errors(fmt::format("compiling {} for the {} target", r.input, r.target),
                                 [&] { return run_compile(registry, r); });

@@ -50,6 +50,20 @@ TEST_F(Cli, CompileWritesTheOutputAndVerifiesIt) {
   EXPECT_EQ(outputs(), std::vector<std::string>{"swatch.schedule"});
 }
 
+// Compile proves what it writes unless told not to; --verify is still accepted.
+TEST_F(Cli, CompileProvesByDefaultAndNoVerifySkipsTheProof) {
+  CliRun proven = skein("compile samples/hat/hat.obj -t hand -o " + in_dir("hat.md"));
+  EXPECT_EQ(proven.exit_code, 0) << proven.err;
+  EXPECT_NE(proven.out.find("hat.md: proven against samples/hat/hat.obj"), std::string::npos)
+      << proven.out;
+  CliRun unproven =
+      skein("compile samples/hat/hat.obj -t hand --no-verify -o " + in_dir("hat2.md"));
+  EXPECT_EQ(unproven.exit_code, 0) << unproven.err;
+  EXPECT_EQ(unproven.out.find("proven"), std::string::npos) << unproven.out;
+  EXPECT_EQ(read("hat.md"), read("hat2.md"));
+  EXPECT_EQ(outputs().size(), 2u);
+}
+
 TEST_F(Cli, CompileOfAnUnknittableModelWritesNothing) {
   CliRun r = skein("compile samples/unknittable/fig13-deadlock.obj -t schedule -o " +
                    in_dir("fig13.schedule"));

@@ -302,13 +302,13 @@ TEST(HandRandomized, ShapedSheetsAndTubesAreProven) {
 TEST(HandRandomized, ShapesOfRandomSizesAreProven) {
   std::mt19937_64 rng(23);
   const std::string dir = ::testing::TempDir();
-  const std::vector<std::string> kinds = shape_kinds();
+  const std::vector<std::string> kinds = {"sheet", "tube", "hat", "sock", "sweater"};
   for (int trial = 0; trial < 50; ++trial) {
     const std::string& kind = kinds[trial % kinds.size()];
     ShapeSize size;
     size.circumference = 10 + static_cast<double>(rng() % 80);
     size.width = 5 + static_cast<double>(rng() % 40);
-    size.length = 4 + static_cast<double>(rng() % 30);
+    size.length = 4 + static_cast<double>(rng() % 80);  // a sweater's body of 48 cm or more
     std::string name = fmt::format("hand-{}{}", kind, trial);
     std::string project = write_shape(make_shape(kind, size, name), dir + "/" + name);
     SCOPED_TRACE(project);

@@ -465,6 +465,20 @@ TEST(Generation, SkeinNewShapesAreKnittableAtSeveralSizes) {
     }
 }
 
+// Garments that part or join at a fork: the mitten (the tube parts into hand and thumb, the sts
+// between them cast on along the crotch with an extra yarn), shorts (the body parts into the
+// legs) and trousers (the legs join into the body with a three-needle bind-off along the
+// crotch): two pieces and the extra yarn of the cast-on or the bind-off.
+TEST(Generation, ForkedGarmentsAreKnittableAtSeveralSizes) {
+  for (double size : {12.0, 19.0, 27.0, 41.0})
+    for (const char* kind : {"mitten", "shorts", "trousers"}) {
+      SCOPED_TRACE(std::string(kind) + " " + std::to_string(size));
+      double round = std::string(kind) == "mitten" ? size : size * 3;
+      Shape s = make_shape(kind, {round, 0, size}, "shape");
+      expect_generated_knittable(s.mesh, parse_project(s.project, "shape.yaml"), 3);
+    }
+}
+
 TEST(Generation, EveryShapeOfSkeinNewGeneratesAValidStitchMesh) {
   for (const std::string& kind : shape_kinds()) {
     SCOPED_TRACE(kind);

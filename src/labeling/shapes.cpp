@@ -1,6 +1,7 @@
 #include "labeling/shapes.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -10,91 +11,13 @@
 
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "labeling/coarse_draft.hpp"
 
 namespace skein {
 namespace {
 
 constexpr std::uint32_t kSides = 8;  // coarse faces around a body tube
 constexpr double kPi = std::numbers::pi;
-
-Vec3 sub(Vec3 a, Vec3 b) {
-  return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-
-// Collects faces, each turned so that its normal points where `outward` says, and groups.
-class Draft {
- public:
-  std::uint32_t vertex(double x, double y, double z) {
-    positions_.push_back({static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)});
-    return static_cast<std::uint32_t>(positions_.size() - 1);
-  }
-  // True when the corners run counter-clockwise seen from where `outward` points.
-  bool faces_outward(const std::vector<std::uint32_t>& corners,
-                     const std::function<Vec3(Vec3)>& outward) const {
-    Vec3 n, c;
-    for (std::size_t i = 0; i < corners.size(); ++i) {  // Newell's normal
-      Vec3 a = positions_[corners[i]], b = positions_[corners[(i + 1) % corners.size()]];
-      n = {n.x + (a.y - b.y) * (a.z + b.z), n.y + (a.z - b.z) * (a.x + b.x),
-           n.z + (a.x - b.x) * (a.y + b.y)};
-      c = {c.x + a.x, c.y + a.y, c.z + a.z};
-    }
-    float k = static_cast<float>(corners.size());
-    Vec3 o = outward({c.x / k, c.y / k, c.z / k});
-    return n.x * o.x + n.y * o.y + n.z * o.z >= 0;
-  }
-  void add(std::vector<std::uint32_t> corners, const std::string& group) {
-    faces_.push_back(std::move(corners));
-    auto it = std::find(groups_.begin(), groups_.end(), group);
-    face_group_.push_back(static_cast<std::uint32_t>(it - groups_.begin()));
-    if (it == groups_.end()) groups_.push_back(group);
-  }
-  // A ring of kSides vertices around the vertical axis through (cx, cz); lift[j] raises
-  // vertex j.
-  std::vector<std::uint32_t> ring(double y, double radius, double cx = 0, double cz = 0,
-                                  const std::vector<double>& lift = {}) {
-    std::vector<std::uint32_t> r;
-    for (std::uint32_t j = 0; j < kSides; ++j) {
-      double a = 2 * kPi * j / kSides;
-      r.push_back(vertex(cx + radius * std::cos(a), y + (lift.empty() ? 0 : lift[j]),
-                         cz - radius * std::sin(a)));
-    }
-    return r;
-  }
-  // Faces between two rings of equal size, outward from the axis through `axis_point`
-  // along `axis`. Returns the first face's index.
-  std::uint32_t band(const std::vector<std::uint32_t>& below,
-                     const std::vector<std::uint32_t>& above, Vec3 axis_point, Vec3 axis,
-                     const std::string& group) {
-    std::uint32_t first = static_cast<std::uint32_t>(faces_.size());
-    auto outward = [=](Vec3 p) {
-      Vec3 d = sub(p, axis_point);
-      float along = d.x * axis.x + d.y * axis.y + d.z * axis.z;
-      return Vec3{d.x - along * axis.x, d.y - along * axis.y, d.z - along * axis.z};
-    };
-    // The first face, on the regular part of every ring, decides the band's orientation.
-    bool flip = false;
-    for (std::size_t j = 0; j < below.size(); ++j) {
-      std::size_t k = (j + 1) % below.size();
-      std::vector<std::uint32_t> corners{below[j], below[k], above[k], above[j]};
-      if (j == 0) flip = !faces_outward(corners, outward);
-      if (flip) std::reverse(corners.begin(), corners.end());
-      add(std::move(corners), group);
-    }
-    return first;
-  }
-  CoarseMesh finish(const std::string& name) const {
-    CoarseMesh m = build_coarse_mesh(name, positions_, faces_);
-    m.groups = groups_;
-    m.group = face_group_;
-    return m;
-  }
-
- private:
-  std::vector<Vec3> positions_;
-  std::vector<std::vector<std::uint32_t>> faces_;
-  std::vector<std::string> groups_;
-  std::vector<std::uint32_t> face_group_;
-};
 
 constexpr Vec3 kUp{0, 1, 0};
 
@@ -113,7 +36,7 @@ std::string project_text(const std::string& name, const std::string& what,
 }
 
 // Rings up the y axis at the given heights and radii; returns the first ring.
-std::vector<std::uint32_t> tube(Draft& d, const std::vector<double>& heights,
+std::vector<std::uint32_t> tube(CoarseDraft& d, const std::vector<double>& heights,
                                 const std::vector<double>& radii, const std::string& group,
                                 std::vector<std::uint32_t> below = {}) {
   if (below.empty()) below = d.ring(heights[0], radii[0]);
@@ -129,7 +52,7 @@ std::vector<std::uint32_t> tube(Draft& d, const std::vector<double>& heights,
 Shape sheet(const ShapeSize& s, const std::string& name) {
   double w = s.width > 0 ? s.width : 20, l = s.length > 0 ? s.length : 20;
   std::uint32_t cols = pieces(w, 10), rows = pieces(l, 10);
-  Draft d;
+  CoarseDraft d;
   std::vector<std::uint32_t> v;
   for (std::uint32_t r = 0; r <= rows; ++r)
     for (std::uint32_t c = 0; c <= cols; ++c)
@@ -151,7 +74,7 @@ Shape straight_tube(const ShapeSize& s, const std::string& name) {
     heights.push_back(l * i / n);
     radii.push_back(c / (2 * kPi));
   }
-  Draft d;
+  CoarseDraft d;
   tube(d, heights, radii, "body");
   return {d.finish(name + ".obj"),
           project_text(name, fmt::format("a tube {} cm round, {} cm long", c, l), "")};
@@ -167,7 +90,7 @@ Shape hat(const ShapeSize& s, const std::string& name) {
     heights.push_back(body + (l - body) * (i + 1) / std::size(crown));
     radii.push_back(r * crown[i]);
   }
-  Draft d;
+  CoarseDraft d;
   std::vector<std::uint32_t> brim = d.ring(heights[0], radii[0]),
                              top = d.ring(heights[1], radii[1]);
   d.band(brim, top, {0, 0, 0}, kUp, "brim");
@@ -185,7 +108,7 @@ Shape sock(const ShapeSize& s, const std::string& name) {
   double c = s.circumference > 0 ? s.circumference : 20, leg = s.length > 0 ? s.length : 15;
   double r = c / (2 * kPi), band = 1.5, foot = c;
   double sin_a = std::min(0.95, 0.3 * c / (2 * r)), cos_a = std::sqrt(1 - sin_a * sin_a);
-  Draft d;
+  CoarseDraft d;
   const double cuff = std::min(3.0, leg / 2);  // a short leg still rises above its cuff
   std::vector<std::uint32_t> below = d.ring(0, r), top = d.ring(cuff, r);
   d.band(below, top, {0, 0, 0}, kUp, "cuff");
@@ -232,7 +155,7 @@ Shape sock(const ShapeSize& s, const std::string& name) {
 Shape sweater(const ShapeSize& s, const std::string& name) {
   double c = s.circumference > 0 ? s.circumference : 90, body = s.length > 0 ? s.length : 36;
   double r = c / (2 * kPi), sleeve_r = r * 0.35, sleeve = 40, yoke = 18, dip = sleeve_r * 0.5;
-  Draft d;
+  CoarseDraft d;
   const double hem = std::min(5.0, body / 2);  // a short body still rises above its hem
   std::vector<std::uint32_t> bottom = d.ring(0, r), below = d.ring(hem, r);
   d.band(bottom, below, {0, 0, 0}, kUp, "hem");
@@ -285,10 +208,108 @@ Shape sweater(const ShapeSize& s, const std::string& name) {
                                bottom[2] + 1, right_cuff + 1, left_cuff + 1))};
 }
 
+// Distances 0 < d <= length in steps of about `step`, for a limb's rings.
+std::vector<double> steps(double length, double step) {
+  std::vector<double> d;
+  std::uint32_t n = pieces(length, step);
+  for (std::uint32_t i = 1; i <= n; ++i) d.push_back(length * i / n);
+  return d;
+}
+
+// A limb's rings: `straight` of them at `radius`, then a top narrowing by `crown` (fractions of
+// the radius) over `crown_length`, each ring's group.
+struct LimbRings {
+  std::vector<double> distances, radii;
+  std::vector<std::string> groups;
+  void straight(double from, double length, double step, double radius, const std::string& group) {
+    for (double d : steps(length, step)) {
+      distances.push_back(from + d);
+      radii.push_back(radius);
+      groups.push_back(group);
+    }
+  }
+  void crown(double from, double length, std::initializer_list<double> fractions, double radius,
+             const std::string& group) {
+    std::size_t i = 0;
+    for (double f : fractions) {
+      distances.push_back(from + length * static_cast<double>(++i) / fractions.size());
+      radii.push_back(radius * f);
+      groups.push_back(group);
+    }
+  }
+  double end() const { return distances.empty() ? 0 : distances.back(); }
+};
+
+// A mitten knit from the cuff up: at the base of the thumb the tube parts into the hand and
+// the thumb (a split: the sts between them are cast on along the crotch), each closed by
+// decreases to a small ring.
+Shape mitten(const ShapeSize& s, const std::string& name) {
+  double c = s.circumference > 0 ? s.circumference : 20, l = s.length > 0 ? s.length : 26;
+  double r = c / (2 * kPi), cuff = std::min(5.0, l * 0.2), base = std::max(cuff + 1, l * 0.42);
+  double thumb_r = r * 0.45, thumb = std::max(2.0, l * 0.22), top = std::max(2.0, l * 0.16);
+  CoarseDraft d;
+  Ring bottom = d.ring(0, r), below = d.ring(cuff, r);
+  d.band(bottom, below, {0, 0, 0}, kUp, "cuff");
+  Ring palm = d.ring(base, r);
+  d.band(below, palm, {0, 0, 0}, kUp, "hand");
+  // The thumb takes the three vertices round +x, the hand the other seven.
+  auto [thumb_base, hand_base] =
+      fork(d, palm, kSides - 1, 1,
+           {static_cast<float>(r * 0.45), static_cast<float>(base + r * 0.3), 0});
+  LimbRings t;
+  t.straight(0, thumb * 0.7, 2.5, thumb_r, "thumb");
+  t.crown(t.end(), thumb * 0.3, {0.6, 0.3}, thumb_r, "thumb");
+  d.limb(thumb_base, unit({0.5, 0.87f, 0}), t.distances, t.radii, t.groups);
+  LimbRings h;
+  h.straight(0, std::max(1.0, l - base - top), 4, r, "hand");
+  h.crown(h.end(), top, {0.8, 0.55, 0.3}, r, "top");
+  d.limb(hand_base, kUp, h.distances, h.radii, h.groups);
+  return {d.finish(name + ".obj"),
+          project_text(name,
+                       fmt::format("a mitten {} cm round, {} cm long, the thumb parting from the "
+                                   "hand",
+                                   c, l),
+                       "patterns: {cuff: k2p2}\n")};
+}
+
+// Shorts or trousers: a body tube from the waist and two legs parting at the crotch (the sts
+// between them joined or cast on along it). `from_waist`: knit down from the waist, the body
+// splitting into the legs; else up from both leg hems, the legs joining into the body.
+Shape legs(const ShapeSize& s, const std::string& name, double default_leg, bool from_waist) {
+  double c = s.circumference > 0 ? s.circumference : 90;
+  double leg = s.length > 0 ? s.length : default_leg;
+  double r = c / (2 * kPi), rise = std::max(6.0, c * 0.28), band = std::min(4.0, rise / 3);
+  CoarseDraft d;
+  Ring crotch = d.ring(0, r), below = d.ring(rise - band, r), waist = d.ring(rise, r);
+  d.band(crotch, below, {0, 0, 0}, kUp, "body");
+  d.band(below, waist, {0, 0, 0}, kUp, "waist");
+  auto [right, left] = fork(d, crotch, 6, 2, {0, static_cast<float>(-r * 0.15), 0});
+  Ring hems[2];
+  int side = 0;
+  for (const Ring& top : {right, left}) {
+    LimbRings g;
+    g.straight(0, std::max(1.0, leg - 3), 10, r * 0.62, "leg");
+    g.straight(g.end(), std::min(3.0, leg / 2), 3, r * 0.6, "hem");
+    float splay = side++ == 0 ? 0.08f : -0.08f;
+    hems[side - 1] = d.limb(top, unit({splay, -1, 0}), g.distances, g.radii, g.groups);
+  }
+  std::string starts =
+      from_waist
+          ? fmt::format("start:                 # the waist\n  - vertex: {}\n", waist[0] + 1)
+          : fmt::format("start:                 # both hems\n  - vertex: {}\n  - vertex: {}\n",
+                        hems[0][0] + 1, hems[1][0] + 1);
+  return {d.finish(name + ".obj"),
+          project_text(
+              name,
+              fmt::format("{} {} cm round, legs {} cm, knit {}", from_waist ? "shorts" : "trousers",
+                          c, leg, from_waist ? "from the waist down" : "from the hems up"),
+              starts + "patterns: {waist: k2p2, hem: k2p2}\n")};
+}
+
 }  // namespace
 
 std::vector<std::string> shape_kinds() {
-  return {"sheet", "tube", "hat", "sock", "sweater"};
+  return {"sheet", "tube", "hat", "sock", "sweater", "mitten", "shorts", "trousers"};
 }
 
 Shape make_shape(const std::string& kind, const ShapeSize& size, const std::string& name) {
@@ -299,7 +320,11 @@ Shape make_shape(const std::string& kind, const ShapeSize& size, const std::stri
   if (kind == "hat") return hat(size, name);
   if (kind == "sock") return sock(size, name);
   if (kind == "sweater") return sweater(size, name);
-  throw UsageError(fmt::format("unknown shape '{}'; known: sheet, tube, hat, sock, sweater", kind));
+  if (kind == "mitten") return mitten(size, name);
+  if (kind == "shorts") return legs(size, name, 20, true);
+  if (kind == "trousers") return legs(size, name, 75, false);
+  throw UsageError(
+      fmt::format("unknown shape '{}'; known: {}", kind, fmt::join(shape_kinds(), ", ")));
 }
 
 double parse_length_cm(const std::string& text) {

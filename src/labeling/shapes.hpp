@@ -11,7 +11,8 @@
 namespace skein {
 
 struct ShapeSize {
-  double circumference = 0;  // tube, hat, sock (leg), sweater (chest); 0: the kind's default
+  double circumference = 0;  // tube, hat, sock (leg), sweater (chest), mitten (hand), shorts and
+                             // trousers (hip); 0: the kind's default
   double width = 0;          // sheet
   double length = 0;         // every kind: tube or sheet length, hat or sock or body height
 };
@@ -21,7 +22,7 @@ struct Shape {
   std::string project;  // the project file's text; it names the mesh as NAME.obj
 };
 
-// Kinds: sheet, tube, hat, sock, sweater. Throws UsageError for an unknown kind or bad size.
+// Kinds: shape_kinds(). Throws UsageError for an unknown kind or bad size.
 Shape make_shape(const std::string& kind, const ShapeSize& size, const std::string& name);
 std::vector<std::string> shape_kinds();
 

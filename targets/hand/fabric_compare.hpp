@@ -3,8 +3,9 @@
 // (along the row, turn, or on around), the same type as seen from the RS, and the same loops
 // taken, each from the same maker and slot, left to right. A mirror image (left and right
 // swapped) is compared with slots reversed and leaning stitches swapped. The model is read as
-// the pattern works it (worked_by_hand): an sr5 as the st of a DS or wrap, the decrease that
-// knits its two loops together as the plain st of `k DS` / `kw`.
+// a knitter's hands make it: an sr5 as the st of a DS or wrap, the decrease that knits its two
+// loops together as the plain st of `k DS` / `kw`. The judge states that rule itself and calls
+// none of the pattern builder's code (pattern_model), so a bug there cannot hide here.
 #pragma once
 
 #include <cstdint>

@@ -294,6 +294,7 @@ class NeedleSimulator {
     if (loops.size() != s.count)
       fail(fmt::format("Join a new yarn: the pattern says {}, but the {} holds {}", sts(s.count),
                        s.holder[0] ? "holder" : "needle", loops.size()));
+    begin_at_holder_st(loops, s);
     if (s.holder[0])
       holders_.erase(s.number);
     else
@@ -304,6 +305,16 @@ class NeedleSimulator {
     pc_.right.assign(loops.rbegin(), loops.rend());
     pc_.live = s.count;
     pc_.joined_to_sts = true;
+  }
+
+  // "; the rnd begins at its st 6": the holder's sts (tip first) go round from its 6th
+  // slipped, the way the st named at the tip says.
+  void begin_at_holder_st(std::vector<std::uint32_t>& loops, const Step& s) const {
+    if (s.from_row == 0) return;
+    if (s.from_row > loops.size())
+      fail(fmt::format("Join a new yarn: holder {} has no st {}", s.number, s.from_row));
+    std::size_t tip = s.from_last[0] ? loops.size() - s.from_row : s.from_row - 1;
+    std::rotate(loops.begin(), loops.begin() + static_cast<std::ptrdiff_t>(tip), loops.end());
   }
 
   // A new piece with its own yarn and needles.
@@ -707,8 +718,11 @@ class NeedleSimulator {
       fail(fmt::format("three-needle bind-off: the pattern says {} pairs, but the needles hold {}",
                        pairs, f.size()));
     if (s.own_yarn) {
+      // The yarn turns from the front piece's last row when its last st is at the tip; with
+      // its first st there, the yarn goes on round from the end of its last rnd into it.
+      bool round = pc_.joined;
       active_ = true;
-      next_link_ = YarnLink::turn;  // the yarn turns from the front piece's last row
+      next_link_ = !s.from_last[0] && round ? YarnLink::shift : YarnLink::turn;
     } else {
       start_piece();
     }

@@ -390,8 +390,9 @@ class InstructionWriter {
     const PatternSection& spare = p_.sections[start.section];
     if (start.holder && p_.sections[section_].in_round && !holds_a_flat_row(start.holder))
       return fmt::format(
-          "Join a new yarn to the {} of holder {}, the {} st slipped to it at the tip.",
-          sts(start.count), start.holder, start.from_last ? "last" : "first");
+          "Join a new yarn to the {} of holder {}, the {} st slipped to it at the tip{}.",
+          sts(start.count), start.holder, start.from_last ? "last" : "first",
+          start.at ? fmt::format("; the rnd begins at its st {}", start.at) : "");
     if (start.holder)
       return fmt::format(
           "Join a new yarn to the {} of holder {}, the {} st of its last {} at the tip.",
@@ -766,6 +767,12 @@ class FrontMatter {
       text +=
           " To work a holder's sts in the rnd, slide them onto the needle(s) with the st "
           "named at the tip of the left needle, place the BOR marker and work that st first.";
+    if (says("; the rnd begins at its st "))
+      text +=
+          " \"The rnd begins at its st 6\": count the holder's sts in the order they were "
+          "slipped to it; slide them round the needle(s), keeping that order, until st 6 is at "
+          "the tip of the left needle (the sts before it come after the other end), place the "
+          "BOR marker and work st 6 first.";
     if (says("Do not fasten off: carry the yarn"))
       text +=
           " \"Do not fasten off: carry the yarn to\" them: after binding off, pull the yarn "

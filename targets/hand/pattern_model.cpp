@@ -712,14 +712,38 @@ class PatternBuilder {
   }
 
   // A new yarn joined to sts another piece slipped to a holder (a body that goes on as two
-  // flaps): the holder's first or last st at the tip.
+  // flaps): the holder's first or last st at the tip. A rnd may begin at any st of the
+  // holder (the sts it places, a cast-on along the parting, go round after its last).
   void start_from_holder(const Loop& first) {
     std::uint32_t holder = holder_of_[first.maker];
     const Held& held = holders_[holder - 1];
-    section().starts_from = PatternSection::Start{section_of(first.maker), false,
-                                                  first.maker == held.last, held.count, holder};
+    std::uint32_t place = place_on_holder_[first.maker];
+    bool from_last = first.maker == held.last;
+    PatternSection::Start& start = section().starts_from.emplace(
+        PatternSection::Start{section_of(first.maker), false, from_last, held.count, holder});
     section().in_round = g_.yarn_link[row_.back()] == YarnLink::shift;  // a leg of a tube
+    if (!from_last && place > 1) {
+      if (!section().in_round)
+        unsupported(
+            fmt::format("yarn {} starts with {} in the middle of the sts of holder {} "
+                        "and works them in rows, which is not covered yet",
+                        section().yarn + 1, g_.describe(row_.front()), holder));
+      start.at = place;
+      start.from_last = !runs_up_the_holder(first.maker, holder);
+    }
     st_.live = st_.ahead = held.count;
+  }
+
+  // Does the piece's first row go on from `first` to the st slipped to the holder after it
+  // (not to the one before)?
+  bool runs_up_the_holder(StitchId first, std::uint32_t holder) const {
+    for (StitchId s : row_)
+      for (std::uint32_t l : g_.loops_taken_by(s)) {
+        StitchId m = g_.loops[l].maker;
+        if (m != kNoStitch && m != first && holder_of_[m] == holder)
+          return place_on_holder_[m] > place_on_holder_[first];
+      }
+    return true;
   }
 
   // A new yarn that starts on sts another piece worked and left on its needle (a body whose
@@ -765,8 +789,10 @@ class PatternBuilder {
     holders_.push_back({row[end - 1], count});
     spare_left_.push_back(0);
     spare_second_.push_back(0);
-    for (std::uint32_t i = first; i < end; ++i)
+    for (std::uint32_t i = first; i < end; ++i) {
       holder_of_[row[i]] = static_cast<std::uint32_t>(holders_.size());
+      place_on_holder_[row[i]] = i - first + 1;
+    }
     PatternSection& aside = out_.sections[section_of_yarn_[yarn]];
     PatternSection::Holding& h = aside.holdings.emplace_back(PatternSection::Holding{
         aside.end_row - 1, first + 1, count, static_cast<std::uint32_t>(holders_.size())});
@@ -942,7 +968,9 @@ class PatternBuilder {
   }
 
   // A piece worked in the rnd is placed from the st first worked, wherever its last rnd
-  // began: that st's place in the rnd (1-based; 0 when it is the first).
+  // began: that st's place among the sts its needle holds (1-based; 0 when it is the first).
+  // The needle holds the loops the last rnd left: a st bound off there holds none, an
+  // increase two.
   std::uint32_t place_in_last_rnd(const PatternSection& spare, StitchId maker) const {
     std::uint32_t at = 1;
     for (StitchId s = spare.last_row_ends[0]; s != kNoStitch && s != maker; s = g_.yarn_next[s]) {
@@ -951,7 +979,7 @@ class PatternBuilder {
             fmt::format("{} of Piece {} is worked first after it is placed, but it is "
                         "not in its last rnd, which is not covered yet",
                         g_.describe(maker), spare.piece));
-      ++at;
+      at += static_cast<std::uint32_t>(g_.loops_made_by(s).size());
     }
     return at == 1 ? 0 : at;
   }
@@ -1166,7 +1194,10 @@ class PatternBuilder {
       spare_second_.push_back(0);
     }
     auto holder = static_cast<std::uint32_t>(holders_.size());
-    for (std::uint32_t i = first; i < end; ++i) holder_of_[loops[i].first] = holder;
+    for (std::uint32_t i = first; i < end; ++i) {
+      holder_of_[loops[i].first] = holder;
+      place_on_holder_[loops[i].first] = onto + i - first + 1;
+    }
     section().holdings.push_back({row, first + 1, end - first, holder, onto});
     st_.live -= end - first;
   }
@@ -1825,6 +1856,8 @@ class PatternBuilder {
     StitchId last;
     std::uint32_t count;
   };
+  // Per model stitch slipped to a holder: its place there, 1-based in the order slipped.
+  std::vector<std::uint32_t> place_on_holder_ = std::vector<std::uint32_t>(g_.size(), 0);
   std::vector<Held> holders_;
   // Per holder put on a spare needle for rows: the sts still on it, and whether that needle
   // is the second of two.

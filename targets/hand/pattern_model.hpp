@@ -114,6 +114,10 @@ struct PatternSection {
     bool chain, from_last;
     std::uint32_t count;
     std::uint32_t holder = 0;  // the sts another piece slipped to this holder
+    // A piece in the rnd that begins in the middle of a holder's run (a tube parting: the hand
+    // begins after the thumb's cast-on): that st, 1-based in the order the sts were slipped to
+    // the holder, at the tip; 0: the first or last.
+    std::uint32_t at = 0;
   };
   // A provisional cast-on in the middle of one of its rows ("CO 3 sts with a provisional
   // cast-on"): how many sts, and the model stitches cast on first and last (its chain's ends).

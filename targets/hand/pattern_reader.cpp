@@ -332,6 +332,11 @@ class SentenceReader {
       need_words(c, {"cast", "on"}, "'st cast on at the tip'");
     }
     need_words(c, {"at", "the", "tip"}, "'at the tip'");
+    // "; the rnd begins at its st 6": a holder's sts in the rnd, begun in their middle.
+    if (step.holder[0] && c.eat(";")) {
+      need_words(c, {"the", "rnd", "begins", "at", "its", "st"}, "'the rnd begins at its st N'");
+      step.from_row = need_number(c, "the st of the holder the rnd begins at");
+    }
     need(c.done(), c, "the end of the sentence");
     return step;
   }

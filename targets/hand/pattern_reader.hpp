@@ -86,7 +86,8 @@ struct Step {
   bool own_yarn = false;     // three_needle_bind_off: with the front piece's yarn
   std::uint32_t from_row = 0, to_row = 0;  // pick_up: one st in each of these rows (provisional:
                                            // along the right edge); place: from_row, the st
-                                           // placed first (1-based, 0: the first or last)
+                                           // placed first (1-based, 0: the first or last);
+                                           // join_spare: the holder's st the rnd begins at
   HandOp op = HandOp::k;
   // place (front), three_needle_bind_off: the number (and last) name a holder, not a piece.
   bool holder[2] = {false, false};
