@@ -4,18 +4,10 @@
 #include <string>
 #include <vector>
 
+#include "common/error.hpp"  // ExitCode
 #include "driver/registry.hpp"
 
 namespace skein::cli {
-
-// Exit codes, the same for every command.
-enum ExitCode : int {
-  kDone = 0,          // knittable, written, proven
-  kNotKnittable = 1,  // valid input that is not knittable, or a file that does not prove
-  kBadInput = 2,      // bad input or usage (the message names the file, line, face or edge)
-  kUnsupported = 3,   // valid input that this target cannot do (yet, or on this machine)
-  kInternal = 4,      // a bug in skein, or no memory left
-};
 
 // Everything the command line can say; each command reads the fields it has options for.
 struct Request {

@@ -2,13 +2,10 @@
 // (commands.cpp) and turns whatever it throws into a message and an exit code.
 #include <fmt/format.h>
 #include <fmt/ranges.h>
-#include <yaml-cpp/exceptions.h>
 
 #include <CLI/CLI.hpp>
-#include <filesystem>
 #include <functional>
 #include <iostream>
-#include <new>
 
 #include "builtin_targets.hpp"
 #include "commands.hpp"
@@ -21,33 +18,14 @@ namespace {
 using namespace skein;
 using namespace skein::cli;
 
-// Runs `command`; an exception becomes a message on stderr and its exit code. Library
-// exceptions say what skein was `doing`, since their own messages do not.
+// Runs `command`; an exception becomes a message on stderr and its exit code.
 int run_reporting_errors(const std::string& doing, const std::function<int()>& command) {
-  auto say = [](const std::string& message) { std::cerr << "skein: " << message << '\n'; };
   try {
     return command();
-  } catch (const UnsupportedError& e) {
-    say(fmt::format("unsupported: {}", e.what()));
-    return kUnsupported;
-  } catch (const Error& e) {
-    say(fmt::format("error: {}", e.what()));
-    return kBadInput;
-  } catch (const std::filesystem::filesystem_error& e) {
-    say(fmt::format("error while {}: {}: {}", doing, e.path1().string(), e.code().message()));
-    return kBadInput;
-  } catch (const YAML::Exception& e) {
-    say(fmt::format("error while {}: {}", doing, e.what()));
-    return kBadInput;
-  } catch (const std::bad_alloc&) {
-    say(fmt::format("out of memory while {}", doing));
-    return kInternal;
-  } catch (const InternalError& e) {
-    say(fmt::format("{} (while {})", e.what(), doing));
-    return kInternal;
-  } catch (const std::exception& e) {
-    say(fmt::format("internal error while {}: {}; please report this", doing, e.what()));
-    return kInternal;
+  } catch (...) {
+    Failure failure = describe_current_exception(doing);
+    std::cerr << "skein: " << failure.message << '\n';
+    return failure.exit_code;
   }
 }
 

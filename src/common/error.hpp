@@ -61,6 +61,26 @@ class InternalError : public std::logic_error {
   using std::logic_error::logic_error;
 };
 
+// The exit codes of every command.
+enum ExitCode : int {
+  kDone = 0,          // knittable, written, proven
+  kNotKnittable = 1,  // valid input that is not knittable, or a file that does not prove
+  kBadInput = 2,      // bad input or usage: an Error
+  kUnsupported = 3,   // valid input that this target cannot do: an UnsupportedError
+  kInternal = 4,      // a bug in skein, or no memory left
+};
+
+// What to tell the user about an exception that escaped a command.
+struct Failure {
+  ExitCode exit_code;
+  std::string message;  // one or more lines, without the trailing newline
+};
+
+// Call in a catch block: the exception being handled, said in words. An Error's own message is
+// enough; a library's (filesystem, YAML, bad_alloc, ...) is said with what skein was `doing`
+// ("compiling hat.obj for the hand target"), since it does not say it.
+Failure describe_current_exception(const std::string& doing);
+
 [[noreturn]] void assertion_failed(const char* condition, const char* file, int line,
                                    const std::string& message);
 

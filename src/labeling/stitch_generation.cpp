@@ -107,8 +107,10 @@ class Generator {
     GeneratedStitchMesh out{
         std::move(builder_).build(), std::move(origin_), {}, closed_rows_, open_rows_, chains_};
     for (CoarseHalfedge h : m_.halfedges()) out.segments.push_back(segments(h));
-    for (auto [h, option] : shift_edges_)
-      mark_edge(out.mesh, h, [&](Edge e) { out.mesh.shift_path[e] = option; });
+    for (const auto& [h, option] : shift_edges_) {
+      std::uint8_t o = option;  // a lambda may not capture a structured binding before clang 16
+      mark_edge(out.mesh, h, [&](Edge e) { out.mesh.shift_path[e] = o; });
+    }
     choose_yarns(out);
     return out;
   }

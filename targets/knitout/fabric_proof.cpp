@@ -20,7 +20,7 @@ std::uint32_t fabric_loops(StitchType t) {
 class Matcher {
  public:
   Matcher(const Replay& r, std::string_view text, const Compilation& c, const CourseLayout& l)
-      : f_(r.fabric), r_(r), text_(text), c_(c), g_(c.knit), l_(l) {
+      : f_(r.fabric), r_(r), text_(text), g_(c.knit), l_(l) {
     loop_of_.assign(g_.loops.size(), kNoLoop);
     kept_.assign(g_.loops.size(), kNoKept);
     stamp_.assign(f_.loops.size(), 0);
@@ -320,7 +320,6 @@ class Matcher {
   const Replay& r_;
   std::string_view text_;
   mutable std::vector<std::string_view> lines_;
-  const Compilation& c_;
   const KnitGraph& g_;
   const CourseLayout& l_;
   std::vector<LoopId> loop_of_;  // per knit graph loop: its fabric loop
