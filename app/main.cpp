@@ -251,6 +251,8 @@ int main(int argc, char** argv) {
                          "machine profile name or path (default: from the file's ;;Machine:)");
   verify_cmd->add_flag("--strict", options.strict,
                        "every rule an error, as for skein's own output (compile --verify)");
+  verify_cmd->add_option("--picture", options.picture,
+                         "an .svg to draw the fabric OUT makes in (knitout)");
 
   std::string shape_kind;
   std::string circumference, width, length;
