@@ -80,6 +80,8 @@ int main(int argc, char** argv) {
                      "machine profile name or path (default: from the file's ;;Machine:)");
   verify->add_flag("--strict", r.options.strict,
                    "every rule an error, as for skein's own output (compile)");
+  verify->add_option("--picture", r.options.picture,
+                     "an .svg to draw the fabric OUT makes in (knitout)");
 
   auto* new_cmd = app.add_subcommand("new", "write a parametric coarse mesh and its project file");
   new_cmd->add_option("KIND", r.shape, fmt::format("{}", fmt::join(shape_kinds(), ", ")))

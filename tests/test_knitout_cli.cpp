@@ -46,7 +46,9 @@ TEST_F(KnitoutCli, AForeignFileIsReplayedOnTheMachineItNames) {
   EXPECT_NE(named.out.find("fabric: 1 piece; 530 knit on the front bed, 110 on the back, 30 tuck"),
             std::string::npos)
       << named.out;
-  testing::CliRun unnamed = skein("verify " + dir + "rectangle.knitout");
+  std::string svg = (dir_ / "rectangle.svg").string();
+  testing::CliRun unnamed = skein("verify " + dir + "rectangle.knitout --picture " + svg);
+  EXPECT_TRUE(fs::exists(svg)) << unnamed.out << unnamed.err;
   EXPECT_EQ(unnamed.exit_code, 1) << unnamed.err;
   EXPECT_NE(unnamed.out.find("every operation is valid on generic (note: the file names no "
                              ";;Machine:; give --machine to replay it on one)"),

@@ -6,9 +6,11 @@
 #include <fmt/format.h>
 
 #include <set>
+#include <sstream>
 
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "knitout/fabric_picture.hpp"
 #include "knitout/fabric_report.hpp"
 #include "knitout/vbed_simulator.hpp"
 #include "test_knitout_util.hpp"

@@ -19,6 +19,7 @@ struct TargetOptions {
   // --set KEY=VALUE, then the project file's `target:` keys the target knows.
   std::map<std::string, std::string> settings;
   bool strict = false;  // simulators: the target's own strictest rules (compile --verify)
+  std::string picture;  // simulators: an .svg to draw what the replayed file makes in
 };
 
 // A choice a target offers (`--set rounds=inside-out`) and the values it may take.

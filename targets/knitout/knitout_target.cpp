@@ -2,9 +2,11 @@
 
 #include <fmt/format.h>
 
+#include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "driver/pipeline.hpp"
 #include "knitout/emit.hpp"
+#include "knitout/fabric_picture.hpp"
 #include "knitout/fabric_report.hpp"
 #include "knitout/machine_profile.hpp"
 #include "knitout/vbed_simulator.hpp"
@@ -52,6 +54,12 @@ class VbedSimulator : public Simulator {
     knitout::Replay replay = knitout::replay_knitout(text, file, profile, chosen.options);
     std::string shop = knitout::shop_summary(replay, profile) + "\n" +
                        knitout::fabric_summary(knitout::fabric_report(replay), profile);
+    if (!options.picture.empty()) {
+      write_file_atomically(options.picture, [&](std::ostream& out) {
+        knitout::write_fabric_svg(replay, file, out);
+      });
+      shop += fmt::format("\n  the fabric drawn in {}", options.picture);
+    }
     std::string valid =
         fmt::format("{}: every operation is valid on {}{}", file, profile.name, chosen.how);
     VerifyReport report;

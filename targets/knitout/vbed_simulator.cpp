@@ -446,6 +446,7 @@ class VirtualBed {
     l.dir = dir;
     l.yarn = yarn;
     l.line = static_cast<std::uint32_t>(line_);
+    l.needle = n.index;
     std::size_t lowest = static_cast<std::size_t>(std::countr_zero(yarn));
     l.piece = carriers_[lowest].piece;
     for (LoopId parent : through) {

@@ -31,6 +31,7 @@ struct FabricLoop {
   CarrierMask yarn = 0;             // the carriers that made it
   std::uint32_t piece = 0;          // yarn piece (one per in/inhook of its carrier)
   std::uint32_t line = 0;           // the knitout line that made it
+  std::int32_t needle = 0;          // the needle it was made on
 };
 
 struct Fabric {
