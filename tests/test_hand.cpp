@@ -152,13 +152,14 @@ TEST(HandTarget, AHeelTurnOnANewYarnIsProvenInEveryFormat) {
        "counts them in the order the row worked them"});
 }
 
-// A new yarn on sts a piece set aside left on its needle (the teapot's yarn 4): they go to a
-// holder before the piece is set aside, counted in the order their row worked them.
+// A new yarn on sts of a flat piece's row that the piece's own next rows do not work (the
+// teapot's yarn 4, flaps parting): they go to a holder right after that row, counted in the
+// order it worked them, and the piece works on with the others.
 TEST(HandTarget, ANewYarnOnASetAsidePiecesStsIsProvenInEveryFormat) {
   expect_proven_with_lines(testing::new_yarn_on_set_aside_needle_graph(), "set-aside needle",
-                           {"**Row 2 (WS):** P2, turn.\n\n**Row 3 (RS):** Knit.\n\nSlip sts "
-                            "1–2 of Row 1 to holder 1 — 2 sts.\n\nLeave the 2 sts on the needle "
-                            "and set the yarn aside (do not cut it).\n",
+                           {"**Row 1 (RS):** Knit.\n\nSlip sts 1–2 of Row 1 to holder 1 — 2 "
+                            "sts.\n\n**Row 2 (WS):** Purl.\n\n**Row 3 (RS):** Knit.\n\nLeave "
+                            "the 2 sts on the needle and set the yarn aside (do not cut it).\n",
                             "Join a new yarn to the 2 sts of holder 1, the last st of its last "
                             "row at the tip.\n",
                             "counts them in the order the row worked them"});

@@ -1295,6 +1295,44 @@ class PatternBuilder {
     st_.last_side = r.side;
     out_.rows.push_back(r);
     if (full_round) hold_what_others_work(static_cast<std::uint32_t>(out_.rows.size() - 1));
+    if (!r.round && !r.partial) hold_flaps_others_work();
+  }
+
+  // A flat piece parting into flaps (its last whole row's sts going to its own next row and
+  // to other pieces' rows): each run another piece works is slipped to a holder of its own
+  // right after the row, counted in the order the row worked them, and the piece goes on with
+  // the sts its own rows work.
+  void hold_flaps_others_work() {
+    std::vector<StitchId> row = row_;
+    bool own = false;
+    for (StitchId s : row)
+      for (std::uint32_t l : g_.loops_made_by(s)) {
+        StitchId taker = g_.loops[l].taker;
+        own |= taker != kNoStitch && c_.yarns.piece_of[taker] == c_.yarns.piece_of[s] &&
+               g_.loops[l].kind == LoopKind::wale;
+      }
+    if (!own) return;
+    for (std::uint32_t i = 0, end = 0; i < row.size(); i = end) {
+      std::uint32_t taker_row = row_taking_from_another_piece(row[i]);
+      for (end = i + 1; end < row.size() && row_taking_from_another_piece(row[end]) == taker_row;)
+        ++end;
+      if (taker_row == kNotTaken || g_.loops[g_.loops_made_by(row[i])[0]].kind != LoopKind::wale)
+        continue;
+      const std::uint32_t count = end - i;
+      holders_.push_back({row[end - 1], count});
+      spare_left_.push_back(0);
+      spare_second_.push_back(0);
+      for (std::uint32_t k = i; k < end; ++k) {
+        holder_of_[row[k]] = static_cast<std::uint32_t>(holders_.size());
+        place_on_holder_[row[k]] = k - i + 1;
+      }
+      PatternSection::Holding& h = section().holdings.emplace_back(
+          PatternSection::Holding{static_cast<std::uint32_t>(out_.rows.size() - 1), i + 1, count,
+                                  static_cast<std::uint32_t>(holders_.size())});
+      h.of_row = true;
+      st_.live -= count;
+      (st_.behind >= count ? st_.behind : st_.ahead) -= count;
+    }
   }
 
   bool works_bor_wale(StitchId s) const {
