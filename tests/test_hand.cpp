@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 #include <random>
 #include <sstream>
 
@@ -298,32 +299,54 @@ TEST(HandRandomized, ShapedSheetsAndTubesAreProven) {
   }
 }
 
-// Every shape `skein new` makes (sheet, tube, hat, sock, sweater), at random sizes, with
-// either short-row method: the pattern a designer gets from it is proven.
-TEST(HandRandomized, ShapesOfRandomSizesAreProven) {
+// Every shape `skein new` makes, at 50 random sizes and gauges each, with either short-row
+// method: the pattern a designer gets from it is proven, or (shorts and trousers only) the hand
+// target refuses it by name: the trousers' legs joining into the body (the body's first rnd
+// would work only some of the sts of a leg placed on the needle, the rest waiting for the
+// crotch's three-needle bind-off), and at some gauges "the loops of yarn N do not keep one
+// left-to-right order".
+TEST(HandRandomized, ShapesOfRandomSizesAndGaugesAreProven) {
   std::mt19937_64 rng(23);
   const std::string dir = ::testing::TempDir();
-  const std::vector<std::string> kinds = {"sheet", "tube", "hat", "sock", "sweater"};
-  for (int trial = 0; trial < 50; ++trial) {
-    const std::string& kind = kinds[trial % kinds.size()];
-    ShapeSize size;
-    size.circumference = 10 + static_cast<double>(rng() % 80);
-    size.width = 5 + static_cast<double>(rng() % 40);
-    size.length = 4 + static_cast<double>(rng() % 80);  // a sweater's body of 48 cm or more
-    std::string name = fmt::format("hand-{}{}", kind, trial);
-    std::string project = write_shape(make_shape(kind, size, name), dir + "/" + name);
-    SCOPED_TRACE(project);
-    Compilation c = compile_model(project);
-    ASSERT_TRUE(c.knittability.knittable) << project << "\n" << check_report(c);
-    TargetOptions options;
-    options.settings["short-rows"] = trial % 2 ? "wrap-and-turn" : "german";
-    std::string target = trial % 4 == 0 ? "hand-html" : "hand";
-    std::string pattern = emit(c, target, options);
-    try {
+  std::map<std::string, std::array<int, 2>> tally;  // proven, refused
+  for (const std::string& kind : shape_kinds()) {
+    for (int trial = 0; trial < 50; ++trial) {
+      ShapeSize size;
+      bool big = kind == "sweater" || kind == "shorts" || kind == "trousers";
+      size.circumference = (big ? 50 : 10) + static_cast<double>(rng() % (big ? 80 : 40));
+      size.width = 5 + static_cast<double>(rng() % 40);
+      size.length = 4 + static_cast<double>(rng() % (kind == "sweater" ? 80 : 40));
+      std::string name = fmt::format("hand-{}{}", kind, trial);
+      Shape shape = make_shape(kind, size, name);
+      const std::string gauge = "gauge: {stitches: 22, rows: 30}";
+      shape.project.replace(
+          shape.project.find(gauge), gauge.size(),
+          fmt::format("gauge: {{stitches: {}, rows: {}}}", 12 + rng() % 19, 16 + rng() % 25));
+      std::string project = write_shape(shape, dir + "/" + name);
+      SCOPED_TRACE(project + "\n" + shape.project);
+      Compilation c = compile_model(project);
+      ASSERT_TRUE(c.knittability.knittable) << project << "\n" << check_report(c);
+      TargetOptions options;
+      options.settings["short-rows"] = trial % 2 ? "wrap-and-turn" : "german";
+      std::string target = trial % 4 == 0 ? "hand-html" : "hand";
+      std::string pattern;
+      try {
+        pattern = emit(c, target, options);
+      } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("hand target: ", 0), 0u) << e.what();
+        ++tally[kind][1];
+        std::cout << kind << " refused: " << e.what() << "\n";
+        continue;
+      }
       VerifyReport report = verify(c, target, pattern);
       EXPECT_TRUE(report.proven) << target << ": " << report.summary;
-    } catch (const Error& e) {
-      ADD_FAILURE() << target << ": " << e.what();
+      tally[kind][0] += report.proven;
+    }
+  }
+  for (const auto& [kind, n] : tally) {
+    std::cout << fmt::format("{}: {} proven, {} refused by name\n", kind, n[0], n[1]);
+    if (kind != "trousers" && kind != "shorts") {
+      EXPECT_EQ(n[0], 50) << kind;
     }
   }
 }
