@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 #include <random>
 #include <sstream>
 
@@ -152,13 +153,14 @@ TEST(HandTarget, AHeelTurnOnANewYarnIsProvenInEveryFormat) {
        "counts them in the order the row worked them"});
 }
 
-// A new yarn on sts a piece set aside left on its needle (the teapot's yarn 4): they go to a
-// holder before the piece is set aside, counted in the order their row worked them.
+// A new yarn on sts of a flat piece's row that the piece's own next rows do not work (the
+// teapot's yarn 4, flaps parting): they go to a holder right after that row, counted in the
+// order it worked them, and the piece works on with the others.
 TEST(HandTarget, ANewYarnOnASetAsidePiecesStsIsProvenInEveryFormat) {
   expect_proven_with_lines(testing::new_yarn_on_set_aside_needle_graph(), "set-aside needle",
-                           {"**Row 2 (WS):** P2, turn.\n\n**Row 3 (RS):** Knit.\n\nSlip sts "
-                            "1–2 of Row 1 to holder 1 — 2 sts.\n\nLeave the 2 sts on the needle "
-                            "and set the yarn aside (do not cut it).\n",
+                           {"**Row 1 (RS):** Knit.\n\nSlip sts 1–2 of Row 1 to holder 1 — 2 "
+                            "sts.\n\n**Row 2 (WS):** Purl.\n\n**Row 3 (RS):** Knit.\n\nLeave "
+                            "the 2 sts on the needle and set the yarn aside (do not cut it).\n",
                             "Join a new yarn to the 2 sts of holder 1, the last st of its last "
                             "row at the tip.\n",
                             "counts them in the order the row worked them"});
@@ -297,32 +299,54 @@ TEST(HandRandomized, ShapedSheetsAndTubesAreProven) {
   }
 }
 
-// Every shape `skein new` makes (sheet, tube, hat, sock, sweater), at random sizes, with
-// either short-row method: the pattern a designer gets from it is proven.
-TEST(HandRandomized, ShapesOfRandomSizesAreProven) {
+// Every shape `skein new` makes, at 50 random sizes and gauges each, with either short-row
+// method: the pattern a designer gets from it is proven, or (shorts and trousers only) the hand
+// target refuses it by name: the trousers' legs joining into the body (the body's first rnd
+// would work only some of the sts of a leg placed on the needle, the rest waiting for the
+// crotch's three-needle bind-off), and at some gauges "the loops of yarn N do not keep one
+// left-to-right order".
+TEST(HandRandomized, ShapesOfRandomSizesAndGaugesAreProven) {
   std::mt19937_64 rng(23);
   const std::string dir = ::testing::TempDir();
-  const std::vector<std::string> kinds = {"sheet", "tube", "hat", "sock", "sweater"};
-  for (int trial = 0; trial < 50; ++trial) {
-    const std::string& kind = kinds[trial % kinds.size()];
-    ShapeSize size;
-    size.circumference = 10 + static_cast<double>(rng() % 80);
-    size.width = 5 + static_cast<double>(rng() % 40);
-    size.length = 4 + static_cast<double>(rng() % 80);  // a sweater's body of 48 cm or more
-    std::string name = fmt::format("hand-{}{}", kind, trial);
-    std::string project = write_shape(make_shape(kind, size, name), dir + "/" + name);
-    SCOPED_TRACE(project);
-    Compilation c = compile_model(project);
-    ASSERT_TRUE(c.knittability.knittable) << project << "\n" << check_report(c);
-    TargetOptions options;
-    options.settings["short-rows"] = trial % 2 ? "wrap-and-turn" : "german";
-    std::string target = trial % 4 == 0 ? "hand-html" : "hand";
-    std::string pattern = emit(c, target, options);
-    try {
+  std::map<std::string, std::array<int, 2>> tally;  // proven, refused
+  for (const std::string& kind : shape_kinds()) {
+    for (int trial = 0; trial < 50; ++trial) {
+      ShapeSize size;
+      bool big = kind == "sweater" || kind == "shorts" || kind == "trousers";
+      size.circumference = (big ? 50 : 10) + static_cast<double>(rng() % (big ? 80 : 40));
+      size.width = 5 + static_cast<double>(rng() % 40);
+      size.length = 4 + static_cast<double>(rng() % (kind == "sweater" ? 80 : 40));
+      std::string name = fmt::format("hand-{}{}", kind, trial);
+      Shape shape = make_shape(kind, size, name);
+      const std::string gauge = "gauge: {stitches: 22, rows: 30}";
+      shape.project.replace(
+          shape.project.find(gauge), gauge.size(),
+          fmt::format("gauge: {{stitches: {}, rows: {}}}", 12 + rng() % 19, 16 + rng() % 25));
+      std::string project = write_shape(shape, dir + "/" + name);
+      SCOPED_TRACE(project + "\n" + shape.project);
+      Compilation c = compile_model(project);
+      ASSERT_TRUE(c.knittability.knittable) << project << "\n" << check_report(c);
+      TargetOptions options;
+      options.settings["short-rows"] = trial % 2 ? "wrap-and-turn" : "german";
+      std::string target = trial % 4 == 0 ? "hand-html" : "hand";
+      std::string pattern;
+      try {
+        pattern = emit(c, target, options);
+      } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("hand target: ", 0), 0u) << e.what();
+        ++tally[kind][1];
+        std::cout << kind << " refused: " << e.what() << "\n";
+        continue;
+      }
       VerifyReport report = verify(c, target, pattern);
       EXPECT_TRUE(report.proven) << target << ": " << report.summary;
-    } catch (const Error& e) {
-      ADD_FAILURE() << target << ": " << e.what();
+      tally[kind][0] += report.proven;
+    }
+  }
+  for (const auto& [kind, n] : tally) {
+    std::cout << fmt::format("{}: {} proven, {} refused by name\n", kind, n[0], n[1]);
+    if (kind != "trousers" && kind != "shorts") {
+      EXPECT_EQ(n[0], 50) << kind;
     }
   }
 }

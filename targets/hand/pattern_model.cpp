@@ -783,19 +783,27 @@ class PatternBuilder {
     return g_.row[taker];
   }
 
-  void hold_run_of_set_aside_row(std::uint32_t yarn, const std::vector<StitchId>& row,
-                                 std::uint32_t first, std::uint32_t end) {
-    const std::uint32_t count = end - first;
-    holders_.push_back({row[end - 1], count});
+  // A new holder for the sts of a row from `first` to `end` (in the order it worked them);
+  // returns its number.
+  std::uint32_t hold_run_of_row(const std::vector<StitchId>& row, std::uint32_t first,
+                                std::uint32_t end) {
+    holders_.push_back({row[end - 1], end - first});
     spare_left_.push_back(0);
     spare_second_.push_back(0);
+    auto holder = static_cast<std::uint32_t>(holders_.size());
     for (std::uint32_t i = first; i < end; ++i) {
-      holder_of_[row[i]] = static_cast<std::uint32_t>(holders_.size());
+      holder_of_[row[i]] = holder;
       place_on_holder_[row[i]] = i - first + 1;
     }
+    return holder;
+  }
+
+  void hold_run_of_set_aside_row(std::uint32_t yarn, const std::vector<StitchId>& row,
+                                 std::uint32_t first, std::uint32_t end) {
+    const std::uint32_t count = end - first, holder = hold_run_of_row(row, first, end);
     PatternSection& aside = out_.sections[section_of_yarn_[yarn]];
-    PatternSection::Holding& h = aside.holdings.emplace_back(PatternSection::Holding{
-        aside.end_row - 1, first + 1, count, static_cast<std::uint32_t>(holders_.size())});
+    PatternSection::Holding& h = aside.holdings.emplace_back(
+        PatternSection::Holding{aside.end_row - 1, first + 1, count, holder});
     h.of_row = true;
     h.of_number = number_of_[row[first]];
     aside.live_at_end -= count;
@@ -1295,6 +1303,36 @@ class PatternBuilder {
     st_.last_side = r.side;
     out_.rows.push_back(r);
     if (full_round) hold_what_others_work(static_cast<std::uint32_t>(out_.rows.size() - 1));
+    if (!r.round && !r.partial) hold_flaps_others_work();
+  }
+
+  // A flat piece parting into flaps (its last whole row's sts going to its own next row and
+  // to other pieces' rows): each run another piece works is slipped to a holder of its own
+  // right after the row, counted in the order the row worked them, and the piece goes on with
+  // the sts its own rows work.
+  void hold_flaps_others_work() {
+    std::vector<StitchId> row = row_;
+    bool own = false;
+    for (StitchId s : row)
+      for (std::uint32_t l : g_.loops_made_by(s)) {
+        StitchId taker = g_.loops[l].taker;
+        own |= taker != kNoStitch && c_.yarns.piece_of[taker] == c_.yarns.piece_of[s] &&
+               g_.loops[l].kind == LoopKind::wale;
+      }
+    if (!own) return;
+    for (std::uint32_t i = 0, end = 0; i < row.size(); i = end) {
+      std::uint32_t taker_row = row_taking_from_another_piece(row[i]);
+      for (end = i + 1; end < row.size() && row_taking_from_another_piece(row[end]) == taker_row;)
+        ++end;
+      if (taker_row == kNotTaken || g_.loops[g_.loops_made_by(row[i])[0]].kind != LoopKind::wale)
+        continue;
+      const std::uint32_t count = end - i, holder = hold_run_of_row(row, i, end);
+      PatternSection::Holding& h = section().holdings.emplace_back(PatternSection::Holding{
+          static_cast<std::uint32_t>(out_.rows.size() - 1), i + 1, count, holder});
+      h.of_row = true;
+      st_.live -= count;
+      (st_.behind >= count ? st_.behind : st_.ahead) -= count;
+    }
   }
 
   bool works_bor_wale(StitchId s) const {
