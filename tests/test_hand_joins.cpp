@@ -502,7 +502,7 @@ TEST(HandPieces, TheLetterHIsProvenInEveryFormat) {
        "the needle from the first st of its last row), the last st slipped first \u2014 42 sts. "
        "Three-needle bind-off: fold the 42 sts of Piece 4 in half with RS together",
        // The measurements of a piece of a cast-on alone, and of one of short rows alone.
-       "- Piece 2: Width: 4 cm (1.4 in), 7 sts at the widest. A cast-on only: no rows of its "
+       "- Piece 2: Width: 3 cm (1.3 in), 7 sts at the widest. A cast-on only: no rows of its "
        "own.\n",
        "sts at the widest. 24 short rows (worked on part of the sts), no whole rnds.\n"});
 }

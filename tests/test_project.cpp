@@ -63,7 +63,7 @@ target: {machine: kniterate}
   EXPECT_EQ(p.start[1].kind, StartSeed::Kind::vertex);
   EXPECT_EQ(p.start[1].edge.a, 6u);
   EXPECT_EQ(p.pattern, StitchPattern::k1p1);
-  EXPECT_EQ(p.group_patterns.at("cuff"), StitchPattern::k2p2);
+  EXPECT_EQ(p.group_patterns.at("cuff").pattern, StitchPattern::k2p2);
   EXPECT_EQ(p.short_row_method, ShortRowMethod::sr5);
   ASSERT_EQ(p.short_row_faces.size(), 2u);
   EXPECT_EQ(p.short_row_faces[1].face, 3u);

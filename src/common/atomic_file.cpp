@@ -40,7 +40,24 @@ void write_file_atomically(const std::string& path,
   }
 }
 
+namespace {
+
+// A reader given a directory, a FIFO or a device (`mesh: /dev/zero`) would fail obscurely,
+// block or read forever: only regular files are read.
+void check_regular_file(const std::string& path) {
+  std::error_code error;
+  std::filesystem::file_status status = std::filesystem::status(path, error);
+  if (error || status.type() == std::filesystem::file_type::regular) return;  // fopen says why
+  const char* what = status.type() == std::filesystem::file_type::directory ? "a directory"
+                     : status.type() == std::filesystem::file_type::fifo    ? "a FIFO"
+                                                                            : "a device or socket";
+  throw IoError(fmt::format("cannot read '{}': it is {}; expected a regular file", path, what));
+}
+
+}  // namespace
+
 std::string read_file(const std::string& path) {
+  check_regular_file(path);
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
                                                        &std::fclose);
   if (!file) throw IoError(fmt::format("cannot open '{}': {}", path, std::strerror(errno)));

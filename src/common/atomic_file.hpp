@@ -13,7 +13,8 @@ namespace skein {
 void write_file_atomically(const std::string& path,
                            const std::function<void(std::ostream&)>& write);
 
-// The whole file as a string; throws IoError naming the file when it cannot be read.
+// The whole file as a string; throws IoError naming the file when it cannot be read or is not
+// a regular file (a directory, FIFO or device).
 std::string read_file(const std::string& path);
 
 }  // namespace skein

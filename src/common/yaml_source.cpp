@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <map>
 #include <numeric>
 
 #include "common/error.hpp"
@@ -25,6 +26,17 @@ YamlSource::YamlSource(std::string file, const std::string& text) : file_(std::m
 void YamlSource::fail(const YAML::Mark& mark, const std::string& expected) const {
   std::size_t line = mark.line < 0 ? 0 : static_cast<std::size_t>(mark.line);
   throw ParseError(file_, line + 1, line < lines_.size() ? lines_[line] : "", expected);
+}
+
+void YamlSource::check_unique_keys(const YAML::Node& map) const {
+  std::map<std::string, int> first_line;
+  for (const auto& item : map) {
+    if (!item.first.IsScalar()) continue;  // the reader refuses a key that is not text
+    auto [at, fresh] = first_line.try_emplace(item.first.Scalar(), item.first.Mark().line + 1);
+    if (!fresh)
+      fail(item.first, fmt::format("'{}' is given twice (first on line {}); expected each key once",
+                                   item.first.Scalar(), at->second));
+  }
 }
 
 void YamlSource::unknown_field(const YAML::Node& key, std::string_view where,

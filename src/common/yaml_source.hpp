@@ -19,6 +19,9 @@ class YamlSource {
     fail(node.Mark(), expected);
   }
   // "unknown field 'KEY' in WHERE; did you mean 'NEAREST'? (known: A, B, ...)"
+  // YAML keeps the last of two equal keys and says nothing: the first would be ignored.
+  // Fails on the second, naming the line of the first. `map` must be a map.
+  void check_unique_keys(const YAML::Node& map) const;
   [[noreturn]] void unknown_field(const YAML::Node& key, std::string_view where,
                                   const std::vector<std::string_view>& known) const;
 

@@ -43,10 +43,14 @@ Compilation compile_model(const std::string& input, const StageObserver& observe
     return compile_knit_graph(
         timed(observe, "read stitch graph", [&] { return read_autoknit_st(input); }), input,
         observe);
-  if (is_project_file(input))
-    return compile_stitch_mesh(timed(observe, "label and generate",
-                                     [&] { return build_project(read_project(input)).mesh; }),
-                               input, observe);
+  if (is_project_file(input)) {
+    Project project = read_project(input);
+    Compilation c = compile_stitch_mesh(
+        timed(observe, "label and generate", [&] { return build_project(project).mesh; }), input,
+        observe);
+    c.gauge = project.yarn_gauge();
+    return c;
+  }
   return compile_stitch_mesh(
       timed(observe, "read stitch mesh", [&] { return read_stitch_mesh(input); }), input, observe);
 }

@@ -27,6 +27,7 @@
 #include "depgraph/dependency_graph.hpp"
 #include "knitgraph/knit_graph.hpp"
 #include "knitgraph/yarn_pieces.hpp"
+#include "labeling/project.hpp"
 #include "mesh/stitch_mesh.hpp"
 #include "schedule/schedule.hpp"
 #include "transforms/shift_paths.hpp"
@@ -42,6 +43,9 @@ struct Compilation {
   DependencyGraph deps;
   Knittability knittability;
   Schedule schedule;  // empty unless knittable
+  // The project's gauge, yarn and needle; absent for a stitch mesh or stitch graph file,
+  // which does not say what size a stitch is.
+  std::optional<YarnGauge> gauge;
 };
 
 // Called after each stage with its name and how long it took (for progress output).

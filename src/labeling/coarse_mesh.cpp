@@ -4,10 +4,12 @@
 #include <fmt/format.h>
 #include <tiny_obj_loader.h>
 
+#include <charconv>
 #include <cmath>
-#include <filesystem>
 #include <ostream>
+#include <string_view>
 
+#include "common/atomic_file.hpp"
 #include "common/error.hpp"
 
 namespace skein {
@@ -103,16 +105,56 @@ std::string trimmed(std::string s) {
   return s;
 }
 
+// tinyobjloader reads a coordinate it cannot parse as 0, so `v nan 0 0`, `v inf 0 0` or
+// `v x 0 0` would silently become the origin: every `v` line is checked here first.
+void check_vertex_lines(std::string_view text, const std::string& name) {
+  std::size_t line_no = 0;
+  for (std::size_t start = 0; start < text.size(); ++line_no) {
+    std::size_t end = std::min(text.find('\n', start), text.size());
+    std::string_view line = text.substr(start, end - start);
+    start = end + 1;
+    std::string_view rest = line.substr(std::min(line.size(), line.find_first_not_of(" \t")));
+    if (!rest.starts_with("v ") && !rest.starts_with("v\t")) continue;
+    rest.remove_prefix(2);
+    for (int axis = 0; axis < 3; ++axis) {
+      std::size_t from = rest.find_first_not_of(" \t\r");
+      std::size_t to = rest.find_first_of(" \t\r", from);
+      std::string_view word = from == std::string_view::npos ? "" : rest.substr(from, to - from);
+      double value = 0;
+      auto [used, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
+      if (word.empty() || ec != std::errc() || used != word.data() + word.size() ||
+          !std::isfinite(value) || std::abs(value) > kMaxCoordinate)
+        throw ParseError(name, line_no + 1, std::string(trimmed(std::string(line))),
+                         fmt::format("expected 3 coordinates (finite numbers of at most {:g} in "
+                                     "magnitude) after 'v', found '{}'",
+                                     kMaxCoordinate, word));
+      rest = to == std::string_view::npos ? "" : rest.substr(to);
+    }
+  }
+}
+
+// Two corners of a face at one point give the stitches between them no length: no gauge can
+// say how many there are.
+void check_edge_lengths(const CoarseMesh& mesh) {
+  for (CoarseHalfedge h : mesh.halfedges())
+    if (!(mesh.length(h) > 0))
+      throw MeshError(fmt::format(
+          "{}: {} of face {} has no length (vertices {} and {} are at {}); "
+          "expected the corners of a face at different points",
+          mesh.source, mesh.describe(h), mesh.face(h).index() + 1, mesh.tail(h).index() + 1,
+          mesh.head(h).index() + 1, format_point(mesh.at(mesh.tail(h)))));
+}
+
 }  // namespace
 
-CoarseMesh read_coarse_mesh(const std::string& path) {
-  if (!std::filesystem::exists(path)) throw IoError(fmt::format("cannot open {}", path));
+CoarseMesh parse_coarse_mesh(const std::string& text, const std::string& name) {
+  check_vertex_lines(text, name);
   tinyobj::ObjReaderConfig config;
   config.triangulate = false;
   config.vertex_color = false;
   tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(path, config))
-    throw Error(fmt::format("{}: {}", path,
+  if (!reader.ParseFromString(text, "", config))
+    throw Error(fmt::format("{}: {}", name,
                             reader.Error().empty() ? "cannot read" : trimmed(reader.Error())));
   const auto& v = reader.GetAttrib().vertices;
   std::vector<Vec3> positions;
@@ -131,12 +173,17 @@ CoarseMesh read_coarse_mesh(const std::string& path) {
     }
     names.push_back(shape.name);
   }
-  CoarseMesh mesh = build_coarse_mesh(path, std::move(positions), faces);
+  CoarseMesh mesh = build_coarse_mesh(name, std::move(positions), faces);
+  check_edge_lengths(mesh);
   if (!names.empty()) {
     mesh.groups = std::move(names);
     mesh.group = std::move(face_group);
   }
   return mesh;
+}
+
+CoarseMesh read_coarse_mesh(const std::string& path) {
+  return parse_coarse_mesh(read_file(path), path);
 }
 
 void write_coarse_mesh(const CoarseMesh& mesh, std::ostream& out) {

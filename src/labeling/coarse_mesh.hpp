@@ -69,7 +69,15 @@ class CoarseMesh {
 CoarseMesh build_coarse_mesh(std::string source, std::vector<Vec3> positions,
                              const std::vector<std::vector<std::uint32_t>>& faces);
 
-// Reads an OBJ file (v, f, g/o lines; everything else ignored). Throws IoError/ParseError.
+// Coordinates beyond this (in mesh units) are refused: far past any garment in any unit, and
+// small enough that lengths and sums of them stay finite in float.
+inline constexpr double kMaxCoordinate = 1e6;
+
+// Reads OBJ text (v, f, g/o lines; everything else ignored); `name` is used in messages.
+// Throws ParseError for a vertex that is not three finite coordinates (naming the line) and
+// MeshError for a face with two corners at one point.
+CoarseMesh parse_coarse_mesh(const std::string& text, const std::string& name);
+// The same from a file: IoError if it cannot be read or is not a regular file.
 CoarseMesh read_coarse_mesh(const std::string& path);
 
 // Writes the mesh as OBJ, with `g` lines for its groups (what `skein new` produces).

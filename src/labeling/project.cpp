@@ -4,12 +4,14 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <charconv>
 #include <filesystem>
 #include <optional>
 
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "common/yaml_source.hpp"
+#include "labeling/coarse_mesh.hpp"
 
 namespace skein {
 namespace {
@@ -19,6 +21,20 @@ using Names = std::vector<std::string_view>;
 constexpr std::pair<std::string_view, double> kUnitsPerCm[] = {
     {"mm", 10}, {"cm", 1}, {"m", 0.01}, {"in", 1 / 2.54}};
 constexpr std::string_view kPatterns[] = {"knit", "purl", "k1p1", "k2p2"};
+constexpr std::string_view kWeights[] = {"lace", "fingering", "sport",       "dk",   "worsted",
+                                         "aran", "bulky",     "super-bulky", "jumbo"};
+
+// The usual weight for a gauge (the Craft Yarn Council's ranges of stitches per 10 cm, where
+// two overlap the finer) and the usual needle for each weight.
+struct WeightDefault {
+  double from_sts;  // this weight from this many stitches per 10 cm (up to the finer one's)
+  YarnWeight weight;
+  double needle_mm;
+};
+constexpr WeightDefault kWeightDefaults[] = {
+    {33, YarnWeight::lace, 2},    {27, YarnWeight::fingering, 2.75}, {24, YarnWeight::sport, 3.5},
+    {21, YarnWeight::dk, 4},      {16, YarnWeight::worsted, 4.5},    {14, YarnWeight::aran, 5},
+    {12, YarnWeight::bulky, 6.5}, {7, YarnWeight::super_bulky, 10},  {0, YarnWeight::jumbo, 15}};
 
 // Reads YAML nodes and turns every problem into a ParseError on the node's line.
 class Reader : public YamlSource {
@@ -31,8 +47,9 @@ class Reader : public YamlSource {
   template <class Visit>
   void fields(const YAML::Node& map, const Names& known, std::string_view what, Visit visit) const {
     if (!map.IsMap()) fail(map, fmt::format("expected the fields of {} (key: value)", what));
+    check_unique_keys(map);
     for (const auto& item : map) {
-      std::string key = item.first.as<std::string>();
+      std::string key = text(item.first, "a field name");
       if (std::find(known.begin(), known.end(), key) == known.end())
         unknown_field(item.first, what, known);
       visit(key, item.second);
@@ -43,15 +60,15 @@ class Reader : public YamlSource {
     if (!node.IsScalar()) fail(node, fmt::format("expected {} (a single value)", what));
     return node.Scalar();
   }
-  double number(const YAML::Node& node, std::string_view what) const {
+  // A finite number in [low, high].
+  double number(const YAML::Node& node, std::string_view what, double low, double high) const {
     std::string s = text(node, what);
-    try {
-      std::size_t used = 0;
-      double v = std::stod(s, &used);
-      if (used == s.size() && v > 0) return v;
-    } catch (const std::exception&) {
-    }
-    fail(node, fmt::format("expected {} (a positive number), found '{}'", what, s));
+    double v = 0;
+    auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (!s.empty() && ec == std::errc() && end == s.data() + s.size() && v >= low && v <= high)
+      return v;
+    fail(node,
+         fmt::format("expected {} (a number from {:g} to {:g}), found '{}'", what, low, high, s));
   }
   std::uint32_t index(const YAML::Node& node, std::string_view what) const {
     std::string s = text(node, what);
@@ -88,18 +105,41 @@ StitchPattern read_pattern(const Reader& r, const YAML::Node& node) {
   return static_cast<StitchPattern>(r.choice(node, "stitch pattern", kPatterns));
 }
 
+// "4.5mm", "4.5 mm": a needle's diameter, the unit required.
+double read_needle(const Reader& r, const YAML::Node& node) {
+  std::string s = r.text(node, "a needle size");
+  std::size_t digits = s.find_first_not_of("0123456789.");
+  double mm = 0;
+  auto [end, ec] = std::from_chars(s.data(), s.data() + std::min(digits, s.size()), mm);
+  std::string_view unit = std::string_view(s).substr(std::min(digits, s.size()));
+  if (unit.starts_with(' ')) unit.remove_prefix(1);
+  if (ec == std::errc() && end == s.data() + std::min(digits, s.size()) && unit == "mm" &&
+      mm >= kMinNeedleMm && mm <= kMaxNeedleMm)
+    return mm;
+  r.fail(node, fmt::format("expected a needle size in mm from {:g} to {:g}, e.g. 4.5mm, found '{}'",
+                           kMinNeedleMm, kMaxNeedleMm, s));
+}
+
 void read_gauge(const Reader& r, const YAML::Node& node, Project& p) {
-  r.fields(node, {"stitches", "rows"}, "gauge", [&](const std::string& key, const YAML::Node& v) {
-    (key == "stitches" ? p.stitches_per_10cm : p.rows_per_10cm) =
-        r.number(v, key == "stitches" ? "stitches per 10 cm" : "rows per 10 cm");
-  });
+  r.fields(node, {"stitches", "rows", "yarn", "needle"}, "gauge",
+           [&](const std::string& key, const YAML::Node& v) {
+             if (key == "yarn")
+               p.yarn_weight = static_cast<YarnWeight>(r.choice(v, "yarn weight", kWeights));
+             else if (key == "needle")
+               p.needle_mm = read_needle(r, v);
+             else
+               (key == "stitches" ? p.stitches_per_10cm : p.rows_per_10cm) =
+                   r.number(v, key == "stitches" ? "stitches per 10 cm" : "rows per 10 cm",
+                            kMinGauge, kMaxGauge);
+           });
 }
 
 void read_stitch_size(const Reader& r, const YAML::Node& node, Project& p) {
-  r.fields(
-      node, {"width", "height"}, "stitch_size", [&](const std::string& key, const YAML::Node& v) {
-        (key == "width" ? p.stitch_width : p.stitch_height) = r.number(v, "a size in mesh units");
-      });
+  r.fields(node, {"width", "height"}, "stitch_size",
+           [&](const std::string& key, const YAML::Node& v) {
+             (key == "width" ? p.stitch_width : p.stitch_height) =
+                 r.number(v, "a size in mesh units", 1e-6, kMaxCoordinate);
+           });
   if (!p.stitch_width || !p.stitch_height) r.fail(node, "expected both width and height");
 }
 
@@ -221,8 +261,9 @@ void read_shift_paths(const Reader& r, const YAML::Node& node, Project& p) {
 
 void read_target(const Reader& r, const YAML::Node& node, Project& p) {
   if (!node.IsMap()) r.fail(node, "expected target options (key: value)");
+  r.check_unique_keys(node);
   for (const auto& item : node)
-    p.target[item.first.as<std::string>()] = r.text(item.second, "a target option value");
+    p.target[r.text(item.first, "a target option")] = r.text(item.second, "a target option value");
 }
 
 }  // namespace
@@ -239,6 +280,26 @@ double Project::stitch_height_in_units() const {
   auto it = std::find_if(std::begin(kUnitsPerCm), std::end(kUnitsPerCm),
                          [&](const auto& u) { return u.first == unit; });
   return 10.0 / rows_per_10cm * it->second;
+}
+
+YarnGauge Project::yarn_gauge() const {
+  auto per_cm = std::find_if(std::begin(kUnitsPerCm), std::end(kUnitsPerCm),
+                             [&](const auto& u) { return u.first == unit; });
+  YarnGauge g;
+  g.stitches_per_10cm = 10 * per_cm->second / stitch_width_in_units();
+  g.rows_per_10cm = 10 * per_cm->second / stitch_height_in_units();
+  const WeightDefault* usual =
+      std::find_if(std::begin(kWeightDefaults), std::end(kWeightDefaults) - 1,
+                   [&](const WeightDefault& d) { return g.stitches_per_10cm >= d.from_sts; });
+  g.weight = yarn_weight.value_or(usual->weight);
+  auto of_weight = std::find_if(std::begin(kWeightDefaults), std::end(kWeightDefaults),
+                                [&](const WeightDefault& d) { return d.weight == g.weight; });
+  g.needle_mm = needle_mm.value_or(yarn_weight ? of_weight->needle_mm : usual->needle_mm);
+  return g;
+}
+
+std::string_view yarn_weight_name(YarnWeight weight) {
+  return kWeights[static_cast<std::size_t>(weight)];
 }
 
 std::string_view pattern_name(StitchPattern pattern) {
@@ -283,8 +344,10 @@ Project parse_project(const std::string& text, const std::string& file) {
       p.pattern = read_pattern(r, v);
     } else if (key == "patterns") {
       if (!v.IsMap()) r.fail(v, "expected OBJ group names with a pattern each, e.g. cuff: k2p2");
+      r.check_unique_keys(v);
       for (const auto& item : v)
-        p.group_patterns[item.first.as<std::string>()] = read_pattern(r, item.second);
+        p.group_patterns[r.text(item.first, "an OBJ group name")] = {read_pattern(r, item.second),
+                                                                     r.line(item.first)};
     } else if (key == "short_rows") {
       read_short_rows(r, v, p);
     } else if (key == "mismatches") {

@@ -46,6 +46,37 @@ struct YarnMark {
   std::optional<std::uint32_t> face;  // with `own`: whose yarn (0-based; default: labelled first)
 };
 
+struct GroupPattern {
+  StitchPattern pattern = StitchPattern::knit;
+  int line = 0;  // where the file names the group, for messages
+};
+
+// Yarn weights as the Craft Yarn Council names them, finest first.
+enum class YarnWeight : std::uint8_t {
+  lace,
+  fingering,
+  sport,
+  dk,
+  worsted,
+  aran,
+  bulky,
+  super_bulky,
+  jumbo
+};
+
+// What a knitter matches with a swatch: stitches and rows per 10 cm in stockinette, with this
+// yarn on this needle. The hand target's gauge, measurements, yarn amounts and needles.
+struct YarnGauge {
+  double stitches_per_10cm = 20;
+  double rows_per_10cm = 28;
+  YarnWeight weight = YarnWeight::worsted;
+  double needle_mm = 4.5;
+};
+
+// Limits the project reader enforces (docs/formats.md, "Limits").
+inline constexpr double kMinGauge = 1, kMaxGauge = 100;  // stitches or rows per 10 cm
+inline constexpr double kMinNeedleMm = 1, kMaxNeedleMm = 30;
+
 struct Project {
   std::string file;  // the project file, for messages
   std::string mesh;  // path of the coarse OBJ (resolved against the project file's folder)
@@ -58,10 +89,15 @@ struct Project {
   std::optional<double> stitch_width, stitch_height;  // mesh units
   double stitch_width_in_units() const;
   double stitch_height_in_units() const;
+  std::optional<YarnWeight> yarn_weight;  // default: the usual weight for the gauge
+  std::optional<double> needle_mm;        // default: the weight's usual needle
+  // The gauge in stitches and rows per 10 cm (from stitch_size too), with the yarn and needle
+  // given or the defaults for that gauge.
+  YarnGauge yarn_gauge() const;
 
   std::vector<StartSeed> start;  // empty: the lowest boundary loop (as `auto`)
   StitchPattern pattern = StitchPattern::knit;
-  std::map<std::string, StitchPattern> group_patterns;  // OBJ group name -> pattern
+  std::map<std::string, GroupPattern> group_patterns;  // OBJ group name -> pattern
   ShortRowMethod short_row_method = ShortRowMethod::sr4;
   std::vector<ShortRowFaceMark> short_row_faces;
   std::vector<CoarseEdgeRef> mismatch_edges;  // rows stop here (perpendicular mismatches)
@@ -86,5 +122,6 @@ bool is_project_file(const std::string& path);  // .yaml or .yml
 std::string project_target_option(const std::string& path, const std::string& key);
 
 std::string_view pattern_name(StitchPattern pattern);
+std::string_view yarn_weight_name(YarnWeight weight);  // "worsted", "super-bulky"
 
 }  // namespace skein

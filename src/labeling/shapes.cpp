@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -18,6 +19,12 @@ namespace {
 
 constexpr std::uint32_t kSides = 8;  // coarse faces around a body tube
 constexpr double kPi = std::numbers::pi;
+
+// The radius of the kSides-gon whose perimeter is `circumference`: the fabric runs along the
+// polygon's edges, not the circle, so a circle's radius would knit it 2.6% too small.
+double radius_for(double circumference) {
+  return circumference / (2 * kSides * std::sin(kPi / kSides));
+}
 
 constexpr Vec3 kUp{0, 1, 0};
 
@@ -72,7 +79,7 @@ Shape straight_tube(const ShapeSize& s, const std::string& name) {
   std::vector<double> heights, radii;
   for (std::uint32_t i = 0; i <= n; ++i) {
     heights.push_back(l * i / n);
-    radii.push_back(c / (2 * kPi));
+    radii.push_back(radius_for(c));
   }
   CoarseDraft d;
   tube(d, heights, radii, "body");
@@ -82,7 +89,7 @@ Shape straight_tube(const ShapeSize& s, const std::string& name) {
 
 Shape hat(const ShapeSize& s, const std::string& name) {
   double c = s.circumference > 0 ? s.circumference : 54, l = s.length > 0 ? s.length : 21;
-  double r = c / (2 * kPi), body = l * 0.6, rib = std::min(4.0, body / 2);  // a shallow hat too
+  double r = radius_for(c), body = l * 0.6, rib = std::min(4.0, body / 2);  // a shallow hat too
   std::vector<double> heights{0, rib}, radii{r, r};
   for (double h = rib + 5; h < body; h += 5) heights.push_back(h), radii.push_back(r);
   const double crown[] = {0.85, 0.6, 0.35, 0.15};  // crown rings, fractions of the radius
@@ -106,7 +113,7 @@ Shape hat(const ShapeSize& s, const std::string& name) {
 // where the height changes are short-row quads. The foot and toe follow the turned axis.
 Shape sock(const ShapeSize& s, const std::string& name) {
   double c = s.circumference > 0 ? s.circumference : 20, leg = s.length > 0 ? s.length : 15;
-  double r = c / (2 * kPi), band = 1.5, foot = c;
+  double r = radius_for(c), band = 1.5, foot = c;
   double sin_a = std::min(0.95, 0.3 * c / (2 * r)), cos_a = std::sqrt(1 - sin_a * sin_a);
   CoarseDraft d;
   const double cuff = std::min(3.0, leg / 2);  // a short leg still rises above its cuff
@@ -154,7 +161,7 @@ Shape sock(const ShapeSize& s, const std::string& name) {
 // paper's sweater: three yarn pieces). Each armpit stays open, bound off on both sides.
 Shape sweater(const ShapeSize& s, const std::string& name) {
   double c = s.circumference > 0 ? s.circumference : 90, body = s.length > 0 ? s.length : 36;
-  double r = c / (2 * kPi), sleeve_r = r * 0.35, sleeve = 40, yoke = 18, dip = sleeve_r * 0.5;
+  double r = radius_for(c), sleeve_r = r * 0.35, sleeve = 40, yoke = 18, dip = sleeve_r * 0.5;
   CoarseDraft d;
   const double hem = std::min(5.0, body / 2);  // a short body still rises above its hem
   std::vector<std::uint32_t> bottom = d.ring(0, r), below = d.ring(hem, r);
@@ -245,7 +252,7 @@ struct LimbRings {
 // decreases to a small ring.
 Shape mitten(const ShapeSize& s, const std::string& name) {
   double c = s.circumference > 0 ? s.circumference : 20, l = s.length > 0 ? s.length : 26;
-  double r = c / (2 * kPi), cuff = std::min(5.0, l * 0.2), base = std::max(cuff + 1, l * 0.42);
+  double r = radius_for(c), cuff = std::min(5.0, l * 0.2), base = std::max(cuff + 1, l * 0.42);
   double thumb_r = r * 0.45, thumb = std::max(2.0, l * 0.22), top = std::max(2.0, l * 0.16);
   CoarseDraft d;
   Ring bottom = d.ring(0, r), below = d.ring(cuff, r);
@@ -278,7 +285,7 @@ Shape mitten(const ShapeSize& s, const std::string& name) {
 Shape legs(const ShapeSize& s, const std::string& name, double default_leg, bool from_waist) {
   double c = s.circumference > 0 ? s.circumference : 90;
   double leg = s.length > 0 ? s.length : default_leg;
-  double r = c / (2 * kPi), rise = std::max(6.0, c * 0.28), band = std::min(4.0, rise / 3);
+  double r = radius_for(c), rise = std::max(6.0, c * 0.28), band = std::min(4.0, rise / 3);
   CoarseDraft d;
   Ring crotch = d.ring(0, r), below = d.ring(rise - band, r), waist = d.ring(rise, r);
   d.band(crotch, below, {0, 0, 0}, kUp, "body");
@@ -330,21 +337,17 @@ Shape make_shape(const std::string& kind, const ShapeSize& size, const std::stri
 double parse_length_cm(const std::string& text) {
   constexpr std::pair<std::string_view, double> kUnits[] = {
       {"mm", 0.1}, {"cm", 1}, {"in", 2.54}, {"m", 100}};
-  std::size_t used = 0;
   double value = 0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  std::string_view unit = std::string_view(text).substr(used);
+  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  std::string_view unit(end, text.data() + text.size());
   for (auto [name, cm] : kUnits)
-    if (used > 0 && value > 0 && (unit == name || unit.empty()))
-      return value * (unit.empty() ? 1 : cm);
-  throw UsageError(
-      fmt::format("'{}' is not a length; expected a positive number with mm, cm, m "
-                  "or in, e.g. 40cm",
-                  text));
+    if (ec == std::errc() && unit == name && value * cm >= kMinLengthCm &&
+        value * cm <= kMaxLengthCm)
+      return value * cm;
+  throw UsageError(fmt::format(
+      "'{}' is not a length skein can knit; expected a number with its unit (mm, cm, m or in) "
+      "from {:g} cm to {:g} m, e.g. 40cm",
+      text, kMinLengthCm, kMaxLengthCm / 100));
 }
 
 std::string write_shape(const Shape& shape, const std::string& path_without_extension) {

@@ -26,7 +26,11 @@ struct Shape {
 Shape make_shape(const std::string& kind, const ShapeSize& size, const std::string& name);
 std::vector<std::string> shape_kinds();
 
-// "40cm", "40", "400mm", "15.7in" -> centimetres; throws UsageError otherwise.
+// Lengths `skein new` accepts (docs/formats.md, "Limits").
+inline constexpr double kMinLengthCm = 1, kMaxLengthCm = 1000;
+
+// "40cm", "400mm", "15.7in", "1.2m" -> centimetres; throws UsageError for a length without
+// its unit, not finite or outside [kMinLengthCm, kMaxLengthCm].
 double parse_length_cm(const std::string& text);
 
 // Writes NAME.obj and NAME.yaml beside each other (atomically); returns the project's path.

@@ -1,6 +1,7 @@
 #include "labeling/stitch_generation.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +10,7 @@
 #include <set>
 
 #include "common/error.hpp"
+#include "common/yaml_source.hpp"
 #include "labeling/yarn_plan.hpp"
 
 namespace skein {
@@ -148,18 +150,21 @@ class Generator {
     }
     count_.assign(n, 0);
     for (CoarseHalfedge h : m_.halfedges()) {
-      std::uint32_t g = groups.find(h.index());
-      count_[h.index()] =
-          std::max<std::uint32_t>(1, static_cast<std::uint32_t>(std::lround(sum[g] / weight[g])));
+      std::uint32_t g = groups.find(m_.canonical(h).index());
+      double count = std::round(sum[g] / weight[g]);
+      if (!(count <= kMaxCountPerEdge)) too_many(h, count);
+      count_[h.index()] = std::max<std::uint32_t>(1, static_cast<std::uint32_t>(count));
     }
     auto group_count = [&](CoarseHalfedge h) -> std::uint32_t& {
       return count_[groups.find(m_.canonical(h).index())];
     };
-    // Minimums, raised until they all hold (each only grows, so this settles).
+    // Minimums, raised until they all hold. Each count only grows and is refused beyond
+    // kMaxCountPerEdge, so this settles: the first pass that raises none ends it.
     for (bool changed = true; changed;) {
       changed = false;
       auto at_least = [&](CoarseHalfedge h, std::uint32_t minimum) {
         if (group_count(h) < minimum) {
+          if (minimum > kMaxCountPerEdge) too_many(h, minimum);
           group_count(h) = minimum;
           changed = true;
         }
@@ -170,6 +175,12 @@ class Generator {
           CoarseHalfedge narrow =
               side(f, L_.wide_side[f.index()] == CoarseRole::left ? CoarseRole::right
                                                                   : CoarseRole::left);
+          if (narrow.valid() &&
+              groups.find(m_.canonical(narrow).index()) == groups.find(m_.canonical(wide).index()))
+            fail(f,
+                 "a short-row face's wide side needs more rows than its narrow side, but the "
+                 "quads of its row join the two (a quad's sides have the same rows); mark a "
+                 "second short-row face in this row, or none");
           std::uint32_t base = narrow.valid() ? group_count(narrow) : 0;
           std::uint32_t w = std::max(group_count(wide), base + 2);
           at_least(wide, w + (w - base) % 2);
@@ -179,6 +190,34 @@ class Generator {
       }
     }
     for (CoarseHalfedge h : m_.halfedges()) count_[h.index()] = group_count(h);
+    check_total();
+  }
+
+  [[noreturn]] void too_many(CoarseHalfedge h, double count) const {
+    throw Error(fmt::format(
+        "{}: {} of face {} would have {:.0f} {}; at most {} are allowed per coarse edge (is the "
+        "gauge or the unit right? docs/formats.md, \"Limits\")",
+        m_.source, m_.describe(h), m_.face(h).index() + 1, count,
+        is_side(L_[h]) ? "rows" : "stitches", kMaxCountPerEdge));
+  }
+
+  // The stitches the counts make, refused beyond kMaxStitches before any is made.
+  void check_total() const {
+    double total = 0;
+    for (CoarseFace f : m_.faces()) {
+      double rows = 0, width = 0;
+      for (CoarseHalfedge h : m_.halfedges(f)) {
+        double& extent = is_side(L_[h]) ? rows : width;
+        extent = std::max<double>(extent, count_[h.index()]);
+      }
+      total += rows * width;
+    }
+    if (total > kMaxStitches)
+      throw Error(
+          fmt::format("{}: the stitch mesh would have about {:.0f} stitches; at most {} "
+                      "are allowed (is the gauge or the unit right? docs/formats.md, "
+                      "\"Limits\")",
+                      m_.source, total, kMaxStitches));
   }
 
   // Cast-on and bind-off rows keep their width; the rows between must reach the top width
@@ -506,7 +545,7 @@ class Generator {
 
   StitchPattern pattern(CoarseFace f) const {
     auto it = p_.group_patterns.find(m_.groups[m_.group[f.index()]]);
-    return it == p_.group_patterns.end() ? p_.pattern : it->second;
+    return it == p_.group_patterns.end() ? p_.pattern : it->second.pattern;
   }
   static bool purl_at(StitchPattern pattern, std::uint32_t column) {
     switch (pattern) {
@@ -729,8 +768,28 @@ class Generator {
 
 }  // namespace
 
+namespace {
+
+// A pattern for a group the mesh does not have would knit nothing: a misspelt name.
+void check_group_names(const CoarseMesh& coarse, const Project& project) {
+  std::vector<std::string_view> known;
+  for (const std::string& g : coarse.groups)
+    if (!g.empty()) known.push_back(g);
+  for (const auto& [name, group] : project.group_patterns)
+    if (std::find(known.begin(), known.end(), name) == known.end())
+      throw Error(fmt::format(
+          "{}:{}: 'patterns' names the group '{}', but {} has {}", project.file, group.line, name,
+          coarse.source,
+          known.empty() ? std::string("no groups ('g' or 'o' lines)")
+                        : fmt::format("no such group; did you mean '{}'? (groups: {})",
+                                      nearest_name(name, known), fmt::join(known, ", "))));
+}
+
+}  // namespace
+
 GeneratedStitchMesh generate_stitch_mesh(const CoarseMesh& coarse, const Labeling& labeling,
                                          const Project& project) {
+  check_group_names(coarse, project);
   return Generator(coarse, labeling, project).run();
 }
 

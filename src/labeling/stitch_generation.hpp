@@ -27,6 +27,11 @@
 
 namespace skein {
 
+// Limits on what a coarse mesh and gauge may ask for (docs/formats.md, "Limits"): stitches or
+// rows along one coarse edge, and stitches in all.
+inline constexpr std::uint32_t kMaxCountPerEdge = 100'000;
+inline constexpr std::uint32_t kMaxStitches = 20'000'000;
+
 struct GeneratedStitchMesh {
   StitchMesh mesh;
   std::vector<std::uint32_t> coarse_face;  // per stitch face: the coarse face it came from

@@ -41,6 +41,13 @@ TurnMethod turn_method_of(const TargetOptions& options) {
   return wrapped ? TurnMethod::wrap_and_turn : TurnMethod::german;
 }
 
+// The project's gauge, yarn and needle; a stitch mesh or stitch graph does not say them.
+Gauge gauge_of(const Compilation& c) {
+  if (!c.gauge) return {};
+  return {c.gauge->stitches_per_10cm, c.gauge->rows_per_10cm,
+          std::string(yarn_weight_name(c.gauge->weight)), c.gauge->needle_mm, false};
+}
+
 Rounds rounds_of(const TargetOptions& options) {
   auto set = options.settings.find("rounds");
   bool inside_out = set != options.settings.end() && set->second == "inside-out";
@@ -64,8 +71,7 @@ class HandTarget : public Target {
   }
   void emit(const Compilation& c, const TargetOptions& options, std::ostream& out) const override {
     HandPattern pattern = build_hand_pattern(c, turn_method_of(options), rounds_of(options));
-    Gauge gauge;
-    PatternDocument doc = make_document(pattern, dialect_of(options), gauge);
+    PatternDocument doc = make_document(pattern, dialect_of(options), gauge_of(c));
     // `--target hand --dialect knitspeak` writes what hand-knitspeak writes; the page stays a
     // page, with its rows in KnitSpeak.
     bool rows_only = f_.format == Format::markdown && options.dialect == "knitspeak";

@@ -1082,7 +1082,18 @@ class NeedleSimulator {
     for (std::uint32_t i = begin; i < end; ++i) run_node(p, p.nodes[i]);
   }
 
+  // Every instruction and st worked counts against kMaxPatternWork, so that repeats inside
+  // repeats cannot run for minutes: each loop below works at least one of them per turn.
+  void count_work() {
+    if (++work_ > kMaxPatternWork)
+      fail(
+          fmt::format("the pattern works more than {} sts and instructions, skein's limit "
+                      "(docs/formats.md, \"Limits\")",
+                      kMaxPatternWork));
+  }
+
   void run_node(const Program& p, const Node& n) {
+    count_work();
     if (n.until.kind == Until::Kind::marker || n.until.kind == Until::Kind::before_marker)
       look_round_for_marker();
     switch (n.kind) {
@@ -1182,6 +1193,7 @@ class NeedleSimulator {
   }
 
   void apply(HandOp op) {
+    count_work();
     if (row_ended_)
       fail(fmt::format("{} after the turn: the row ends where the work turns",
                        info(op).abbreviation));
@@ -1585,6 +1597,7 @@ class NeedleSimulator {
   std::vector<std::uint32_t> to_marker_;
   std::vector<std::uint8_t> marker_ahead_;
   std::uint32_t left_loops_ = 0;
+  std::uint64_t work_ = 0;  // instructions and sts worked, for kMaxPatternWork
   std::uint32_t markers_ = 0;
 
   // The row being worked.

@@ -64,6 +64,11 @@ struct Replay {
   std::uint32_t counts_checked = 0;    // printed stitch counts compared
 };
 
+// The simulator stops a pattern that works more sts and instructions than this (its failure
+// names the line): 10 times the largest garment skein is measured on (1M sts), and what keeps
+// the fabric it builds under a gigabyte.
+inline constexpr std::uint64_t kMaxPatternWork = 10'000'000;
+
 Replay replay(const Script& script, const std::string& file);
 
 }  // namespace skein::hand

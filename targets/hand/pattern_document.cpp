@@ -681,10 +681,10 @@ class FrontMatter {
       if (s.resumed) continue;
       double metres = std::ceil(stitches[s.piece] * gauge_.yarn_cm_per_stitch() / 100 + 0.4);
       items.push_back(fmt::format(
-          "{}About {:.0f} m ({:.0f} yd) of worsted-weight yarn, estimated from its {} sts at the "
+          "{}About {:.0f} m ({:.0f} yd) of {}-weight yarn, estimated from its {} sts at the "
           "gauge below, with 20 cm tails at each end.",
           p_.sections.size() > 1 ? fmt::format("Piece {} (yarn {}): ", s.piece, s.yarn + 1) : "",
-          metres, std::ceil(metres / 0.9144), with_commas(stitches[s.piece])));
+          metres, std::ceil(metres / 0.9144), weight_text(), with_commas(stitches[s.piece])));
     }
     return items;
   }
@@ -692,20 +692,19 @@ class FrontMatter {
   std::vector<std::string> needles() const {
     std::vector<std::string> items;
     if (t_.flat)
-      items.push_back(
-          "4.5 mm (US 7) needles: straight, or a circular needle worked back and forth.");
+      items.push_back(needle_text() +
+                      " needles: straight, or a circular needle worked back and forth.");
     if (t_.round) {
       auto fits = static_cast<std::uint32_t>(kCircularNeedleCm * gauge_.sts_per_10cm / 10);
       if (t_.widest >= fits)
         items.push_back(
-            fmt::format("4.5 mm (US 7) circular needle, 40 cm (16 in) long, for rounds "
-                        "of {} sts or more.",
-                        fits));
+            fmt::format("{} circular needle, 40 cm (16 in) long, for rounds of {} sts or more.",
+                        needle_text(), fits));
       if (t_.narrowest_round < fits)
         items.push_back(
-            fmt::format("4.5 mm (US 7) double-pointed needles, or a long circular "
-                        "needle for magic loop, for rounds of fewer than {} sts.",
-                        fits));
+            fmt::format("{} double-pointed needles, or a long circular needle for magic loop, "
+                        "for rounds of fewer than {} sts.",
+                        needle_text(), fits));
     }
     if (p_.markers == 1)
       items.push_back(t_.round ? "1 stitch marker for the beginning of the round."
@@ -726,11 +725,42 @@ class FrontMatter {
   }
 
   std::string gauge_text() const {
+    std::string gauge = fmt::format(
+        "{} sts and {} rows = 10 cm (4 in) in stockinette stitch with {}-weight yarn on {} needles",
+        decimal(gauge_.sts_per_10cm), decimal(gauge_.rows_per_10cm), weight_text(), needle_text());
     return fmt::format(
-        "{:.0f} sts and {:.0f} rows = 10 cm (4 in) in stockinette stitch. The model does not say "
-        "which yarn you use: the measurements and yarn amounts assume this gauge (worsted weight "
-        "on 4.5 mm needles). Knit a swatch and change needle size to match it.",
-        gauge_.sts_per_10cm, gauge_.rows_per_10cm);
+        "{}{}. Knit a swatch and change needle size to match it.", gauge,
+        gauge_.assumed ? ". The model does not say its gauge: the measurements and yarn amounts "
+                         "assume this one, skein's default"
+                       : ", the project's gauge: the measurements and yarn amounts assume it");
+  }
+
+  // "4.5 mm (US 7)": the US size where the metric size is a standard one.
+  std::string needle_text() const {
+    constexpr std::pair<double, const char*> kUsSizes[] = {
+        {2, "0"},   {2.25, "1"},   {2.75, "2"}, {3.25, "3"}, {3.5, "4"},    {3.75, "5"}, {4, "6"},
+        {4.5, "7"}, {5, "8"},      {5.5, "9"},  {6, "10"},   {6.5, "10.5"}, {8, "11"},   {9, "13"},
+        {10, "15"}, {12.75, "17"}, {15, "19"},  {19, "35"},  {25, "50"}};
+    for (auto [mm, us] : kUsSizes)
+      if (std::abs(gauge_.needle_mm - mm) < 0.01)
+        return fmt::format("{} mm (US {})", decimal(mm), us);
+    return fmt::format("{} mm", decimal(gauge_.needle_mm));
+  }
+
+  // "DK", "super bulky": as a yarn label writes the weight.
+  std::string weight_text() const {
+    if (gauge_.yarn_weight == "dk") return "DK";
+    std::string text = gauge_.yarn_weight;
+    std::replace(text.begin(), text.end(), '-', ' ');
+    return text;
+  }
+
+  // 22 -> "22", 22.5 -> "22.5", 2.75 -> "2.75": to a hundredth, no trailing zeros.
+  static std::string decimal(double value) {
+    std::string text = fmt::format("{:.2f}", value);
+    while (text.back() == '0') text.pop_back();
+    if (text.back() == '.') text.pop_back();
+    return text;
   }
 
   bool uses(HandOp op) const { return t_.used[static_cast<std::size_t>(op)]; }

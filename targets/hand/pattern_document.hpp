@@ -13,10 +13,15 @@
 
 namespace skein::hand {
 
-// The gauge every measurement and yarn amount assumes (the model does not say).
+// The gauge every measurement, yarn amount and needle assumes: the project's, or for a model
+// that does not say (a stitch mesh or stitch graph file) worsted at 20 sts and 28 rows on
+// 4.5 mm needles, which the pattern says is assumed.
 struct Gauge {
   double sts_per_10cm = 20;
   double rows_per_10cm = 28;
+  std::string yarn_weight = "worsted";  // the Craft Yarn Council's name: "dk", "super-bulky"
+  double needle_mm = 4.5;
+  bool assumed = true;  // the model does not say
   // Yarn per stitch from Munden's relation for relaxed plain knitting: stitches per cm² =
   // 19 / (loop length in cm)², plus 10% for tension and joins.
   double yarn_cm_per_stitch() const;

@@ -178,8 +178,22 @@ class SentenceReader {
 
   void add(Step step) { script_.steps.push_back(step); }
 
+  // A number, refused beyond kMaxPatternNumber: no garment needs more sts, rows or repeats,
+  // and a simulator working them would run for minutes.
+  std::optional<std::uint32_t> number(Cursor& c) {
+    std::optional<std::uint32_t> n = c.number();
+    if (n && *n > kMaxPatternNumber) too_big(*n);
+    return n;
+  }
+  [[noreturn]] void too_big(std::uint64_t n) const {
+    throw ParseError(file_, line_no_, std::string(line_),
+                     fmt::format("expected a number of at most {} (docs/formats.md, \"Limits\"), "
+                                 "found {}",
+                                 kMaxPatternNumber, n));
+  }
+
   std::uint32_t need_number(Cursor& c, const char* what) {
-    if (auto n = c.number()) return *n;
+    if (auto n = number(c)) return *n;
     fail(fmt::format("expected {}", what), c.rest());
   }
 
@@ -688,10 +702,18 @@ class SentenceReader {
     }
   }
 
+  // Groups nest by recursion: the depth is bounded so that no row can exhaust the stack.
   Node item(Cursor& c, Program& p) {
-    if (c.eat_char('*')) return star(c, p);
-    if (c.eat_char('[')) return bracket(c, p);
-    return operation(c);
+    if (c.peek() != '*' && c.peek() != '[') return operation(c);
+    if (++depth_ > kMaxPatternNesting)
+      fail(fmt::format("expected repeats nested at most {} deep (docs/formats.md, \"Limits\")",
+                       kMaxPatternNesting),
+           c.rest().substr(0, 40));
+    bool starred = c.eat_char('*');
+    if (!starred) c.eat_char('[');
+    Node g = starred ? star(c, p) : bracket(c, p);
+    --depth_;
+    return g;
   }
 
   Node group(std::vector<Node> body, Program& p, Cursor& c) {
@@ -711,7 +733,7 @@ class SentenceReader {
     need(c.eat_any({"rep", "repeat"}) && c.eat("from") && c.eat_char('*'), c, "'; rep from *'");
     if (c.eat("to")) {
       g.until = until(c);
-    } else if (auto n = c.number()) {
+    } else if (auto n = number(c)) {
       need(c.eat("more"), c, "'more times' after the number");
       c.eat_any({"times", "time"});
       g.times = *n + 1;
@@ -725,7 +747,7 @@ class SentenceReader {
   Node bracket(Cursor& c, Program& p) {
     Node g = group(items(c, p), p, c);
     need(c.eat_char(']'), c, "']' closing the repeat");
-    std::optional<std::uint32_t> n = c.number();
+    std::optional<std::uint32_t> n = number(c);
     if (!n) fail("expected how many times after ']'", c.rest());
     c.eat_any({"times", "time"});
     g.times = *n;
@@ -741,9 +763,9 @@ class SentenceReader {
       u.kind = Until::Kind::marker;
     } else if (c.eat("last")) {
       u.kind = Until::Kind::last;
-      u.sts = c.number().value_or(1);
+      u.sts = number(c).value_or(1);
       need(c.eat_any({"sts", "st"}), c, "'sts' in 'to last N sts'");
-    } else if (auto n = c.number()) {
+    } else if (auto n = number(c)) {
       u.kind = Until::Kind::before_marker;
       u.sts = *n;
       need(c.eat_any({"sts", "st"}) && c.eat("before") && c.eat("m"), c, "'N sts before m'");
@@ -800,6 +822,7 @@ class SentenceReader {
       std::uint32_t count = 0;
       auto [end, ec] = std::from_chars(w.data() + 1, w.data() + w.size(), count);
       if (ec == std::errc() && end == w.data() + w.size()) {
+        if (count > kMaxPatternNumber) too_big(count);
         n.op = lower(w[0]) == 'k' ? HandOp::k : HandOp::p;
         n.times = count;
         return n;
@@ -848,6 +871,7 @@ class SentenceReader {
   const std::string& file_;
   std::size_t line_no_;
   std::string_view line_;
+  std::uint32_t depth_ = 0;  // groups open around the item being read
 };
 
 // The part of the text a knitter follows: under "## Instructions" up to the next "## "

@@ -107,7 +107,13 @@ struct Script {
   std::vector<Program> programs;
 };
 
-// Throws ParseError (file, line, the line quoted, what was expected) for text it cannot read.
+// Limits (docs/formats.md, "Limits"): any number in a pattern (sts, rows, repeats), and how
+// deep repeats nest in one row.
+inline constexpr std::uint32_t kMaxPatternNumber = 1'000'000;
+inline constexpr std::uint32_t kMaxPatternNesting = 32;
+
+// Throws ParseError (file, line, the line quoted, what was expected) for text it cannot read,
+// or that passes a limit.
 Script read_pattern(std::string_view text, const std::string& file);
 
 // The text of an HTML page a knitter sees, line for line (tags removed, entities decoded,

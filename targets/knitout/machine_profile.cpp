@@ -38,8 +38,9 @@ class ProfileReader : public YamlSource {
     if (!map.IsMap())
       fail(map.Mark(),
            fmt::format("expected {} to be a map of fields", where.empty() ? "the profile" : where));
+    check_unique_keys(map);
     for (const auto& entry : map) {
-      std::string key = entry.first.as<std::string>();
+      std::string key = text(entry.first, "a field name");
       auto it =
           std::find_if(fields.begin(), fields.end(), [&](const Field& f) { return key == f.name; });
       if (it == fields.end()) {
