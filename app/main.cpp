@@ -139,9 +139,13 @@ std::map<std::string, std::string> settings_for(const Target& target, const std:
   return settings;
 }
 
-int run_check(const std::string& input, bool verbose) {
+int run_check(const std::string& input, bool verbose, bool program) {
   Compilation c = compile_model(input, progress_printer(verbose));
   std::cout << check_report(c);
+  if (program && c.knittability.knittable) {
+    std::cout << program_text(c.knit, c.program) << std::flush;
+    verify_program(c.knit, c.program);
+  }
   return c.knittability.knittable ? kKnittable : kNotKnittable;
 }
 
@@ -226,6 +230,8 @@ int main(int argc, char** argv) {
       app.add_subcommand("check", "validate INPUT and report knittability, rows, yarn pieces");
   check->add_option("INPUT", input, "stitch mesh (.obj) or AutoKnit stitch graph (.st)")
       ->required();
+  bool program = false;
+  check->add_flag("--program", program, "verify and print the live-loop program, a step a line");
 
   auto* compile = app.add_subcommand("compile", "compile INPUT for a target and write OUT");
   compile->add_option("INPUT", input, "stitch mesh (.obj) or AutoKnit stitch graph (.st)")
@@ -277,7 +283,7 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (*check) return run_check(input, verbose);
+    if (*check) return run_check(input, verbose, program);
     if (*new_cmd) return run_new(shape_kind, circumference, width, length, output);
     if (*render) return render_file(input, output, coarse), kKnittable;
     if (*generate) return write_generated_stitch_mesh(input, output), kKnittable;

@@ -14,6 +14,7 @@
 //   build_dependency_graph  depgraph             KnitGraph        -> DependencyGraph (§4.1)
 //   check_knittability      depgraph             DependencyGraph  -> Knittability (cycle)
 //   schedule_stitches       schedule             all of the above -> Schedule (Algorithm 1)
+//   lower_to_program        lowering             KnitGraph + Schedule -> Program (live loops)
 //   Target::emit            targets/<name>       Compilation      -> output file
 //   Simulator::verify       targets/<name>       output file      -> VerifyReport
 #pragma once
@@ -27,6 +28,7 @@
 #include "depgraph/dependency_graph.hpp"
 #include "knitgraph/knit_graph.hpp"
 #include "knitgraph/yarn_pieces.hpp"
+#include "lowering/program.hpp"
 #include "mesh/stitch_mesh.hpp"
 #include "schedule/schedule.hpp"
 #include "transforms/shift_paths.hpp"
@@ -42,6 +44,7 @@ struct Compilation {
   DependencyGraph deps;
   Knittability knittability;
   Schedule schedule;  // empty unless knittable
+  Program program;    // the live-loop program; empty unless knittable
 };
 
 // Called after each stage with its name and how long it took (for progress output).
