@@ -156,6 +156,10 @@ std::pair<std::filesystem::path, std::filesystem::path> new_project_paths(const 
 int run_check(const Request& r) {
   Compilation c = compile_model(r.input, progress_printer(r.verbose));
   std::cout << check_report(c);
+  if (r.program && c.knittability.knittable) {
+    std::cout << program_text(c.knit, c.program) << std::flush;
+    verify_program(c.knit, c.program);
+  }
   return c.knittability.knittable ? kDone : kNotKnittable;
 }
 

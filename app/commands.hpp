@@ -21,6 +21,7 @@ struct Request {
   bool force = false;  // replace an existing output file
   bool verbose = false;
   bool coarse = false;  // render: the labelled coarse mesh
+  bool program = false;  // check: print and verify the live-loop program
   std::string shape;    // new: KIND
   std::string circumference, width, length;
 };

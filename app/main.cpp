@@ -54,6 +54,7 @@ int main(int argc, char** argv) {
       app.add_subcommand("check", "validate INPUT and report knittability, rows, yarn pieces");
   check->add_option("INPUT", r.input, "stitch mesh (.obj), project (.yaml) or AutoKnit .st")
       ->required();
+  check->add_flag("--program", r.program, "verify and print the live-loop program, a step a line");
 
   auto* compile = app.add_subcommand("compile", "compile INPUT for a target and write OUT");
   compile->add_option("INPUT", r.input, "stitch mesh (.obj), project (.yaml) or AutoKnit .st")

@@ -262,6 +262,11 @@ void bench_schedule(benchmark::State& state, const Workload& w) {
   time_each(state, [&] { return schedule_stitches(c.knit, c.deps, c.yarns); });
 }
 
+void bench_lowering(benchmark::State& state, const Workload& w) {
+  const Compilation& c = w.compiled;
+  time_each(state, [&] { return lower_to_program(c.knit, c.yarns, c.schedule); });
+}
+
 void bench_compile(benchmark::State& state, const Workload& w) {
   time_each(state, [&] { return compile_model(w.path); });
 }
@@ -286,6 +291,7 @@ constexpr Stage kStages[] = {
     {"dependency_graph", bench_dependency_graph, false, false},
     {"knittability", bench_knittability, false, false},
     {"schedule", bench_schedule, false, false},
+    {"lowering", bench_lowering, false, false},
     {"compile", bench_compile, false, true},
 };
 

@@ -200,7 +200,7 @@ KnitGraph side_by_side(KnitGraph a, const KnitGraph& b) {
   StitchId shift = a.size();
   auto rows = static_cast<std::uint32_t>(a.row_shape.size());
   for (StitchId s = 0; s < b.size(); ++s) {
-    a.add_stitch(b.type[s], b.row[s] + rows, b.source[s] + shift, b.flags[s]);
+    a.add_stitch(b.type[s], b.row[s] + rows, b.source[s] + shift, b.flags[s], b.direction[s]);
     a.yarn_next.back() = b.yarn_next[s] == kNoStitch ? kNoStitch : b.yarn_next[s] + shift;
     a.yarn_link.back() = b.yarn_link[s];
   }

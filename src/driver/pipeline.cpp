@@ -78,9 +78,11 @@ Compilation compile_knit_graph(KnitGraph graph, const std::string& name,
   c.deps = timed(observe, "dependency graph", [&] { return build_dependency_graph(c.knit); });
   c.knittability =
       timed(observe, "knittability", [&] { return check_knittability(c.knit, c.deps); });
-  if (c.knittability.knittable)
-    c.schedule =
-        timed(observe, "schedule", [&] { return schedule_stitches(c.knit, c.deps, c.yarns); });
+  if (!c.knittability.knittable) return c;
+  c.schedule =
+      timed(observe, "schedule", [&] { return schedule_stitches(c.knit, c.deps, c.yarns); });
+  c.program =
+      timed(observe, "lowering", [&] { return lower_to_program(c.knit, c.yarns, c.schedule); });
   return c;
 }
 

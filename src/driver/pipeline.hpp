@@ -14,6 +14,7 @@
 //   build_dependency_graph  depgraph             KnitGraph        -> DependencyGraph (§4.1)
 //   check_knittability      depgraph             DependencyGraph  -> Knittability (cycle)
 //   schedule_stitches       schedule             all of the above -> Schedule (Algorithm 1)
+//   lower_to_program        lowering             KnitGraph + Schedule -> Program (live loops)
 //   Target::emit            targets/<name>       Compilation      -> output file
 //   Simulator::verify       targets/<name>       output file      -> VerifyReport
 #pragma once
@@ -28,6 +29,7 @@
 #include "knitgraph/knit_graph.hpp"
 #include "knitgraph/yarn_pieces.hpp"
 #include "labeling/project.hpp"
+#include "lowering/program.hpp"
 #include "mesh/stitch_mesh.hpp"
 #include "schedule/schedule.hpp"
 #include "transforms/shift_paths.hpp"
@@ -43,6 +45,7 @@ struct Compilation {
   DependencyGraph deps;
   Knittability knittability;
   Schedule schedule;  // empty unless knittable
+  Program program;    // the live-loop program; empty unless knittable
   // The project's gauge, yarn and needle; absent for a stitch mesh or stitch graph file,
   // which does not say what size a stitch is.
   std::optional<YarnGauge> gauge;

@@ -243,6 +243,17 @@ void flag_stitches(const StitchMesh& m, KnitGraph& g) {
   }
 }
 
+// Which way the course runs as its yarn enters the face: from the wale edge on its left (the
+// side after its top course edges, counter-clockwise) left to right. For every face but a
+// short-row face this is StitchMesh::runs_left_to_right; a short-row face's yarn turns inside
+// it and leaves the other way, so it runs as the course it ends.
+CourseDirection entering_direction(const StitchMesh& m, Face f) {
+  Halfedge h = m.wale_in(f);
+  while (is_wale(m.role[h])) h = m.prev(h);
+  return m.role[h] == EdgeRole::top ? CourseDirection::left_to_right
+                                    : CourseDirection::right_to_left;
+}
+
 void shape_rows(const StitchMesh& m, KnitGraph& g) {
   for (RowKind kind : row_kinds(m))
     g.row_shape.push_back(kind == RowKind::closed      ? RowShape::closed
@@ -264,6 +275,8 @@ KnitGraph build_knit_graph(const StitchMesh& mesh, const std::string& source_nam
   g.yarn_next.assign(n, kNoStitch);
   g.yarn_link.assign(n, YarnLink::none);
   g.flags.assign(n, 0);
+  g.direction.resize(n);
+  for (Face f : mesh.faces()) g.direction[f.index()] = entering_direction(mesh, f);
   link_yarn(mesh, g);
   record_mismatches(mesh, g, add_loops(mesh, g));
   flag_stitches(mesh, g);

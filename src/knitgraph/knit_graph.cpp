@@ -50,6 +50,18 @@ const char* row_shape_name(RowShape shape) {
   return "?";
 }
 
+const char* course_direction_name(CourseDirection direction) {
+  switch (direction) {
+    case CourseDirection::left_to_right:
+      return "left to right";
+    case CourseDirection::right_to_left:
+      return "right to left";
+    case CourseDirection::along_its_loops:
+      return "along its loops";
+  }
+  return "?";
+}
+
 namespace {
 
 // Counting sort of loop indices by stitch, then by slot within each stitch: linear.
@@ -77,13 +89,14 @@ void KnitGraph::index_loops() {
 }
 
 StitchId KnitGraph::add_stitch(StitchType t, std::uint32_t r, std::uint32_t src,
-                               std::uint8_t stitch_flags) {
+                               std::uint8_t stitch_flags, CourseDirection d) {
   type.push_back(t);
   row.push_back(r);
   source.push_back(src);
   yarn_next.push_back(kNoStitch);
   yarn_link.push_back(YarnLink::none);
   flags.push_back(stitch_flags);
+  direction.push_back(d);
   return size() - 1;
 }
 
@@ -101,7 +114,7 @@ std::string KnitGraph::describe(StitchId s) const {
 void check_consistency(const KnitGraph& g) {
   const std::uint32_t n = g.size();
   SKEIN_ASSERT(g.row.size() == n && g.source.size() == n && g.yarn_next.size() == n &&
-                   g.yarn_link.size() == n && g.flags.size() == n &&
+                   g.yarn_link.size() == n && g.flags.size() == n && g.direction.size() == n &&
                    g.taken_first.size() == n + 1 && g.made_first.size() == n + 1,
                "per-stitch arrays have one entry per stitch");
   std::vector<std::uint8_t> has_prev(n, 0);

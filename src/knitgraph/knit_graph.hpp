@@ -80,6 +80,19 @@ struct MismatchEdge {
 enum class RowShape : std::uint8_t { open, closed, short_row };
 const char* row_shape_name(RowShape shape);
 
+// Which way a stitch's yarn runs through it, in its own frame (right side facing, wale up), as
+// the input says: a stitch mesh by its face's wale edges (StitchMesh::runs_left_to_right), a
+// stitch graph by its dir field. The stitches the transforms extrude along a join or a split
+// lie across the edge between two sides that face each other; their order is that of the loops
+// they take or make (the lowering reads it there).
+enum class CourseDirection : std::uint8_t { left_to_right, right_to_left, along_its_loops };
+const char* course_direction_name(CourseDirection direction);  // "left to right", ...
+inline CourseDirection reversed(CourseDirection d) {
+  return d == CourseDirection::left_to_right   ? CourseDirection::right_to_left
+         : d == CourseDirection::right_to_left ? CourseDirection::left_to_right
+                                               : d;
+}
+
 // Flags for stitches that sit in a special region, so schedules can place markers.
 enum StitchFlag : std::uint8_t {
   kBesideMismatch = 1,  // touches a mismatched edge
@@ -98,11 +111,12 @@ struct KnitGraph {
 
   // Per stitch.
   std::vector<StitchType> type;
-  std::vector<std::uint32_t> row;     // 0-based row number in knitting order
-  std::vector<std::uint32_t> source;  // 0-based face index or .st line index
-  std::vector<StitchId> yarn_next;    // kNoStitch at the end of a yarn piece
-  std::vector<YarnLink> yarn_link;    // how the yarn reaches yarn_next
-  std::vector<std::uint8_t> flags;    // StitchFlag bits
+  std::vector<std::uint32_t> row;          // 0-based row number in knitting order
+  std::vector<std::uint32_t> source;       // 0-based face index or .st line index
+  std::vector<StitchId> yarn_next;         // kNoStitch at the end of a yarn piece
+  std::vector<YarnLink> yarn_link;         // how the yarn reaches yarn_next
+  std::vector<std::uint8_t> flags;         // StitchFlag bits
+  std::vector<CourseDirection> direction;  // from the input, never derived
 
   // Per row.
   std::vector<RowShape> row_shape;
@@ -129,7 +143,8 @@ struct KnitGraph {
   // Fills the taken and made indices from loops (call after all loops are added).
   void index_loops();
   // Appends a stitch with no yarn link yet; returns its id.
-  StitchId add_stitch(StitchType type, std::uint32_t row, std::uint32_t source, std::uint8_t flags);
+  StitchId add_stitch(StitchType type, std::uint32_t row, std::uint32_t source, std::uint8_t flags,
+                      CourseDirection direction = CourseDirection::left_to_right);
   // "face 12 (k, row 7)" or "line 40 (k)".
   std::string describe(StitchId s) const;
 };

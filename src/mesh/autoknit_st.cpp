@@ -134,6 +134,7 @@ class StParser {
     graph_.yarn_next.resize(n);
     graph_.yarn_link.resize(n);
     graph_.flags.assign(n, 0);
+    graph_.direction.resize(n);
     yarn_.resize(n);
     anticlockwise_.resize(n);
     links_.resize(n);
@@ -150,6 +151,7 @@ class StParser {
     yarn_[s] = parse_yarn(s, field[0]);
     graph_.type[s] = parse_type(s, field[1]);
     anticlockwise_[s] = parse_direction(s, field[2]);
+    graph_.direction[s] = direction_of(anticlockwise_[s]);
     Links& links = links_[s];
     links.in = {parse_index(s, "in0", field[3]), parse_index(s, "in1", field[4])};
     links.out = {parse_index(s, "out0", field[5]), parse_index(s, "out1", field[6])};
@@ -180,6 +182,13 @@ class StParser {
     if (field != "c" && field != "a")
       fail(s, fmt::format("expected dir c (clockwise) or a (anticlockwise), found '{}'", field));
     return field == "a";
+  }
+
+  // AutoKnit's dir is the way the yarn goes round the tube seen from above (wales towards the
+  // viewer): anticlockwise passes the side facing a viewer in front from left to right. In
+  // each stitch's frame the ins and outs count from that left.
+  static CourseDirection direction_of(bool anticlockwise) {
+    return anticlockwise ? CourseDirection::left_to_right : CourseDirection::right_to_left;
   }
 
   std::int32_t parse_index(StitchId s, std::string_view name, std::string_view field) const {

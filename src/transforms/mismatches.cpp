@@ -155,7 +155,8 @@ class MismatchTransform {
     std::vector<std::uint8_t> flipped = flipped_along_chain(edges);
     for (std::size_t i = 0; i < edges.size(); ++i) {
       std::uint32_t e = edges[i];
-      StitchId t = g_.add_stitch(type, row, e, kExtruded | kBesideMismatch);
+      StitchId t = g_.add_stitch(type, row, e, kExtruded | kBesideMismatch,
+                                 CourseDirection::along_its_loops);
       g_.extruded_at.push_back(e);
       for (std::uint8_t side = 0; side < 2; ++side) {
         Loop& l = g_.loops[g_.mismatch_edges[e].loop[side ^ flipped[i]]];
