@@ -17,6 +17,9 @@
 #include "labeling/shapes.hpp"
 #include "labeling/stitch_generation.hpp"
 #include "render/svg.hpp"
+#include "yarn/build.hpp"
+#include "yarn/export.hpp"
+#include "yarn/picture.hpp"
 
 namespace {
 
@@ -205,6 +208,53 @@ int run_new(const std::string& kind, const std::string& circumference, const std
   return kKnittable;
 }
 
+struct YarnRequest {
+  std::string output, picture;
+  bool tube = false;
+  YarnOptions options;
+  PictureOptions view;
+};
+
+// `skein yarn`: the yarn-level model of INPUT, written as OBJ/PLY polylines or tubes and drawn.
+int run_yarn(const std::string& input, YarnRequest request, bool verbose) {
+  if (request.output.empty() && request.picture.empty())
+    throw UsageError("skein yarn: give -o MODEL (.obj or .ply), --picture PNG, or both");
+  Compilation c = compile_model(input, progress_printer(verbose));
+  std::vector<std::array<double, 3>> positions;
+  if (!c.mesh) positions = read_stitch_positions(input);
+  request.options.relax.progress = [](const RelaxProgress& p) {
+    std::cerr << fmt::format(
+        "skein: yarn relaxation step {}: largest move {:.3f} r, overlap {:.3f} d\n", p.step,
+        p.max_move, p.overlap);
+  };
+  YarnBuild yarn =
+      build_yarn(c.knit, c.yarns, c.mesh ? &*c.mesh : nullptr, positions, request.options);
+  const RelaxReport& r = yarn.relaxation;
+  std::cout << fmt::format("yarn: {} stitches, {} yarn piece{}, {} points, yarn radius {:.4g}\n",
+                           c.knit.size(), yarn.model.pieces(), yarn.model.pieces() == 1 ? "" : "s",
+                           yarn.model.point.size(), yarn.model.radius);
+  if (r.steps > 0)
+    std::cout << fmt::format(
+        "relaxed: {} steps in {:.2f} s, {} (largest move {:.4f} r, overlap "
+        "{:.3f} d)\n",
+        r.steps, r.seconds, r.converged ? "converged" : "step limit", r.max_move, r.overlap);
+  auto extension = std::filesystem::path(request.output).extension();
+  if (!request.output.empty()) {
+    write_file_atomically(request.output, [&](std::ostream& out) {
+      if (extension == ".ply") return write_yarn_ply(yarn.model, out);
+      if (request.tube) return write_yarn_tubes_obj(yarn.model, out);
+      write_yarn_obj(yarn.model, out);
+    });
+    std::cout << fmt::format("wrote {}\n", request.output);
+  }
+  if (!request.picture.empty()) {
+    write_file_atomically(
+        request.picture, [&](std::ostream& out) { write_yarn_png(yarn.model, out, request.view); });
+    std::cout << fmt::format("wrote {}\n", request.picture);
+  }
+  return kKnittable;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -269,6 +319,22 @@ int main(int argc, char** argv) {
   render->add_option("-o,--output", output, "the .svg file to write")->required();
   render->add_flag("--coarse", coarse, "for a project: draw the labelled coarse mesh");
 
+  YarnRequest yarn_request;
+  auto* yarn = app.add_subcommand("yarn", "lay yarn along INPUT's stitches, relax it, export it");
+  yarn->add_option("INPUT", input, "stitch mesh (.obj), project (.yaml) or stitch graph (.st)")
+      ->required();
+  yarn->add_option("-o,--output", yarn_request.output, "yarn polylines (.obj or .ply)");
+  yarn->add_flag("--tube", yarn_request.tube, "write a tube mesh instead of polylines (.obj)");
+  yarn->add_option("--picture", yarn_request.picture, "draw the yarn into this .png");
+  yarn->add_option("--steps", yarn_request.options.relax.max_steps,
+                   "relaxation step limit (0: the templates' yarn, unrelaxed)");
+  yarn->add_option("--tolerance", yarn_request.options.relax.tolerance,
+                   "stop when no point moves more than this many yarn radii in a step");
+  yarn->add_option("--threads", yarn_request.options.relax.threads, "threads (default: all)");
+  yarn->add_option("--azimuth", yarn_request.view.azimuth, "picture: degrees round the y axis");
+  yarn->add_option("--elevation", yarn_request.view.elevation, "picture: degrees above");
+  yarn->add_option("--size", yarn_request.view.width, "picture: width and height in pixels");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -281,6 +347,11 @@ int main(int argc, char** argv) {
     if (*new_cmd) return run_new(shape_kind, circumference, width, length, output);
     if (*render) return render_file(input, output, coarse), kKnittable;
     if (*generate) return write_generated_stitch_mesh(input, output), kKnittable;
+    if (*yarn) {
+      yarn_request.view.height = yarn_request.view.width;
+      yarn_request.options.relax_yarn = yarn_request.options.relax.max_steps > 0;
+      return run_yarn(input, yarn_request, verbose);
+    }
     if (*compile)
       return run_compile(registry, input, target_name, options, settings, output, verify, verbose);
     return run_verify(registry, file, against, target_name, options, verbose);
