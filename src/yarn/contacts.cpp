@@ -60,6 +60,12 @@ Grid build_grid(std::span<const Point3> point, std::span<const std::uint8_t> sta
 
 }  // namespace
 
+bool may_touch(std::span<const Point3> point, std::size_t a, std::size_t b, float reach) {
+  const Point3 ma = point[a] + point[a + 1], mb = point[b] + point[b + 1];  // twice the midpoints
+  float bound = (point[a + 1] - point[a]).norm() + (point[b + 1] - point[b]).norm() + 2 * reach;
+  return (ma - mb).squaredNorm() < bound * bound;
+}
+
 Closest closest_points(const Point3& p0, const Point3& p1, const Point3& q0, const Point3& q1) {
   const Point3 d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
   const float a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
@@ -101,27 +107,52 @@ std::vector<SegmentPair> close_segments(std::span<const Point3> point,
   for (std::size_t i = 0; i + 1 < point.size(); ++i)
     if (starts[i]) longest = std::max(longest, (point[i + 1] - point[i]).norm());
   const Grid grid = build_grid(point, starts, longest + reach);
+  // Bounding spheres of the segments, for a one-multiply rejection of most candidates.
+  struct Sphere {
+    Point3 centre;
+    float radius;
+  };
+  std::vector<Sphere> sphere(point.size());
+  for (std::size_t i = 0; i + 1 < point.size(); ++i)
+    sphere[i] = {(point[i] + point[i + 1]) / 2, (point[i + 1] - point[i]).norm() / 2 + reach / 2};
+  // Each pair once: from a cell to itself (the later segment) and to the 13 cells after it.
+  static constexpr std::array<std::array<int, 3>, 14> kHalfShell{{{0, 0, 0},
+                                                                  {1, 0, 0},
+                                                                  {-1, 1, 0},
+                                                                  {0, 1, 0},
+                                                                  {1, 1, 0},
+                                                                  {-1, -1, 1},
+                                                                  {0, -1, 1},
+                                                                  {1, -1, 1},
+                                                                  {-1, 0, 1},
+                                                                  {0, 0, 1},
+                                                                  {1, 0, 1},
+                                                                  {-1, 1, 1},
+                                                                  {0, 1, 1},
+                                                                  {1, 1, 1}}};
   std::vector<std::vector<SegmentPair>> found(std::max(1u, threads));
   parallel_for(point.size(), threads, [&](std::size_t begin, std::size_t end, unsigned part) {
     std::vector<SegmentPair>& out = found[part];
-    std::array<std::uint64_t, 27> visited{};
     for (std::size_t i = begin; i < end; ++i) {
       if (!starts[i]) continue;
       const Cell c = grid.cell_of[i];
-      int n = 0;
-      for (int dx = -1; dx <= 1; ++dx)
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dz = -1; dz <= 1; ++dz) {
-            std::uint64_t b = bucket_of({c.x + dx, c.y + dy, c.z + dz}, grid.mask);
-            if (std::find(visited.begin(), visited.begin() + n, b) != visited.begin() + n) continue;
-            visited[n++] = b;
-            for (std::uint32_t k = grid.first[b]; k < grid.first[b + 1]; ++k) {
-              std::uint32_t j = grid.segment[k];
-              if (j <= i + kNeighbourSegments) continue;
-              Closest cp = closest_points(point[i], point[i + 1], point[j], point[j + 1]);
-              if (cp.distance < reach) out.push_back({static_cast<std::uint32_t>(i), j});
-            }
-          }
+      for (const auto& d : kHalfShell) {
+        const Cell n{c.x + d[0], c.y + d[1], c.z + d[2]};
+        const bool own = d == kHalfShell[0];
+        std::uint64_t b = bucket_of(n, grid.mask);
+        for (std::uint32_t k = grid.first[b]; k < grid.first[b + 1]; ++k) {
+          std::uint32_t j = grid.segment[k];
+          const Cell& cj = grid.cell_of[j];
+          if (cj.x != n.x || cj.y != n.y || cj.z != n.z || (own && j <= i)) continue;
+          std::uint32_t lo = std::min<std::uint32_t>(static_cast<std::uint32_t>(i), j);
+          std::uint32_t hi = std::max<std::uint32_t>(static_cast<std::uint32_t>(i), j);
+          if (hi <= lo + kNeighbourSegments) continue;
+          float r = sphere[i].radius + sphere[j].radius;
+          if ((sphere[i].centre - sphere[j].centre).squaredNorm() >= r * r) continue;
+          if (closest_points(point[lo], point[lo + 1], point[hi], point[hi + 1]).distance < reach)
+            out.push_back({lo, hi});
+        }
+      }
     }
   });
   std::vector<SegmentPair> pairs;

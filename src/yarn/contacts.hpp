@@ -24,6 +24,10 @@ struct Closest {
 };
 Closest closest_points(const Point3& p0, const Point3& p1, const Point3& q0, const Point3& q1);
 
+// A cheap bound: false when segments a and b (their first points' indices) are surely
+// `reach` or more apart (their midpoints farther than the half lengths and the reach).
+bool may_touch(std::span<const Point3> point, std::size_t a, std::size_t b, float reach);
+
 // Every pair of segments (not neighbours along a piece) whose closest distance is below
 // `reach`. `piece_first` is the CSR of points per piece (a segment never spans two pieces).
 std::vector<SegmentPair> close_segments(std::span<const Point3> point,

@@ -122,7 +122,7 @@ void lay_lobe(const KnitGraph& graph, const Layout& layout, StitchId s, std::uin
 // Points of the straight way between two lobes far apart (a turn, a shift-path's step), so
 // that no segment is much longer than those of the lobes.
 void bridge(const Point3& from, const Point3& to, float spacing, std::vector<Point3>& out) {
-  int steps = static_cast<int>((to - from).norm() / spacing);
+  int steps = static_cast<int>(std::ceil((to - from).norm() / spacing));
   for (int i = 1; i < steps; ++i)
     out.push_back(from + (to - from) * (static_cast<float>(i) / static_cast<float>(steps)));
 }
@@ -173,7 +173,7 @@ YarnModel generate_yarn(const KnitGraph& graph, const YarnPieces& pieces, const 
   model.right_to_left = layout.right_to_left;
   model.point.reserve(lobes.size() + lobes.size() / 8);
   model.piece_first.push_back(0);
-  const float spacing = 2 * model.radius;
+  const float spacing = model.radius;
   std::size_t i = 0;
   for (std::uint32_t p = 0; p < pieces.size(); ++p) {
     for (std::uint32_t k = 0; k < pieces.length[p]; ++k, ++i) {

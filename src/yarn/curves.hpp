@@ -17,7 +17,7 @@
 namespace skein {
 
 // Points per lobe of a stitch's template.
-inline constexpr std::uint32_t kLobeSamples = 16;
+inline constexpr std::uint32_t kLobeSamples = 24;
 inline constexpr std::uint32_t kNoPoint = 0xffffffffu;
 
 // How a stitch's yarn goes through its cell.
@@ -49,8 +49,8 @@ struct YarnModel {
 };
 
 struct CurveOptions {
-  float diameter = 0.3f;  // yarn diameter, in stitch widths
-  unsigned threads = 0;   // 0: all cores
+  float diameter = 0.25f;  // yarn diameter, in stitch widths
+  unsigned threads = 0;    // 0: all cores
 };
 
 YarnModel generate_yarn(const KnitGraph& graph, const YarnPieces& pieces, const Layout& layout,

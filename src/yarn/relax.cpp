@@ -9,8 +9,10 @@
 namespace skein {
 namespace {
 
-constexpr float kClamp = 0.25f;  // largest move per step, in radii
-constexpr float kSkin = 0.5f;    // Verlet skin, in radii
+constexpr float kClamp = 0.25f;   // largest move per step, in radii
+constexpr float kSkin = 0.5f;     // Verlet skin, in radii
+constexpr float kFeed = 0.5f;     // share of a stretch the yarn gives in a step
+constexpr float kMaxFeed = 1.5f;  // the most a segment grows, of its template length
 
 class Relaxation {
  public:
@@ -27,6 +29,7 @@ class Relaxation {
         touches_(threads_, std::vector<std::uint16_t>(model.point.size())) {
     for (std::size_t i = 0; i + 1 < m_.point.size(); ++i)
       if (starts_[i]) rest_[i] = (m_.point[i + 1] - m_.point[i]).norm();
+    template_ = rest_;
   }
 
   RelaxReport run() {
@@ -40,13 +43,14 @@ class Relaxation {
       }
       report.overlap = push_apart();
       move();
+      feed_yarn();
       project_lengths();
       report.max_move = clamp_moves();
       drift += report.max_move;
       ++report.steps;
       if (o_.progress && report.steps % o_.progress_every == 0)
         o_.progress({report.steps, report.max_move, report.overlap});
-      if (report.max_move < o_.tolerance) {
+      if (report.max_move < o_.tolerance && report.overlap < o_.overlap) {
         report.converged = true;
         break;
       }
@@ -74,6 +78,7 @@ class Relaxation {
         const auto [a, b] = pairs_[k];
         const Point3 &p0 = m_.point[a], &p1 = m_.point[a + 1];
         const Point3 &q0 = m_.point[b], &q1 = m_.point[b + 1];
+        if (!may_touch(m_.point, a, b, diameter_)) continue;
         Closest c = closest_points(p0, p1, q0, q1);
         if (c.distance >= diameter_ || c.distance < 1e-9f) continue;
         Point3 n = ((p0 + (p1 - p0) * c.s) - (q0 + (q1 - q0) * c.t)) / c.distance;
@@ -104,6 +109,19 @@ class Relaxation {
         if (inner) d += o_.bend * ((m_.point[i - 1] + m_.point[i + 1]) / 2 - x);
         d += o_.anchor * (anchor_[i] - x);
         next_[i] = x + d;
+      }
+    });
+  }
+
+  // Where contact stretches a segment, the yarn gives a little (up to kMaxFeed of its
+  // template length): a thicker yarn than the template's room needs more length per stitch.
+  void feed_yarn() {
+    parallel_for(next_.size(), threads_, [&](std::size_t begin, std::size_t end, unsigned) {
+      for (std::size_t i = begin; i < end; ++i) {
+        if (!starts_[i] || i + 1 >= next_.size()) continue;
+        float length = (next_[i + 1] - next_[i]).norm();
+        rest_[i] =
+            std::clamp(rest_[i] + kFeed * (length - rest_[i]), rest_[i], kMaxFeed * template_[i]);
       }
     });
   }
@@ -149,7 +167,7 @@ class Relaxation {
   float diameter_;
   std::vector<std::uint8_t> starts_;
   std::vector<Point3> anchor_, next_;
-  std::vector<float> rest_;
+  std::vector<float> rest_, template_;
   std::vector<std::vector<Point3>> push_;
   std::vector<std::vector<std::uint16_t>> touches_;
   std::vector<SegmentPair> pairs_;
