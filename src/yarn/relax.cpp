@@ -105,8 +105,7 @@ class Relaxation {
         for (unsigned t = 0; t < threads_; ++t) push += push_[t][i], touches += touches_[t][i];
         Point3 x = m_.point[i];
         Point3 d = touches ? Point3(push / static_cast<float>(touches)) : Point3::Zero();
-        bool inner = i > 0 && starts_[i - 1] && starts_[i];
-        if (inner) d += o_.bend * ((m_.point[i - 1] + m_.point[i + 1]) / 2 - x);
+        d += o_.bend * bending(i);
         d += o_.anchor * (anchor_[i] - x);
         next_[i] = x + d;
       }
@@ -124,6 +123,18 @@ class Relaxation {
             std::clamp(rest_[i] + kFeed * (length - rest_[i]), rest_[i], kMaxFeed * template_[i]);
       }
     });
+  }
+
+  // Towards the cubic through the two neighbours on each side: takes out kinks and zigzags
+  // but leaves a loop's even curvature alone (a plain neighbour average would shrink loops).
+  // Next to a piece's end, towards the neighbours' midpoint.
+  Point3 bending(std::size_t i) const {
+    const auto& x = m_.point;
+    bool inner = i > 0 && starts_[i - 1] && starts_[i];
+    if (!inner) return Point3::Zero();
+    bool wide = i > 1 && starts_[i - 2] && i + 2 < x.size() && starts_[i + 1];
+    if (!wide) return (x[i - 1] + x[i + 1]) / 2 - x[i];
+    return (4 * (x[i - 1] + x[i + 1]) - x[i - 2] - x[i + 2]) / 6 - x[i];
   }
 
   // Red-black Gauss-Seidel on |x_{i+1} - x_i| = rest_i: even segments, then odd ones.

@@ -23,7 +23,7 @@ struct RelaxOptions {
   int max_steps = 3000;
   float tolerance = 0.01f;  // stop when no point moves more than this many radii in a step
   float overlap = 0.1f;     // and no two yarns overlap by more than this many diameters
-  float bend = 0.01f;       // pull towards the neighbours' midpoint, per step
+  float bend = 0.3f;        // pull towards the smooth curve through the neighbours
   float anchor = 0.002f;    // pull back towards the template, per step
   int length_sweeps = 4;
   unsigned threads = 0;                                // 0: all cores
