@@ -15,7 +15,7 @@ std::vector<std::array<double, 3>> read_stitch_positions(const std::string& path
 YarnBuild build_yarn(const KnitGraph& graph, const YarnPieces& pieces, const StitchMesh* mesh,
                      const std::vector<std::array<double, 3>>& positions,
                      const YarnOptions& options) {
-  Layout layout;
+  StitchLayout layout;
   if (mesh) {
     std::vector<Point3> relaxed = relax_stitch_mesh(*mesh, stitch_mesh_gauge(*mesh), options.mesh);
     layout = layout_from_mesh(*mesh, relaxed, graph);

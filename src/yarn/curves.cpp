@@ -74,7 +74,7 @@ struct Grip {
   float centre, width, lift, depth, side;
 };
 
-Grip grip(const KnitGraph& graph, const Layout& layout, StitchId taker, std::uint32_t slot,
+Grip grip(const KnitGraph& graph, const StitchLayout& layout, StitchId taker, std::uint32_t slot,
           float diameter) {
   StitchTemplate t = stitch_template(graph.type[taker]);
   auto inputs = static_cast<std::uint32_t>(graph.loops_taken_by(taker).size());
@@ -93,7 +93,7 @@ Grip grip(const KnitGraph& graph, const Layout& layout, StitchId taker, std::uin
 }
 
 // The lobe j of stitch s, its head bent over to where the loop's taker grips it.
-void lay_lobe(const KnitGraph& graph, const Layout& layout, StitchId s, std::uint32_t j,
+void lay_lobe(const KnitGraph& graph, const StitchLayout& layout, StitchId s, std::uint32_t j,
               float diameter, Point3* out) {
   const StitchTemplate t = stitch_template(graph.type[s]);
   const StitchFrame& f = layout.frame[s];
@@ -150,8 +150,8 @@ std::vector<StitchId> yarn_order(const KnitGraph& graph, const YarnPieces& piece
   return order;
 }
 
-YarnModel generate_yarn(const KnitGraph& graph, const YarnPieces& pieces, const Layout& layout,
-                        const CurveOptions& options) {
+YarnModel generate_yarn(const KnitGraph& graph, const YarnPieces& pieces,
+                        const StitchLayout& layout, const CurveOptions& options) {
   const float diameter = options.diameter * layout.gauge.stitch_width;
   std::vector<StitchId> order = yarn_order(graph, pieces);
   // Lobes first, into their places in yarn order (in parallel), then the pieces with the

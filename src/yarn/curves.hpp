@@ -53,8 +53,8 @@ struct CurveOptions {
   unsigned threads = 0;    // 0: all cores
 };
 
-YarnModel generate_yarn(const KnitGraph& graph, const YarnPieces& pieces, const Layout& layout,
-                        const CurveOptions& options = {});
+YarnModel generate_yarn(const KnitGraph& graph, const YarnPieces& pieces,
+                        const StitchLayout& layout, const CurveOptions& options = {});
 
 // The stitches in yarn order, piece after piece (a ring from its first stitch round).
 std::vector<StitchId> yarn_order(const KnitGraph& graph, const YarnPieces& pieces);

@@ -145,9 +145,9 @@ StitchFrame face_frame(const StitchMesh& mesh, std::span<const Point3> position,
 
 }  // namespace
 
-Layout layout_from_mesh(const StitchMesh& mesh, std::span<const Point3> position,
-                        const KnitGraph& graph) {
-  Layout layout;
+StitchLayout layout_from_mesh(const StitchMesh& mesh, std::span<const Point3> position,
+                              const KnitGraph& graph) {
+  StitchLayout layout;
   layout.gauge = stitch_mesh_gauge(mesh);
   layout.frame.resize(graph.size());
   layout.right_to_left.assign(graph.size(), 0);
@@ -178,8 +178,8 @@ Layout layout_from_mesh(const StitchMesh& mesh, std::span<const Point3> position
   return layout;
 }
 
-Layout layout_from_positions(const KnitGraph& graph,
-                             std::span<const std::array<double, 3>> positions) {
+StitchLayout layout_from_positions(const KnitGraph& graph,
+                                   std::span<const std::array<double, 3>> positions) {
   const StitchId n = graph.size();
   std::vector<Point3> centre(n);
   Point3 middle = Point3::Zero();
@@ -199,7 +199,7 @@ Layout layout_from_positions(const KnitGraph& graph,
   orient_normals(graph, prev, normal);
   float outwards = 0;
   for (StitchId s = 0; s < n; ++s) outwards += normal[s].dot(centre[s] - middle);
-  Layout layout;
+  StitchLayout layout;
   layout.gauge = gauge_of(axes);
   layout.frame.resize(n);
   layout.right_to_left.assign(n, 0);

@@ -35,7 +35,7 @@ struct Gauge {
   float row_height = 1;
 };
 
-struct Layout {
+struct StitchLayout {
   Gauge gauge;
   std::vector<StitchFrame> frame;           // per stitch of the knit graph
   std::vector<std::uint8_t> right_to_left;  // per stitch: the yarn travels right to left (RS view)
@@ -43,12 +43,12 @@ struct Layout {
 
 // Frames from the faces of `mesh` at `positions` (one per mesh vertex: the relaxed ones); the
 // stitches the transforms extruded along joins and splits get theirs from their neighbours.
-Layout layout_from_mesh(const StitchMesh& mesh, std::span<const Point3> positions,
-                        const KnitGraph& graph);
+StitchLayout layout_from_mesh(const StitchMesh& mesh, std::span<const Point3> positions,
+                              const KnitGraph& graph);
 
 // Frames from one position per stitch (an AutoKnit .st's x y z). Normals are made to agree
 // between neighbours and to point away from the middle of the model (outwards on a tube).
-Layout layout_from_positions(const KnitGraph& graph,
-                             std::span<const std::array<double, 3>> positions);
+StitchLayout layout_from_positions(const KnitGraph& graph,
+                                   std::span<const std::array<double, 3>> positions);
 
 }  // namespace skein
