@@ -21,6 +21,7 @@
 #include "labeling/stitch_generation.hpp"
 #include "mesh/obj_format.hpp"
 #include "render/svg.hpp"
+#include "yarn/export.hpp"
 
 namespace skein::cli {
 namespace {
@@ -233,6 +234,53 @@ int run_render(const Request& r) {
   std::string drawn;
   out.write([&](std::ostream& o) { drawn = render_file(r.input, r.coarse, o); });
   report_stream(out) << fmt::format("wrote {} ({})\n", out.name(), drawn);
+  return kDone;
+}
+
+// `skein yarn`: the yarn-level model of INPUT, written as OBJ/PLY polylines or tubes and drawn.
+int run_yarn(const Request& r) {
+  if (r.output.empty() && r.yarn_picture.empty())
+    throw UsageError("skein yarn: give -o MODEL (.obj or .ply), --picture PNG, or both");
+  std::optional<OutputFile> model, picture;
+  if (!r.output.empty()) model.emplace(r.output, OutputRules{r.force, inputs_of(r.input)});
+  if (!r.yarn_picture.empty())
+    picture.emplace(r.yarn_picture, OutputRules{r.force, inputs_of(r.input)});
+  Compilation c = compile_model(r.input, progress_printer(r.verbose));
+  std::vector<std::array<double, 3>> positions;
+  if (!c.mesh) positions = read_stitch_positions(r.input);
+  YarnOptions options = r.yarn;
+  options.relax_yarn = options.relax.max_steps > 0;
+  options.relax.progress = [](const RelaxProgress& p) {
+    std::cerr << fmt::format(
+        "skein: yarn relaxation step {}: largest move {:.3f} r, overlap {:.3f} d\n", p.step,
+        p.max_move, p.overlap);
+  };
+  YarnBuild yarn = build_yarn(c.knit, c.yarns, c.mesh ? &*c.mesh : nullptr, positions, options);
+  const RelaxReport& relaxed = yarn.relaxation;
+  std::ostream& report = model ? report_stream(*model) : std::cout;
+  report << fmt::format("yarn: {} stitches, {} yarn piece{}, {} points, yarn radius {:.4g}\n",
+                        c.knit.size(), yarn.model.pieces(), yarn.model.pieces() == 1 ? "" : "s",
+                        yarn.model.point.size(), yarn.model.radius);
+  if (relaxed.steps > 0)
+    report << fmt::format(
+        "relaxed: {} steps in {:.2f} s, {} (largest move {:.4f} r, overlap {:.3f} d)\n",
+        relaxed.steps, relaxed.seconds, relaxed.converged ? "converged" : "step limit",
+        relaxed.max_move, relaxed.overlap);
+  if (model) {
+    bool ply = std::filesystem::path(r.output).extension() == ".ply";
+    model->write([&](std::ostream& out) {
+      if (ply) return write_yarn_ply(yarn.model, out);
+      if (r.tube) return write_yarn_tubes_obj(yarn.model, out);
+      write_yarn_obj(yarn.model, out);
+    });
+    report << fmt::format("wrote {}\n", model->name());
+  }
+  if (picture) {
+    PictureOptions view = r.view;
+    view.height = view.width;
+    picture->write([&](std::ostream& out) { write_yarn_png(yarn.model, out, view); });
+    report << fmt::format("wrote {}\n", picture->name());
+  }
   return kDone;
 }
 

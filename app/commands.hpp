@@ -6,6 +6,8 @@
 
 #include "common/error.hpp"  // ExitCode
 #include "driver/registry.hpp"
+#include "yarn/build.hpp"
+#include "yarn/picture.hpp"
 
 namespace skein::cli {
 
@@ -24,6 +26,10 @@ struct Request {
   bool program = false;  // check: print and verify the live-loop program
   std::string shape;    // new: KIND
   std::string circumference, width, length;
+  std::string yarn_picture;  // yarn: --picture PNG
+  bool tube = false;         // yarn: a tube mesh instead of polylines
+  YarnOptions yarn;
+  PictureOptions view;
 };
 
 int run_check(const Request& r);
@@ -32,5 +38,6 @@ int run_verify(const Registry& registry, const Request& r);
 int run_new(const Request& r);
 int run_generate(const Request& r);
 int run_render(const Request& r);
+int run_yarn(const Request& r);
 
 }  // namespace skein::cli

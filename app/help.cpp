@@ -45,6 +45,10 @@ const std::map<std::string, std::string>& examples() {
   skein render samples/sock/sock.yaml --coarse -o coarse.svg  # the labelled coarse mesh
   skein render samples/hat/hat.obj -o hat.svg                 # a stitch mesh
 )"},
+      {"yarn", R"(  skein yarn samples/hat/hat.obj --picture hat-yarn.png   # relaxed yarn, drawn
+  skein yarn samples/hat/hat.obj -o hat-yarn.obj --tube       # a tube mesh for a renderer
+  skein yarn samples/autoknit/test-A.st -o a.ply --steps 0    # the templates' yarn, unrelaxed
+)"},
   };
   return kExamples;
 }

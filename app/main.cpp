@@ -110,6 +110,22 @@ int main(int argc, char** argv) {
   add_force(*render, r);
   render->add_flag("--coarse", r.coarse, "for a project: draw the labelled coarse mesh");
 
+  auto* yarn = app.add_subcommand("yarn", "lay yarn along INPUT's stitches, relax it, export it");
+  yarn->add_option("INPUT", r.input, "stitch mesh (.obj), project (.yaml) or stitch graph (.st)")
+      ->required();
+  yarn->add_option("-o,--output", r.output, "yarn polylines (.obj or .ply); - for standard output");
+  yarn->add_flag("--tube", r.tube, "write a tube mesh instead of polylines (.obj)");
+  yarn->add_option("--picture", r.yarn_picture, "draw the yarn into this .png");
+  add_force(*yarn, r);
+  yarn->add_option("--steps", r.yarn.relax.max_steps,
+                   "relaxation step limit (0: the templates' yarn, unrelaxed)");
+  yarn->add_option("--tolerance", r.yarn.relax.tolerance,
+                   "stop when no point moves more than this many yarn radii in a step");
+  yarn->add_option("--threads", r.yarn.relax.threads, "threads (default: all)");
+  yarn->add_option("--azimuth", r.view.azimuth, "picture: degrees round the y axis");
+  yarn->add_option("--elevation", r.view.elevation, "picture: degrees above");
+  yarn->add_option("--size", r.view.width, "picture: width and height in pixels");
+
   for (CLI::App* command : app.get_subcommands({}))
     command->footer(command_footer(registry, command->get_name()));
   app.footer(overview_footer(registry));  // after the subcommands, which would inherit it
@@ -134,5 +150,7 @@ int main(int argc, char** argv) {
   if (*generate)
     return run_reporting_errors("generating the stitch mesh of " + r.input,
                                 [&] { return run_generate(r); });
+  if (*yarn)
+    return run_reporting_errors("laying yarn along " + r.input, [&] { return run_yarn(r); });
   return run_reporting_errors("rendering " + r.input, [&] { return run_render(r); });
 }

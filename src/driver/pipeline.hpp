@@ -17,6 +17,10 @@
 //   lower_to_program        lowering             KnitGraph + Schedule -> Program (live loops)
 //   Target::emit            targets/<name>       Compilation      -> output file
 //   Simulator::verify       targets/<name>       output file      -> VerifyReport
+//
+// Run on request (skein yarn), not by compile_model:
+//   build_yarn              yarn                 KnitGraph + mesh or .st positions -> YarnModel
+//                                                (mesh relaxation §3.4, templates, relaxation §5)
 #pragma once
 
 #include <chrono>

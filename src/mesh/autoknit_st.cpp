@@ -101,8 +101,9 @@ std::string required_slots(const StitchTypeInfo& type) {
 
 class StParser {
  public:
-  StParser(std::string_view text, const std::string& file_name)
-      : file_name_(file_name), lines_(split_lines(text)) {}
+  StParser(std::string_view text, const std::string& file_name,
+           std::vector<std::array<double, 3>>* positions)
+      : file_name_(file_name), lines_(split_lines(text)), positions_(positions) {}
 
   KnitGraph parse() {
     if (lines_.empty())
@@ -138,6 +139,7 @@ class StParser {
     yarn_.resize(n);
     anticlockwise_.resize(n);
     links_.resize(n);
+    if (positions_) positions_->assign(n, {0, 0, 0});
   }
 
   void parse_line(StitchId s) {
@@ -156,9 +158,9 @@ class StParser {
     links.in = {parse_index(s, "in0", field[3]), parse_index(s, "in1", field[4])};
     links.out = {parse_index(s, "out0", field[5]), parse_index(s, "out1", field[6])};
     check_link_order(s);
-    check_coordinate(s, "x", field[7]);
-    check_coordinate(s, "y", field[8]);
-    check_coordinate(s, "z", field[9]);
+    std::array<double, 3> at{coordinate(s, "x", field[7]), coordinate(s, "y", field[8]),
+                             coordinate(s, "z", field[9])};
+    if (positions_) (*positions_)[s] = at;
     check_slots_match_type(s);
   }
 
@@ -217,11 +219,12 @@ class StParser {
     }
   }
 
-  // Positions are for display only; they must still be numbers.
-  void check_coordinate(StitchId s, std::string_view axis, std::string_view field) const {
+  // Positions are for display (and the yarn model) only; they must still be numbers.
+  double coordinate(StitchId s, std::string_view axis, std::string_view field) const {
     double value = 0;
     if (parse_whole(field, value) != std::errc())
       fail(s, fmt::format("expected {} to be a number, found '{}'", axis, field));
+    return value;
   }
 
   // Exactly AutoKnit's check_type(): the first loops_in in-slots and the first loops_out
@@ -357,13 +360,15 @@ class StParser {
   std::vector<std::uint32_t> yarn_;
   std::vector<bool> anticlockwise_;  // AutoKnit's dir: a (true) or c
   std::vector<Links> links_;
+  std::vector<std::array<double, 3>>* positions_;
   KnitGraph graph_;
 };
 
 }  // namespace
 
-KnitGraph parse_autoknit_st(std::string_view text, const std::string& file_name) {
-  return StParser(text, file_name).parse();
+KnitGraph parse_autoknit_st(std::string_view text, const std::string& file_name,
+                            std::vector<std::array<double, 3>>* positions) {
+  return StParser(text, file_name, positions).parse();
 }
 
 KnitGraph read_autoknit_st(const std::string& path) {

@@ -1,0 +1,189 @@
+#include "yarn/curves.hpp"
+
+#include <array>
+#include <cmath>
+#include <numbers>
+
+#include "yarn/parallel.hpp"
+
+namespace skein {
+namespace {
+
+// The lobe's shape in its share of the cell (x across the lobe, y up the cell): an omega,
+// narrow at the neck where it passes through the old loop and wide at the head.
+constexpr float kLean = 0.2f;       // how far the legs lean in at the neck (of the lobe width)
+constexpr float kDip = -0.15f;      // the lobe's foot reaches into the row below
+constexpr float kHeadTop = 1.2f;    // and its head into the row above
+constexpr float kBoundTop = 0.55f;  // a bound-off lobe's head stays in its cell
+constexpr float kDepth = 1.2f;      // front-to-back amplitude, in yarn diameters
+constexpr float kStack = 0.5f;      // offset between stacked loops, in yarn diameters
+constexpr float kWiden = 1.25f;     // an increase's old loop is gripped wider than its lobes
+
+struct Sample {
+  float x, y, z;
+};
+
+struct LobeTable {
+  std::array<float, kLobeSamples> u, lean, rise, depth;
+};
+
+const LobeTable& lobe_table() {
+  static const LobeTable table = [] {
+    LobeTable t;
+    for (std::uint32_t k = 0; k < kLobeSamples; ++k) {
+      float a = 2 * std::numbers::pi_v<float> * static_cast<float>(k) / kLobeSamples;
+      t.u[k] = static_cast<float>(k) / kLobeSamples;
+      t.lean[k] = kLean * std::sin(2 * a);
+      t.rise[k] = (1 - std::cos(a)) / 2;
+      t.depth[k] = -std::cos(2 * a);
+    }
+    return t;
+  }();
+  return table;
+}
+
+// Sample k of lobe j of `lobes` in the stitch's cell; z in model units.
+Sample lobe_sample(const StitchTemplate& t, std::uint32_t j, std::uint32_t k, float amplitude) {
+  const LobeTable& table = lobe_table();
+  float lobes = t.lobes;
+  float x = (static_cast<float>(j) + table.u[k] + table.lean[k]) / lobes;
+  switch (t.kind) {
+    case LobeKind::slipped:
+      return {(static_cast<float>(j) + table.u[k]) / lobes, 0.5f, -amplitude};
+    case LobeKind::tucked:
+      return {x, 0.35f + (kHeadTop - 0.35f) * table.rise[k], -0.8f * amplitude};
+    case LobeKind::cast_on:
+      return {x, 0.1f + (kHeadTop - 0.1f) * table.rise[k], t.side * amplitude * table.depth[k]};
+    case LobeKind::bound_off:
+      return {x, kDip + (kBoundTop - kDip) * table.rise[k], t.side * amplitude * table.depth[k]};
+    case LobeKind::pulled_through:
+      break;
+  }
+  return {x, kDip + (kHeadTop - kDip) * table.rise[k], t.side * amplitude * table.depth[k]};
+}
+
+float smoothstep(float a, float b, float v) {
+  float t = std::clamp((v - a) / (b - a), 0.0f, 1.0f);
+  return t * t * (3 - 2 * t);
+}
+
+// Where a stitch grips the old loop in its input slot: the centre and width (in its cell's
+// x) the loop's head takes there, how far up the cell it reaches, its offset in depth, and
+// the side it pulls its loop to (the old loop's head lies on the other).
+struct Grip {
+  float centre, width, lift, depth, side;
+};
+
+Grip grip(const KnitGraph& graph, const StitchLayout& layout, StitchId taker, std::uint32_t slot,
+          float diameter) {
+  StitchTemplate t = stitch_template(graph.type[taker]);
+  auto inputs = static_cast<std::uint32_t>(graph.loops_taken_by(taker).size());
+  std::uint32_t at = layout.right_to_left[taker] ? inputs - 1 - slot : slot;
+  float lobes = t.lobes;
+  // An unworked or tucked loop is held at the top of the cell with the new one.
+  if (t.kind == LobeKind::slipped || t.kind == LobeKind::tucked) return {0.5f, 1, 1, 0, t.side};
+  if (inputs == t.lobes) return {(static_cast<float>(at) + 0.5f) / lobes, 1 / lobes, 0, 0, t.side};
+  if (inputs > t.lobes) {  // a decrease: the old loops stack on one lobe
+    float lobe = std::floor(static_cast<float>(at * t.lobes) / static_cast<float>(inputs));
+    float stack = (static_cast<float>(at) - static_cast<float>(inputs - 1) / 2) * kStack;
+    return {(lobe + 0.5f) / lobes, 1 / lobes, 0, stack * diameter, t.side};
+  }
+  float share = 1.0f / static_cast<float>(inputs);  // an increase: one old loop, many lobes
+  return {(static_cast<float>(at) + 0.5f) * share, kWiden * share, 0, 0, t.side};
+}
+
+// The lobe j of stitch s, its head bent over to where the loop's taker grips it.
+void lay_lobe(const KnitGraph& graph, const StitchLayout& layout, StitchId s, std::uint32_t j,
+              float diameter, Point3* out) {
+  const StitchTemplate t = stitch_template(graph.type[s]);
+  const StitchFrame& f = layout.frame[s];
+  const float amplitude = kDepth * diameter;
+  auto made = graph.loops_made_by(s);
+  std::uint32_t slot = layout.right_to_left[s] ? t.lobes - 1 - j : j;
+  const Loop* loop =
+      t.kind != LobeKind::slipped && slot < made.size() ? &graph.loops[made[slot]] : nullptr;
+  bool gripped = loop && loop->taker != kNoStitch;
+  Grip g = gripped ? grip(graph, layout, loop->taker, loop->taker_slot, diameter) : Grip{};
+  const float lobe_centre = (static_cast<float>(j) + 0.5f) / t.lobes;
+  for (std::uint32_t k = 0; k < kLobeSamples; ++k) {
+    Sample p = lobe_sample(t, j, k, amplitude);
+    out[k] = f.at(p.x, p.y, p.z);
+    float w = gripped ? smoothstep(0.55f, 1.0f, p.y) : 0;
+    if (w == 0) continue;
+    const StitchFrame& tf = layout.frame[loop->taker];
+    float x = g.centre + (p.x - lobe_centre) * t.lobes * g.width;
+    // The head lies behind the new loop's legs as the taker sees it: a purl takes a knit
+    // loop's head in front.
+    float z = p.z * g.side * t.side + g.depth;
+    out[k] = (1 - w) * out[k] + w * tf.at(x, p.y - 1 + g.lift, z);
+  }
+}
+
+// Points of the straight way between two lobes far apart (a turn, a shift-path's step), so
+// that no segment is much longer than those of the lobes.
+void bridge(const Point3& from, const Point3& to, float spacing, std::vector<Point3>& out) {
+  int steps = static_cast<int>(std::ceil((to - from).norm() / spacing));
+  for (int i = 1; i < steps; ++i)
+    out.push_back(from + (to - from) * (static_cast<float>(i) / static_cast<float>(steps)));
+}
+
+}  // namespace
+
+StitchTemplate stitch_template(StitchType type) {
+  const StitchTypeInfo& i = info(type);
+  auto lobes = static_cast<std::uint8_t>(std::max<int>(i.loops_out, 1));
+  float side = type == StitchType::p || type == StitchType::p2tog ? -1.0f : 1.0f;
+  if (type == StitchType::sl) return {LobeKind::slipped, side, lobes};
+  if (type == StitchType::tuck) return {LobeKind::tucked, side, lobes};
+  if (i.loops_in == 0) return {LobeKind::cast_on, side, lobes};
+  if (i.loops_out == 0) return {LobeKind::bound_off, side, lobes};
+  return {LobeKind::pulled_through, side, lobes};
+}
+
+std::vector<StitchId> yarn_order(const KnitGraph& graph, const YarnPieces& pieces) {
+  std::vector<StitchId> order;
+  order.reserve(graph.size());
+  for (std::uint32_t p = 0; p < pieces.size(); ++p) {
+    StitchId s = pieces.first[p];
+    for (std::uint32_t i = 0; i < pieces.length[p]; ++i, s = graph.yarn_next[s]) order.push_back(s);
+  }
+  return order;
+}
+
+YarnModel generate_yarn(const KnitGraph& graph, const YarnPieces& pieces,
+                        const StitchLayout& layout, const CurveOptions& options) {
+  const float diameter = options.diameter * layout.gauge.stitch_width;
+  std::vector<StitchId> order = yarn_order(graph, pieces);
+  // Lobes first, into their places in yarn order (in parallel), then the pieces with the
+  // bridges between lobes far apart.
+  std::vector<std::uint32_t> at(order.size() + 1, 0);
+  for (std::size_t i = 0; i < order.size(); ++i)
+    at[i + 1] = at[i] + stitch_template(graph.type[order[i]]).lobes * kLobeSamples;
+  std::vector<Point3> lobes(at.back());
+  unsigned threads = options.threads ? options.threads : default_threads();
+  parallel_for(order.size(), threads, [&](std::size_t begin, std::size_t end, unsigned) {
+    for (std::size_t i = begin; i < end; ++i)
+      for (std::uint32_t j = 0; j * kLobeSamples < at[i + 1] - at[i]; ++j)
+        lay_lobe(graph, layout, order[i], j, diameter, &lobes[at[i] + j * kLobeSamples]);
+  });
+
+  YarnModel model;
+  model.radius = diameter / 2;
+  model.stitch_first.assign(graph.size(), kNoPoint);
+  model.right_to_left = layout.right_to_left;
+  model.point.reserve(lobes.size() + lobes.size() / 8);
+  model.piece_first.push_back(0);
+  const float spacing = model.radius;
+  std::size_t i = 0;
+  for (std::uint32_t p = 0; p < pieces.size(); ++p) {
+    for (std::uint32_t k = 0; k < pieces.length[p]; ++k, ++i) {
+      if (k > 0) bridge(model.point.back(), lobes[at[i]], spacing, model.point);
+      model.stitch_first[order[i]] = static_cast<std::uint32_t>(model.point.size());
+      model.point.insert(model.point.end(), lobes.begin() + at[i], lobes.begin() + at[i + 1]);
+    }
+    model.piece_first.push_back(static_cast<std::uint32_t>(model.point.size()));
+  }
+  return model;
+}
+
+}  // namespace skein

@@ -1,0 +1,132 @@
+#include "yarn/mesh_relax.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "yarn/parallel.hpp"
+
+namespace skein {
+namespace {
+
+struct Spring {
+  std::uint32_t a, b;
+  float rest;
+};
+
+Point3 point(const Vec3& v) {
+  return {v.x, v.y, v.z};
+}
+
+// How much a wale edge of face f stretches because of a join or split beside the face.
+float wale_scale_beside_mismatch(const StitchMesh& mesh, Face f) {
+  for (Halfedge h : mesh.halfedges(f)) {
+    EdgeKind kind = mesh.kind(mesh.edge(h));
+    if (kind != EdgeKind::join && kind != EdgeKind::split) continue;
+    return mesh.mismatch_yarn[mesh.edge(h)].kind == MismatchYarn::Kind::own ? 0.5f : 1.5f;
+  }
+  return 1;
+}
+
+// srn: the top course edges past the catalogue's count collapse.
+bool extra_short_row_edge(const StitchMesh& mesh, Halfedge h, int top_index) {
+  Face f = mesh.face(h);
+  return mesh.stitch[f] == StitchType::srn && mesh.role[h] == EdgeRole::top &&
+         top_index >= info(StitchType::srn).top_edges;
+}
+
+float rest_length(const StitchMesh& mesh, Edge e, const Gauge& g) {
+  Halfedge h = mesh.halfedge(e);
+  switch (mesh.kind(e)) {
+    case EdgeKind::course:
+    case EdgeKind::join:
+    case EdgeKind::split:
+      return g.stitch_width;
+    case EdgeKind::wale:
+    case EdgeKind::conflicting_wale:
+      return g.row_height;
+    case EdgeKind::contracting_perpendicular:
+    case EdgeKind::expanding_perpendicular:
+      return (g.stitch_width + g.row_height) / 2;
+    case EdgeKind::border:
+      break;
+  }
+  return is_course(mesh.role[h]) ? g.stitch_width : g.row_height;
+}
+
+std::vector<Spring> springs_of(const StitchMesh& mesh, const Gauge& g) {
+  std::vector<Spring> springs;
+  springs.reserve(mesh.num_edges() + 2 * mesh.num_faces());
+  std::vector<float> rest(mesh.num_edges());
+  for (Edge e : mesh.edges()) rest[e.index()] = rest_length(mesh, e, g);
+  for (Face f : mesh.faces()) {
+    float scale = wale_scale_beside_mismatch(mesh, f);
+    int top_index = 0;
+    for (Halfedge h : mesh.halfedges(f)) {
+      float& r = rest[mesh.edge(h).index()];
+      if (scale != 1 && is_wale(mesh.role[h]) && mesh.kind(mesh.edge(h)) == EdgeKind::wale)
+        r = g.row_height * scale;
+      if (extra_short_row_edge(mesh, h, top_index)) r = 0;
+      top_index += mesh.role[h] == EdgeRole::top;
+    }
+    if (mesh.degree(f) != 4) continue;
+    std::vector<std::uint32_t> corner;
+    for (Halfedge h : mesh.halfedges(f)) corner.push_back(mesh.tail(h).index());
+    float diagonal = std::hypot(g.stitch_width, g.row_height);
+    springs.push_back({corner[0], corner[2], diagonal});
+    springs.push_back({corner[1], corner[3], diagonal});
+  }
+  for (Edge e : mesh.edges()) {
+    Halfedge h = mesh.halfedge(e);
+    springs.push_back({mesh.tail(h).index(), mesh.head(h).index(), rest[e.index()]});
+  }
+  return springs;
+}
+
+}  // namespace
+
+Gauge stitch_mesh_gauge(const StitchMesh& mesh) {
+  std::vector<float> widths, heights;
+  for (Edge e : mesh.edges()) {
+    Halfedge h = mesh.halfedge(e);
+    float length = (point(mesh.position[mesh.head(h)]) - point(mesh.position[mesh.tail(h)])).norm();
+    EdgeKind kind = mesh.kind(e);
+    bool border = kind == EdgeKind::border;
+    if (kind == EdgeKind::course || (border && is_course(mesh.role[h]))) widths.push_back(length);
+    if (kind == EdgeKind::wale || (border && is_wale(mesh.role[h]))) heights.push_back(length);
+  }
+  Gauge g;
+  g.stitch_width = median(widths, 1);
+  g.row_height = median(heights, g.stitch_width);
+  return g;
+}
+
+std::vector<Point3> relax_stitch_mesh(const StitchMesh& mesh, const Gauge& gauge,
+                                      const MeshRelaxOptions& options) {
+  const std::uint32_t n = mesh.num_vertices();
+  std::vector<Point3> start(n), x(n), delta(n);
+  for (Vertex v : mesh.vertices()) start[v.index()] = point(mesh.position[v]);
+  x = start;
+  std::vector<Spring> springs = springs_of(mesh, gauge);
+  std::vector<float> valence(n, 0);
+  for (const Spring& s : springs) valence[s.a] += 1, valence[s.b] += 1;
+  // Jacobi iterations: each spring moves its ends half way to its rest length, averaged over
+  // the springs at a vertex, so that no step overshoots whatever the valence.
+  for (int it = 0; it < options.iterations; ++it) {
+    std::fill(delta.begin(), delta.end(), Point3::Zero());
+    for (const Spring& s : springs) {
+      Point3 d = x[s.b] - x[s.a];
+      float length = d.norm();
+      if (length < 1e-12f) continue;
+      Point3 c = d * ((length - s.rest) / length / 2);
+      delta[s.a] += c;
+      delta[s.b] -= c;
+    }
+    for (std::uint32_t v = 0; v < n; ++v) {
+      if (valence[v] > 0) x[v] += delta[v] / valence[v];
+      x[v] += options.anchor * (start[v] - x[v]);
+    }
+  }
+  return x;
+}
+
+}  // namespace skein

@@ -1,0 +1,38 @@
+// Mesh-based relaxation (paper §3.4, after Yuksel et al. 2012): springs on the stitch mesh's
+// edges pull every face towards one stitch wide and one row high, so that yarn is laid on a
+// surface of the right proportions. Rest lengths by edge kind, with the knittable stitch
+// mesh's changes:
+//   course edge (and a face's course edge on the border)   the stitch width w
+//   wale edge (shift-path edges too: the helix's step is    the row height h
+//     laid by the yarn, which climbs a row across the path)
+//   perpendicular mismatch (course on one side, wale on     (w + h) / 2
+//     the other)
+//   the extra top edges of a short-row face with more than  0 (they collapse)
+//     five edges (srn)
+//   the wale edges of a face beside a join or split          h x 1.5 when an extra yarn works
+//                                                            it, h x 0.5 with a side's own
+// plus a shear spring across each quad's diagonals, and a weak spring to where each vertex
+// started that keeps the global shape (instead of sliding on a subdivision surface).
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "mesh/stitch_mesh.hpp"
+#include "yarn/layout.hpp"
+
+namespace skein {
+
+struct MeshRelaxOptions {
+  int iterations = 60;
+  float anchor = 0.05f;  // pull back towards the input position per iteration
+};
+
+// The input's gauge: median course and wale edge lengths (the mesh was generated at it).
+Gauge stitch_mesh_gauge(const StitchMesh& mesh);
+
+// The relaxed vertex positions. Linear in the mesh's size per iteration.
+std::vector<Point3> relax_stitch_mesh(const StitchMesh& mesh, const Gauge& gauge,
+                                      const MeshRelaxOptions& options = {});
+
+}  // namespace skein

@@ -1,0 +1,131 @@
+// The yarn-level model's checks that can fail: no yarn passes through another after
+// relaxation, every loop is held by the stitch the knit graph says (and not by its unrelated
+// neighbours) before and after relaxation, and the yarn's length per stitch is the gauge's.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <random>
+
+#include "driver/pipeline.hpp"
+#include "labeling/shapes.hpp"
+#include "yarn/build.hpp"
+#include "yarn/checks.hpp"
+
+namespace skein {
+namespace {
+
+// Yarns may come this close after relaxation, in diameters (the relaxation stops when no
+// overlap is deeper than RelaxOptions::overlap = 0.1).
+constexpr float kClearance = 0.9f;
+
+std::string sample_path(const std::string& name, const std::string& extension) {
+  return std::string(SKEIN_SOURCE_DIR) + "/samples/" + name + "/" + name + extension;
+}
+
+YarnBuild yarn_of(const Compilation& c, int steps) {
+  YarnOptions options;
+  options.relax.max_steps = steps;
+  options.relax_yarn = steps > 0;
+  std::vector<std::array<double, 3>> positions;
+  if (!c.mesh) positions = read_stitch_positions(c.input);
+  return build_yarn(c.knit, c.yarns, c.mesh ? &*c.mesh : nullptr, positions, options);
+}
+
+// `unrelated`: the share of loops an unrelated neighbour's yarn may pierce as well (cells
+// next to short-row faces are skewed).
+void expect_held(const Compilation& c, const YarnModel& model, const std::string& when,
+                 double unrelated = 0) {
+  TopologyReport t = check_yarn_topology(c.knit, model);
+  EXPECT_GT(t.loops, 0u) << c.input;
+  EXPECT_EQ(t.not_held, 0u) << c.input << " " << when << ": " << t.first_problem;
+  EXPECT_LE(t.wrongly_held, unrelated * t.loops)
+      << c.input << " " << when << ": " << t.first_problem;
+}
+
+void expect_clear(const Compilation& c, const YarnModel& model) {
+  Clearance clear = yarn_clearance(model, kClearance);
+  EXPECT_EQ(clear.closer, 0u) << c.input << ": closest approach " << clear.closest << " diameters";
+}
+
+// Builds, checks the topology, relaxes, checks topology and clearance.
+void check_sample(const std::string& input) {
+  Compilation c = compile_model(input);
+  YarnBuild laid = yarn_of(c, 0);
+  expect_held(c, laid.model, "as laid");
+  YarnBuild relaxed = yarn_of(c, 3000);
+  EXPECT_TRUE(relaxed.relaxation.converged) << input;
+  expect_held(c, relaxed.model, "relaxed");
+  expect_clear(c, relaxed.model);
+}
+
+TEST(YarnModel, HatHoldsEveryLoopAndNoYarnPassesThroughAnother) {
+  check_sample(sample_path("hat", ".obj"));
+}
+
+TEST(YarnModel, RibSwatchKnitAndPurl) {
+  check_sample(sample_path("rib-swatch", ".obj"));
+}
+
+TEST(YarnModel, EveryPieceIsOneCurveInYarnOrder) {
+  Compilation c = compile_model(sample_path("hat", ".obj"));
+  YarnModel m = yarn_of(c, 0).model;
+  ASSERT_EQ(m.pieces(), c.yarns.size());
+  // Consecutive stitches along the yarn are consecutive runs of points, and no step between
+  // two points is longer than a stitch (the yarn is continuous).
+  for (StitchId s = 0; s < c.knit.size(); ++s) {
+    StitchId next = c.knit.yarn_next[s];
+    if (next == kNoStitch) continue;
+    EXPECT_LT(m.stitch_first[s], m.stitch_first[next]) << c.knit.describe(s);
+  }
+  for (std::uint32_t p = 0; p < m.pieces(); ++p)
+    for (std::uint32_t i = m.piece_first[p]; i + 1 < m.piece_first[p + 1]; ++i)
+      ASSERT_LT((m.point[i + 1] - m.point[i]).norm(), 4 * m.radius) << i;
+}
+
+// Munden's constants for dry-relaxed plain knitting: loop length = 3.8 stitch widths (kw)
+// = 5.0 row heights (kc). At a gauge (w, h) the relaxed knit stitch's yarn must lie within
+// 25% of their mean, (3.8 w + 5.0 h) / 2, on plain knitting (the hat, in the round; ribbing
+// takes more yarn where it goes between front and back, and Munden's figures are not for it).
+TEST(YarnModel, KnitLengthPerStitchMatchesTheGauge) {
+  for (std::string input : {sample_path("hat", ".obj")}) {
+    Compilation c = compile_model(input);
+    YarnBuild y = yarn_of(c, 3000);
+    double per_stitch = yarn_length_per_stitch(c.knit, y.model, StitchType::k);
+    double munden = (3.8 * y.gauge.stitch_width + 5.0 * y.gauge.row_height) / 2;
+    EXPECT_NEAR(per_stitch / munden, 1.0, 0.25)
+        << input << ": " << per_stitch << " per stitch at w " << y.gauge.stitch_width << ", h "
+        << y.gauge.row_height;
+  }
+}
+
+// Random garments from `skein new`'s shapes (tubes, sheets, hats with decreases, socks with
+// short rows) at random sizes and gauges.
+TEST(YarnModel, RandomShapesHoldEveryLoopAndStayClear) {
+  std::mt19937 rng(17);
+  const std::vector<std::string> kinds = {"sheet", "tube", "hat", "sock"};
+  auto dir = std::filesystem::temp_directory_path() /
+             ("skein-yarn-" + std::to_string(static_cast<long>(::getpid())));
+  std::filesystem::create_directories(dir);
+  for (int trial = 0; trial < 4; ++trial) {
+    const std::string& kind = kinds[trial % kinds.size()];
+    ShapeSize size;
+    size.circumference = std::uniform_real_distribution<double>(6, 12)(rng);
+    size.width = std::uniform_real_distribution<double>(3, 6)(rng);
+    size.length = std::uniform_real_distribution<double>(4, 8)(rng);
+    std::string name = fmt::format("{}{}", kind, trial);
+    std::string project = write_shape(make_shape(kind, size, name), (dir / name).string());
+    SCOPED_TRACE(project);
+    Compilation c = compile_model(project);
+    YarnBuild laid = yarn_of(c, 0);
+    expect_held(c, laid.model, "as laid", 0.02);
+    YarnBuild relaxed = yarn_of(c, 3000);
+    expect_held(c, relaxed.model, "relaxed", 0.02);
+    expect_clear(c, relaxed.model);
+  }
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace skein
