@@ -59,6 +59,16 @@ TEST_F(Limits, OneShortRowFaceInARingIsRefusedNotALoopForever) {
       "row, or none");
 }
 
+TEST_F(Limits, ShortRowFacesAskingEachOtherForRowsAreRefusedNotALoopForever) {
+  // Faces 5 and 7 of the first ring: the wide side of each is on the other's narrow side.
+  tube("short_rows: {faces: [{face: 5, wide_edge: [6, 14]}, {face: 7, wide_edge: [8, 16]}]}\n");
+  expect_refused("check " + in_dir("t1.yaml"),
+                 "cannot generate stitches for face 5 at (-5.58, 2.5, 2.31): its rows keep "
+                 "growing past 100000: short-row faces in one row whose wide sides each ask the "
+                 "other's narrow side for more rows (mark their wide_edge on the same side of "
+                 "the row)");
+}
+
 TEST_F(Limits, MeshAtDevZeroIsRefusedNotReadForever) {
   write("p.yaml", "mesh: /dev/zero\n");
   expect_refused("check " + in_dir("p.yaml"),

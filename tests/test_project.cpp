@@ -101,7 +101,7 @@ TEST(Project, BadValuesNameWhatWasExpected) {
                 .find(":2: unknown stitch pattern 'k2p3'; did you mean 'k2p2'?"),
             std::string::npos);
   EXPECT_NE(error_of("mesh: m.obj\ngauge: {stitches: -3}\n")
-                .find("expected stitches per 10 cm (a positive number), found '-3'"),
+                .find("expected stitches per 10 cm (a number from 1 to 100), found '-3'"),
             std::string::npos);
   EXPECT_NE(error_of("mesh: m.obj\nstart: [{edge: [1]}]\n")
                 .find("expected an edge as its two vertex numbers"),

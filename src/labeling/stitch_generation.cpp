@@ -164,7 +164,13 @@ class Generator {
       changed = false;
       auto at_least = [&](CoarseHalfedge h, std::uint32_t minimum) {
         if (group_count(h) < minimum) {
-          if (minimum > kMaxCountPerEdge) too_many(h, minimum);
+          // Only short rows raise side counts without end: a cycle of them.
+          if (minimum > kMaxCountPerEdge)
+            fail(m_.face(h),
+                 fmt::format("its rows keep growing past {}: short-row faces in one row whose "
+                             "wide sides each ask the other's narrow side for more rows (mark "
+                             "their wide_edge on the same side of the row)",
+                             kMaxCountPerEdge));
           group_count(h) = minimum;
           changed = true;
         }

@@ -30,7 +30,7 @@ namespace skein {
 // Limits on what a coarse mesh and gauge may ask for (docs/formats.md, "Limits"): stitches or
 // rows along one coarse edge, and stitches in all.
 inline constexpr std::uint32_t kMaxCountPerEdge = 100'000;
-inline constexpr std::uint32_t kMaxStitches = 20'000'000;
+inline constexpr std::uint32_t kMaxStitches = 2'000'000;
 
 struct GeneratedStitchMesh {
   StitchMesh mesh;

@@ -919,7 +919,8 @@ void read_line(Script& script, const std::string& file, std::size_t line_no, std
   if (line.front() == '#' || starts_with_ci(line, "piece ")) {
     // "### Piece 3 (yarn 3)": the number is checked, the rest is a title.
     Step step{Step::Kind::piece, line_no};
-    Cursor c(line.substr(line.find_first_not_of("# ")));
+    std::size_t title = line.find_first_not_of("# ");  // none in a heading of '#' alone
+    Cursor c(title == std::string_view::npos ? std::string_view() : line.substr(title));
     if (c.eat("piece")) step.number = c.number().value_or(0);
     script.steps.push_back(step);
     return;
