@@ -18,9 +18,10 @@ namespace {
 constexpr std::uint32_t kNone = 0xffffffffu;
 
 // A dropped loop nothing held unravels, and the cord it ends with it (a tag knit back and forth
-// on one needle): each loop below it pulled through one loop only, its yarn's previous loop,
-// which held nothing else. The rows under a dropped row stay (their wales end there): a
-// ladder runs only when the fabric is pulled.
+// on one needle): each loop below it that held nothing else and was, like the loop above it,
+// pulled through its yarn's previous loop alone (at a sheet's edge a row's first loop is
+// pulled through the yarn's previous loop too, but the loop under it is not: no cord). The rows
+// under a dropped row stay (their wales end there): a ladder runs only when the fabric is pulled.
 std::vector<bool> unravelling(const Fabric& f) {
   std::vector<LoopId> previous(f.loops.size(), kNone), last_of_piece;
   for (LoopId l = 0; l < f.loops.size(); ++l) {
@@ -34,7 +35,9 @@ std::vector<bool> unravelling(const Fabric& f) {
     if (!gone[l] || f.loops[l].parent_count != 1) continue;
     LoopId below = f.parents_of(l)[0];
     const FabricLoop& b = f.loops[below];
-    if (below == previous[l] && b.children == 1 && b.parent_count == 1) gone[below] = true;
+    bool in_cord =
+        below == previous[l] && b.parent_count == 1 && f.parents_of(below)[0] == previous[below];
+    if (in_cord && b.children == 1) gone[below] = true;
   }
   return gone;
 }
