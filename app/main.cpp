@@ -253,9 +253,10 @@ int main(int argc, char** argv) {
                        "every rule an error, as for skein's own output (compile --verify)");
   verify_cmd->add_option("--picture", options.picture,
                          "an .svg to draw the fabric OUT makes in (knitout)");
-  verify_cmd->add_option("--fabric", options.fabric,
-                         "an AutoKnit stitch graph (.st) to write the fabric OUT makes in, "
-                         "for skein check (knitout; cast-on tucks, tags and ladders left out)");
+  verify_cmd->add_option(
+      "--fabric", options.fabric,
+      "an AutoKnit stitch graph (.st) to write the fabric OUT makes in, "
+      "for skein check (knitout; cast-on tucks, dropped loops and tags left out)");
 
   std::string shape_kind;
   std::string circumference, width, length;
