@@ -1,10 +1,10 @@
 #include "knitout/fabric_stitch_graph.hpp"
 
 #include <fmt/format.h>
-#include <fmt/ostream.h>
 
 #include <algorithm>
 #include <array>
+#include <iterator>
 #include <ostream>
 #include <utility>
 #include <vector>
@@ -232,9 +232,14 @@ class StWriter {
 
   std::uint32_t lines() const { return lines_; }
 
+  // Lines are formatted into a buffer written out in blocks: an ostream call per line costs
+  // more than the formatting.
   void write() {
-    for (const Stitch& s : stitches_)
+    for (const Stitch& s : stitches_) {
       if (s.lines) write_stitch(s);
+      if (buffer_.size() > (1u << 16)) flush();
+    }
+    flush();
   }
 
  private:
@@ -281,14 +286,21 @@ class StWriter {
     const FabricLoop& l = f_.loops[s.loop];
     bool plus = l.dir == Direction::plus;
     bool round_way = tube_[l.piece] ? plus == l.front : plus;
-    fmt::print(out_, "{} {} {} {} {} {} {} {} {} {}\n", l.piece, type, round_way ? 'a' : 'c', in[0],
-               in[1], outs[0], outs[1], l.needle, height_[s.loop], l.front ? 0 : 1);
+    fmt::format_to(std::back_inserter(buffer_), "{} {} {} {} {} {} {} {} {} {}\n", l.piece, type,
+                   round_way ? 'a' : 'c', in[0], in[1], outs[0], outs[1], l.needle, height_[s.loop],
+                   l.front ? 0 : 1);
+  }
+
+  void flush() {
+    out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+    buffer_.clear();
   }
 
   const Fabric& f_;
   std::vector<Stitch> stitches_;
   std::vector<std::uint32_t> stitch_of_;
   std::ostream& out_;
+  fmt::memory_buffer buffer_;
   std::vector<std::uint32_t> height_;
   std::vector<bool> tube_;
   std::uint32_t lines_ = 0;
