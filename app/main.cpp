@@ -83,6 +83,9 @@ int main(int argc, char** argv) {
                    "every rule an error, as for skein's own output (compile)");
   verify->add_option("--picture", r.options.picture,
                      "an .svg to draw the fabric OUT makes in (knitout)");
+  verify->add_option("--fabric", r.options.fabric,
+                     "an AutoKnit stitch graph (.st) to write the fabric OUT makes in, "
+                     "for skein check (knitout; cast-on tucks, dropped loops and tags left out)");
 
   auto* new_cmd = app.add_subcommand("new", "write a parametric coarse mesh and its project file");
   new_cmd->add_option("KIND", r.shape, fmt::format("{}", fmt::join(shape_kinds(), ", ")))

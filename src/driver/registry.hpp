@@ -20,6 +20,7 @@ struct TargetOptions {
   std::map<std::string, std::string> settings;
   bool strict = false;  // simulators: the target's own strictest rules (compile --verify)
   std::string picture;  // simulators: an .svg to draw what the replayed file makes in
+  std::string fabric;   // simulators: a stitch graph (.st) to write what the file makes in
 };
 
 // A choice a target offers (`--set rounds=inside-out`) and the values it may take.

@@ -12,6 +12,14 @@ namespace {
 
 constexpr int kPitch = 6;  // px between needles and between heights
 
+const char* yarn_colour(std::size_t carrier) {
+  static const char* colours[] = {"#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e",
+                                  "#17becf", "#8c564b", "#e377c2", "#bcbd22"};
+  return colours[carrier % std::size(colours)];
+}
+
+}  // namespace
+
 std::vector<std::uint32_t> loop_heights(const Fabric& f) {
   std::vector<std::uint32_t> height(f.loops.size(), 0);
   std::vector<std::uint32_t> last_of_piece;
@@ -25,14 +33,6 @@ std::vector<std::uint32_t> loop_heights(const Fabric& f) {
   }
   return height;
 }
-
-const char* yarn_colour(std::size_t carrier) {
-  static const char* colours[] = {"#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e",
-                                  "#17becf", "#8c564b", "#e377c2", "#bcbd22"};
-  return colours[carrier % std::size(colours)];
-}
-
-}  // namespace
 
 void write_fabric_svg(const Replay& r, const std::string& title, std::ostream& out) {
   const Fabric& f = r.fabric;

@@ -6,11 +6,17 @@
 // (the wales), coloured lines follow each yarn from loop to loop. Linear in the loops.
 #pragma once
 
+#include <cstdint>
 #include <iosfwd>
+#include <vector>
 
 #include "knitout/vbed_simulator.hpp"
 
 namespace skein::knitout {
+
+// Each loop's height in the fabric: one above the highest loop it was pulled through; a loop
+// pulled through nothing sits at the height of its yarn piece's previous loop.
+std::vector<std::uint32_t> loop_heights(const Fabric& fabric);
 
 void write_fabric_svg(const Replay& replay, const std::string& title, std::ostream& out);
 

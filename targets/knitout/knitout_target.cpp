@@ -8,6 +8,7 @@
 #include "knitout/emit.hpp"
 #include "knitout/fabric_picture.hpp"
 #include "knitout/fabric_report.hpp"
+#include "knitout/fabric_stitch_graph.hpp"
 #include "knitout/machine_profile.hpp"
 #include "knitout/vbed_simulator.hpp"
 #include "knitout/whole_file_proof.hpp"
@@ -48,6 +49,11 @@ class VbedSimulator : public Simulator {
   }
   VerifyReport verify(const std::string& text, const std::string& file, const Compilation* against,
                       const TargetOptions& options) const override {
+    if (!options.fabric.empty() && !options.fabric.ends_with(".st"))
+      throw UsageError(
+          fmt::format("--fabric {}: the fabric is written as an AutoKnit stitch "
+                      "graph, so the file must end in .st",
+                      options.fabric));
     knitout::ProfileChoice chosen =
         knitout::choose_profile(text, file, options.machine, options.strict);
     const knitout::MachineProfile& profile = chosen.profile;
@@ -59,6 +65,13 @@ class VbedSimulator : public Simulator {
         knitout::write_fabric_svg(replay, file, out);
       });
       shop += fmt::format("\n  the fabric drawn in {}", options.picture);
+    }
+    if (!options.fabric.empty()) {
+      write_file_atomically(options.fabric, [&](std::ostream& out) {
+        knitout::write_fabric_stitch_graph(replay, file, out);
+      });
+      shop += fmt::format("\n  the fabric written as a stitch graph in {} (skein check reads it)",
+                          options.fabric);
     }
     std::string valid =
         fmt::format("{}: every operation is valid on {}{}", file, profile.name, chosen.how);

@@ -1,0 +1,321 @@
+#include "knitout/fabric_stitch_graph.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <iterator>
+#include <ostream>
+#include <utility>
+#include <vector>
+
+#include "common/error.hpp"
+#include "knitout/fabric_picture.hpp"
+
+namespace skein::knitout {
+namespace {
+
+constexpr std::uint32_t kNone = 0xffffffffu;
+
+// A dropped loop nothing held unravels, and the cord it ends with it (a tag knit back and forth
+// on one needle): each loop below it that held nothing else and was, like the loop above it,
+// pulled through its yarn's previous loop alone (at a sheet's edge a row's first loop is
+// pulled through the yarn's previous loop too, but the loop under it is not: no cord). The rows
+// under a dropped row stay (their wales end there): a ladder runs only when the fabric is pulled.
+std::vector<bool> unravelling(const Fabric& f) {
+  std::vector<LoopId> previous(f.loops.size(), kNone), last_of_piece;
+  for (LoopId l = 0; l < f.loops.size(); ++l) {
+    std::uint32_t piece = f.loops[l].piece;
+    if (piece >= last_of_piece.size()) last_of_piece.resize(piece + 1, kNone);
+    previous[l] = std::exchange(last_of_piece[piece], l);
+  }
+  std::vector<bool> gone(f.loops.size(), false);
+  for (LoopId l = static_cast<LoopId>(f.loops.size()); l-- > 0;) {
+    gone[l] = gone[l] || f.loops[l].dropped;
+    if (!gone[l] || f.loops[l].parent_count != 1) continue;
+    LoopId below = f.parents_of(l)[0];
+    const FabricLoop& b = f.loops[below];
+    bool in_cord =
+        below == previous[l] && b.parent_count == 1 && f.parents_of(below)[0] == previous[below];
+    if (in_cord && b.children == 1) gone[below] = true;
+  }
+  return gone;
+}
+
+// A stitch of the graph: the loop it makes (and an increase's second), the loops it takes.
+struct Stitch {
+  LoopId loop = kNone;
+  LoopId second = kNone;
+  std::vector<LoopId> takes;
+  std::array<std::uint32_t, 2> taker{kNone, kNone};  // the stitch taking each of its loops
+  bool after_taking = false;  // its yarn's previous stitch took loops (it is not a cast-on)
+  std::uint32_t first_line = 0;
+  std::uint32_t lines = 0;
+};
+
+struct StitchGraph {
+  std::vector<Stitch> stitches;
+  std::vector<std::uint32_t> stitch_of;  // per loop: the stitch that makes it (or kNone)
+};
+
+class GraphBuilder {
+ public:
+  explicit GraphBuilder(const Fabric& f)
+      : f_(f),
+        gone_(unravelling(f)),
+        takes_(f.loops.size()),
+        stitch_of_(f.loops.size(), kNone),
+        taken_(f.loops.size(), false) {}
+
+  StitchGraph build() {
+    for (LoopId l = 0; l < f_.loops.size(); ++l)
+      if (!gone_[l] && f_.loops[l].made_by != OpCode::tuck) resolve_parents(l);
+    mark_borders();
+    for (LoopId l = 0; l < f_.loops.size(); ++l)
+      if (!gone_[l] && !border_[l]) add_stitch(l);
+    link_takers();
+    return {std::move(stitches_), std::move(stitch_of_)};
+  }
+
+ private:
+  // The loops `l` takes in the stitch graph: its parents, a tuck standing for the loop under
+  // it, without its yarn's previous loop when that is one link of a chain.
+  void resolve_parents(LoopId l) {
+    std::vector<LoopId>& takes = takes_[l];
+    for (LoopId parent : f_.parents_of(l)) {
+      if (f_.loops[parent].made_by == OpCode::tuck && !takes.empty()) {
+        takes_[parent] = {takes.back()};
+        takes.back() = parent;
+      } else {
+        takes.push_back(parent);
+      }
+    }
+    LoopId previous = previous_in_piece(l);
+    if (takes.size() >= 2 && previous != kNone) std::erase(takes, previous);
+  }
+
+  LoopId previous_in_piece(LoopId l) {
+    std::uint32_t piece = f_.loops[l].piece;
+    if (piece >= last_of_piece_.size()) last_of_piece_.resize(piece + 1, kNone);
+    LoopId previous = last_of_piece_[piece];
+    last_of_piece_[piece] = l;
+    return previous;
+  }
+
+  // The tucks through nothing a yarn piece starts with: its cast-on border.
+  void mark_borders() {
+    border_.assign(f_.loops.size(), false);
+    std::vector<bool> started;
+    for (LoopId l = 0; l < f_.loops.size(); ++l) {
+      if (gone_[l]) continue;
+      std::uint32_t piece = f_.loops[l].piece;
+      if (piece >= started.size()) started.resize(piece + 1, false);
+      if (!started[piece] && takes_[l].empty() && f_.loops[l].made_by == OpCode::tuck)
+        border_[l] = true;
+      else
+        started[piece] = true;
+      std::erase_if(takes_[l], [&](LoopId p) { return border_[p]; });
+    }
+  }
+
+  void add_stitch(LoopId l) {
+    std::uint32_t piece = f_.loops[l].piece;
+    if (piece >= last_stitch_.size()) last_stitch_.resize(piece + 1, kNone);
+    std::uint32_t& last = last_stitch_[piece];
+    if (last != kNone && joins_as_increase(stitches_[last], l)) {
+      stitches_[last].second = l;
+      stitch_of_[l] = last;
+      return;
+    }
+    Stitch s;
+    s.loop = l;
+    s.after_taking = last != kNone && !stitches_[last].takes.empty();
+    for (LoopId p : takes_[l])
+      if (!taken_[p]) s.takes.push_back(p), taken_[p] = true;
+    stitch_of_[l] = last = static_cast<std::uint32_t>(stitches_.size());
+    stitches_.push_back(std::move(s));
+  }
+
+  // A split and a knit through one loop, or a loop through nothing beside a knit (either way
+  // along the yarn; not in a cast-on, where the loops through nothing follow each other):
+  // one increase.
+  bool joins_as_increase(Stitch& s, LoopId l) {
+    if (s.second != kNone) return false;
+    const std::vector<LoopId>& mine = takes_[l];
+    if (s.takes.size() == 1 && mine.size() == 1 && s.takes[0] == mine[0]) return true;
+    if (s.takes.size() == 1 && mine.empty() && !takes_[s.loop].empty()) return true;
+    if (s.takes.empty() && s.after_taking && mine.size() == 1 && !taken_[mine[0]] &&
+        mine[0] < s.loop) {
+      s.takes = {mine[0]};
+      taken_[mine[0]] = true;
+      return true;
+    }
+    return false;
+  }
+
+  void link_takers() {
+    for (std::uint32_t s = 0; s < stitches_.size(); ++s)
+      for (LoopId p : stitches_[s].takes) {
+        Stitch& maker = stitches_[stitch_of_[p]];
+        maker.taker[p == maker.loop ? 0 : 1] = s;
+      }
+  }
+
+  const Fabric& f_;
+  std::vector<bool> gone_, border_;
+  std::vector<std::vector<LoopId>> takes_;
+  std::vector<std::uint32_t> stitch_of_;
+  std::vector<bool> taken_;
+  std::vector<LoopId> last_of_piece_;
+  std::vector<std::uint32_t> last_stitch_;
+  std::vector<Stitch> stitches_;
+};
+
+std::uint32_t out_count(const Stitch& s) {
+  return s.second == kNone ? 1 : 2;
+}
+
+// A loop nothing takes ends its wale: the stitch itself is the end (`e`) when it takes one
+// loop and makes one; else an `e` line follows for each loop nothing takes.
+bool is_end(const Stitch& s) {
+  return s.takes.size() == 1 && s.second == kNone && s.taker[0] == kNone;
+}
+std::uint32_t trailing_ends(const Stitch& s) {
+  if (is_end(s)) return 0;
+  return (s.taker[0] == kNone) + (s.second != kNone && s.taker[1] == kNone);
+}
+std::uint32_t chain_lines(const Stitch& s) {  // the `d`s before a decrease of 3 or more
+  return s.takes.size() > 2 ? static_cast<std::uint32_t>(s.takes.size()) - 2 : 0;
+}
+bool skipped(const Stitch& s) {  // a loop through nothing nothing takes: it holds nothing
+  return s.takes.empty() && s.second == kNone && s.taker[0] == kNone;
+}
+
+// A piece is a tube when its front loops go one way round: then the back's go the other.
+std::vector<bool> tubular_pieces(const Fabric& f) {
+  std::vector<std::array<std::uint64_t, 2>> front_by_dir;
+  std::vector<bool> has_back;
+  for (const FabricLoop& l : f.loops) {
+    if (l.piece >= front_by_dir.size())
+      front_by_dir.resize(l.piece + 1), has_back.resize(l.piece + 1);
+    if (l.made_by == OpCode::tuck) continue;
+    if (l.front)
+      ++front_by_dir[l.piece][l.dir == Direction::plus];
+    else
+      has_back[l.piece] = true;
+  }
+  std::vector<bool> tube(front_by_dir.size());
+  for (std::size_t p = 0; p < tube.size(); ++p) {
+    auto [minus, plus] = front_by_dir[p];
+    tube[p] = has_back[p] && std::min(minus, plus) * 4 < std::max(minus, plus);
+  }
+  return tube;
+}
+
+class StWriter {
+ public:
+  StWriter(const Fabric& f, StitchGraph graph, std::ostream& out)
+      : f_(f),
+        stitches_(std::move(graph.stitches)),
+        stitch_of_(std::move(graph.stitch_of)),
+        out_(out),
+        height_(loop_heights(f)),
+        tube_(tubular_pieces(f)) {
+    std::uint32_t line = 0;
+    for (Stitch& s : stitches_) {
+      s.first_line = line;
+      s.lines = skipped(s) ? 0 : chain_lines(s) + 1 + trailing_ends(s);
+      line += s.lines;
+    }
+    lines_ = line;
+  }
+
+  std::uint32_t lines() const { return lines_; }
+
+  // Lines are formatted into a buffer written out in blocks: an ostream call per line costs
+  // more than the formatting.
+  void write() {
+    for (const Stitch& s : stitches_) {
+      if (s.lines) write_stitch(s);
+      if (buffer_.size() > (1u << 16)) flush();
+    }
+    flush();
+  }
+
+ private:
+  std::uint32_t main_line(const Stitch& s) const { return s.first_line + chain_lines(s); }
+  std::int64_t line_of(LoopId l) const { return main_line(stitches_[stitch_of_[l]]); }
+  // The line of taker `t` that takes `loop` (a decrease of 3 or more takes it in its chain).
+  std::int64_t taker_line(std::uint32_t t, LoopId loop) const {
+    if (t == kNone) return -1;
+    const Stitch& s = stitches_[t];
+    if (s.takes.size() <= 2) return main_line(s);
+    auto i = static_cast<std::uint32_t>(std::find(s.takes.begin(), s.takes.end(), loop) -
+                                        s.takes.begin());
+    return s.first_line + (i <= 1 ? 0 : i - 1);
+  }
+
+  void write_stitch(const Stitch& s) {
+    const std::size_t n = s.takes.size();
+    for (std::uint32_t j = 0; j < chain_lines(s); ++j) {  // d(in0, in1), d(previous, in2), ...
+      std::int64_t first = j == 0 ? line_of(s.takes[0]) : s.first_line + j - 1;
+      line(s, 'd', {first, line_of(s.takes[j + 1])}, {s.first_line + j + 1, -1});
+    }
+    std::array<std::int64_t, 2> in{-1, -1};
+    if (n > 2) in = {main_line(s) - 1, line_of(s.takes[n - 1])};
+    for (std::size_t i = 0; i < n && i < 2 && n <= 2; ++i) in[i] = line_of(s.takes[i]);
+    std::uint32_t next_end = main_line(s) + 1;
+    std::array<std::int64_t, 2> outs{-1, -1};
+    for (std::uint32_t o = 0; o < out_count(s) && !is_end(s); ++o)
+      outs[o] = s.taker[o] != kNone ? taker_line(s.taker[o], o ? s.second : s.loop) : next_end++;
+    line(s, letter(s), in, outs);
+    for (std::uint32_t e = main_line(s) + 1; e < s.first_line + s.lines; ++e)
+      line(s, 'e', {main_line(s), -1}, {-1, -1});
+  }
+
+  char letter(const Stitch& s) const {
+    if (is_end(s)) return 'e';
+    if (s.takes.empty()) return 's';
+    if (s.second != kNone) return 'i';
+    if (s.takes.size() >= 2) return 'd';
+    return f_.loops[s.loop].made_by == OpCode::tuck ? 't' : 'k';
+  }
+
+  void line(const Stitch& s, char type, std::array<std::int64_t, 2> in,
+            std::array<std::int64_t, 2> outs) {
+    const FabricLoop& l = f_.loops[s.loop];
+    bool plus = l.dir == Direction::plus;
+    bool round_way = tube_[l.piece] ? plus == l.front : plus;
+    fmt::format_to(std::back_inserter(buffer_), "{} {} {} {} {} {} {} {} {} {}\n", l.piece, type,
+                   round_way ? 'a' : 'c', in[0], in[1], outs[0], outs[1], l.needle, height_[s.loop],
+                   l.front ? 0 : 1);
+  }
+
+  void flush() {
+    out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+    buffer_.clear();
+  }
+
+  const Fabric& f_;
+  std::vector<Stitch> stitches_;
+  std::vector<std::uint32_t> stitch_of_;
+  std::ostream& out_;
+  fmt::memory_buffer buffer_;
+  std::vector<std::uint32_t> height_;
+  std::vector<bool> tube_;
+  std::uint32_t lines_ = 0;
+};
+
+}  // namespace
+
+void write_fabric_stitch_graph(const Replay& replay, const std::string& file, std::ostream& out) {
+  StWriter writer(replay.fabric, GraphBuilder(replay.fabric).build(), out);
+  if (writer.lines() == 0)
+    throw Error(
+        fmt::format("{}: nothing of the fabric stays (every loop unravels or holds "
+                    "nothing), so there is no stitch graph to write",
+                    file));
+  writer.write();
+}
+
+}  // namespace skein::knitout

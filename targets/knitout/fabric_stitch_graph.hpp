@@ -1,0 +1,32 @@
+// The fabric a knitout file makes, written as an AutoKnit stitch graph (`.st`, which
+// `skein check` and `skein compile` read), so that a user can check what a foreign file knits.
+// A walk over the v-bed's fabric, linear in its loops:
+// - a loop pulled through loops is a stitch taking them: `k` (one), `d` (two; more become a
+//   chain of `d`s, as `.st` has no wider decrease), `s` (none: a cast-on);
+// - a tuck lies over the loop under it on its needle: a `t` taking that loop, which the stitch
+//   knit through both then takes (a tuck on an empty needle is a loop through nothing);
+// - the tucks a yarn piece starts with on empty needles are its cast-on's border: not written,
+//   the loops knit through them are the cast-on `s` stitches;
+// - two loops pulled through one loop one after the other along the yarn (a split and a knit),
+//   or a loop through nothing beside a knit along the yarn (a yarn-over, a make-1), are one
+//   increase `i`;
+// - a loop pulled through its yarn's previous loop and another (a bind-off's chain) does not
+//   take the previous loop: the chain is the yarn; a loop nothing takes ends its wale (`e`);
+// - a loop dropped while nothing held it unravels, and with it the cord it ends (a tag: loops
+//   each pulled through their yarn's previous loop alone): none of them is written; the loops
+//   a dropped row was pulled through end their wales there.
+// `yarn` is the yarn piece (one per in/inhook), `dir` the way round: the pass direction on a
+// sheet; on a tube (a piece whose front loops are knit going one way) the front's + and the
+// back's - are the same way round. x is the needle, y the loop's height, z 0 front, 1 back.
+#pragma once
+
+#include <iosfwd>
+
+#include "knitout/vbed_simulator.hpp"
+
+namespace skein::knitout {
+
+// Throws Error when nothing of the fabric stays (every loop unravels).
+void write_fabric_stitch_graph(const Replay& replay, const std::string& file, std::ostream& out);
+
+}  // namespace skein::knitout
