@@ -264,6 +264,8 @@ KnitGraph build_knit_graph(const StitchMesh& mesh, const std::string& source_nam
   g.yarn_next.assign(n, kNoStitch);
   g.yarn_link.assign(n, YarnLink::none);
   g.flags.assign(n, 0);
+  g.part_names = mesh.part_names;
+  if (!mesh.part_names.empty()) g.part = mesh.part.raw();
   link_yarn(mesh, g);
   record_mismatches(mesh, g, add_loops(mesh, g));
   flag_stitches(mesh, g);

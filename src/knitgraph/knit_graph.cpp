@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "common/error.hpp"
+#include "mesh/stitch_mesh.hpp"  // kNoPart
 
 namespace skein {
 
@@ -84,6 +85,7 @@ StitchId KnitGraph::add_stitch(StitchType t, std::uint32_t r, std::uint32_t src,
   yarn_next.push_back(kNoStitch);
   yarn_link.push_back(YarnLink::none);
   flags.push_back(stitch_flags);
+  if (!part.empty()) part.push_back(kNoPart);
   return size() - 1;
 }
 

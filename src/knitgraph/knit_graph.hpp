@@ -103,6 +103,10 @@ struct KnitGraph {
   std::vector<StitchId> yarn_next;    // kNoStitch at the end of a yarn piece
   std::vector<YarnLink> yarn_link;    // how the yarn reaches yarn_next
   std::vector<std::uint8_t> flags;    // StitchFlag bits
+  // The garment's named parts and per stitch its part (kNoPart of mesh/stitch_mesh.hpp: none,
+  // e.g. extruded); both empty when the input names no parts (a stitch mesh file, a graph).
+  std::vector<std::string> part_names;
+  std::vector<std::uint32_t> part;
 
   // Per row.
   std::vector<RowShape> row_shape;
