@@ -17,8 +17,11 @@
 #include "hand/hand_target.hpp"
 #include "hand/pattern_model.hpp"
 #include "hand/row_text.hpp"
+#include "labeling/project.hpp"
 #include "labeling/shapes.hpp"
+#include "labeling/stitch_generation.hpp"
 #include "mesh/generate.hpp"
+#include "mesh/obj_format.hpp"
 #include "target_runner.hpp"
 #include "test_hand_plans.hpp"
 
@@ -349,6 +352,44 @@ TEST(HandRandomized, ShapesOfRandomSizesAndGaugesAreProven) {
       EXPECT_EQ(n[0], 50) << kind;
     }
   }
+}
+
+// A pattern names its pieces after the parts of the garment (the coarse mesh's OBJ groups):
+// a mitten's first piece is named after its palm (below the thumb), taken up again for the
+// thumb, then the hand; shorts' body goes on into the right leg, then the left leg. The
+// simulator reads the names from the headings and proves the pattern.
+TEST(HandPieceNames, AMittenSaysThumbAndHandShortsRightLegAndLeftLeg) {
+  const std::string dir = ::testing::TempDir();
+  const std::map<std::string, std::vector<std::string>> headings = {
+      {"mitten",
+       {"### Palm (yarn 1)\n", "### Palm (yarn 1), taken up again for the thumb\n",
+        "### Hand (yarn 2)\n"}},
+      {"shorts",
+       {"### Body (yarn 1)\n", "### Body (yarn 1), taken up again for the right leg\n",
+        "### Left leg (yarn 2)\n"}}};
+  for (const auto& [kind, expected] : headings) {
+    SCOPED_TRACE(kind);
+    Shape shape = make_shape(kind, {kind == "mitten" ? 20.0 : 90.0, 0, 0}, "named-" + kind);
+    Compilation c = compile_model(write_shape(shape, dir + "/named-" + kind));
+    ASSERT_TRUE(c.knittability.knittable);
+    std::string pattern = emit(c, "hand");
+    EXPECT_TRUE(verify(c, "hand", pattern).proven);
+    for (const std::string& heading : expected)
+      EXPECT_NE(pattern.find(heading), std::string::npos) << heading << pattern;
+    EXPECT_NE(pattern.find("Take up " + expected[0].substr(4, expected[0].find(" (") - 4) +
+                           " again with its yarn."),
+              std::string::npos);
+  }
+}
+
+// A stitch mesh file names no parts: the same model written as one keeps "Piece N".
+TEST(HandPieceNames, AStitchMeshFileKeepsPieceNumbers) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  std::ostringstream obj;
+  write_stitch_mesh(build_project(read_project("samples/three-bars/three-bars.yaml")).mesh, obj);
+  std::string pattern =
+      emit(compile_stitch_mesh(parse_stitch_mesh(obj.str(), "bars.obj"), "bars.obj"), "hand");
+  EXPECT_NE(pattern.find("### Piece 2 (yarn"), std::string::npos) << pattern;
 }
 
 // The samples of more than one piece at seeded random gauges (the same mesh and project): each

@@ -424,9 +424,9 @@ TEST(HandPieces, TheSweaterIsProvenInEveryFormat) {
        {"**Rnd 107:** *BO 48 sts, k48; rep from * to end \u2014 96 sts.\n",
         "Leave the 96 sts on the needle and set the yarn aside (do not cut it).\n",
         "Leave the 58 sts on a spare needle and cut the yarn.\n",
-        "### Piece 1 (yarn 1), taken up again\n",
-        "Take up Piece 1 again with its yarn. Place the 58 sts of Piece 2 on the needle at the "
-        "beginning of the rnd, the first st of its last rnd first. Place the 58 sts of Piece 3 on "
+        "### Body (yarn 1), taken up again for the yoke\n",
+        "Take up Body again with its yarn. Place the 58 sts of Sleeve 1 on the needle at the "
+        "beginning of the rnd, the first st of its last rnd first. Place the 58 sts of Sleeve 2 on "
         "the needle after the first 106 sts of the rnd, the first st of its last rnd first \u2014 "
         "212 "
         "sts.\n",

@@ -231,7 +231,7 @@ class Mutator {
 
   bool near_a_piece_heading(std::size_t i) const {  // blank lines between instructions
     for (std::size_t j = i > 8 ? i - 8 : 0; j < std::min(i + 9, lines_.size()); ++j)
-      if (lines_[j].rfind("### Piece", 0) == 0) return true;
+      if (lines_[j].rfind("### ", 0) == 0) return true;  // "### Sleeve 1 (yarn 3)"
     return false;
   }
 

@@ -277,6 +277,8 @@ KnitGraph build_knit_graph(const StitchMesh& mesh, const std::string& source_nam
   g.flags.assign(n, 0);
   g.direction.resize(n);
   for (Face f : mesh.faces()) g.direction[f.index()] = entering_direction(mesh, f);
+  g.part_names = mesh.part_names;
+  if (!mesh.part_names.empty()) g.part = mesh.part.raw();
   link_yarn(mesh, g);
   record_mismatches(mesh, g, add_loops(mesh, g));
   flag_stitches(mesh, g);

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "common/error.hpp"
+#include "mesh/stitch_mesh.hpp"  // kNoPart
 
 namespace skein {
 
@@ -97,6 +98,7 @@ StitchId KnitGraph::add_stitch(StitchType t, std::uint32_t r, std::uint32_t src,
   yarn_link.push_back(YarnLink::none);
   flags.push_back(stitch_flags);
   direction.push_back(d);
+  if (!part.empty()) part.push_back(kNoPart);
   return size() - 1;
 }
 

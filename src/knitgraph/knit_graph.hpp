@@ -117,6 +117,10 @@ struct KnitGraph {
   std::vector<YarnLink> yarn_link;         // how the yarn reaches yarn_next
   std::vector<std::uint8_t> flags;         // StitchFlag bits
   std::vector<CourseDirection> direction;  // from the input, never derived
+  // The garment's named parts and per stitch its part (kNoPart of mesh/stitch_mesh.hpp: none,
+  // e.g. extruded); both empty when the input names no parts (a stitch mesh file, a graph).
+  std::vector<std::string> part_names;
+  std::vector<std::uint32_t> part;
 
   // Per row.
   std::vector<RowShape> row_shape;

@@ -258,7 +258,7 @@ Shape mitten(const ShapeSize& s, const std::string& name) {
   Ring bottom = d.ring(0, r), below = d.ring(cuff, r);
   d.band(bottom, below, {0, 0, 0}, kUp, "cuff");
   Ring palm = d.ring(base, r);
-  d.band(below, palm, {0, 0, 0}, kUp, "hand");
+  d.band(below, palm, {0, 0, 0}, kUp, "palm");
   // The thumb takes the three vertices round +x, the hand the other seven.
   auto [thumb_base, hand_base] =
       fork(d, palm, kSides - 1, 1,
@@ -295,7 +295,7 @@ Shape legs(const ShapeSize& s, const std::string& name, double default_leg, bool
   int side = 0;
   for (const Ring& top : {right, left}) {
     LimbRings g;
-    g.straight(0, std::max(1.0, leg - 3), 10, r * 0.62, "leg");
+    g.straight(0, std::max(1.0, leg - 3), 10, r * 0.62, side == 0 ? "right_leg" : "left_leg");
     g.straight(g.end(), std::min(3.0, leg / 2), 3, r * 0.6, "hem");
     float splay = side++ == 0 ? 0.08f : -0.08f;
     hems[side - 1] = d.limb(top, unit({splay, -1, 0}), g.distances, g.radii, g.groups);

@@ -114,10 +114,34 @@ class Generator {
       mark_edge(out.mesh, h, [&](Edge e) { out.mesh.shift_path[e] = o; });
     }
     choose_yarns(out);
+    name_parts(out);
     return out;
   }
 
  private:
+  // Each stitch belongs to its coarse face's OBJ group, the part of the garment a pattern names
+  // ("left_leg" becomes "Left leg"); faces before any group belong to none.
+  void name_parts(GeneratedStitchMesh& out) const {
+    auto named = [](const std::string& group) { return !group.empty(); };
+    if (m_.group.size() != m_.num_faces() ||
+        std::none_of(m_.groups.begin(), m_.groups.end(), named))
+      return;
+    for (const std::string& group : m_.groups) out.mesh.part_names.push_back(knitters_name(group));
+    out.mesh.part.resize(out.mesh.num_faces(), kNoPart);
+    for (Face f : out.mesh.faces()) {
+      std::uint32_t group = m_.group[out.coarse_face[f.index()]];
+      if (named(m_.groups[group])) out.mesh.part[f] = group;
+    }
+  }
+
+  static std::string knitters_name(std::string name) {
+    std::replace_if(
+        name.begin(), name.end(), [](char ch) { return ch == '_' || ch == '-'; }, ' ');
+    if (!name.empty() && name[0] >= 'a' && name[0] <= 'z')
+      name[0] = static_cast<char>(name[0] - 'a' + 'A');
+    return name;
+  }
+
   CoarseHalfedge side(CoarseFace f, CoarseRole r) const { return L_.find(m_, f, r); }
   std::uint32_t segments(CoarseHalfedge h) const { return count_[m_.canonical(h).index()]; }
   [[noreturn]] void fail(CoarseFace f, const std::string& what) const {

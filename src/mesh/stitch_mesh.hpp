@@ -81,6 +81,8 @@ struct MismatchYarn {
   }
 };
 
+inline constexpr std::uint32_t kNoPart = 0xffffffffu;
+
 class StitchMesh {
  public:
   // --- sizes and ranges ---
@@ -128,6 +130,10 @@ class StitchMesh {
   HalfedgeData<EdgeRole> role;
   EdgeData<std::uint8_t> shift_path;  // a ShiftOption; non-zero on shift-path wale edges
   EdgeData<MismatchYarn> mismatch_yarn;
+  // The named parts of the garment ("Thumb", "Left leg": a coarse mesh's OBJ groups) and per
+  // face the part it belongs to (kNoPart for none). Both empty when the input names no parts.
+  std::vector<std::string> part_names;
+  FaceData<std::uint32_t> part;
 
  private:
   friend class StitchMeshBuilder;

@@ -60,6 +60,11 @@ std::string title_of(const std::string& source) {
   return title.empty() ? "Pattern" : title;
 }
 
+// What the pattern calls piece `number` (1-based): "Thumb", "Leg 2", "Piece 3".
+const std::string& piece_name(const HandPattern& p, std::uint32_t number) {
+  return p.piece_names[number - 1];
+}
+
 // Writes the rows of each section, finding blocks of rows that repeat.
 class InstructionWriter {
  public:
@@ -76,8 +81,8 @@ class InstructionWriter {
       section_ = s;
       if (p_.sections.size() > 1)
         add(InstructionLine::Kind::heading, "",
-            fmt::format("Piece {} (yarn {}){}{}", sec.piece, sec.yarn + 1,
-                        sec.resumed ? ", taken up again" : "",
+            fmt::format("{} (yarn {}){}{}", piece_name(p_, sec.piece), sec.yarn + 1,
+                        sec.resumed ? taken_up_for(sec) : "",
                         sec.joins ? ": three-needle bind-off" : ""));
       // A join with a new yarn is a piece of its own; with a piece's yarn it ends that piece.
       if (!sec.joins || sec.own_yarn) add(InstructionLine::Kind::setup, "", setup_text(sec));
@@ -106,6 +111,16 @@ class InstructionWriter {
                        [&](const PatternSection::Hold& h) { return h.before_row == row; });
   }
 
+  // ", taken up again", and what for where it works another part of the garment than the one
+  // it is named after: "Palm (yarn 1), taken up again for the thumb".
+  std::string taken_up_for(const PatternSection& sec) const {
+    if (sec.part.empty() || piece_name(p_, sec.piece).starts_with(sec.part))
+      return ", taken up again";
+    std::string part = sec.part;
+    part[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(part[0])));
+    return ", taken up again for the " + part;
+  }
+
   // " Hold the 3 sts of Piece 2 behind the needle, the first st of its last row at the tip."
   std::string hold_text(const PatternSection& sec, std::uint32_t row) const {
     std::string text;
@@ -115,7 +130,7 @@ class InstructionWriter {
             " Hold the {} of {} behind the needle, the {} st of its last row at the tip.",
             sts(h.count),
             h.holder ? fmt::format("holder {}", h.holder)
-                     : fmt::format("Piece {}", p_.sections[h.section].piece),
+                     : piece_name(p_, p_.sections[h.section].piece),
             h.from_last ? "last" : "first");
     return text;
   }
@@ -157,7 +172,7 @@ class InstructionWriter {
   // "Piece 1", or "holder 3" where the sts wait on one.
   std::string joined_needle(const PatternSection& sec, int side) const {
     if (sec.holders[side] != 0) return fmt::format("holder {}", sec.holders[side]);
-    return fmt::format("Piece {}", p_.sections[side == 0 ? sec.front : sec.back].piece);
+    return piece_name(p_, p_.sections[side == 0 ? sec.front : sec.back].piece);
   }
 
   // "Three-needle bind-off: fold the 42 sts of Piece 4 in half with RS together (count them
@@ -173,19 +188,20 @@ class InstructionWriter {
     const PatternSection& held = p_.sections[sec.front];
     bool rnd = held.end_row > held.first_row && p_.rows[held.end_row - 1].round;
     return fmt::format(
-        "{}Three-needle bind-off: fold the {} sts of Piece {} in half with RS together (count them "
+        "{}Three-needle bind-off: fold the {} sts of {} in half with RS together (count them "
         "round the needle from the first st of its last {}): {} in front, {} behind; with a "
         "new yarn bind off all {} pairs.",
-        held_sts_text(f, held.piece, rnd), f.sts, held.piece, rnd ? "rnd" : "row", run(0), run(1),
-        sec.pairs);
+        held_sts_text(f, piece_name(p_, held.piece), rnd), f.sts, piece_name(p_, held.piece),
+        rnd ? "rnd" : "row", run(0), run(1), sec.pairs);
   }
 
   // "Place the 7 sts of holder 1 on the spare needle of Piece 4 after its st 13 (count round
   // the needle from the first st of its last row), the last st slipped first — 42 sts. "
-  static std::string held_sts_text(const PatternSection::Fold& f, std::uint32_t piece, bool rnd) {
+  static std::string held_sts_text(const PatternSection::Fold& f, const std::string& piece,
+                                   bool rnd) {
     if (f.holder == 0) return "";
     return fmt::format(
-        "Place the {} sts of holder {} on the spare needle of Piece {} after its st {} (count "
+        "Place the {} sts of holder {} on the spare needle of {} after its st {} (count "
         "round the needle from the first st of its last {}), the {} st slipped first {} {} "
         "sts. ",
         f.held, f.holder, piece, f.after, rnd ? "rnd" : "row", f.held_from_last ? "last" : "first",
@@ -195,7 +211,7 @@ class InstructionWriter {
   // "Take up Piece 1 again with its yarn. Place the 58 sts of Piece 2 on the needle at the
   // beginning of the rnd, the first st of its last rnd first."
   std::string take_up_text(const PatternSection& sec) const {
-    std::string text = fmt::format("Take up Piece {} again with its yarn.", sec.piece);
+    std::string text = fmt::format("Take up {} again with its yarn.", piece_name(p_, sec.piece));
     if (sec.first_row > 0)  // the sts of its flap another piece works, slipped as it is taken up
       if (std::string held = holdings_text(sec.first_row - 1, set_aside_with(sec)); !held.empty())
         text.append(" ").append(held);
@@ -244,9 +260,9 @@ class InstructionWriter {
     std::string which = cast_on                                         ? "cast on"
                         : spare.in_round && !holds_a_flat_row(p.holder) ? "of its last rnd"
                                                                         : "of its last row";
-    std::string from = p.holder != 0
-                           ? fmt::format("holder {}", p.holder)
-                           : fmt::format("Piece {}{}", spare.piece, p.chain ? "'s chain" : "");
+    std::string from =
+        p.holder != 0 ? fmt::format("holder {}", p.holder)
+                      : fmt::format("{}{}", piece_name(p_, spare.piece), p.chain ? "'s chain" : "");
     std::string first = p.start != 0
                             ? fmt::format("st {} {}", p.start, which)
                             : fmt::format("the {} st {}", p.from_last ? "last" : "first", which);
@@ -370,7 +386,7 @@ class InstructionWriter {
   std::string edge_owner(const PatternSection::PickUp& p) const {
     const PatternSection& worked = p_.sections[section_];
     std::uint32_t piece = p_.sections[p.section].piece;
-    if (piece != worked.piece) return fmt::format("Piece {}", piece);
+    if (piece != worked.piece) return piece_name(p_, piece);
     return worked.joined_in_rnd_at ? "this piece" : "the flap";
   }
 
@@ -398,8 +414,8 @@ class InstructionWriter {
           "Join a new yarn to the {} of holder {}, the {} st of its last {} at the tip.",
           sts(start.count), start.holder, start.from_last ? "last" : "first",
           spare.in_round && !holds_a_flat_row(start.holder) ? "rnd" : "row");
-    return fmt::format("Join a new yarn to the {} {} of Piece {}{}, the {} st cast on at the tip.",
-                       start.count, start.chain ? "loops" : "sts", spare.piece,
+    return fmt::format("Join a new yarn to the {} {} of {}{}, the {} st cast on at the tip.",
+                       start.count, start.chain ? "loops" : "sts", piece_name(p_, spare.piece),
                        start.chain ? "'s chain" : "", start.from_last ? "last" : "first");
   }
 
@@ -641,7 +657,7 @@ class FrontMatter {
         widest = std::max(widest, p_.rows[r].sts_after);
         ++(p_.rows[r].partial ? short_rows : rows);
       }
-      std::string piece = p_.sections.size() > 1 ? fmt::format("Piece {}{}: ", s.piece,
+      std::string piece = p_.sections.size() > 1 ? fmt::format("{}{}: ", piece_name(p_, s.piece),
                                                                s.resumed ? " (taken up again)" : "")
                                                  : "";
       std::string width = fmt::format("{}{}: {}, {} sts at the widest.", piece,
@@ -683,7 +699,9 @@ class FrontMatter {
       items.push_back(fmt::format(
           "{}About {:.0f} m ({:.0f} yd) of {}-weight yarn, estimated from its {} sts at the "
           "gauge below, with 20 cm tails at each end.",
-          p_.sections.size() > 1 ? fmt::format("Piece {} (yarn {}): ", s.piece, s.yarn + 1) : "",
+          p_.sections.size() > 1
+              ? fmt::format("{} (yarn {}): ", piece_name(p_, s.piece), s.yarn + 1)
+              : "",
           metres, std::ceil(metres / 0.9144), weight_text(), with_commas(stitches[s.piece])));
     }
     return items;

@@ -9,6 +9,7 @@
 #include "driver/pipeline.hpp"
 #include "hand/fabric_compare.hpp"
 #include "hand/marker_plan.hpp"
+#include "hand/piece_names.hpp"
 #include "hand/region_markers.hpp"
 
 namespace skein::hand {
@@ -1916,6 +1917,7 @@ StitchType worked_by_hand(const KnitGraph& g, StitchId s) {
 HandPattern build_hand_pattern(const Compilation& c, TurnMethod turns, Rounds rounds) {
   check_supported(c);
   HandPattern pattern = PatternBuilder(c, turns, rounds).run();
+  name_pieces(c.knit, c.yarns, pattern);
   place_section_markers(pattern);
   place_region_markers(pattern);
   return pattern;

@@ -56,6 +56,7 @@ struct PatternSection {
   bool left_live = false;          // ends with its sts on a spare needle, to be joined or placed
   bool set_aside = false;          // ends with its sts and yarn set aside, to be taken up again
   bool resumed = false;            // takes up a piece set aside
+  std::string part;                // the garment part most of its sts are in ("" for none)
   std::uint32_t live_at_end = 0;
   // A piece that starts on loops picked up along the right (or left) edge of another, one in
   // each of its rows from `from_row` to `to_row` (0: the cast-on).
@@ -169,6 +170,7 @@ struct HandPattern {
   bool short_rows = false;    // some row turns before the end of the needle
   std::uint32_t markers = 0;  // the most stitch markers on the needle at once
   std::vector<PatternSection> sections;
+  std::vector<std::string> piece_names;  // by piece number - 1: "Thumb", "Leg 2", "Piece 3"
   std::vector<PatternRow> rows;
   std::vector<HandOp> ops;
   // Where Algorithm 1's schedule puts a marker around a mismatch group or a short-row turn

@@ -2,8 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <charconv>
+#include <numeric>
 
 #include "common/error.hpp"
 #include "hand/pattern_document.hpp"
@@ -233,8 +235,7 @@ class SentenceReader {
     } else if (c.eat("this")) {
       need(c.eat("piece"), c, "'this piece'");  // a flat piece joined in the rnd: the same
     } else {
-      need(c.eat("piece"), c, "'Piece N' (or 'the flap')");
-      step.number = need_number(c, "a piece number");
+      step.number = need_piece(c, "'Piece N' or a piece's name (or 'the flap')");
     }
     need_words(c, {",", "one", "in", "each", "row", "from"}, "', one in each row from'");
     step.from_row = row_of_piece(c);
@@ -295,6 +296,21 @@ class SentenceReader {
     add(step);
   }
 
+  // "Piece 2", or the name a heading gave the piece ("Thumb", "Leg 2"): its number.
+  std::uint32_t need_piece(Cursor& c, const char* expected) {
+    if (c.eat("piece")) return need_number(c, "a piece number");
+    std::vector<std::uint32_t> longest_first(script_.piece_names.size());
+    std::iota(longest_first.begin(), longest_first.end(), 0u);
+    std::stable_sort(longest_first.begin(), longest_first.end(),
+                     [&](std::uint32_t a, std::uint32_t b) {
+                       return script_.piece_names[a].size() > script_.piece_names[b].size();
+                     });
+    for (std::uint32_t i : longest_first)
+      if (!script_.piece_names[i].empty() && c.eat(script_.piece_names[i])) return i + 1;
+    need(false, c, expected);
+    return 0;
+  }
+
   // "the cast-on" (0) or "Row 7".
   std::uint32_t row_of_piece(Cursor& c) {
     if (c.eat("the") && c.eat("cast-on")) return 0;
@@ -310,8 +326,9 @@ class SentenceReader {
     need(step.provisional || c.eat("sts"), c, "'sts' or 'loops'");
     need(c.eat("of"), c, "'of Piece N' or 'of holder N'");
     step.holder[0] = !step.provisional && c.eat("holder");
-    need(step.holder[0] || c.eat("piece"), c, "'of Piece N' or 'of holder N'");
-    step.number = need_number(c, step.holder[0] ? "a holder number" : "a piece number");
+    step.number = step.holder[0]
+                      ? need_number(c, "a holder number")
+                      : need_piece(c, "'of Piece N', of a piece's name or 'of holder N'");
     if (step.provisional) need_words(c, {"'", "s", "chain"}, "'s chain' after the piece");
   }
 
@@ -378,8 +395,7 @@ class SentenceReader {
   // "Take up Piece 1 again with its yarn".
   void take_up(Cursor& c) {
     Step step{Step::Kind::take_up, line_no_};
-    need(c.eat("piece"), c, "'Take up Piece N again'");
-    step.number = need_number(c, "a piece number");
+    step.number = need_piece(c, "'Take up Piece N again' (or a piece's name)");
     need_words(c, {"again", "with", "its", "yarn"}, "'again with its yarn'");
     need(c.done(), c, "the end of the sentence");
     add(step);
@@ -412,8 +428,8 @@ class SentenceReader {
   // st of its last row), the last st slipped first — 42 sts" (before a fold).
   void place_on_spare_needle(Cursor& c, Step& step) {
     step.kind = Step::Kind::place_on_spare;
-    need_words(c, {"needle", "of", "piece"}, "'the spare needle of Piece N'");
-    step.to_row = need_number(c, "a piece number");
+    need_words(c, {"needle", "of"}, "'the spare needle of Piece N'");
+    step.to_row = need_piece(c, "'the spare needle of Piece N' (or of a piece's name)");
     need_words(c, {"after", "its", "st"}, "'after its st N'");
     step.last = need_number(c, "the st the held sts go after");
     need(c.eat_char('('), c, "'(count round the needle from the first st of its last row)'");
@@ -535,8 +551,8 @@ class SentenceReader {
     step.fold = true;
     c.eat("the");
     step.last = need_number(c, "the number of sts folded");
-    need_words(c, {"sts", "of", "piece"}, "'sts of Piece N'");
-    step.number = need_number(c, "a piece number");
+    need_words(c, {"sts", "of"}, "'sts of Piece N'");
+    step.number = need_piece(c, "'sts of Piece N' (or of a piece's name)");
     need_words(c,
                {"in", "half", "with", "RS", "together", "(", "count", "them", "round", "the",
                 "needle", "from", "the", "first", "st", "of", "its", "last"},
@@ -564,8 +580,8 @@ class SentenceReader {
   std::uint32_t needle_end(Cursor& c, std::initializer_list<std::string_view> where,
                            bool& from_last, bool& holder) {
     holder = c.eat("holder");
-    need(holder || c.eat("piece"), c, "'Piece N' or 'holder N'");
-    std::uint32_t piece = need_number(c, holder ? "a holder number" : "a piece number");
+    std::uint32_t piece = holder ? need_number(c, "a holder number")
+                                 : need_piece(c, "'Piece N', a piece's name or 'holder N'");
     need_words(c, where, "'in front' or 'behind' after the piece");
     need_words(c, {",", "the"}, "', the first (or last) st of its last row'");
     from_last = c.eat("last");
@@ -913,15 +929,44 @@ std::string plain(std::string_view line) {
   return out;
 }
 
+// "Thumb" in the heading "Thumb (yarn 2), taken up again"; empty for other lines.
+std::optional<std::string_view> piece_name(std::string_view line) {
+  std::size_t at = line.find(" (yarn ");
+  if (at == 0 || at == std::string_view::npos ||
+      line.substr(0, at).find_first_of(":.,") != std::string_view::npos)
+    return std::nullopt;
+  std::string_view rest = line.substr(at + 7);
+  std::size_t digits = rest.find_first_not_of("0123456789");
+  if (digits == 0 || digits == std::string_view::npos || rest[digits] != ')') return std::nullopt;
+  return line.substr(0, at);
+}
+
+// The number of the piece a heading names: the one it had, or the next.
+std::uint32_t number_piece(Script& script, std::string_view name) {
+  for (std::size_t i = 0; i < script.piece_names.size(); ++i)
+    if (script.piece_names[i].size() == name.size() && starts_with_ci(script.piece_names[i], name))
+      return static_cast<std::uint32_t>(i + 1);
+  script.piece_names.emplace_back(name);
+  return static_cast<std::uint32_t>(script.piece_names.size());
+}
+
 void read_line(Script& script, const std::string& file, std::size_t line_no, std::string_view raw) {
   std::string_view line = trim(raw);
   if (line.empty()) return;
-  if (line.front() == '#' || starts_with_ci(line, "piece ")) {
-    // "### Piece 3 (yarn 3)": the number is checked, the rest is a title.
+  if (line.front() == '#' || starts_with_ci(line, "piece ") || piece_name(line)) {
+    // "### Piece 3 (yarn 3)": the number is checked, the rest is a title. "### Thumb (yarn 2)":
+    // a name, numbered in the order the headings first give it.
     Step step{Step::Kind::piece, line_no};
-    std::size_t title = line.find_first_not_of("# ");  // none in a heading of '#' alone
-    Cursor c(title == std::string_view::npos ? std::string_view() : line.substr(title));
-    if (c.eat("piece")) step.number = c.number().value_or(0);
+    std::size_t start = line.find_first_not_of("# ");  // none in a heading of '#' alone
+    std::string_view title =
+        start == std::string_view::npos ? std::string_view() : line.substr(start);
+    Cursor c(title);
+    if (c.eat("piece"))
+      step.number = c.number().value_or(0);
+    else if (std::optional<std::string_view> name = piece_name(title))
+      step.number = number_piece(script, *name);
+    if (step.number != 0 && script.piece_names.size() < step.number)
+      script.piece_names.resize(step.number);
     script.steps.push_back(step);
     return;
   }

@@ -104,6 +104,8 @@ struct Step {
 
 struct Script {
   std::vector<Step> steps;
+  // By piece number - 1: the names the headings give ("Thumb"; "" for a "Piece N" heading).
+  std::vector<std::string> piece_names;
   std::vector<Program> programs;
 };
 
