@@ -61,7 +61,11 @@ TEST_F(CliOutputs, AnExistingOutputIsReplacedOnlyWithForce) {
   EXPECT_EQ(read("hat.schedule"), "mine\n");
   CliRun forced = skein("compile samples/hat/hat.obj -t schedule -o " + out + " --force");
   EXPECT_EQ(forced.exit_code, 0) << forced.err;
-  EXPECT_EQ(forced.out, "wrote " + out + " (schedule target, 2048 stitches, 1 yarn piece)\n");
+  EXPECT_EQ(forced.out.rfind("wrote " + out + " (schedule target, 2048 stitches, 1 yarn piece)\n" +
+                                 out + ": proven against samples/hat/hat.obj",
+                             0),
+            0u)
+      << forced.out;
   EXPECT_EQ(read("hat.schedule").rfind(";!skein-schedule 1\n", 0), 0u);
   write("s.svg", "mine\n");
   expect_refused(skein("render samples/swatch/swatch.yaml -o " + in_dir("s.svg")),

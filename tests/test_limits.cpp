@@ -265,7 +265,7 @@ TEST_F(Limits, TheHandPatternGivesTheProjectsGauge) {
   EXPECT_EQ(md.find("worsted"), std::string::npos);
 
   edit("h.yaml", "stitches: 22, rows: 30", "stitches: 28, rows: 40");
-  run = skein("compile " + in_dir("h.yaml") + " -t hand -o " + in_dir("h.md"));
+  run = skein("compile " + in_dir("h.yaml") + " -t hand -o " + in_dir("h.md") + " --force");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   md = read("h.md");
   EXPECT_NE(md.find("28 sts and 40 rows = 10 cm (4 in) in stockinette stitch with "
