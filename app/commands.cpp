@@ -197,6 +197,11 @@ int run_compile(const Registry& registry, const Request& r) {
 int run_verify(const Registry& registry, const Request& r) {
   const Target& target = target_of(registry, r.input, r.target);
   const Simulator& simulator = simulator_for(registry, target);
+  std::vector<std::string> inputs = inputs_of(r.input, r.options.machine);
+  if (!r.against.empty())
+    for (std::string& against : inputs_of(r.against)) inputs.push_back(std::move(against));
+  for (const std::string& drawn : {r.options.picture, r.options.fabric})
+    if (!drawn.empty()) OutputFile(drawn, {r.force, inputs});  // refused now, before the replay
   std::string text = read_file(r.input);
   if (r.against.empty())
     return report_verification(simulator.verify(text, r.input, nullptr, r.options), std::cout);

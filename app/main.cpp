@@ -86,6 +86,7 @@ int main(int argc, char** argv) {
   verify->add_option("--fabric", r.options.fabric,
                      "an AutoKnit stitch graph (.st) to write the fabric OUT makes in, "
                      "for skein check (knitout; cast-on tucks, dropped loops and tags left out)");
+  add_force(*verify, r);
 
   auto* new_cmd = app.add_subcommand("new", "write a parametric coarse mesh and its project file");
   new_cmd->add_option("KIND", r.shape, fmt::format("{}", fmt::join(shape_kinds(), ", ")))

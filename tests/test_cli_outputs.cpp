@@ -53,6 +53,22 @@ TEST_F(CliOutputs, NoWriterReplacesItsInputEvenWithForce) {
   EXPECT_EQ(read("hat.obj"), text);
 }
 
+// verify's --picture and --fabric follow the same rules as -o, checked before the replay.
+TEST_F(CliOutputs, VerifyDrawsOrWritesTheFabricOnlyWhereAnOutputMay) {
+  std::string k = copy_sample("hat", "hat.generic.k");
+  expect_refused(skein("verify " + k + " --fabric " + k + " --force"),
+                 "cannot write " + k + ": it is an input of this command");
+  write("f.st", "mine\n");
+  expect_refused(skein("verify " + k + " --fabric " + in_dir("f.st")),
+                 in_dir("f.st") + " already exists; pass --force to replace it");
+  EXPECT_EQ(read("f.st"), "mine\n");
+  CliRun forced = skein("verify " + k + " --fabric " + in_dir("f.st") + " --force");
+  EXPECT_NE(read("f.st"), "mine\n") << forced.err;
+  write("f.svg", "mine\n");
+  expect_refused(skein("verify " + k + " --picture " + in_dir("f.svg")),
+                 in_dir("f.svg") + " already exists; pass --force to replace it");
+}
+
 TEST_F(CliOutputs, AnExistingOutputIsReplacedOnlyWithForce) {
   write("hat.schedule", "mine\n");
   std::string out = in_dir("hat.schedule");
