@@ -840,4 +840,13 @@ KnitGraph folded_tube_graph() {
   return g;
 }
 
+StitchMesh random_sheet_or_tube(int trial, std::mt19937_64& rng) {
+  RandomShaping shaping;
+  shaping.min_width = trial % 2 ? 6 : 3;
+  std::uint32_t width = 6 + static_cast<std::uint32_t>(rng() % 30);
+  std::uint32_t rows = 1 + static_cast<std::uint32_t>(rng() % 25);
+  Layout layout = trial % 2 ? Layout::tube : Layout::sheet;
+  return build_from_rows(random_rows(width, rows, shaping, rng()), layout);
+}
+
 }  // namespace skein::testing

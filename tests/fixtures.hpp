@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <random>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -152,5 +153,9 @@ std::size_t occurrences(std::string_view text, std::string_view what);
 // taking one st of a cast-on column beside its left edge (a contracting perpendicular edge,
 // worked "Sl1 from spare, k2tog"), then bound off.
 StitchMesh edging_mesh(int width, int rows);
+
+// A sheet (even trials) or tube (odd trials, which keep at least 6 sts) of random width, height
+// and shaping, drawn from `rng`: the randomized tests' stitch meshes.
+StitchMesh random_sheet_or_tube(int trial, std::mt19937_64& rng);
 
 }  // namespace skein::testing

@@ -138,14 +138,8 @@ TEST(Lowering, AutoKnitStitchGraphsVerify) {
 TEST(Lowering, RandomSheetsAndTubesVerify) {
   std::mt19937_64 rng(13);
   for (int trial = 0; trial < 120; ++trial) {
-    RandomShaping shaping;
-    shaping.min_width = trial % 2 ? 6 : 3;
-    std::uint32_t width = 6 + static_cast<std::uint32_t>(rng() % 30);
-    std::uint32_t rows = 1 + static_cast<std::uint32_t>(rng() % 25);
-    Layout layout = trial % 2 ? Layout::tube : Layout::sheet;
     SCOPED_TRACE(fmt::format("trial {}", trial));
-    expect_verified(compile_stitch_mesh(
-        build_from_rows(random_rows(width, rows, shaping, rng()), layout), "random"));
+    expect_verified(compile_stitch_mesh(testing::random_sheet_or_tube(trial, rng), "random"));
   }
 }
 

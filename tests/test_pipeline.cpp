@@ -184,13 +184,7 @@ VerifyReport emit_and_replay(const Compilation& c,
 TEST(Randomized, SchedulesHoldEveryStitchOnceAfterItsDependencies) {
   std::mt19937_64 rng(2026);
   for (int trial = 0; trial < 150; ++trial) {
-    RandomShaping shaping;
-    shaping.min_width = trial % 2 ? 6 : 3;
-    std::uint32_t width = 6 + static_cast<std::uint32_t>(rng() % 30);
-    std::uint32_t rows = 1 + static_cast<std::uint32_t>(rng() % 25);
-    Layout layout = trial % 2 ? Layout::tube : Layout::sheet;
-    Compilation c = compile_stitch_mesh(
-        build_from_rows(random_rows(width, rows, shaping, rng()), layout), "random");
+    Compilation c = compile_stitch_mesh(testing::random_sheet_or_tube(trial, rng), "random");
     ASSERT_TRUE(c.knittability.knittable) << check_report(c);
     ASSERT_EQ(c.yarns.size(), 1u);
     checked_order(c);
