@@ -93,38 +93,57 @@ Grip grip(const KnitGraph& graph, const StitchLayout& layout, StitchId taker, st
 }
 
 // The lobe j of stitch s, its head bent over to where the loop's taker grips it.
-void lay_lobe(const KnitGraph& graph, const StitchLayout& layout, StitchId s, std::uint32_t j,
-              float diameter, Point3* out) {
-  const StitchTemplate t = stitch_template(graph.type[s]);
-  const StitchFrame& f = layout.frame[s];
-  const float amplitude = kDepth * diameter;
-  auto made = graph.loops_made_by(s);
-  std::uint32_t slot = layout.right_to_left[s] ? t.lobes - 1 - j : j;
-  const Loop* loop =
-      t.kind != LobeKind::slipped && slot < made.size() ? &graph.loops[made[slot]] : nullptr;
-  bool gripped = loop && loop->taker != kNoStitch;
-  Grip g = gripped ? grip(graph, layout, loop->taker, loop->taker_slot, diameter) : Grip{};
-  const float lobe_centre = (static_cast<float>(j) + 0.5f) / t.lobes;
-  for (std::uint32_t k = 0; k < kLobeSamples; ++k) {
-    Sample p = lobe_sample(t, j, k, amplitude);
-    out[k] = f.at(p.x, p.y, p.z);
-    float w = gripped ? smoothstep(0.55f, 1.0f, p.y) : 0;
-    if (w == 0) continue;
-    const StitchFrame& tf = layout.frame[loop->taker];
-    float x = g.centre + (p.x - lobe_centre) * t.lobes * g.width;
+class Lobe {
+ public:
+  Lobe(const KnitGraph& graph, const StitchLayout& layout, StitchId s, std::uint32_t j,
+       float diameter)
+      : t_(stitch_template(graph.type[s])),
+        frame_(layout.frame[s]),
+        amplitude_(kDepth * diameter),
+        j_(j),
+        centre_((static_cast<float>(j) + 0.5f) / t_.lobes) {
+    auto made = graph.loops_made_by(s);
+    std::uint32_t slot = layout.right_to_left[s] ? t_.lobes - 1 - j : j;
+    const Loop* loop =
+        t_.kind != LobeKind::slipped && slot < made.size() ? &graph.loops[made[slot]] : nullptr;
+    if (loop && loop->taker != kNoStitch) {
+      taker_ = &layout.frame[loop->taker];
+      grip_ = grip(graph, layout, loop->taker, loop->taker_slot, diameter);
+    }
+  }
+
+  Point3 at(std::uint32_t k) const {
+    Sample p = lobe_sample(t_, j_, k, amplitude_);
+    Point3 own = frame_.at(p.x, p.y, p.z);
+    float w = taker_ ? smoothstep(0.55f, 1.0f, p.y) : 0;
+    if (w == 0) return own;
+    float x = grip_.centre + (p.x - centre_) * t_.lobes * grip_.width;
     // The head lies behind the new loop's legs as the taker sees it: a purl takes a knit
     // loop's head in front.
-    float z = p.z * g.side * t.side + g.depth;
-    out[k] = (1 - w) * out[k] + w * tf.at(x, p.y - 1 + g.lift, z);
+    float z = p.z * grip_.side * t_.side + grip_.depth;
+    return (1 - w) * own + w * taker_->at(x, p.y - 1 + grip_.lift, z);
   }
+
+ private:
+  StitchTemplate t_;
+  const StitchFrame& frame_;
+  float amplitude_;
+  std::uint32_t j_;
+  float centre_;
+  const StitchFrame* taker_ = nullptr;
+  Grip grip_{};
+};
+
+// The straight way between two lobes far apart (a turn, a shift-path's step) gets points so
+// that no segment is much longer than those of the lobes: how many, and writing them.
+std::uint32_t bridge_points(const Point3& from, const Point3& to, float spacing) {
+  auto steps = static_cast<std::uint32_t>(std::ceil((to - from).norm() / spacing));
+  return steps > 1 ? steps - 1 : 0;
 }
 
-// Points of the straight way between two lobes far apart (a turn, a shift-path's step), so
-// that no segment is much longer than those of the lobes.
-void bridge(const Point3& from, const Point3& to, float spacing, std::vector<Point3>& out) {
-  int steps = static_cast<int>(std::ceil((to - from).norm() / spacing));
-  for (int i = 1; i < steps; ++i)
-    out.push_back(from + (to - from) * (static_cast<float>(i) / static_cast<float>(steps)));
+void bridge(const Point3& from, const Point3& to, std::uint32_t points, Point3* out) {
+  for (std::uint32_t i = 1; i <= points; ++i)
+    out[i - 1] = from + (to - from) * (static_cast<float>(i) / static_cast<float>(points + 1));
 }
 
 }  // namespace
@@ -153,36 +172,47 @@ std::vector<StitchId> yarn_order(const KnitGraph& graph, const YarnPieces& piece
 YarnModel generate_yarn(const KnitGraph& graph, const YarnPieces& pieces,
                         const StitchLayout& layout, const CurveOptions& options) {
   const float diameter = options.diameter * layout.gauge.stitch_width;
-  std::vector<StitchId> order = yarn_order(graph, pieces);
-  // Lobes first, into their places in yarn order (in parallel), then the pieces with the
-  // bridges between lobes far apart.
-  std::vector<std::uint32_t> at(order.size() + 1, 0);
-  for (std::size_t i = 0; i < order.size(); ++i)
-    at[i + 1] = at[i] + stitch_template(graph.type[order[i]]).lobes * kLobeSamples;
-  std::vector<Point3> lobes(at.back());
-  unsigned threads = options.threads ? options.threads : default_threads();
+  const float spacing = diameter / 2;
+  const std::vector<StitchId> order = yarn_order(graph, pieces);
+  const unsigned threads = options.threads ? options.threads : default_threads();
+  auto lobes_of = [&](std::size_t i) { return stitch_template(graph.type[order[i]]).lobes; };
+  // Two passes, in parallel, writing every point once in its place: first each stitch's ends
+  // (where its yarn comes in and leaves), which size the bridges, then the lobes and bridges.
+  std::vector<Point3> first(order.size()), last(order.size());
   parallel_for(order.size(), threads, [&](std::size_t begin, std::size_t end, unsigned) {
-    for (std::size_t i = begin; i < end; ++i)
-      for (std::uint32_t j = 0; j * kLobeSamples < at[i + 1] - at[i]; ++j)
-        lay_lobe(graph, layout, order[i], j, diameter, &lobes[at[i] + j * kLobeSamples]);
+    for (std::size_t i = begin; i < end; ++i) {
+      first[i] = Lobe(graph, layout, order[i], 0, diameter).at(0);
+      last[i] = Lobe(graph, layout, order[i], lobes_of(i) - 1, diameter).at(kLobeSamples - 1);
+    }
   });
-
+  // at[i]: where stitch i's bridge (from the stitch before it on its piece) begins.
+  std::vector<std::uint32_t> at(order.size() + 1, 0);
   YarnModel model;
   model.radius = diameter / 2;
-  model.stitch_first.assign(graph.size(), kNoPoint);
-  model.right_to_left = layout.right_to_left;
-  model.point.reserve(lobes.size() + lobes.size() / 8);
   model.piece_first.push_back(0);
-  const float spacing = model.radius;
   std::size_t i = 0;
   for (std::uint32_t p = 0; p < pieces.size(); ++p) {
     for (std::uint32_t k = 0; k < pieces.length[p]; ++k, ++i) {
-      if (k > 0) bridge(model.point.back(), lobes[at[i]], spacing, model.point);
-      model.stitch_first[order[i]] = static_cast<std::uint32_t>(model.point.size());
-      model.point.insert(model.point.end(), lobes.begin() + at[i], lobes.begin() + at[i + 1]);
+      std::uint32_t gap = k > 0 ? bridge_points(last[i - 1], first[i], spacing) : 0;
+      at[i + 1] = at[i] + gap + lobes_of(i) * kLobeSamples;
     }
-    model.piece_first.push_back(static_cast<std::uint32_t>(model.point.size()));
+    model.piece_first.push_back(at[i]);
   }
+  model.point.resize(at.back());
+  model.stitch_first.assign(graph.size(), kNoPoint);
+  model.right_to_left = layout.right_to_left;
+  parallel_for(order.size(), threads, [&](std::size_t begin, std::size_t end, unsigned) {
+    for (std::size_t n = begin; n < end; ++n) {
+      std::uint32_t lobes = lobes_of(n), start = at[n + 1] - lobes * kLobeSamples;
+      if (start > at[n]) bridge(last[n - 1], first[n], start - at[n], &model.point[at[n]]);
+      model.stitch_first[order[n]] = start;
+      for (std::uint32_t j = 0; j < lobes; ++j) {
+        Lobe lobe(graph, layout, order[n], j, diameter);
+        Point3* out = &model.point[start + j * kLobeSamples];
+        for (std::uint32_t k = 0; k < kLobeSamples; ++k) out[k] = lobe.at(k);
+      }
+    }
+  });
   return model;
 }
 
