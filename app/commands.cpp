@@ -19,6 +19,7 @@
 #include "labeling/project.hpp"
 #include "labeling/shapes.hpp"
 #include "labeling/stitch_generation.hpp"
+#include "mesh/autoknit_st.hpp"
 #include "mesh/obj_format.hpp"
 #include "render/svg.hpp"
 #include "yarn/export.hpp"
@@ -242,17 +243,37 @@ int run_render(const Request& r) {
   return kDone;
 }
 
+// What `skein yarn` lays yarn along: a model (its stitch mesh, or a stitch graph's `positions`),
+// or the fabric a target's output makes, as its simulator rebuilds it (a stitch graph).
+Compilation yarn_input(const Registry& registry, const Request& r,
+                       std::vector<std::array<double, 3>>& positions) {
+  std::string extension = std::filesystem::path(r.input).extension().string();
+  if (extension == ".obj" || extension == ".yaml" || extension == ".yml" || extension == ".st") {
+    Compilation c = compile_model(r.input, progress_printer(r.verbose));
+    if (!c.mesh) positions = read_stitch_positions(r.input);
+    return c;
+  }
+  const Target& target = target_of(registry, r.input, r.target);
+  std::optional<std::string> fabric =
+      simulator_for(registry, target).fabric_stitch_graph(read_file(r.input), r.input, r.options);
+  if (!fabric)
+    throw UnsupportedError(fmt::format(
+        "skein yarn: the {} simulator does not rebuild the fabric of {}", target.name(), r.input));
+  std::string name = r.input + " (its fabric)";
+  KnitGraph graph = parse_autoknit_st(*fabric, name, &positions);
+  return compile_knit_graph(std::move(graph), name, progress_printer(r.verbose));
+}
+
 // `skein yarn`: the yarn-level model of INPUT, written as OBJ/PLY polylines or tubes and drawn.
-int run_yarn(const Request& r) {
+int run_yarn(const Registry& registry, const Request& r) {
   if (r.output.empty() && r.yarn_picture.empty())
     throw UsageError("skein yarn: give -o MODEL (.obj or .ply), --picture PNG, or both");
   std::optional<OutputFile> model, picture;
   if (!r.output.empty()) model.emplace(r.output, OutputRules{r.force, inputs_of(r.input)});
   if (!r.yarn_picture.empty())
     picture.emplace(r.yarn_picture, OutputRules{r.force, inputs_of(r.input)});
-  Compilation c = compile_model(r.input, progress_printer(r.verbose));
   std::vector<std::array<double, 3>> positions;
-  if (!c.mesh) positions = read_stitch_positions(r.input);
+  Compilation c = yarn_input(registry, r, positions);
   YarnOptions options = r.yarn;
   options.relax_yarn = options.relax.max_steps > 0;
   options.relax.progress = [](const RelaxProgress& p) {

@@ -38,6 +38,6 @@ int run_verify(const Registry& registry, const Request& r);
 int run_new(const Request& r);
 int run_generate(const Request& r);
 int run_render(const Request& r);
-int run_yarn(const Request& r);
+int run_yarn(const Registry& registry, const Request& r);
 
 }  // namespace skein::cli

@@ -48,6 +48,7 @@ const std::map<std::string, std::string>& examples() {
       {"yarn", R"(  skein yarn samples/hat/hat.obj --picture hat-yarn.png   # relaxed yarn, drawn
   skein yarn samples/hat/hat.obj -o hat-yarn.obj --tube       # a tube mesh for a renderer
   skein yarn samples/autoknit/test-A.st -o a.ply --steps 0    # the templates' yarn, unrelaxed
+  skein yarn swatch.k --picture swatch-yarn.png               # the fabric a knitout file makes
 )"},
   };
   return kExamples;

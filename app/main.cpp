@@ -115,8 +115,12 @@ int main(int argc, char** argv) {
   render->add_flag("--coarse", r.coarse, "for a project: draw the labelled coarse mesh");
 
   auto* yarn = app.add_subcommand("yarn", "lay yarn along INPUT's stitches, relax it, export it");
-  yarn->add_option("INPUT", r.input, "stitch mesh (.obj), project (.yaml) or stitch graph (.st)")
+  yarn->add_option("INPUT", r.input,
+                   "stitch mesh (.obj), project (.yaml), stitch graph (.st), or a target's output "
+                   "(.k): the fabric its simulator rebuilds")
       ->required();
+  yarn->add_option("-m,--machine", r.options.machine,
+                   "for knitout: machine profile name or path (default: from ;;Machine:)");
   yarn->add_option("-o,--output", r.output, "yarn polylines (.obj or .ply); - for standard output");
   yarn->add_flag("--tube", r.tube, "write a tube mesh instead of polylines (.obj)");
   yarn->add_option("--picture", r.yarn_picture, "draw the yarn into this .png");
@@ -155,6 +159,7 @@ int main(int argc, char** argv) {
     return run_reporting_errors("generating the stitch mesh of " + r.input,
                                 [&] { return run_generate(r); });
   if (*yarn)
-    return run_reporting_errors("laying yarn along " + r.input, [&] { return run_yarn(r); });
+    return run_reporting_errors("laying yarn along " + r.input,
+                                [&] { return run_yarn(registry, r); });
   return run_reporting_errors("rendering " + r.input, [&] { return run_render(r); });
 }

@@ -196,5 +196,21 @@ TEST_F(CliOutputs, RenderAndGenerateSayWhatTheyWrote) {
                           " (the stitch mesh of samples/swatch/swatch.yaml, 2024 stitches)\n");
 }
 
+// `skein yarn` on a target's output lays yarn along the fabric its simulator rebuilds; a
+// simulator that rebuilds none is refused as "cannot do that yet" (exit 3).
+TEST_F(CliOutputs, YarnOfAKnitoutFileIsTheFabricTheVbedRebuilds) {
+  std::string out = in_dir("hat-k.obj");
+  CliRun r = skein("yarn samples/hat/hat.generic.k --steps 0 -o " + out);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("yarn: 2048 stitches, 1 yarn piece, ", 0), 0u) << r.out;
+  EXPECT_NE(r.out.find("wrote " + out + "\n"), std::string::npos) << r.out;
+  CliRun hand = skein("yarn samples/hat/hat.md --steps 0 -o " + in_dir("hat-md.obj"));
+  EXPECT_EQ(hand.exit_code, 3) << hand.err;
+  EXPECT_NE(hand.err.find("the hand simulator does not rebuild the fabric of samples/hat/hat.md"),
+            std::string::npos)
+      << hand.err;
+  EXPECT_FALSE(fs::exists(dir_ / "hat-md.obj"));
+}
+
 }  // namespace
 }  // namespace skein

@@ -10,6 +10,8 @@
 
 #include "driver/pipeline.hpp"
 #include "labeling/shapes.hpp"
+#include "mesh/autoknit_st.hpp"
+#include "target_runner.hpp"
 #include "yarn/build.hpp"
 #include "yarn/checks.hpp"
 
@@ -34,12 +36,12 @@ YarnBuild yarn_of(const Compilation& c, int steps) {
 }
 
 // `unrelated`: the share of loops an unrelated neighbour's yarn may pierce as well (cells
-// next to short-row faces are skewed).
+// next to short-row faces are skewed); `missed`: the share its taker's yarn may miss.
 void expect_held(const Compilation& c, const YarnModel& model, const std::string& when,
-                 double unrelated = 0) {
+                 double unrelated = 0, double missed = 0) {
   TopologyReport t = check_yarn_topology(c.knit, model);
   EXPECT_GT(t.loops, 0u) << c.input;
-  EXPECT_EQ(t.not_held, 0u) << c.input << " " << when << ": " << t.first_problem;
+  EXPECT_LE(t.not_held, missed * t.loops) << c.input << " " << when << ": " << t.first_problem;
   EXPECT_LE(t.wrongly_held, unrelated * t.loops)
       << c.input << " " << when << ": " << t.first_problem;
 }
@@ -125,6 +127,30 @@ TEST(YarnModel, RandomShapesHoldEveryLoopAndStayClear) {
     expect_clear(c, relaxed.model);
   }
   std::filesystem::remove_all(dir);
+}
+
+// The machine's fabric gets yarn too: the hat's knitout, replayed by the v-bed (not the
+// emitter), rebuilt as a stitch graph, laid with yarn. A tube lies flat on the two beds, so
+// the stitches at its folds get rough frames: 1 loop in 1,000 may be missed there (the hat
+// misses 1 of 2,048, at a fold).
+TEST(YarnModel, FabricOfAKnitoutFileHoldsEveryLoop) {
+  Compilation hat = compile_model(sample_path("hat", ".obj"));
+  TargetOptions options;
+  options.machine = "generic";
+  std::string knitout = testing::emit(hat, "knitout", options);
+  Registry registry;
+  register_builtin_targets(registry);
+  std::optional<std::string> fabric =
+      registry.simulator_for("knitout")->fabric_stitch_graph(knitout, "hat.k", options);
+  ASSERT_TRUE(fabric.has_value());
+  std::vector<std::array<double, 3>> positions;
+  Compilation c = compile_knit_graph(parse_autoknit_st(*fabric, "hat.k", &positions), "hat.k");
+  EXPECT_EQ(c.knit.size(), hat.knit.size());
+  YarnOptions laid;
+  laid.relax_yarn = false;
+  YarnBuild yarn = build_yarn(c.knit, c.yarns, nullptr, positions, laid);
+  EXPECT_EQ(yarn.model.pieces(), c.yarns.size());
+  expect_held(c, yarn.model, "as laid", 0.02, 0.001);
 }
 
 }  // namespace

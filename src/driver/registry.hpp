@@ -5,6 +5,7 @@
 #include <iosfwd>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -62,6 +63,15 @@ class Simulator {
   // Replays `text` (read from `file`); with `against`, also compares the result with it.
   virtual VerifyReport verify(const std::string& text, const std::string& file,
                               const Compilation* against, const TargetOptions& options) const = 0;
+  // The fabric `text` makes, as an AutoKnit stitch graph (.st text with stitch positions), for
+  // the stages that take a stitch graph (the yarn model); nullopt when the simulator does not
+  // rebuild one. Throws on a file it cannot replay.
+  virtual std::optional<std::string> fabric_stitch_graph(const std::string& text,
+                                                         const std::string& file,
+                                                         const TargetOptions& options) const {
+    (void)text, (void)file, (void)options;
+    return std::nullopt;
+  }
 };
 
 class Registry {

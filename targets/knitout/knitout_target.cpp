@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <sstream>
+
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "driver/pipeline.hpp"
@@ -89,6 +91,16 @@ class VbedSimulator : public Simulator {
     report.summary =
         fmt::format("{}; {}\n{}{}", valid, proof.summary, findings_text(replay, profile), shop);
     return report;
+  }
+
+  std::optional<std::string> fabric_stitch_graph(const std::string& text, const std::string& file,
+                                                 const TargetOptions& options) const override {
+    knitout::ProfileChoice chosen =
+        knitout::choose_profile(text, file, options.machine, options.strict);
+    knitout::Replay replay = knitout::replay_knitout(text, file, chosen.profile, chosen.options);
+    std::ostringstream out;
+    knitout::write_fabric_stitch_graph(replay, file, out);
+    return std::move(out).str();
   }
 };
 
