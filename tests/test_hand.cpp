@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <map>
 #include <random>
+#include <set>
 #include <sstream>
 
 #include "builtin_targets.hpp"
@@ -303,19 +304,24 @@ TEST(HandRandomized, ShapedSheetsAndTubesAreProven) {
 }
 
 // Every shape `skein new` makes, at 50 random sizes and gauges each, with either short-row
-// method: the pattern a designer gets from it is proven, or (shorts and trousers only) the hand
-// target refuses it by name: the trousers' legs joining into the body (the body's first rnd
-// would work only some of the sts of a leg placed on the needle, the rest waiting for the
-// crotch's three-needle bind-off), and at some gauges "the loops of yarn N do not keep one
-// left-to-right order".
+// method: the pattern a designer gets from it is proven, or (the shapes that part into or join
+// from several tubes beyond the mitten's thumb) the hand target refuses it by name: the
+// trousers' legs joining into the body (the body's first rnd would work only some of the sts
+// of a leg placed on the needle, the rest waiting for the crotch's three-needle bind-off), and
+// at some gauges "the loops of yarn N do not keep one left-to-right order"; a glove's fingers,
+// a bag's handles, set-in sleeves. The set-in sweater is knittable at some sizes only: its
+// sleeve meets the body's rows across the armhole's sides, and at most sizes the labelling's
+// rows there wait for each other both ways (skein check says so, with how to fix it).
 TEST(HandRandomized, ShapesOfRandomSizesAndGaugesAreProven) {
   std::mt19937_64 rng(23);
   const std::string dir = ::testing::TempDir();
-  std::map<std::string, std::array<int, 2>> tally;  // proven, refused
+  const std::set<std::string> always_proven = {"sheet", "tube", "hat", "sock", "sweater", "mitten"};
+  std::map<std::string, std::array<int, 3>> tally;  // proven, refused, not knittable
   for (const std::string& kind : shape_kinds()) {
     for (int trial = 0; trial < 50; ++trial) {
       ShapeSize size;
-      bool big = kind == "sweater" || kind == "shorts" || kind == "trousers";
+      bool big = kind == "sweater" || kind == "set-in-sweater" || kind == "shorts" ||
+                 kind == "trousers" || kind == "bag";
       size.circumference = (big ? 50 : 10) + static_cast<double>(rng() % (big ? 80 : 40));
       size.width = 5 + static_cast<double>(rng() % 40);
       size.length = 4 + static_cast<double>(rng() % (kind == "sweater" ? 80 : 40));
@@ -328,6 +334,10 @@ TEST(HandRandomized, ShapesOfRandomSizesAndGaugesAreProven) {
       std::string project = write_shape(shape, dir + "/" + name);
       SCOPED_TRACE(project + "\n" + shape.project);
       Compilation c = compile_model(project);
+      if (kind == "set-in-sweater" && !c.knittability.knittable) {
+        ++tally[kind][2];
+        continue;
+      }
       ASSERT_TRUE(c.knittability.knittable) << project << "\n" << check_report(c);
       TargetOptions options;
       options.settings["short-rows"] = trial % 2 ? "wrap-and-turn" : "german";
@@ -347,11 +357,13 @@ TEST(HandRandomized, ShapesOfRandomSizesAndGaugesAreProven) {
     }
   }
   for (const auto& [kind, n] : tally) {
-    std::cout << fmt::format("{}: {} proven, {} refused by name\n", kind, n[0], n[1]);
-    if (kind != "trousers" && kind != "shorts") {
+    std::cout << fmt::format("{}: {} proven, {} refused by name, {} not knittable\n", kind, n[0],
+                             n[1], n[2]);
+    if (always_proven.contains(kind)) {
       EXPECT_EQ(n[0], 50) << kind;
     }
   }
+  EXPECT_GE(tally["set-in-sweater"][0] + tally["set-in-sweater"][1], 5);  // knittable: 8 of 50
 }
 
 // A pattern names its pieces after the parts of the garment (the coarse mesh's OBJ groups):

@@ -1,15 +1,18 @@
 #include "labeling/coarse_draft.hpp"
 
+#include <optional>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
 namespace skein {
-namespace {
-
 Vec3 sub(Vec3 a, Vec3 b) {
   return {a.x - b.x, a.y - b.y, a.z - b.z};
 }
+
+namespace {
+
 double dot(Vec3 a, Vec3 b) {
   return static_cast<double>(a.x) * b.x + static_cast<double>(a.y) * b.y +
          static_cast<double>(a.z) * b.z;
@@ -59,6 +62,8 @@ bool CoarseDraft::faces_outward(const std::vector<std::uint32_t>& corners, Vec3 
 }
 
 void CoarseDraft::add(std::vector<std::uint32_t> corners, const std::string& group) {
+  for (std::size_t i = 0; i < corners.size(); ++i)
+    directed_.insert({corners[i], corners[(i + 1) % corners.size()]});
   faces_.push_back(std::move(corners));
   auto it = std::find(groups_.begin(), groups_.end(), group);
   face_group_.push_back(static_cast<std::uint32_t>(it - groups_.begin()));
@@ -77,15 +82,20 @@ Ring CoarseDraft::ring(double y, double radius, double cx, double cz,
 }
 
 std::uint32_t CoarseDraft::band(const Ring& below, const Ring& above, Vec3 axis_point, Vec3 axis,
-                                const std::string& group) {
+                                const std::string& group, const std::vector<std::size_t>& open) {
   auto first = static_cast<std::uint32_t>(faces_.size());
   // The first face, on the regular part of every ring, decides the band's orientation.
-  bool flip = false;
+  std::optional<bool> flip;
   for (std::size_t j = 0; j < below.size(); ++j) {
+    if (std::find(open.begin(), open.end(), j) != open.end()) continue;
     std::size_t k = (j + 1) % below.size();
     std::vector<std::uint32_t> corners{below[j], below[k], above[k], above[j]};
-    if (j == 0) flip = !faces_outward(corners, axis_point, axis);
-    if (flip) std::reverse(corners.begin(), corners.end());
+    // A band that starts on faces already drawn (a handle set into a hole) goes round the
+    // edges it shares with them the other way; one on nothing faces away from its axis.
+    if (!flip && directed_.contains({corners[0], corners[1]})) flip = true;
+    if (!flip && directed_.contains({corners[1], corners[0]})) flip = false;
+    if (!flip) flip = !faces_outward(corners, axis_point, axis);
+    if (*flip) std::reverse(corners.begin(), corners.end());
     add(std::move(corners), group);
   }
   return first;

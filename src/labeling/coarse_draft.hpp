@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@ using Ring = std::vector<std::uint32_t>;  // vertex indices, in order round the 
 
 // The point `along` units from `p` in direction `d`.
 Vec3 moved(Vec3 p, Vec3 d, double along);
+Vec3 sub(Vec3 a, Vec3 b);  // a - b
 Vec3 unit(Vec3 v);
 
 // Collects vertices and faces, each face turned so that its normal points away from its tube's
@@ -30,9 +32,10 @@ class CoarseDraft {
   Ring ring(double y, double radius, double cx = 0, double cz = 0,
             const std::vector<double>& lift = {}, std::uint32_t sides = 8);
   // Faces between two rings of equal size, outward from the axis through `axis_point` along
-  // `axis`. Returns the first face's index.
+  // `axis`, but for those in `open` (face j joins vertices j and j + 1 of each ring), left as
+  // holes. Returns the first face's index.
   std::uint32_t band(const Ring& below, const Ring& above, Vec3 axis_point, Vec3 axis,
-                     const std::string& group);
+                     const std::string& group, const std::vector<std::size_t>& open = {});
   // A tube going on from `start` along `axis`: a ring at each of `distances` (from the centre
   // of `start`) with the matching radius, each vertex at the angle round the axis of the start
   // ring's vertex it lies above, so that the faces do not twist. Returns the last ring.
@@ -49,6 +52,7 @@ class CoarseDraft {
   std::vector<std::vector<std::uint32_t>> faces_;
   std::vector<std::string> groups_;
   std::vector<std::uint32_t> face_group_;
+  std::set<std::pair<std::uint32_t, std::uint32_t>> directed_;  // every face's edges, in order
 };
 
 // Where a ring parts into two (a fork): the vertices from `first` to `last` (indices into the

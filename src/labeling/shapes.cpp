@@ -279,6 +279,152 @@ Shape mitten(const ShapeSize& s, const std::string& name) {
                        "patterns: {cuff: k2p2}\n")};
 }
 
+// A glove knit from the cuff up: the thumb parts from the palm as a mitten's does, then the
+// hand parts into four fingers one after another (each fork takes three of the hand's
+// vertices and leaves a ring of the same size for the rest: the little finger is what is
+// left), each finger closed by decreases.
+Shape glove(const ShapeSize& s, const std::string& name) {
+  double c = s.circumference > 0 ? s.circumference : 20, l = s.length > 0 ? s.length : 26;
+  double r = radius_for(c), cuff = std::min(5.0, l * 0.2), base = std::max(cuff + 1, l * 0.35);
+  double knuckles = std::max(base + 2, l * 0.6), finger_r = r * 0.4;
+  double finger = std::max(2.0, l - knuckles), thumb = std::max(2.0, l * 0.22);
+  CoarseDraft d;
+  Ring bottom = d.ring(0, r), below = d.ring(cuff, r);
+  d.band(bottom, below, {0, 0, 0}, kUp, "cuff");
+  Ring palm = d.ring(base, r);
+  d.band(below, palm, {0, 0, 0}, kUp, "palm");
+  auto [thumb_base, hand_base] =
+      fork(d, palm, kSides - 1, 1,
+           {static_cast<float>(r * 0.45), static_cast<float>(base + r * 0.3), 0});
+  LimbRings t;
+  t.straight(0, thumb * 0.7, 2.5, finger_r * 1.1, "thumb");
+  t.crown(t.end(), thumb * 0.3, {0.6, 0.3}, finger_r * 1.1, "thumb");
+  d.limb(thumb_base, unit({0.5, 0.87f, 0}), t.distances, t.radii, t.groups);
+  LimbRings h;
+  h.straight(0, knuckles - base, 4, r, "hand");
+  Ring rest = d.limb(hand_base, kUp, h.distances, h.radii, h.groups);
+  const char* names[] = {"index", "middle", "ring", "little"};
+  for (int i = 0; i < 4; ++i) {
+    Ring tip_base = rest;
+    if (i < 3) {
+      // The finger takes rest[0..2]; its crotch lies between them and the ring's centre.
+      Vec3 mid = d.centre(rest);
+      Vec3 crotch = moved(moved(mid, sub(d.at(rest[1]), mid), 0.4), kUp, r * 0.15);
+      std::tie(tip_base, rest) = fork(d, rest, 0, 2, crotch);
+    }
+    Vec3 out = sub(d.centre(tip_base), d.centre(rest));
+    Vec3 axis = i < 3 ? unit(moved(kUp, unit(out), 0.25)) : kUp;
+    double length = finger * (i == 1 ? 1.0 : i == 3 ? 0.75 : 0.9);
+    LimbRings f;
+    f.straight(0, length * 0.8, 2.5, finger_r, names[i]);
+    f.crown(f.end(), length * 0.2, {0.6, 0.3}, finger_r, names[i]);
+    d.limb(tip_base, axis, f.distances, f.radii, f.groups);
+  }
+  return {d.finish(name + ".obj"),
+          project_text(
+              name, fmt::format("a glove {} cm round, {} cm long: a thumb and four fingers", c, l),
+              "patterns: {cuff: k2p2}\n")};
+}
+
+// A sweater with set-in sleeves: the body knit in the round from the hem to the neck, with a
+// hole at each side for the armhole (two of its faces at ±x left open for a band of rows), and
+// each sleeve knit from the cuff in, tapering out to the armhole's ring, which it ends on: the
+// sleeve joins the body all round the armhole (its loops taken into the rows above, bound off
+// with the body's below, and perpendicular at the sides).
+Shape set_in_sweater(const ShapeSize& s, const std::string& name) {
+  double c = s.circumference > 0 ? s.circumference : 90, body = s.length > 0 ? s.length : 36;
+  double r = radius_for(c), armhole = std::max(4.0, c * 0.12), shoulder = std::max(3.0, c * 0.06);
+  double sleeve = std::max(10.0, c * 0.45), cuff_r = r * 0.3;
+  CoarseDraft d;
+  const double hem = std::min(5.0, body / 2);
+  Ring bottom = d.ring(0, r), below = d.ring(hem, r);
+  d.band(bottom, below, {0, 0, 0}, kUp, "hem");
+  for (double h = hem + 10;; h += 10) {
+    Ring above = d.ring(std::min(h, body), r);
+    d.band(below, above, {0, 0, 0}, kUp, "body");
+    below = std::move(above);
+    if (h >= body) break;
+  }
+  Ring top = d.ring(body + armhole, r);
+  d.band(below, top, {0, 0, 0}, kUp, "body", {0, 4});  // vertex 0 at +x, 4 at -x
+  Ring holes[2] = {{below[0], below[1], top[1], top[0]}, {below[4], below[5], top[5], top[4]}};
+  Ring shoulders = d.ring(body + armhole + shoulder, r * 0.75),
+       neck = d.ring(body + armhole + shoulder + 2, r * 0.7);
+  d.band(top, shoulders, {0, 0, 0}, kUp, "yoke");
+  d.band(shoulders, neck, {0, 0, 0}, kUp, "neck");
+  std::uint32_t cuffs[2];
+  for (int side = 0; side < 2; ++side) {
+    Vec3 axis{side == 0 ? 1.0f : -1.0f, 0, 0};
+    Vec3 centre = d.centre(holes[side]);
+    double top_r = 0;
+    for (std::uint32_t v : holes[side])
+      top_r += std::hypot(d.at(v).y - centre.y, d.at(v).z - centre.z);
+    top_r /= static_cast<double>(holes[side].size());
+    LimbRings l;
+    for (double t : steps(sleeve - 5, 10)) {
+      l.distances.push_back(t);
+      l.radii.push_back(top_r + (cuff_r - top_r) * t / sleeve);
+      l.groups.push_back("sleeve");
+    }
+    l.straight(l.end(), 5, 5, cuff_r, "cuff");
+    cuffs[side] = d.limb(holes[side], axis, l.distances, l.radii, l.groups)[0];
+  }
+  return {d.finish(name + ".obj"),
+          project_text(name,
+                       fmt::format("a sweater {} cm round, body {} cm, sleeves {} cm set in at the "
+                                   "armholes",
+                                   c, body, sleeve),
+                       fmt::format("start:                 # the hem, then both cuffs\n"
+                                   "  - vertex: {}\n  - vertex: {}\n  - vertex: {}\n"
+                                   "patterns: {{hem: k2p2, cuff: k2p2, neck: k2p2}}\n",
+                                   bottom[2] + 1, cuffs[0] + 1, cuffs[1] + 1))};
+}
+
+// A bag knit in the round from the bottom edge up to the rim, with two handles: straps that
+// rise from the rim's top edge over one face (the rim's sts there go on into the strap) and
+// come down onto it over another, two faces along (where the strap meets the rim's sts from
+// above): the body parts into each handle and the handle joins back into it.
+Shape bag(const ShapeSize& s, const std::string& name) {
+  double c = s.circumference > 0 ? s.circumference : 70, h = s.length > 0 ? s.length : 30;
+  double r = radius_for(c), rim = std::max(2.0, h * 0.08);
+  double lift = std::max(5.0, c * 0.12);  // how high a handle rises above the rim
+  CoarseDraft d;
+  Ring below = d.ring(0, r);
+  for (double y : steps(h - rim, 10)) {
+    Ring above = d.ring(y, r);
+    d.band(below, above, {0, 0, 0}, kUp, "body");
+    below = std::move(above);
+  }
+  Ring top = d.ring(h, r);
+  d.band(below, top, {0, 0, 0}, kUp, "rim");
+  for (std::uint32_t a : {1u, 5u}) {
+    // A strap's cross-sections are pairs of vertices (a "ring" of two, its closing face left
+    // open), from the rim's edge a, a + 1 to its edge a + 3, a + 2 (the strap does not twist).
+    Ring from{top[a], top[a + 1]}, to{top[(a + 3) % kSides], top[a + 2]};
+    Vec3 middle = moved(d.centre(from), sub(d.centre(to), d.centre(from)), 0.5);
+    Vec3 out = unit({middle.x, 0, middle.z});
+    Ring pair = from;
+    const int arcs = 6;
+    for (int k = 1; k <= arcs; ++k) {
+      double u = static_cast<double>(k) / arcs;
+      Ring next = to;
+      if (k < arcs)
+        for (std::size_t i = 0; i < from.size(); ++i) {
+          Vec3 p = moved(d.at(from[i]), sub(d.at(to[i]), d.at(from[i])), u);
+          double rise = lift * std::sin(kPi * u);
+          next[i] = d.vertex(moved(moved(p, out, rise * 0.3), kUp, rise));
+        }
+      Vec3 centre = d.centre(pair);
+      d.band(pair, next, centre, sub(d.centre(next), centre), "handle", {1});
+      pair = std::move(next);
+    }
+  }
+  return {d.finish(name + ".obj"),
+          project_text(name, fmt::format("a bag {} cm round, {} cm high, with two handles", c, h),
+                       fmt::format("start:                 # the bottom edge\n  - vertex: 1\n"
+                                   "patterns: {{rim: k2p2}}\n"))};
+}
+
 // Shorts or trousers: a body tube from the waist and two legs parting at the crotch (the sts
 // between them joined or cast on along it). `from_waist`: knit down from the waist, the body
 // splitting into the legs; else up from both leg hems, the legs joining into the body.
@@ -316,7 +462,8 @@ Shape legs(const ShapeSize& s, const std::string& name, double default_leg, bool
 }  // namespace
 
 std::vector<std::string> shape_kinds() {
-  return {"sheet", "tube", "hat", "sock", "sweater", "mitten", "shorts", "trousers"};
+  return {"sheet",  "tube",  "hat",    "sock",     "sweater", "set-in-sweater",
+          "mitten", "glove", "shorts", "trousers", "bag"};
 }
 
 Shape make_shape(const std::string& kind, const ShapeSize& size, const std::string& name) {
@@ -328,6 +475,9 @@ Shape make_shape(const std::string& kind, const ShapeSize& size, const std::stri
   if (kind == "sock") return sock(size, name);
   if (kind == "sweater") return sweater(size, name);
   if (kind == "mitten") return mitten(size, name);
+  if (kind == "glove") return glove(size, name);
+  if (kind == "set-in-sweater") return set_in_sweater(size, name);
+  if (kind == "bag") return bag(size, name);
   if (kind == "shorts") return legs(size, name, 20, true);
   if (kind == "trousers") return legs(size, name, 75, false);
   throw UsageError(
