@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <unordered_map>
+
 #include "common/error.hpp"
 #include "knitout/stitch_recipes.hpp"
 #include "lowering/live_runs.hpp"
@@ -60,7 +62,6 @@ bool is_bind_off(const KnitGraph& g, StitchId s) {
 void check_borders(const KnitGraph& g, const CourseLayout& l) {
   const Course& first = l.courses.front();
   for (const Course& c : l.courses) {
-    bool last = &c == &l.courses.back();
     for (std::uint32_t i = c.begin; i < c.end; ++i) {
       StitchId s = l.order[i];
       bool in_first = i < first.end;
@@ -69,14 +70,19 @@ void check_borders(const KnitGraph& g, const CourseLayout& l) {
                     in_first ? "a first row that is not all cast-on stitches"
                              : "a cast-on stitch above the first row",
                     s);
-      if (last && !is_bind_off(g, s))
+      if (c.last_of_yarn && !is_bind_off(g, s))
         unsupported(g, "a last row that is not all bind-off stitches", s);
     }
   }
   if (l.tube) return;
-  for (std::size_t c = 1; c < l.courses.size(); ++c)
-    if (g.yarn_link[l.order[l.courses[c].begin - 1]] != YarnLink::turn)
-      unsupported(g, "a row that does not start with a turn", l.order[l.courses[c].begin]);
+  std::unordered_map<std::uint32_t, StitchId> last_of;  // per yarn: its course before
+  for (const Course& c : l.courses) {
+    StitchId s = l.order[c.begin];
+    auto before = last_of.find(c.yarn);
+    if (before != last_of.end() && g.yarn_link[before->second] != YarnLink::turn)
+      unsupported(g, "a row that does not start with a turn", s);
+    last_of[c.yarn] = l.order[c.end - 1];
+  }
 }
 
 // The wrap of a short row's turn after `turning`: over the waiting loop `beyond`; or, when
@@ -121,20 +127,6 @@ void check_sr5_turn_loops(const KnitGraph& g, const CourseLayout& l) {
     auto made = g.loops_made_by(s);
     if (g.type[s] == StitchType::sr5 && g.loops[made[0]].taker != g.loops[made[1]].taker)
       unsupported(g, "an sr5 whose two loops are not knit together by the stitch above", s);
-  }
-}
-
-// Several yarn pieces are knit one after another, each from cast-on to bind-off; a piece that
-// takes loops of another would have to wait for it on the bed.
-void check_pieces_apart(const KnitGraph& g, const YarnPieces& yarns) {
-  for (const Loop& l : g.loops) {
-    std::uint32_t maker = yarns.piece_of[l.maker], taker = yarns.piece_of[l.taker];
-    if (maker != taker)
-      unsupported(g,
-                  fmt::format("pieces joined on the bed (yarn {} takes loops made by yarn {}, as "
-                              "a sweater's yoke takes its sleeves)",
-                              taker + 1, maker + 1),
-                  l.taker);
   }
 }
 
@@ -204,16 +196,30 @@ class ProgramLayouts {
     return loops;
   }
 
-  CourseLayout& layout_of(std::uint32_t yarn, bool cast_on, StitchId at) {
-    if (layout_of_[yarn] == kNoWrap) {
-      if (!cast_on) unsupported(g_, "a yarn piece that starts on loops already on the bed", at);
-      layout_of_[yarn] = static_cast<std::uint32_t>(layouts_.size());
-      layouts_.emplace_back().order.reserve(yarns_.length[yarn]);
+  // A yarn that casts on starts a layout; a yarn that starts on loops on the bed (a leg
+  // knit on after the other's, as AutoKnit's test-C) joins the layout of the yarn that made
+  // them: the pieces share the bed, each with its carrier. A course that takes loops of
+  // another layout would join two pieces on the bed (a join step, refused before).
+  std::uint32_t layout_of(const Step& step, StitchId at) {
+    bool cast_on = step.kind == StepKind::cast_on;
+    std::uint32_t& mine = layout_of_[step.yarn];
+    if (cast_on) {
+      if (mine != kNoWrap) unsupported(g_, "a second cast-on in one yarn piece", at);
+      mine = static_cast<std::uint32_t>(layouts_.size());
+      layouts_.emplace_back();
       pieces_.emplace_back();
-    } else if (cast_on) {
-      unsupported(g_, "a second cast-on in one yarn piece", at);
+      return mine;
     }
-    return layouts_[layout_of_[yarn]];
+    const Segment& seg = p_.segments[step.reads.begin];
+    std::uint32_t theirs = layout_of_[yarns_.piece_of[g_.loops[seg.first].maker]];
+    if (mine == kNoWrap) mine = theirs;
+    if (mine != theirs)
+      unsupported(g_,
+                  fmt::format("pieces joined on the bed (yarn {} takes loops of another piece, as "
+                              "a sweater's yoke takes its sleeves)",
+                              step.yarn + 1),
+                  at);
+    return mine;
   }
 
   // A course that binds off some of its stitches is knit as blocks: the machine's bind-off is
@@ -222,8 +228,9 @@ class ProgramLayouts {
   void add_course(const Step& step) {
     StitchId first = first_stitch(step);
     bool cast_on = step.kind == StepKind::cast_on;
-    CourseLayout& l = layout_of(step.yarn, cast_on, first);
-    Piece& piece = pieces_[layout_of_[step.yarn]];
+    std::uint32_t index = layout_of(step, first);
+    CourseLayout& l = layouts_[index];
+    Piece& piece = pieces_[index];
     bool left_to_right = step.direction != CourseDirection::right_to_left;
     if (cast_on) {
       std::vector<std::uint32_t> left = left_in_run(step.stitches, left_to_right);
@@ -251,6 +258,7 @@ class ProgramLayouts {
       l.order.push_back(p_.stitches[i].stitch);
     course.end = static_cast<std::uint32_t>(l.order.size());
     course.left_to_right = left_to_right;
+    course.yarn = yarns_.piece_of[p_.stitches[stitches.begin].stitch];
     return course;
   }
 
@@ -322,12 +330,25 @@ class ProgramLayouts {
         unsupported(g_, "a mix of open rows and closed rounds", l.order[course.begin]);
     }
     if (l.courses.size() < 2) unsupported(g_, "a piece with fewer than two rows", l.order.front());
+    mark_yarn_ends(l);
     check_borders(g_, l);
     check_sr5_turn_loops(g_, l);
     l.left_to_right.assign(g_.size(), 1);
     for (const Course& course : l.courses)
       for (std::uint32_t i = course.begin; i < course.end; ++i)
         l.left_to_right[l.order[i]] = course.left_to_right;
+  }
+
+  // Each yarn's first and last course in the layout.
+  void mark_yarn_ends(CourseLayout& l) const {
+    std::vector<std::uint32_t> last(yarns_.size(), kNoWrap);
+    for (std::uint32_t i = 0; i < l.courses.size(); ++i) {
+      Course& c = l.courses[i];
+      c.first_of_yarn = last[c.yarn] == kNoWrap;
+      last[c.yarn] = i;
+    }
+    for (std::uint32_t i : last)
+      if (i != kNoWrap) l.courses[i].last_of_yarn = true;
   }
 
   const KnitGraph& g_;
@@ -347,7 +368,6 @@ std::vector<CourseLayout> lay_out_pieces(const Compilation& c) {
   const KnitGraph& g = c.knit;
   if (g.size() == 0) throw Error("the model has no stitches: nothing to knit");
   check_stitches(g);
-  check_pieces_apart(g, c.yarns);
   for (std::uint32_t piece = 0; piece < c.yarns.size(); ++piece)
     if (c.yarns.ring[piece]) unsupported(g, "a yarn that closes on itself", c.yarns.first[piece]);
   if (!c.program.complete())

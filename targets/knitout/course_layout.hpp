@@ -16,6 +16,9 @@ inline constexpr std::uint32_t kNoWrap = 0xffffffffu;
 struct Course {
   std::uint32_t row = 0;             // the knit graph's row number
   std::uint32_t begin = 0, end = 0;  // its stitches: CourseLayout::order[begin, end)
+  std::uint32_t yarn = 0;            // the yarn piece that knits it (its carrier's)
+  bool first_of_yarn = false;        // its yarn's first course: the carrier comes in
+  bool last_of_yarn = false;         // its yarn's last course: the carrier goes out after it
   bool left_to_right = true;         // the yarn runs left to right in its stitches' frames
   bool partial = false;              // a short row: loops beside it wait on their needles
   bool rotated = false;              // a tube's round that starts elsewhere than the round below it
@@ -36,10 +39,11 @@ struct CourseLayout {
   std::vector<std::uint8_t> left_to_right;  // per stitch of the model (the piece's are set)
 };
 
-// One layout per yarn piece, in the order the program starts them (each piece is knit on its
-// own, cast-on to bind-off). Throws UnsupportedError "not yet supported by the knitout target:
-// <what>, at <stitch>" for inputs the target does not handle yet (pieces joined on the bed,
-// splits, mismatches, stitch types without a machine recipe).
+// One layout per piece cast on, in the order the program starts them, each knit on its own from
+// cast-on to bind-off; a yarn that starts on another's loops (a leg after a leg) is knit in the
+// layout of the yarn that made them, with its own carrier. Throws UnsupportedError "not yet
+// supported by the knitout target: <what>, at <stitch>" for inputs the target does not handle yet
+// (pieces joined on the bed, splits, mismatches, stitch types without a machine recipe).
 std::vector<CourseLayout> lay_out_pieces(const Compilation& compilation);
 
 }  // namespace skein::knitout

@@ -35,16 +35,20 @@ std::vector<StitchId> yarn_order(const KnitGraph& g, const YarnPieces& yarns, st
 
 class Matcher {
  public:
-  Matcher(const Replay& r, std::string_view text, const Compilation& c,
-          const std::vector<StitchId>& order)
-      : f_(r.fabric), r_(r), text_(text), g_(c.knit), order_(order) {
-    tube_ = piece_is_tube(g_, order_);
+  // One matcher for all the pieces: a piece that takes another's loops finds them where the
+  // other's match put them.
+  Matcher(const Replay& r, std::string_view text, const Compilation& c)
+      : f_(r.fabric), r_(r), text_(text), g_(c.knit) {
     loop_of_.assign(g_.loops.size(), kNoLoop);
     kept_.assign(g_.loops.size(), kNoKept);
     stamp_.assign(f_.loops.size(), 0);
     wrap_taker_.assign(f_.loops.size(), kNoStitch);
     wrap_stamp_.assign(f_.loops.size(), 0);
     turned_.assign(f_.loops.size(), 0);
+  }
+  void begin_piece(const std::vector<StitchId>& order) {
+    order_ = &order;
+    tube_ = piece_is_tube(g_, order);
   }
   bool tube() const { return tube_; }
   const std::vector<LoopId>& wraps() const { return wraps_; }
@@ -62,7 +66,7 @@ class Matcher {
     std::size_t pos = start;
     LoopId previous_bo = kNoLoop;
     reached = 0;
-    for (StitchId s : order_) {
+    for (StitchId s : *order_) {
       StitchType t = g_.type[s];
       std::uint32_t n = fabric_loops(t);
       if (pos + n > yarn.size()) {
@@ -352,7 +356,7 @@ class Matcher {
 
   // Every loop of the input is pulled through as often as its taker needs.
   bool children_match(std::string& why) const {
-    for (StitchId s : order_)
+    for (StitchId s : *order_)
       for (std::uint32_t loop : g_.loops_made_by(s)) {
         const Loop& l = g_.loops[loop];
         std::uint32_t want = pulls(loop);
@@ -372,7 +376,7 @@ class Matcher {
   std::string_view text_;
   mutable std::vector<std::string_view> lines_;
   const KnitGraph& g_;
-  const std::vector<StitchId>& order_;  // the piece's sts in yarn order
+  const std::vector<StitchId>* order_ = nullptr;  // the piece's sts in yarn order
   bool tube_ = false;
   std::vector<LoopId> loop_of_;  // per knit graph loop: its fabric loop
   static constexpr std::uint32_t kNoKept = 0xffffffffu;
@@ -396,14 +400,12 @@ struct PieceMatch {
 };
 
 // Looks for the piece along every carrier's yarn, in a yarn piece no other piece matched.
-PieceMatch find_piece(const Replay& r, std::string_view text, const Compilation& c,
-                      const std::vector<StitchId>& order, std::vector<std::uint32_t>& used,
-                      bool& tube) {
+PieceMatch find_piece(const Replay& r, const Compilation& c, const std::vector<StitchId>& order,
+                      Matcher& m, std::vector<std::uint32_t>& used) {
   PieceMatch match;
   std::size_t least = 0;  // the piece's loops, the turns' tucks aside
   for (StitchId s : order) least += fabric_loops(c.knit.type[s]);
-  Matcher m(r, text, c, order);
-  tube = m.tube();
+  m.begin_piece(order);
   std::size_t best = 0;
   for (std::size_t carrier = 0; carrier < r.fabric.by_carrier.size(); ++carrier) {
     const auto& yarn = r.fabric.by_carrier[carrier];
@@ -440,6 +442,28 @@ PieceMatch find_piece(const Replay& r, std::string_view text, const Compilation&
 
 }  // namespace
 
+// The yarn pieces, each after those whose loops it takes (a leg knit on after a leg); pieces
+// that take each other's loops keep their order.
+std::vector<std::uint32_t> pieces_in_knitting_order(const KnitGraph& g, const YarnPieces& yarns) {
+  std::vector<std::vector<std::uint32_t>> takes_from(yarns.size());
+  for (const Loop& l : g.loops) {
+    if (l.maker == kNoStitch || l.taker == kNoStitch) continue;
+    std::uint32_t maker = yarns.piece_of[l.maker], taker = yarns.piece_of[l.taker];
+    if (maker != taker) takes_from[taker].push_back(maker);
+  }
+  std::vector<std::uint32_t> order;
+  std::vector<std::uint8_t> state(yarns.size(), 0);  // 0 new, 1 on the way, 2 placed
+  auto place = [&](auto& self, std::uint32_t piece) -> void {
+    if (state[piece]) return;
+    state[piece] = 1;
+    for (std::uint32_t other : takes_from[piece]) self(self, other);
+    state[piece] = 2;
+    order.push_back(piece);
+  };
+  for (std::uint32_t piece = 0; piece < yarns.size(); ++piece) place(place, piece);
+  return order;
+}
+
 ProofResult prove_fabric(const Replay& r, std::string_view text, const Compilation& c) {
   const YarnPieces& yarns = c.yarns;
   ProofResult result;
@@ -447,15 +471,16 @@ ProofResult prove_fabric(const Replay& r, std::string_view text, const Compilati
   std::vector<std::uint32_t> used;
   std::vector<std::string> where;
   bool sheets = true;
-  for (std::uint32_t i = 0; i < yarns.size(); ++i) {
+  Matcher matcher(r, text, c);
+  for (std::uint32_t i : pieces_in_knitting_order(c.knit, yarns)) {
     std::string piece = yarns.size() > 1 ? fmt::format("yarn piece {}: ", i + 1) : "";
-    bool tube = false;
-    PieceMatch m = find_piece(r, text, c, yarn_order(c.knit, yarns, i), used, tube);
+    std::vector<StitchId> order = yarn_order(c.knit, yarns, i);
+    PieceMatch m = find_piece(r, c, order, matcher, used);
     if (!m.found) {
       result.summary = fmt::format("NOT proven against {}: {}{}", c.input, piece, m.why);
       return result;
     }
-    sheets &= !tube;
+    sheets &= !matcher.tube();
     const auto& yarn = r.fabric.by_carrier[m.carrier];
     result.pieces.push_back({m.carrier, m.start, m.needed});
     result.wrap_lines.insert(result.wrap_lines.end(), m.wrap_lines.begin(), m.wrap_lines.end());
