@@ -192,9 +192,9 @@ TEST_F(Cli, AValidInputTheTargetCannotKnitExitsThree) {
       skein("compile samples/sweater/sweater.yaml -t knitout -m swg091n2 -o " + in_dir("s.k"));
   EXPECT_EQ(r.exit_code, 3);
   EXPECT_EQ(r.err,
-            "skein: unsupported: not yet supported by the knitout target: pieces joined on the bed "
-            "(yarn 1 takes loops made by yarn 2, as a sweater's yoke takes its sleeves), at face "
-            "37649 (k, row 373)\n");
+            "skein: unsupported: not yet supported by the knitout target: a course the lowering "
+            "could not lower (the round binds off its sts in more than one place), at face 20425 "
+            "(bo, row 108)\n");
   EXPECT_TRUE(outputs().empty());
 }
 

@@ -57,10 +57,13 @@ INSTANTIATE_TEST_SUITE_P(Samples, KnitoutSample,
 
 // AutoKnit's test-A (tucks, slips, and short rows with a kfb in a helix; its rows inferred
 // when read) on the profiles whose needles hold its tucked loops (kniterate's 2 do not), and
-// test-B (a tube parted into two legs, the first bound off while the second waits).
+// test-B (a tube parted into two legs, the first bound off while the second waits), and test-C
+// (a tube parted into two legs, each knit by a yarn of its own: the second yarn's carrier comes
+// in on the loops the first left on the bed).
 INSTANTIATE_TEST_SUITE_P(AutoKnit, KnitoutSample,
                          ::testing::Combine(::testing::Values("autoknit/test-A.st",
-                                                              "autoknit/test-B.st"),
+                                                              "autoknit/test-B.st",
+                                                              "autoknit/test-C.st"),
                                             ::testing::Values("swg091n2", "generic")),
                          [](const auto& param_info) {
                            std::string sample = std::get<0>(param_info.param);
@@ -118,12 +121,15 @@ TEST(KnitoutFit, WhatIsNotSupportedYetIsNamedWithItsStitch) {
   EXPECT_EQ(emit_error(compile_model("samples/autoknit/test-A.st"), "kniterate"),
             "line 411 (k2tog) would gather 3 loops on one needle (with tucked loops, short-row "
             "wraps or the bind-off chain), kniterate allows 2");
-  EXPECT_EQ(emit_error(compile_model("samples/autoknit/test-C.st"), "generic"),
-            "not yet supported by the knitout target: pieces joined on the bed (yarn 2 takes loops "
-            "made by yarn 1, as a sweater's yoke takes its sleeves), at line 352 (k)");
+  // Its two legs share the bed, each with its carrier (KnitoutPieces).
+  EXPECT_EQ(emit_error(compile_model("samples/autoknit/test-C.st"), "generic"), "no error");
+  // The lowering stops at the round that binds off both underarms.
   EXPECT_EQ(emit_error(compile_model("samples/sweater/sweater.yaml"), "generic"),
-            "not yet supported by the knitout target: pieces joined on the bed (yarn 1 takes loops "
-            "made by yarn 2, as a sweater's yoke takes its sleeves), at face 37649 (k, row 373)");
+            "not yet supported by the knitout target: a course the lowering could not lower (the "
+            "round binds off its sts in more than one place), at face 20425 (bo, row 108)");
+  EXPECT_EQ(emit_error(compile_model("samples/two-bars/two-bars.yaml"), "generic"),
+            "not yet supported by the knitout target: the three-needle bind-off stitch (3nbo), at "
+            "extruded 3nbo on edge 197-12 (row 117)");
 }
 
 // A stitch graph's helix is read as rounds (one ends before a stitch that takes a loop of it,

@@ -144,6 +144,14 @@ std::string why_undetectable(const Mutant& m, const std::vector<std::string>& or
     return "in the cast-on border of the piece's own yarn (the model does not say what it is)";
   if (all([&](std::size_t i) { return i + 1 > proof.last_line; }))
     return "in the tag after the bind-off, which is dropped and unravels to the piece's last loop";
+  // A short row's wrap is no st of the model: dropped, moved onto another waiting loop or made
+  // going the other way, the file still knits the model's sts (the proof accepts a turn with or
+  // without one, and checks a wrap it finds is pulled through by one st).
+  auto wrap = [&](std::size_t i) {
+    return std::find(proof.wrap_lines.begin(), proof.wrap_lines.end(), i + 1) !=
+           proof.wrap_lines.end();
+  };
+  if (m.kind != "swap" && all(wrap)) return "a short row's wrap, which the model does not have";
   if (m.kind == "swap" && op(m.lines[0]) == "xfer" && op(m.lines[1]) == "xfer")
     return "two transfers in one transfer pass swapped (they commute)";
   auto moves = [&](std::size_t i) { return op(i) == "xfer" || op(i) == "drop"; };

@@ -73,8 +73,9 @@ TEST(KnitoutParting, PartedTubesProveOnEveryProfile) {
 
 // A random tube parting into two legs: rounds with shaping, then a short round whose last
 // stitches are the first leg's first round, more rounds of that leg and its bind-off, then
-// rounds of what is left and the last bind-off. Every ring keeps at least 2 loops.
-std::string random_parted_tube(std::mt19937_64& rng) {
+// rounds of what is left and the last bind-off (with `own_yarn`, a yarn of its own, which comes
+// in on the loops the first leg left). Every ring keeps at least 2 loops.
+std::string random_parted_tube(std::mt19937_64& rng, bool own_yarn = false) {
   std::size_t n = 6 + rng() % 10;
   std::string letters(n, 's');
   auto rounds = [&](std::size_t& loops, std::uint64_t count, const char* after) {
@@ -86,16 +87,17 @@ std::string random_parted_tube(std::mt19937_64& rng) {
     }
   };
   rounds(n, 1 + rng() % 3, "");
-  if (n < 6) return random_parted_tube(rng);
+  if (n < 6) return random_parted_tube(rng, own_yarn);
   std::size_t before = rng() % (n - 4), leg = 2 + rng() % (n - before - 3), made = 0;
   letters += testing::random_run(rng, before, made) + "(";
   std::size_t rest = made + n - before - leg;
   rounds(leg, 1, ")");
   rounds(leg, rng() % 3, ")");
-  if (leg < 2 || rest < 2) return random_parted_tube(rng);
+  if (leg < 2 || rest < 2) return random_parted_tube(rng, own_yarn);
   letters += std::string(leg, 'e');
+  if (own_yarn) letters += '/';
   rounds(rest, 1 + rng() % 3, "");
-  if (rest < 2) return random_parted_tube(rng);
+  if (rest < 2) return random_parted_tube(rng, own_yarn);
   return letters + std::string(rest, 'e');
 }
 
@@ -105,6 +107,18 @@ TEST(KnitoutRandomized, PartedTubesProveOrAreRefusedInWords) {
   for (int trial = 0; trial < 60; ++trial)
     testing::prove_or_refuse_gathering(random_parted_tube(rng), proven, refused);
   std::cout << "parted tubes: " << proven << " proven, " << refused << " refused\n";
+  EXPECT_GT(proven, 100);
+}
+
+// The same with the second leg knit by a yarn of its own: two carriers on one bed, the second
+// brought in on the loops the first leg left (as AutoKnit's test-C).
+TEST(KnitoutRandomized, PartedTubesWithALegOfItsOwnYarnProveOrAreRefusedInWords) {
+  std::mt19937_64 rng(2026);
+  int proven = 0, refused = 0;
+  for (int trial = 0; trial < 60; ++trial)
+    testing::prove_or_refuse_gathering(random_parted_tube(rng, true), proven, refused);
+  std::cout << "parted tubes, a leg of its own yarn: " << proven << " proven, " << refused
+            << " refused\n";
   EXPECT_GT(proven, 100);
 }
 

@@ -45,19 +45,26 @@ inline knitout::ProofResult replay_and_prove(const std::string& text, const Comp
 // meets and leaves its own in their place; past either end the yarn comes round to the other
 // (a tube, cut again where the yarn is), which a sheet's letters never ask for. A tube parts
 // into legs with '(' before a leg's first stitch and ')' after its last: the yarn comes round
-// the leg, back to the loop that first stitch made (the other loops wait).
+// the leg, back to the loop that first stitch made (the other loops wait). '/' cuts the yarn: the
+// stitches after it are a yarn of their own (AutoKnit's next yarn id), going on where it was.
 inline std::string stitch_graph_st(const std::string& letters) {
   struct Line {
     char letter;
     bool forward;
     int in[2] = {-1, -1}, out[2] = {-1, -1};
+    int yarn = 0;
   };
   std::vector<Line> lines;
   std::vector<std::pair<int, int>> fabric;  // (stitch, out slot), left to right
   std::size_t yarn = 0;                     // the loops left of the yarn: fabric[0, yarn)
   bool forward = true, leg_starts = false;
   std::size_t leg = 0;  // where the leg's first loop lies in the fabric
+  int yarn_id = 0;
   for (char letter : letters) {
+    if (letter == '/') {
+      ++yarn_id;
+      continue;
+    }
     if (letter == '|' || letter == '(' || letter == ')') {
       forward = forward != (letter == '|');
       leg_starts = letter == '(';
@@ -65,7 +72,7 @@ inline std::string stitch_graph_st(const std::string& letters) {
       continue;
     }
     int s = static_cast<int>(lines.size());
-    lines.push_back({letter, forward});
+    lines.push_back({letter, forward, {-1, -1}, {-1, -1}, yarn_id});
     std::size_t takes = letter == 's' ? 0 : letter == 'd' ? 2 : 1;
     int makes = letter == 'e' ? 0 : letter == 'i' ? 2 : 1;
     if (forward ? yarn + takes > fabric.size() : yarn < takes) {  // round the tube: cut it
@@ -86,8 +93,8 @@ inline std::string stitch_graph_st(const std::string& letters) {
   }
   std::string text;
   for (const Line& l : lines)
-    text += fmt::format("0 {} {} {} {} {} {} 0 0 0\n", l.letter, l.forward ? 'a' : 'c', l.in[0],
-                        l.in[1], l.out[0], l.out[1]);
+    text += fmt::format("{} {} {} {} {} {} {} 0 0 0\n", l.yarn, l.letter, l.forward ? 'a' : 'c',
+                        l.in[0], l.in[1], l.out[0], l.out[1]);
   return text;
 }
 

@@ -2,8 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <unordered_map>
+
 #include "common/error.hpp"
 #include "knitout/stitch_recipes.hpp"
+#include "lowering/live_runs.hpp"
 
 namespace skein::knitout {
 namespace {
@@ -54,38 +57,11 @@ bool is_bind_off(const KnitGraph& g, StitchId s) {
   return g.type[s] == StitchType::bo;
 }
 
-// A course ends where the yarn turns or crosses a shift-path. A row with short rows inside
-// (a heel's) is knit in several courses; a course never spans two rows of a sheet or tube. A
-// bind-off is a course of its own, knit where its loops wait: in a stitch graph (whose rows
-// are inferred when it is read) it may start in the row of the st a helix steps up by, and go
-// on round past that st's row into the next.
-std::vector<Course> split_into_courses(const KnitGraph& g, const std::vector<StitchId>& order) {
-  std::vector<Course> courses;
-  for (std::uint32_t i = 0; i < order.size(); ++i) {
-    StitchId s = order[i];
-    bool after_bind_off = i > 0 && is_bind_off(g, order[i - 1]);
-    bool bind_off_goes_on = after_bind_off && is_bind_off(g, s);
-    bool starts = courses.empty() || (is_bind_off(g, s) && !after_bind_off) ||
-                  (!bind_off_goes_on && (g.yarn_link[order[i - 1]] == YarnLink::turn ||
-                                         g.yarn_link[order[i - 1]] == YarnLink::shift));
-    if (starts) {
-      courses.emplace_back();
-      courses.back().row = g.row[s];
-      courses.back().begin = i;
-    }
-    if (!starts && !bind_off_goes_on && g.row[s] != courses.back().row)
-      unsupported(g, "a row that ends without a turn or a shift-path", s);
-    courses.back().end = i + 1;
-  }
-  return courses;
-}
-
 // A bind-off course may come before the last (part of the work bound off, as a tube's first
 // leg, while the rest waits and is knit on after it); the last course is all bind-off.
 void check_borders(const KnitGraph& g, const CourseLayout& l) {
   const Course& first = l.courses.front();
   for (const Course& c : l.courses) {
-    bool bind_off = is_bind_off(g, l.order[c.begin]), last = &c == &l.courses.back();
     for (std::uint32_t i = c.begin; i < c.end; ++i) {
       StitchId s = l.order[i];
       bool in_first = i < first.end;
@@ -94,132 +70,20 @@ void check_borders(const KnitGraph& g, const CourseLayout& l) {
                     in_first ? "a first row that is not all cast-on stitches"
                              : "a cast-on stitch above the first row",
                     s);
-      if (last && !is_bind_off(g, s))
+      if (c.last_of_yarn && !is_bind_off(g, s))
         unsupported(g, "a last row that is not all bind-off stitches", s);
-      if (bind_off != is_bind_off(g, s))
-        unsupported(g, "a bind-off and other stitches in one course, with no turn between", s);
     }
   }
   if (l.tube) return;
-  for (std::size_t c = 1; c < l.courses.size(); ++c)
-    if (g.yarn_link[l.order[l.courses[c].begin - 1]] != YarnLink::turn)
-      unsupported(g, "a row that does not start with a turn", l.order[l.courses[c].begin]);
+  std::unordered_map<std::uint32_t, StitchId> last_of;  // per yarn: its course before
+  for (const Course& c : l.courses) {
+    StitchId s = l.order[c.begin];
+    auto before = last_of.find(c.yarn);
+    if (before != last_of.end() && g.yarn_link[before->second] != YarnLink::turn)
+      unsupported(g, "a row that does not start with a turn", s);
+    last_of[c.yarn] = l.order[c.end - 1];
+  }
 }
-
-template <typename F>
-void each_left_to_right(const CourseLayout& l, const Course& c, F f) {
-  if (c.left_to_right)
-    for (std::uint32_t i = c.begin; i < c.end; ++i) f(l.order[i]);
-  else
-    for (std::uint32_t i = c.end; i-- > c.begin;) f(l.order[i]);
-}
-
-// A run of loops on the needles, left to right.
-struct Run {
-  std::uint32_t first = kNoWrap, last = kNoWrap, count = 0;
-};
-
-// The loops on the needles, left to right along the fabric (a ring on a tube), as a linked
-// list: each course takes a run of them and leaves its own loops in their place, in time linear
-// in the loops it takes and makes.
-class LiveLoops {
- public:
-  LiveLoops(const KnitGraph& g, bool ring)
-      : g_(g),
-        ring_(ring),
-        next_(g.loops.size(), kNoWrap),
-        prev_(g.loops.size(), kNoWrap),
-        live_(g.loops.size(), 0) {}
-  std::size_t size() const { return size_; }
-
-  void start(const CourseLayout& l, const Course& c) {
-    start_ = link_made(l, c, kNoWrap, kNoWrap).first;
-  }
-  // The first loop of the last full round (or of what replaced it in place): where a round
-  // that does not drift starts.
-  std::uint32_t round_start() const { return start_; }
-
-  // Whether the loops `c` takes, left to right, are live and follow each other; gives the
-  // run's ends and length.
-  bool find_run(const CourseLayout& l, const Course& c, Run& run) const {
-    run = Run{};
-    bool in_order = true;
-    each_left_to_right(l, c, [&](StitchId s) {
-      for (std::uint32_t loop : g_.loops_taken_by(s)) {
-        in_order &= live_[loop] && (run.count == 0 || next_[run.last] == loop);
-        if (run.count++ == 0) run.first = loop;
-        run.last = loop;
-      }
-    });
-    return in_order && run.count > 0 && run.count <= size_;
-  }
-
-  // Puts the loops `c` makes in place of the run; returns the loop waiting just beyond the
-  // course's last stitch along the yarn (kNoWrap at a sheet's edge or when nothing waits).
-  std::uint32_t replace_run(const CourseLayout& l, const Course& c, const Run& run) {
-    bool whole = run.count == size_;
-    std::uint32_t before = whole ? kNoWrap : prev_[run.first];
-    std::uint32_t after = whole ? kNoWrap : next_[run.last];
-    bool takes_start = whole;
-    for (std::uint32_t loop = run.first, n = 0; n < run.count; ++n, loop = next_[loop]) {
-      live_[loop] = 0;
-      takes_start |= loop == start_;
-    }
-    size_ -= run.count;
-    auto [first, last] = link_made(l, c, before, after);
-    if (takes_start) move_start(c);
-    if (first == kNoWrap) {  // nothing made (a bind-off): the neighbours close up
-      if (before != kNoWrap) next_[before] = after;
-      if (after != kNoWrap) prev_[after] = before;
-      if (takes_start) start_ = after;  // the rest's rounds start where the bind-off ended
-      return kNoWrap;
-    }
-    return c.left_to_right ? after : before;
-  }
-
- private:
-  // The round's start moves to the loop made at its place: the leftmost loop of the stitch
-  // that takes it (an sr5's own loop, not its turn loop), which is knit where the start was.
-  void move_start(const Course& c) {
-    StitchId taker = g_.loops[start_].taker;
-    auto made = g_.loops_made_by(taker);
-    if (made.empty()) return;  // a bind-off: see replace_run
-    bool sr5 = g_.type[taker] == StitchType::sr5;
-    start_ = made[sr5 ? knit_slot(StitchType::sr5, c.left_to_right) : 0];
-  }
-
-  // Links the loops `c` makes, left to right, between `before` and `after` (a ring closes on
-  // itself when both are absent); returns the first and last.
-  std::pair<std::uint32_t, std::uint32_t> link_made(const CourseLayout& l, const Course& c,
-                                                    std::uint32_t before, std::uint32_t after) {
-    std::uint32_t first = kNoWrap, last = before;
-    each_left_to_right(l, c, [&](StitchId s) {
-      for (std::uint32_t loop : g_.loops_made_by(s)) {
-        live_[loop] = 1;
-        ++size_;
-        prev_[loop] = last;
-        if (last != kNoWrap) next_[last] = loop;
-        if (first == kNoWrap) first = loop;
-        last = loop;
-      }
-    });
-    if (first == kNoWrap) return {kNoWrap, kNoWrap};
-    next_[last] = after;
-    if (after != kNoWrap) prev_[after] = last;
-    if (ring_ && before == kNoWrap && after == kNoWrap) {
-      next_[last] = first;
-      prev_[first] = last;
-    }
-    return {first, last};
-  }
-
-  const KnitGraph& g_;
-  bool ring_;
-  std::vector<std::uint32_t> next_, prev_;  // per loop, along the fabric (kNoWrap: an edge)
-  std::vector<std::uint8_t> live_;          // per loop: on the needles now
-  std::size_t size_ = 0;
-  std::uint32_t start_ = kNoWrap;
-};
 
 // The wrap of a short row's turn after `turning`: over the waiting loop `beyond`; or, when
 // another turn already wrapped it, over the turning stitch's own loop on the way back (so no
@@ -257,33 +121,6 @@ std::uint32_t taker_of_round_start(const KnitGraph& g, const CourseLayout& l, co
   return c.left_to_right ? i - c.begin : c.end - 1 - i;
 }
 
-// Gives each course a direction, starting with `first`: a turn reverses it, a shift-path keeps
-// it. Returns the index of the first course whose stitches do not take a run of the loops on
-// the needles in order, or 0 when all do; marks short rows and the loops their turns wrap.
-std::size_t assign_directions(const KnitGraph& g, CourseLayout& l, bool first) {
-  LiveLoops live(g, l.tube);
-  std::vector<std::uint8_t> wrapped(g.loops.size(), 0);
-  l.courses[0].left_to_right = first;
-  live.start(l, l.courses[0]);
-  for (std::size_t c = 1; c < l.courses.size(); ++c) {
-    Course& course = l.courses[c];
-    bool turned = g.yarn_link[l.order[course.begin - 1]] == YarnLink::turn;
-    course.left_to_right = l.courses[c - 1].left_to_right != turned;
-    Run run;
-    if (!live.find_run(l, course, run)) return c;
-    course.partial = run.count < live.size();
-    course.rotated = l.tube && !course.partial && run.first != live.round_start();
-    if (course.rotated)
-      course.layout_start = taker_of_round_start(g, l, course, live.round_start());
-    std::uint32_t beyond = live.replace_run(l, course, run);
-    bool turns_next =
-        c + 1 < l.courses.size() && g.yarn_link[l.order[course.end - 1]] == YarnLink::turn;
-    if (course.partial && turns_next)
-      choose_wrap(g, l.order[course.end - 1], beyond, course, wrapped);
-  }
-  return 0;
-}
-
 // An sr5's turn loop waits on the facing needle until one decrease knits it with the sr5's loop.
 void check_sr5_turn_loops(const KnitGraph& g, const CourseLayout& l) {
   for (StitchId s : l.order) {
@@ -293,43 +130,237 @@ void check_sr5_turn_loops(const KnitGraph& g, const CourseLayout& l) {
   }
 }
 
-// Several yarn pieces are knit one after another, each from cast-on to bind-off; a piece that
-// takes loops of another would have to wait for it on the bed.
-void check_pieces_apart(const KnitGraph& g, const YarnPieces& yarns) {
-  for (const Loop& l : g.loops) {
-    std::uint32_t maker = yarns.piece_of[l.maker], taker = yarns.piece_of[l.taker];
-    if (maker != taker)
-      unsupported(g,
-                  fmt::format("pieces joined on the bed (yarn {} takes loops made by yarn {}, as "
-                              "a sweater's yoke takes its sleeves)",
-                              taker + 1, maker + 1),
-                  l.taker);
-  }
-}
+// The pieces' courses as the live-loop program gives them: one per course step, with its
+// direction and stitches in working order. The program's runs are followed on LiveRuns (the
+// lowering's own list of live loops) only for what the program does not say outright: where a
+// tube's last full round started (a round that starts elsewhere is laid out from there) and
+// which loop waits beyond a short row's turn (its wrap).
+class ProgramLayouts {
+ public:
+  explicit ProgramLayouts(const Compilation& c)
+      : g_(c.knit),
+        p_(c.program),
+        yarns_(c.yarns),
+        runs_(c.knit),
+        layout_of_(c.yarns.size(), kNoWrap),
+        wrapped_(c.knit.loops.size(), 0) {}
 
-CourseLayout lay_out_piece(const KnitGraph& g, std::vector<StitchId> order) {
-  CourseLayout l;
-  l.order = std::move(order);
-  l.courses = split_into_courses(g, l.order);
-  l.tube = g.row_shape[l.courses.front().row] == RowShape::closed;
-  for (const Course& course : l.courses) {
-    RowShape shape = g.row_shape[course.row];
-    if (shape != RowShape::short_row && (shape == RowShape::closed) != l.tube)
-      unsupported(g, "a mix of open rows and closed rounds", l.order[course.begin]);
+  std::vector<CourseLayout> run() && {
+    for (const Step& step : p_.steps) take_step(step);
+    for (CourseLayout& l : layouts_) finish(l);
+    return std::move(layouts_);
   }
-  if (l.courses.size() < 2) unsupported(g, "a piece with fewer than two rows", l.order.front());
-  check_borders(g, l);
-  std::size_t bad = assign_directions(g, l, true);
-  if (bad && assign_directions(g, l, false))
-    unsupported(g, "a row whose stitches do not take the loops below in order",
-                l.order[l.courses[bad].begin]);
-  check_sr5_turn_loops(g, l);
-  l.left_to_right.assign(g.size(), 1);
-  for (const Course& course : l.courses)
-    for (std::uint32_t i = course.begin; i < course.end; ++i)
-      l.left_to_right[l.order[i]] = course.left_to_right;
-  return l;
-}
+
+ private:
+  struct Piece {
+    std::uint32_t round_start = kNoWrap;  // the first loop of the last full round
+  };
+
+  void take_step(const Step& step) {
+    switch (step.kind) {
+      case StepKind::cast_on:
+      case StepKind::course:
+      case StepKind::bind_off:
+        return add_course(step);
+      case StepKind::three_needle_bind_off:
+      case StepKind::split:
+      case StepKind::join:
+      case StepKind::reverse:
+        unsupported(g_,
+                    fmt::format("a {} step of the live-loop program (several runs on the bed)",
+                                step_kind_name(step.kind)),
+                    first_stitch(step));
+      case StepKind::hold:
+      case StepKind::resume:
+        return;  // pieces apart are knit one after another
+    }
+  }
+
+  StitchId first_stitch(const Step& step) const {
+    if (step.stitches.size()) return p_.stitches[step.stitches.begin].stitch;
+    const Segment& seg = p_.segments[step.reads.begin];
+    return g_.loops[seg.first].taker;
+  }
+
+  // The loops a course leaves in its run, in run order (left to right).
+  std::vector<std::uint32_t> left_in_run(Range stitches, bool left_to_right) const {
+    std::vector<std::uint32_t> loops;
+    auto add = [&](std::uint32_t i) {
+      for (std::uint32_t k = p_.made_at[i]; k < p_.made_at[i + 1]; ++k)
+        if (p_.made[k].place == LoopPlace::in_run) loops.push_back(p_.made[k].loop);
+    };
+    if (left_to_right)
+      for (std::uint32_t i = stitches.begin; i < stitches.end; ++i) add(i);
+    else
+      for (std::uint32_t i = stitches.end; i-- > stitches.begin;) add(i);
+    return loops;
+  }
+
+  // A yarn that casts on starts a layout; a yarn that starts on loops on the bed (a leg
+  // knit on after the other's, as AutoKnit's test-C) joins the layout of the yarn that made
+  // them: the pieces share the bed, each with its carrier. A course that takes loops of
+  // another layout would join two pieces on the bed (a join step, refused before).
+  std::uint32_t layout_of(const Step& step, StitchId at) {
+    bool cast_on = step.kind == StepKind::cast_on;
+    std::uint32_t& mine = layout_of_[step.yarn];
+    if (cast_on) {
+      if (mine != kNoWrap) unsupported(g_, "a second cast-on in one yarn piece", at);
+      mine = static_cast<std::uint32_t>(layouts_.size());
+      layouts_.emplace_back();
+      pieces_.emplace_back();
+      return mine;
+    }
+    const Segment& seg = p_.segments[step.reads.begin];
+    std::uint32_t theirs = layout_of_[yarns_.piece_of[g_.loops[seg.first].maker]];
+    if (mine == kNoWrap) mine = theirs;
+    if (mine != theirs)
+      unsupported(g_,
+                  fmt::format("pieces joined on the bed (yarn {} takes loops of another piece, as "
+                              "a sweater's yoke takes its sleeves)",
+                              step.yarn + 1),
+                  at);
+    return mine;
+  }
+
+  // A course that binds off some of its stitches is knit as blocks: the machine's bind-off is
+  // a chain of its own, so each run of bind-offs (and each run of other stitches) along the
+  // yarn is a course here, taking its loops from the run in place.
+  void add_course(const Step& step) {
+    StitchId first = first_stitch(step);
+    bool cast_on = step.kind == StepKind::cast_on;
+    std::uint32_t index = layout_of(step, first);
+    CourseLayout& l = layouts_[index];
+    Piece& piece = pieces_[index];
+    bool left_to_right = step.direction != CourseDirection::right_to_left;
+    if (cast_on) {
+      std::vector<std::uint32_t> left = left_in_run(step.stitches, left_to_right);
+      l.tube = step.run_shape == RunShape::ring;
+      runs_.start(step.run, left, step.run_shape);
+      piece.round_start = left.empty() ? kNoWrap : left.front();
+      l.courses.push_back(append(l, step.stitches, left_to_right));
+      return;
+    }
+    for (std::uint32_t begin = step.stitches.begin; begin < step.stitches.end;) {
+      std::uint32_t end = begin + 1;
+      bool binds_off = is_bind_off(g_, p_.stitches[begin].stitch);
+      while (end < step.stitches.end && is_bind_off(g_, p_.stitches[end].stitch) == binds_off)
+        ++end;
+      add_block(l, piece, {begin, end}, left_to_right, step.shape);
+      begin = end;
+    }
+  }
+
+  Course append(CourseLayout& l, Range stitches, bool left_to_right) const {
+    Course course;
+    course.row = g_.row[p_.stitches[stitches.begin].stitch];
+    course.begin = static_cast<std::uint32_t>(l.order.size());
+    for (std::uint32_t i = stitches.begin; i < stitches.end; ++i)
+      l.order.push_back(p_.stitches[i].stitch);
+    course.end = static_cast<std::uint32_t>(l.order.size());
+    course.left_to_right = left_to_right;
+    course.yarn = yarns_.piece_of[p_.stitches[stitches.begin].stitch];
+    return course;
+  }
+
+  // The loops a block of a course takes, as a forward segment of their run.
+  Segment segment_of(Range stitches, bool left_to_right) const {
+    std::uint32_t count = 0;
+    for (std::uint32_t i = stitches.begin; i < stitches.end; ++i) count += p_.stitches[i].taken;
+    std::uint32_t leftmost = left_to_right ? stitches.begin : stitches.end - 1;
+    std::uint32_t first = p_.taken[p_.taken_at[leftmost]];
+    return {runs_.run_of(first), first, count, Walk::forward};
+  }
+
+  void add_block(CourseLayout& l, Piece& piece, Range stitches, bool left_to_right,
+                 RowShape shape) {
+    Segment seg = segment_of(stitches, left_to_right);
+    std::vector<std::uint32_t> left = left_in_run(stitches, left_to_right);
+    bool whole = seg.count == runs_.size(seg.run);
+    bool takes_start = whole;
+    for (std::uint32_t loop = seg.first, n = 0; n < seg.count; ++n, loop = runs_.next(loop))
+      takes_start |= loop == piece.round_start;
+    RunId tail = runs_.leaves_tail(seg) && left.empty() ? tail_run() : RunId();
+    if (continues_chain(l, stitches)) {  // the chain goes on into this course's bind-offs
+      runs_.replace(seg, left, shape, tail);
+      l.courses.back().end = append(l, stitches, left_to_right).end;
+      return;
+    }
+    Course& course = l.courses.emplace_back(append(l, stitches, left_to_right));
+    course.partial = !whole;
+    course.rotated = l.tube && whole && seg.first != piece.round_start;
+    if (course.rotated)
+      course.layout_start = taker_of_round_start(g_, l, course, piece.round_start);
+    std::uint32_t before = whole ? kNoWrap : runs_.prev(seg.first);
+    std::uint32_t after = whole ? kNoWrap : runs_.next(runs_.walk_end(seg));
+    runs_.replace(seg, left, shape, tail);
+    if (takes_start) piece.round_start = left.empty() ? after : new_round_start(piece, course);
+    StitchId last = l.order[course.end - 1];
+    bool turns_next = g_.yarn_link[last] == YarnLink::turn && g_.yarn_next[last] != kNoStitch;
+    if (course.partial && turns_next && !left.empty())
+      choose_wrap(g_, last, left_to_right ? after : before, course, wrapped_);
+  }
+
+  // A block of bind-offs straight after the bind-offs that ended the course before, along the
+  // yarn (a stitch graph's helix may step up inside a bind-off): one chain, one course.
+  bool continues_chain(const CourseLayout& l, Range stitches) const {
+    StitchId s = p_.stitches[stitches.begin].stitch;
+    if (!is_bind_off(g_, s) || l.courses.empty()) return false;
+    StitchId last = l.order[l.courses.back().end - 1];
+    return is_bind_off(g_, last) && g_.yarn_next[last] == s;
+  }
+
+  // A run for the loops beyond a bind-off in the middle of a line (numbered after the
+  // program's, which the target never meets again).
+  RunId tail_run() { return RunId(static_cast<std::uint32_t>(p_.runs.size() + tails_++)); }
+
+  // The round's start moves to the loop made at its place: the leftmost loop of the stitch
+  // that takes it (an sr5's own loop, not its turn loop), which is knit where the start was.
+  std::uint32_t new_round_start(const Piece& piece, const Course& c) const {
+    StitchId taker = g_.loops[piece.round_start].taker;
+    auto made = g_.loops_made_by(taker);
+    if (made.empty()) return piece.round_start;
+    bool sr5 = g_.type[taker] == StitchType::sr5;
+    return made[sr5 ? knit_slot(StitchType::sr5, c.left_to_right) : 0];
+  }
+
+  void finish(CourseLayout& l) const {
+    for (const Course& course : l.courses) {
+      RowShape shape = g_.row_shape[course.row];
+      if (shape != RowShape::short_row && (shape == RowShape::closed) != l.tube)
+        unsupported(g_, "a mix of open rows and closed rounds", l.order[course.begin]);
+    }
+    if (l.courses.size() < 2) unsupported(g_, "a piece with fewer than two rows", l.order.front());
+    mark_yarn_ends(l);
+    check_borders(g_, l);
+    check_sr5_turn_loops(g_, l);
+    l.left_to_right.assign(g_.size(), 1);
+    for (const Course& course : l.courses)
+      for (std::uint32_t i = course.begin; i < course.end; ++i)
+        l.left_to_right[l.order[i]] = course.left_to_right;
+  }
+
+  // Each yarn's first and last course in the layout.
+  void mark_yarn_ends(CourseLayout& l) const {
+    std::vector<std::uint32_t> last(yarns_.size(), kNoWrap);
+    for (std::uint32_t i = 0; i < l.courses.size(); ++i) {
+      Course& c = l.courses[i];
+      c.first_of_yarn = last[c.yarn] == kNoWrap;
+      last[c.yarn] = i;
+    }
+    for (std::uint32_t i : last)
+      if (i != kNoWrap) l.courses[i].last_of_yarn = true;
+  }
+
+  const KnitGraph& g_;
+  const Program& p_;
+  const YarnPieces& yarns_;
+  LiveRuns runs_;
+  std::vector<std::uint32_t> layout_of_;  // per yarn piece: its layout (kNoWrap: none yet)
+  std::vector<CourseLayout> layouts_;
+  std::vector<Piece> pieces_;          // per layout
+  std::vector<std::uint8_t> wrapped_;  // per loop: a short row's turn wraps it
+  std::uint32_t tails_ = 0;
+};
 
 }  // namespace
 
@@ -337,25 +368,12 @@ std::vector<CourseLayout> lay_out_pieces(const Compilation& c) {
   const KnitGraph& g = c.knit;
   if (g.size() == 0) throw Error("the model has no stitches: nothing to knit");
   check_stitches(g);
-  check_pieces_apart(g, c.yarns);
-  // Each piece's stitches in schedule order; the pieces in the order the schedule starts them.
-  std::vector<std::vector<StitchId>> orders(c.yarns.size());
-  std::vector<std::uint32_t> sequence;
-  for (const Event& e : c.schedule.events) {
-    if (e.kind != EventKind::stitch) continue;
-    std::uint32_t piece = c.yarns.piece_of[e.stitch];
-    if (orders[piece].empty()) {
-      sequence.push_back(piece);
-      orders[piece].reserve(c.yarns.length[piece]);
-    }
-    orders[piece].push_back(e.stitch);
-  }
-  std::vector<CourseLayout> layouts;
-  for (std::uint32_t piece : sequence) {
+  for (std::uint32_t piece = 0; piece < c.yarns.size(); ++piece)
     if (c.yarns.ring[piece]) unsupported(g, "a yarn that closes on itself", c.yarns.first[piece]);
-    layouts.push_back(lay_out_piece(g, std::move(orders[piece])));
-  }
-  return layouts;
+  if (!c.program.complete())
+    unsupported(g, fmt::format("a course the lowering could not lower ({})", c.program.gap->why),
+                c.program.gap->stitch);
+  return ProgramLayouts(c).run();
 }
 
 }  // namespace skein::knitout

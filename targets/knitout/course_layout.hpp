@@ -1,9 +1,7 @@
-// Courses (rows of a sheet, rounds of a tube) in knitting order, and which way the yarn runs
-// through each stitch in the stitch's own frame (right side facing, wale up). The knit graph
-// orders loops left to right in each stitch's frame but does not record which way its yarn
-// goes; this derives it by laying each course's loops out left to right and checking that the
-// next course consumes them in order. A course takes a run of the loops on the needles (all
-// of them, or part for a short row) in order. Shared by the emitter and the fabric proof.
+// Courses (rows of a sheet, rounds of a tube) in knitting order, as the live-loop program
+// (src/lowering) gives them: each course step's stitches in working order, its direction from
+// the input, whether it is a short row (it takes part of its run). What the emitter adds: where a
+// tube's round is laid out from, and which waiting loop a short row's turn wraps.
 #pragma once
 
 #include <cstdint>
@@ -18,6 +16,9 @@ inline constexpr std::uint32_t kNoWrap = 0xffffffffu;
 struct Course {
   std::uint32_t row = 0;             // the knit graph's row number
   std::uint32_t begin = 0, end = 0;  // its stitches: CourseLayout::order[begin, end)
+  std::uint32_t yarn = 0;            // the yarn piece that knits it (its carrier's)
+  bool first_of_yarn = false;        // its yarn's first course: the carrier comes in
+  bool last_of_yarn = false;         // its yarn's last course: the carrier goes out after it
   bool left_to_right = true;         // the yarn runs left to right in its stitches' frames
   bool partial = false;              // a short row: loops beside it wait on their needles
   bool rotated = false;              // a tube's round that starts elsewhere than the round below it
@@ -38,10 +39,11 @@ struct CourseLayout {
   std::vector<std::uint8_t> left_to_right;  // per stitch of the model (the piece's are set)
 };
 
-// One layout per yarn piece, in the order the schedule knits them (each piece is knit on its
-// own, cast-on to bind-off). Throws Error "not yet supported by the knitout target: <what>, at
-// <stitch>" for inputs the target does not handle yet (pieces joined on the bed, shaping in a
-// short row, mismatches, stitch graphs that turn, stitch types without a machine recipe).
+// One layout per piece cast on, in the order the program starts them, each knit on its own from
+// cast-on to bind-off; a yarn that starts on another's loops (a leg after a leg) is knit in the
+// layout of the yarn that made them, with its own carrier. Throws UnsupportedError "not yet
+// supported by the knitout target: <what>, at <stitch>" for inputs the target does not handle yet
+// (pieces joined on the bed, splits, mismatches, stitch types without a machine recipe).
 std::vector<CourseLayout> lay_out_pieces(const Compilation& compilation);
 
 }  // namespace skein::knitout

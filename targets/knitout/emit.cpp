@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <ostream>
 
 #include "common/error.hpp"
@@ -61,9 +62,10 @@ std::uint32_t footprint(StitchType t) {
 class Emitter {
  public:
   // Checks that the piece fits the profile (throws Error in the user's words otherwise).
+  // `carriers`: per yarn piece, its carrier.
   Emitter(const Compilation& c, const MachineProfile& p, const CourseLayout& l, KnitoutWriter& w,
-          std::string carrier)
-      : c_(c), g_(c.knit), p_(p), l_(l), w_(w), carrier_(std::move(carrier)) {
+          const std::vector<std::string>& carriers)
+      : c_(c), g_(c.knit), p_(p), l_(l), w_(w), carriers_(carriers) {
     pitch_ = l_.tube ? 2 : 1;
     reach_ = p_.max_transfer_stretch / pitch_ * pitch_;
     plan_.resize(g_.size());
@@ -75,18 +77,24 @@ class Emitter {
 
   void run() {
     const Course& first = l_.courses.front();
+    carrier_ = carriers_[first.yarn];
     plan_course(first, true);
     cast_on(first);
     for (std::size_t i = 1; i < l_.courses.size(); ++i) {
       const Course& course = l_.courses[i];
+      carrier_ = carriers_[course.yarn];
       plan_course(course, false);
       transition(course);
+      // A yarn that starts on loops on the bed comes in for its first course: the hook (if
+      // any) lets go once that course holds it.
+      if (course.first_of_yarn) bring_in(course);
       if (g_.type[l_.order[course.begin]] == StitchType::bo) {
-        bind_off(course, i + 1 == l_.courses.size());
+        bind_off(course, course.last_of_yarn);
       } else {
         knit_course(course);
         wrap_turn(course);
       }
+      if (course.first_of_yarn) release(carrier_);
     }
   }
 
@@ -129,8 +137,9 @@ class Emitter {
     check_width();
     check_needle_loads();
     if (reach_ < pitch_)
-      throw UnsupportedError(fmt::format("{} allows no sideways transfer (racking.max_transfer_stretch {})",
-                              p_.name, p_.max_transfer_stretch));
+      throw UnsupportedError(
+          fmt::format("{} allows no sideways transfer (racking.max_transfer_stretch {})", p_.name,
+                      p_.max_transfer_stretch));
   }
 
   void check_width() {
@@ -144,9 +153,10 @@ class Emitter {
                  half = static_cast<std::int32_t>(widest / 2);
     fold_ = (span + half) / 2 - 1;
     if (widest > p_.needles)
-      throw UnsupportedError(fmt::format("{} needs {} needles{} (row {}, from {}), {} has {}", c_.input,
-                              widest, l_.tube ? " in half gauge" : "", at_course->row + 1,
-                              g_.describe(l_.order[at_course->begin]), p_.name, p_.needles));
+      throw UnsupportedError(
+          fmt::format("{} needs {} needles{} (row {}, from {}), {} has {}", c_.input, widest,
+                      l_.tube ? " in half gauge" : "", at_course->row + 1,
+                      g_.describe(l_.order[at_course->begin]), p_.name, p_.needles));
   }
 
   // The loops each stitch gathers on one needle, and the transfers a double decrease needs.
@@ -734,6 +744,20 @@ class Emitter {
   void yarn_in(const std::string& carrier) {
     w_.carriers(p_.hook == YarnHook::inhook ? "inhook" : "in", carrier);
   }
+  // A yarn that starts on loops on the bed: its carrier comes in and first moves the profile's
+  // way (a miss) to the course's needle furthest that way, so that a hook holding its end
+  // blocks none of the course's needles.
+  void bring_in(const Course& c) {
+    w_.line(fmt::format(";!source: carrier {} comes in for yarn piece {}", carrier_, c.yarn + 1));
+    yarn_in(carrier_);
+    bool plus = p_.first_pass == Direction::plus;
+    Needle edge = {Bed::f, plus ? std::numeric_limits<std::int32_t>::max() : -1};
+    for (std::uint32_t i = c.begin; i < c.end; ++i) {
+      const StitchPlan& sp = plan_[l_.order[i]];
+      if (plus ? sp.needle < edge.index : sp.needle > edge.index) edge = {sp.knit, sp.needle};
+    }
+    w_.miss(p_.first_pass, edge, carrier_);
+  }
   void release(const std::string& carrier) {
     if (p_.hook == YarnHook::inhook) w_.carriers("releasehook", carrier);
   }
@@ -833,7 +857,8 @@ class Emitter {
   std::array<std::vector<Shaping>, 2> shaping_;  // a short row's shaped stitches, per bed
   std::vector<RoomMove> room_;                   // the waiting loops the shaping moves
   std::vector<std::uint8_t> in_course_;          // per loop: taken by the course being planned
-  std::string carrier_;
+  const std::vector<std::string>& carriers_;
+  std::string carrier_;  // the carrier of the course being knit
 };
 
 // "46 rows: a sheet", "107 rounds and 20 short rows: a tube in half gauge".
@@ -885,16 +910,35 @@ std::vector<std::string> piece_carriers(const Compilation& c, const MachineProfi
 
 }  // namespace
 
+// Per yarn piece its carrier, in the order the layouts bring the yarns in.
+std::vector<std::string> yarn_carriers(const Compilation& c, const MachineProfile& p,
+                                       const std::vector<CourseLayout>& pieces) {
+  std::vector<std::string> names = piece_carriers(c, p, c.yarns.size()), carriers(c.yarns.size());
+  std::size_t next = 0;
+  for (const CourseLayout& l : pieces)
+    for (const Course& course : l.courses)
+      if (course.first_of_yarn) carriers[course.yarn] = names[next++];
+  return carriers;
+}
+
+// "carrier 3", "carriers 3, 4".
+std::string carriers_of(const CourseLayout& l, const std::vector<std::string>& carriers) {
+  std::vector<std::string> used;
+  for (const Course& course : l.courses)
+    if (course.first_of_yarn) used.push_back(carriers[course.yarn]);
+  return fmt::format("carrier{} {}", used.size() > 1 ? "s" : "", fmt::join(used, ", "));
+}
+
 void emit_knitout(const Compilation& c, const MachineProfile& p, std::ostream& out) {
   std::vector<CourseLayout> pieces = lay_out_pieces(c);
-  std::vector<std::string> carriers = piece_carriers(c, p, pieces.size());
+  std::vector<std::string> carriers = yarn_carriers(c, p, pieces);
   KnitoutWriter w(out);
   write_header(w, c, p, pieces);
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     if (pieces.size() > 1)
-      w.line(fmt::format(";!source: yarn piece {} (carrier {}): {}", i + 1, carriers[i],
-                         describe(pieces[i])));
-    Emitter(c, p, pieces[i], w, carriers[i]).run();  // one piece's state at a time
+      w.line(fmt::format(";!source: yarn piece {} ({}): {}", i + 1,
+                         carriers_of(pieces[i], carriers), describe(pieces[i])));
+    Emitter(c, p, pieces[i], w, carriers).run();  // one piece's state at a time
   }
 }
 

@@ -6,7 +6,6 @@
 #include <limits>
 #include <unordered_map>
 
-#include "knitout/course_layout.hpp"
 #include "knitout/stitch_recipes.hpp"
 
 namespace skein::knitout {
@@ -17,36 +16,59 @@ std::uint32_t fabric_loops(StitchType t) {
   return t == StitchType::sl ? 0 : std::max<std::uint32_t>(info(t).loops_out, 1);
 }
 
+// Whether a yarn piece of the input is a tube: some of its rows are closed rounds. Its back half
+// is then knit on the back bed, seen from behind; a sheet is knit facing the front bed.
+bool piece_is_tube(const KnitGraph& g, const std::vector<StitchId>& order) {
+  return std::any_of(order.begin(), order.end(),
+                     [&](StitchId s) { return g.row_shape[g.row[s]] == RowShape::closed; });
+}
+
+// A yarn piece's stitches in yarn order, from the knit graph alone.
+std::vector<StitchId> yarn_order(const KnitGraph& g, const YarnPieces& yarns, std::uint32_t piece) {
+  std::vector<StitchId> order;
+  order.reserve(yarns.length[piece]);
+  for (StitchId s = yarns.first[piece]; s != kNoStitch && order.size() < yarns.length[piece];
+       s = g.yarn_next[s])
+    order.push_back(s);
+  return order;
+}
+
 class Matcher {
  public:
-  Matcher(const Replay& r, std::string_view text, const Compilation& c, const CourseLayout& l)
-      : f_(r.fabric), r_(r), text_(text), g_(c.knit), l_(l) {
+  // One matcher for all the pieces: a piece that takes another's loops finds them where the
+  // other's match put them.
+  Matcher(const Replay& r, std::string_view text, const Compilation& c)
+      : f_(r.fabric), r_(r), text_(text), g_(c.knit) {
     loop_of_.assign(g_.loops.size(), kNoLoop);
     kept_.assign(g_.loops.size(), kNoKept);
     stamp_.assign(f_.loops.size(), 0);
-    wrap_after_.assign(g_.size(), kNoWrap);
-    wrap_back_.assign(g_.size(), 0);
-    for (const Course& course : l_.courses) {
-      if (course.wrap == kNoWrap) continue;
-      wrap_after_[l_.order[course.end - 1]] = course.wrap;
-      wrap_back_[l_.order[course.end - 1]] = course.wrap_back;
-    }
+    wrap_taker_.assign(f_.loops.size(), kNoStitch);
+    wrap_stamp_.assign(f_.loops.size(), 0);
+    turned_.assign(f_.loops.size(), 0);
   }
+  void begin_piece(const std::vector<StitchId>& order) {
+    order_ = &order;
+    tube_ = piece_is_tube(g_, order);
+  }
+  bool tube() const { return tube_; }
+  const std::vector<LoopId>& wraps() const { return wraps_; }
 
-  // Tries the stitches against carrier `carrier`'s loops from index `start` on; on failure
-  // returns false with `why` set and `reached` the number of stitches that matched.
-  bool match(std::size_t carrier, std::size_t start, std::string& why, std::size_t& reached) {
+  // Tries the stitches against carrier `carrier`'s loops from index `start` on; on success
+  // `end` is the index past the piece's last loop; on failure returns false with `why` set and
+  // `reached` the number of stitches that matched.
+  bool match(std::size_t carrier, std::size_t start, std::string& why, std::size_t& reached,
+             std::size_t& end) {
     ++try_;
-    sign_ = 0;
+    wraps_.clear();
+    last_guess_ = kNoLoop;
     const std::vector<LoopId>& yarn = f_.by_carrier[carrier];
     CarrierMask mask = CarrierMask{1} << carrier;
     std::size_t pos = start;
     LoopId previous_bo = kNoLoop;
     reached = 0;
-    wraps_.clear();
-    for (StitchId s : l_.order) {
+    for (StitchId s : *order_) {
       StitchType t = g_.type[s];
-      std::uint32_t n = fabric_loops(t) + (wrap_after_[s] != kNoWrap);
+      std::uint32_t n = fabric_loops(t);
       if (pos + n > yarn.size()) {
         why = fmt::format("the yarn of carrier {} ends before {}", r_.header.carriers[carrier],
                           g_.describe(s));
@@ -64,46 +86,66 @@ class Matcher {
       if (previous_bo != kNoLoop && t != StitchType::bo && !chain_let_go(s, previous_bo, why))
         return false;
       if (!stitch_matches(s, t, &yarn[pos], previous_bo, why)) return false;
-      if (wrap_after_[s] != kNoWrap && !wrap_matches(s, yarn[pos], yarn[pos + n - 1], why))
-        return false;
       for (std::uint32_t i = 0; i < n; ++i) stamp_[yarn[pos + i]] = try_;
       previous_bo = t == StitchType::bo ? yarn[pos] : kNoLoop;
       pos += n;
+      if (pos < yarn.size() && takes_wrap(s, yarn[pos])) {
+        stamp_[yarn[pos]] = wrap_stamp_[yarn[pos]] = try_;
+        wrap_taker_[yarn[pos]] = kNoStitch;
+        wraps_.push_back(yarn[pos++]);
+      }
       ++reached;
     }
+    end = pos;
     return children_match(why) && wraps_taken(why);
   }
 
  private:
-  // A short row's turn: a tuck (a loop through nothing) that the stitch taking the waiting
-  // loop later knits through as well, made going on the way the row went (`last` is the
-  // turning stitch's loop); in a tube, the other way when the waiting loop lies over the fold.
-  bool wrap_matches(StitchId s, LoopId last, LoopId x, std::string& why) {
+  // A short row's turn: the yarn tucks over a waiting loop's needle before it turns (or over
+  // the turning st's own loop on the way back), so that the turn leaves no hole; the st that
+  // takes that loop is knit through the tuck too. Seen in the fabric: after a st whose yarn
+  // turns, a tuck through nothing. When the next st that makes a loop could make such a tuck
+  // itself (a tuck, yarn-over, make-1), the first guess is a wrap when the tuck goes against
+  // that st's course; a try that fails after a guess is made again with the guess turned.
+  enum class Wrap : std::uint8_t { no, yes, maybe };
+  Wrap wrap_after(StitchId s, LoopId x) const {
     const FabricLoop& fl = f_.loops[x];
-    if (fl.made_by != OpCode::tuck || fl.parent_count != 0) {
-      why = fmt::format("the turn after {} leaves a hole: {} is not a tuck over the waiting loop",
-                        g_.describe(s), where(x));
-      return false;
-    }
-    std::uint32_t waiting = wrap_after_[s];
-    const Loop& w = g_.loops[waiting];
-    auto made = g_.loops_made_by(s);  // `last` is the first of them the yarn makes
-    std::uint8_t turning_slot = made.empty()
-                                    ? 0
-                                    : made_slot_along_yarn(g_.type[s], l_.left_to_right[s], 0,
-                                                           static_cast<std::uint8_t>(made.size()));
-    bool over_fold = l_.tube && front_half(loop_of_[waiting], w.maker, w.maker_slot) !=
-                                    front_half(last, s, turning_slot);
-    bool back = over_fold != wrap_back_[s];
-    Direction on = back ? opposite(f_.loops[last].dir) : f_.loops[last].dir;
-    if (fl.dir != on) {
-      why = fmt::format("the turn after {} goes back before its tuck: {} goes {}", g_.describe(s),
-                        where(x), direction_char(fl.dir));
-      return false;
-    }
-    wraps_.emplace(g_.loops[waiting].taker, x);
+    if (g_.yarn_link[s] != YarnLink::turn || fl.made_by != OpCode::tuck || fl.parent_count != 0)
+      return Wrap::no;
+    StitchId next = g_.yarn_next[s];
+    while (next != kNoStitch && fabric_loops(g_.type[next]) == 0) next = g_.yarn_next[next];
+    if (next == kNoStitch || g_.type[next] == StitchType::co) return Wrap::no;
+    StitchType t = g_.type[next];
+    if (t != StitchType::tuck && t != StitchType::yo && t != StitchType::m1l &&
+        t != StitchType::m1r)
+      return Wrap::yes;
+    return Wrap::maybe;
+  }
+  bool guess_wrap(StitchId s, LoopId x) const {
+    StitchId next = g_.yarn_next[s];
+    while (fabric_loops(g_.type[next]) == 0) next = g_.yarn_next[next];
+    StitchType t = g_.type[next];
+    bool ltr = left_to_right(next, t, x);
+    return (f_.loops[x].dir == Direction::plus) != (ltr != back_half(t, x));
+  }
+  bool takes_wrap(StitchId s, LoopId x) {
+    Wrap w = wrap_after(s, x);
+    if (w != Wrap::maybe) return w == Wrap::yes;
+    last_guess_ = x;
+    return guess_wrap(s, x) != (turned_[x] == guesses_);
+  }
+
+ public:
+  // After a failed try: turns the last guess it made (false when it made none or turned it).
+  bool turn_last_guess() {
+    if (last_guess_ == kNoLoop || turned_[last_guess_] == guesses_) return false;
+    turned_[last_guess_] = guesses_;
     return true;
   }
+  // A new start: no guess turned.
+  void forget_guesses() { ++guesses_; }
+
+ private:
   // A bind-off of part of the work, which the yarn leaves for `next`, drops its chain's last
   // loop `x` (the yarn goes on through it), so that its needles are free for the rest.
   bool chain_let_go(StitchId next, LoopId x, std::string& why) const {
@@ -114,25 +156,16 @@ class Matcher {
         g_.describe(next), where(x));
     return false;
   }
-  // Whether the loop `x`, made in slot `slot` of `maker`, belongs to a tube's front half: a
-  // purl's loop and a kfb's second loop are made on the bed facing their half.
-  bool front_half(LoopId x, StitchId maker, std::uint8_t slot) const {
-    StitchType t = g_.type[maker];
-    bool facing = is_purl(t) || (t == StitchType::kfb &&
-                                 slot != knit_slot(StitchType::kfb, l_.left_to_right[maker]));
-    return f_.loops[x].front != facing;
-  }
-  bool is_wrap(StitchId s, LoopId x) const {
-    auto [first, last] = wraps_.equal_range(s);
-    return std::any_of(first, last, [x](const auto& w) { return w.second == x; });
-  }
-  // Each turn's tuck is pulled through by the stitch that takes the loop it wraps.
+  bool is_wrap(LoopId x) const { return wrap_stamp_[x] == try_; }
+  // Each turn's tuck is pulled through by one st (twice by a kfb), which takes a loop too.
   bool wraps_taken(std::string& why) const {
-    for (const auto& [taker, x] : wraps_) {
-      std::uint8_t want = g_.type[taker] == StitchType::kfb ? 2 : 1;
-      if (f_.loops[x].children != want) {
-        why = fmt::format("the turn's tuck {} is pulled through {} times, expected {} (by {})",
-                          where(x), f_.loops[x].children, want, g_.describe(taker));
+    for (LoopId x : wraps_) {
+      StitchId taker = wrap_taker_[x];
+      std::uint8_t want = taker != kNoStitch && g_.type[taker] == StitchType::kfb ? 2 : 1;
+      if (taker == kNoStitch || f_.loops[x].children != want) {
+        why = fmt::format("the turn's tuck {} is pulled through {} times, expected {} by {}",
+                          where(x), f_.loops[x].children, want,
+                          taker == kNoStitch ? "a st of the piece" : g_.describe(taker));
         return false;
       }
     }
@@ -171,9 +204,20 @@ class Matcher {
     return "the bind-off chain";
   }
 
-  bool parents_are(LoopId x, std::vector<LoopId> expected, StitchId s, std::string& why) const {
-    auto parents = f_.parents_of(x);
-    std::vector<LoopId> have(parents.begin(), parents.end());
+  // The loops `x` is pulled through are `expected`, and perhaps turns' tucks (which `s` claims).
+  bool parents_are(LoopId x, std::vector<LoopId> expected, StitchId s, std::string& why) {
+    std::vector<LoopId> have;
+    for (LoopId parent : f_.parents_of(x)) {
+      if (!is_wrap(parent)) {
+        have.push_back(parent);
+      } else if (wrap_taker_[parent] == kNoStitch || wrap_taker_[parent] == s) {
+        wrap_taker_[parent] = s;
+      } else {
+        why = fmt::format("the turn's tuck {} is pulled through by {} and by {}", where(parent),
+                          g_.describe(wrap_taker_[parent]), g_.describe(s));
+        return false;
+      }
+    }
     std::vector<LoopId> want = expected;
     std::sort(have.begin(), have.end());
     std::sort(want.begin(), want.end());
@@ -184,13 +228,11 @@ class Matcher {
   }
 
   // The fabric loops a stitch must be pulled through: the loops it takes, with the loops tucks
-  // kept under them, and the tucks of the short-row turns that wrapped them.
+  // kept under them (a turn's tuck, which it may be pulled through too, aside).
   std::vector<LoopId> through_of(StitchId s) const {
     std::vector<LoopId> through;
     for (std::uint32_t loop : g_.loops_taken_by(s))
       for (std::uint32_t l = loop; l != kNoKept; l = kept_[l]) through.push_back(loop_of_[l]);
-    auto [wrap, wraps_end] = wraps_.equal_range(s);
-    for (; wrap != wraps_end; ++wrap) through.push_back(wrap->second);
     return through;
   }
 
@@ -198,7 +240,7 @@ class Matcher {
   bool leans_right(StitchId s, StitchType t, LoopId x, std::string& why) const {
     auto parents = f_.parents_of(x);
     auto on_top =
-        std::find_if(parents.rbegin(), parents.rend(), [&](LoopId p) { return !is_wrap(s, p); });
+        std::find_if(parents.rbegin(), parents.rend(), [&](LoopId p) { return !is_wrap(p); });
     LoopId top = loop_of_[g_.loops_taken_by(s)[stacking_order(t).back()]];
     if (*on_top == top) return true;
     why = fmt::format("{} leans the wrong way: {} has the loop of {} on top, expected that of {}",
@@ -223,7 +265,7 @@ class Matcher {
       if (previous_bo != kNoLoop) through.push_back(previous_bo);
       return parents_are(loops[0], through, s, why) && travels_along_course(s, t, loops, 1, why);
     } else if (made.size() == 2) {
-      bool ltr = l_.left_to_right[s];
+      bool ltr = left_to_right(s, t, loops[0]);
       for (std::uint8_t i = 0; i < 2; ++i) {
         std::uint8_t slot = made_slot_along_yarn(t, ltr, i, 2);
         if (!parents_are(loops[i],
@@ -235,7 +277,7 @@ class Matcher {
                (taken.size() > 1 && !leans_right(s, t, loops[0], why))) {
       return false;
     }
-    if (!l_.tube && !made.empty() && f_.loops[loops[0]].front == is_purl(t)) {
+    if (!tube_ && !made.empty() && f_.loops[loops[0]].front == is_purl(t)) {
       why = fmt::format("{} is a {} but {} knits it on the {} bed", g_.describe(s), info(t).name,
                         where(loops[0]), is_purl(t) ? "front" : "back");
       return false;
@@ -243,28 +285,41 @@ class Matcher {
     if (!travels_along_course(s, t, loops, std::max<std::size_t>(made.size(), 1), why))
       return false;
     for (std::size_t i = 0; i < made.size(); ++i)
-      loop_of_[made[made_slot_along_yarn(t, l_.left_to_right[s], static_cast<std::uint8_t>(i),
+      loop_of_[made[made_slot_along_yarn(t, left_to_right(s, t, loops[0]),
+                                         static_cast<std::uint8_t>(i),
                                          static_cast<std::uint8_t>(made.size()))]] = loops[i];
     return true;
   }
 
-  // The yarn runs the same way through every stitch of a course as through the first stitch
-  // matched: on a sheet, rows alternate; in a tube the back half runs against the front half
-  // (a stitch's half is the bed it is made on, the other for a purl). A loop made against
-  // its course leaves a float where the carrier turns back.
-  // An sr5's second loop is made on the way back, after the turn.
+  // Whether the st's half of a tube is the back: the bed it is made on, the other for a purl.
+  bool back_half(StitchType t, LoopId first) const {
+    return tube_ && f_.loops[first].front == is_purl(t);
+  }
+
+  // Which way the yarn runs through the st in its own frame: as the input says; a st the input
+  // orders by its loops (one extruded along a join or split) as the fabric shows it.
+  bool left_to_right(StitchId s, StitchType t, LoopId first) const {
+    CourseDirection d = g_.direction[s];
+    if (d != CourseDirection::along_its_loops) return d == CourseDirection::left_to_right;
+    bool rightward = f_.loops[first].dir == Direction::plus;
+    return rightward != back_half(t, first);  // the first loop: an sr5 turns after it
+  }
+
+  // The yarn runs through each st the way the input says, seen from the right side: on a
+  // sheet's front bed (a purl's back bed) left to right is rightward; a tube's back half is seen
+  // from behind, so there left to right is leftward. An sr5's second loop is made on the way
+  // back, after the turn. A loop made against its course leaves a float where the carrier turns.
   bool travels_along_course(StitchId s, StitchType t, const LoopId* loops, std::size_t n,
-                            std::string& why) {
-    bool back_half = l_.tube && f_.loops[loops[0]].front == is_purl(t);
+                            std::string& why) const {
+    bool ltr = left_to_right(s, t, loops[0]), back = back_half(t, loops[0]);
     for (std::size_t i = 0; i < n; ++i) {
       const FabricLoop& fl = f_.loops[loops[i]];
       bool turned = t == StitchType::sr5 && i == 1;
-      int sign = (l_.left_to_right[s] != turned ? 1 : -1) * (back_half ? -1 : 1) *
-                 static_cast<int>(fl.dir);
-      if (sign_ == 0) sign_ = sign;
-      if (sign != sign_) {
-        why = fmt::format("{} is knit against the direction of its row: {} goes {}", g_.describe(s),
-                          where(loops[i]), direction_char(fl.dir));
+      bool rightward = fl.dir == Direction::plus;
+      if ((ltr != turned) != (rightward != back)) {
+        why = fmt::format("{} is knit against the direction of its row ({}): {} goes {}",
+                          g_.describe(s), course_direction_name(g_.direction[s]), where(loops[i]),
+                          direction_char(fl.dir));
         return false;
       }
     }
@@ -301,7 +356,7 @@ class Matcher {
 
   // Every loop of the input is pulled through as often as its taker needs.
   bool children_match(std::string& why) const {
-    for (StitchId s : l_.order)
+    for (StitchId s : *order_)
       for (std::uint32_t loop : g_.loops_made_by(s)) {
         const Loop& l = g_.loops[loop];
         std::uint32_t want = pulls(loop);
@@ -321,45 +376,54 @@ class Matcher {
   std::string_view text_;
   mutable std::vector<std::string_view> lines_;
   const KnitGraph& g_;
-  const CourseLayout& l_;
+  const std::vector<StitchId>* order_ = nullptr;  // the piece's sts in yarn order
+  bool tube_ = false;
   std::vector<LoopId> loop_of_;  // per knit graph loop: its fabric loop
   static constexpr std::uint32_t kNoKept = 0xffffffffu;
   std::vector<std::uint32_t> kept_;        // per knit graph loop: the loop a tuck kept under it
   std::vector<std::uint32_t> stamp_;       // per fabric loop: the try that matched it
-  std::vector<std::uint32_t> wrap_after_;  // per stitch: the loop its course's turn wraps
-  std::vector<std::uint8_t> wrap_back_;    // per stitch: ... its own loop, going back
-  std::unordered_multimap<StitchId, LoopId> wraps_;  // per stitch: the turn tucks it knits
+  std::vector<std::uint32_t> wrap_stamp_;  // per fabric loop: the try that took it for a wrap
+  std::vector<StitchId> wrap_taker_;       // per fabric loop (a wrap): the st pulled through it
+  std::vector<LoopId> wraps_;              // the turns' tucks of this try
+  std::vector<std::uint32_t> turned_;      // per fabric loop: `guesses_` when its guess is turned
+  std::uint32_t guesses_ = 1;
+  LoopId last_guess_ = kNoLoop;  // the last tuck of this try guessed a wrap or not
   std::uint32_t try_ = 0;
-  int sign_ = 0;  // the first stitch's direction relative to its frame
 };
 
 // Where one piece was found: along which carrier, after how many border loops.
 struct PieceMatch {
   bool found = false;
   std::size_t carrier = 0, start = 0, needed = 0;
+  std::vector<std::uint32_t> wrap_lines;
   std::string why;  // when not found: the first difference of the closest try
 };
 
 // Looks for the piece along every carrier's yarn, in a yarn piece no other piece matched.
-PieceMatch find_piece(const Replay& r, std::string_view text, const Compilation& c,
-                      const CourseLayout& l, std::vector<std::uint32_t>& used) {
+PieceMatch find_piece(const Replay& r, const Compilation& c, const std::vector<StitchId>& order,
+                      Matcher& m, std::vector<std::uint32_t>& used) {
   PieceMatch match;
-  for (StitchId s : l.order) match.needed += fabric_loops(c.knit.type[s]);
-  for (const Course& course : l.courses) match.needed += course.wrap != kNoWrap;
-  Matcher m(r, text, c, l);
+  std::size_t least = 0;  // the piece's loops, the turns' tucks aside
+  for (StitchId s : order) least += fabric_loops(c.knit.type[s]);
+  m.begin_piece(order);
   std::size_t best = 0;
   for (std::size_t carrier = 0; carrier < r.fabric.by_carrier.size(); ++carrier) {
     const auto& yarn = r.fabric.by_carrier[carrier];
-    for (std::size_t start = 0; start + match.needed <= yarn.size(); ++start) {
+    for (std::size_t start = 0; start + least <= yarn.size(); ++start) {
       std::uint32_t piece = r.fabric.loops[yarn[start]].piece;
       if (std::find(used.begin(), used.end(), piece) != used.end()) continue;
       std::string why;
-      std::size_t reached = 0;
-      if (m.match(carrier, start, why, reached)) {
+      std::size_t reached = 0, end = 0;
+      m.forget_guesses();
+      bool matched = m.match(carrier, start, why, reached, end);
+      while (!matched && m.turn_last_guess()) matched = m.match(carrier, start, why, reached, end);
+      if (matched) {
         used.push_back(piece);
         match.found = true;
         match.carrier = carrier;
         match.start = start;
+        match.needed = end - start;
+        for (LoopId x : m.wraps()) match.wrap_lines.push_back(r.fabric.loops[x].line);
         return match;
       }
       if (reached >= best) best = reached, match.why = why;
@@ -371,38 +435,63 @@ PieceMatch find_piece(const Replay& r, std::string_view text, const Compilation&
     match.why = fmt::format(
         "no carrier makes enough loops: the input needs {} (one per stitch, two "
         "per increase), the busiest carrier makes {}",
-        match.needed, most);
+        least, most);
   }
   return match;
 }
 
 }  // namespace
 
+// The yarn pieces, each after those whose loops it takes (a leg knit on after a leg); pieces
+// that take each other's loops keep their order.
+std::vector<std::uint32_t> pieces_in_knitting_order(const KnitGraph& g, const YarnPieces& yarns) {
+  std::vector<std::vector<std::uint32_t>> takes_from(yarns.size());
+  for (const Loop& l : g.loops) {
+    if (l.maker == kNoStitch || l.taker == kNoStitch) continue;
+    std::uint32_t maker = yarns.piece_of[l.maker], taker = yarns.piece_of[l.taker];
+    if (maker != taker) takes_from[taker].push_back(maker);
+  }
+  std::vector<std::uint32_t> order;
+  std::vector<std::uint8_t> state(yarns.size(), 0);  // 0 new, 1 on the way, 2 placed
+  auto place = [&](auto& self, std::uint32_t piece) -> void {
+    if (state[piece]) return;
+    state[piece] = 1;
+    for (std::uint32_t other : takes_from[piece]) self(self, other);
+    state[piece] = 2;
+    order.push_back(piece);
+  };
+  for (std::uint32_t piece = 0; piece < yarns.size(); ++piece) place(place, piece);
+  return order;
+}
+
 ProofResult prove_fabric(const Replay& r, std::string_view text, const Compilation& c) {
-  std::vector<CourseLayout> pieces = lay_out_pieces(c);
+  const YarnPieces& yarns = c.yarns;
   ProofResult result;
   result.first_line = std::numeric_limits<std::size_t>::max();
   std::vector<std::uint32_t> used;
   std::vector<std::string> where;
-  for (std::size_t i = 0; i < pieces.size(); ++i) {
-    std::string piece = pieces.size() > 1 ? fmt::format("yarn piece {}: ", i + 1) : "";
-    PieceMatch m = find_piece(r, text, c, pieces[i], used);
+  bool sheets = true;
+  Matcher matcher(r, text, c);
+  for (std::uint32_t i : pieces_in_knitting_order(c.knit, yarns)) {
+    std::string piece = yarns.size() > 1 ? fmt::format("yarn piece {}: ", i + 1) : "";
+    std::vector<StitchId> order = yarn_order(c.knit, yarns, i);
+    PieceMatch m = find_piece(r, c, order, matcher, used);
     if (!m.found) {
       result.summary = fmt::format("NOT proven against {}: {}{}", c.input, piece, m.why);
       return result;
     }
+    sheets &= !matcher.tube();
     const auto& yarn = r.fabric.by_carrier[m.carrier];
     result.pieces.push_back({m.carrier, m.start, m.needed});
+    result.wrap_lines.insert(result.wrap_lines.end(), m.wrap_lines.begin(), m.wrap_lines.end());
     result.first_line =
         std::min<std::size_t>(result.first_line, r.fabric.loops[yarn[m.start]].line);
     result.last_line =
         std::max<std::size_t>(result.last_line, r.fabric.loops[yarn[m.start + m.needed - 1]].line);
     where.push_back(fmt::format("{}carrier {} in yarn order after a border of {} loops",
-                                pieces.size() > 1 ? fmt::format("piece {} with ", i + 1) : "with ",
+                                yarns.size() > 1 ? fmt::format("piece {} with ", i + 1) : "with ",
                                 r.header.carriers[m.carrier], m.start));
   }
-  bool sheets =
-      std::none_of(pieces.begin(), pieces.end(), [](const CourseLayout& l) { return l.tube; });
   result.proven = true;
   result.summary = fmt::format(
       "proven against {}: all {} stitches are there, knit {}, each pulled through the right "

@@ -9,10 +9,12 @@
 // stitch takes (a decrease with the right loop on top); an increase as two loops in the
 // order the yarn makes them (both pulled through for kfb, the new one through nothing for yo,
 // m1l, m1r); a bind-off as one loop pulled through its stitch's loop and the previous
-// bind-off's loop; an sr5 as its knit loop and a turn loop made going back. A short row's turn
-// beside a waiting loop is followed by a tuck that the waiting loop's taker pulls through too.
-// Every loop of the input is pulled through exactly as often as it should be, and, on a sheet,
-// every knit is made on the front bed and every purl on the back.
+// bind-off's loop; an sr5 as its knit loop and a turn loop made going back. Each loop runs the
+// way the input's course runs (seen from the right side: a tube's back half from behind). A
+// short row's turn may be followed by a tuck (its wrap) that one st pulls through with its
+// loops. Every loop of the input is pulled through exactly as often as it should be, and, on a
+// sheet, every knit is made on the front bed and every purl on the back. The proof reads the
+// knit graph and the replayed fabric only: none of the emitter's or the lowering's code.
 #pragma once
 
 #include <string>
@@ -35,6 +37,10 @@ struct ProofResult {
     std::size_t carrier = 0, start = 0, count = 0;
   };
   std::vector<Run> pieces;
+  // When proven: the lines of the tucks it took for short-row wraps (a tuck through nothing
+  // after a turn, pulled through by the st that takes a waiting loop). The model has no wraps:
+  // the proof accepts a turn with or without one.
+  std::vector<std::uint32_t> wrap_lines;
 };
 
 // `text` is the replayed file, quoted in the message when the proof fails.

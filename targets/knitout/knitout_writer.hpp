@@ -35,6 +35,7 @@ class KnitoutWriter {
   }
   void knit(Direction d, Needle n, std::string_view c) { stitch("knit", d, n, c); }
   void tuck(Direction d, Needle n, std::string_view c) { stitch("tuck", d, n, c); }
+  void miss(Direction d, Needle n, std::string_view c) { stitch("miss", d, n, c); }
   void split(Direction d, Needle n, Needle to, std::string_view c) {
     append(FMT_COMPILE("split {} {}{} {}{} {}\n"), direction_char(d), bed_name(n.bed), n.index,
            bed_name(to.bed), to.index, c);
