@@ -186,7 +186,8 @@ class Lowering {
     Takes takes = sort_takes(stitches, input_direction(stitches));
     step.direction = resolve(stitches, g_.direction[first], takes);
     step.picked_up = takes.picked_up;
-    std::vector<Segment> segments = walks(takes.run, step.direction);
+    std::vector<Segment> segments =
+        walks(takes.run, step.direction, step.shape == RowShape::closed);
     if (segments.size() > 1) segments = {join(split_off(segments), step.yarn)};
     std::vector<Segment> needles = second_needles(takes.second, first);
     segments.insert(segments.end(), needles.begin(), needles.end());
@@ -269,10 +270,11 @@ class Lowering {
   // The loops a course takes from runs as maximal walks of one run each, in run order. A run
   // cast on across a split has the order of the side that takes it: the first course that
   // meets it backward turns it round (a reverse step) and walks it again.
-  std::vector<Segment> walks(const std::vector<std::uint32_t>& loops, CourseDirection d) {
+  std::vector<Segment> walks(const std::vector<std::uint32_t>& loops, CourseDirection d,
+                             bool closed) {
     for (;;) {
       std::vector<Segment> segments;
-      RunId backward = find_walks(loops, d, segments);
+      RunId backward = find_walks(loops, d, closed, segments);
       if (!backward.valid()) {
         for (const Segment& seg : segments) unoriented_[seg.run.index()] = 0;
         return segments;
@@ -286,9 +288,13 @@ class Lowering {
     }
   }
 
-  // Fills `segments`; returns a run still unoriented that the course meets backward.
-  RunId find_walks(const std::vector<std::uint32_t>& loops, CourseDirection d,
+  // Fills `segments`; returns a run still unoriented that the course meets backward. A round
+  // may meet one run at its start and again at its end, where it goes round past where it
+  // began (a leg whose first rnd begins in the middle of the body's sts it takes): the two
+  // walks are cut off and joined in the order met, no crossing.
+  RunId find_walks(const std::vector<std::uint32_t>& loops, CourseDirection d, bool closed,
                    std::vector<Segment>& segments) const {
+    bool round_past_start = false;
     for (std::size_t i = 0; i < loops.size(); ++i) {
       std::uint32_t loop = loops[i];
       RunId run = live_.run_of(loop);
@@ -304,14 +310,31 @@ class Lowering {
                                "other way round: it needs a crossing here",
                                course_direction_name(d))};
       }
-      for (const Segment& seg : segments)
-        if (seg.run == run && !round_the_gap(seg, loop))
-          throw Stop{g_.loops[loop].taker,
-                     "the course takes the loops of one run in two places, out of their order: "
-                     "it needs a crossing here"};
+      for (const Segment& seg : segments) {
+        if (seg.run != run || round_the_gap(seg, loop)) continue;
+        if (closed && !round_past_start && &seg == &segments.front()) {
+          round_past_start = true;
+          continue;
+        }
+        throw two_places(loop);
+      }
       segments.push_back({run, loop, 1, Walk::forward});
     }
+    if (round_past_start && !goes_round_to_its_start(segments)) throw two_places(loops.back());
     return RunId();
+  }
+
+  Stop two_places(std::uint32_t loop) const {
+    return Stop{g_.loops[loop].taker,
+                "the course takes the loops of one run in two places, out of their order: it "
+                "needs a crossing here"};
+  }
+
+  // The round's last walk is of its first walk's run and ends right before it begins.
+  bool goes_round_to_its_start(const std::vector<Segment>& segments) const {
+    const Segment &first = segments.front(), &last = segments.back();
+    return segments.size() > 1 && last.run == first.run &&
+           live_.follows(first.first, live_.walk_end(last));
   }
 
   Stop not_live(std::uint32_t loop) const {

@@ -10,6 +10,8 @@
 #include "hand/needle_sim.hpp"
 #include "hand/pattern_reader.hpp"
 #include "hand/pattern_writers.hpp"
+#include "hand/program_pattern.hpp"
+#include "hand/stitch_working.hpp"
 
 namespace skein {
 namespace hand {
@@ -54,6 +56,21 @@ Rounds rounds_of(const TargetOptions& options) {
   return inside_out ? Rounds::ws_facing : Rounds::mirror_most;
 }
 
+// `--set builder=program`: the pattern built on the lowering's live-loop program; else the
+// builder that reads the schedule (the default while the program's does not prove as much).
+bool from_program(const TargetOptions& options) {
+  auto set = options.settings.find("builder");
+  return set != options.settings.end() && set->second == "program";
+}
+
+HandPattern build_pattern(const Compilation& c, const TargetOptions& options) {
+  if (from_program(options)) {
+    check_stitch_types(c.knit);
+    return build_pattern_from_program(c, turn_method_of(options));
+  }
+  return build_hand_pattern(c, turn_method_of(options), rounds_of(options));
+}
+
 class HandTarget : public Target {
  public:
   explicit HandTarget(const FormatInfo& f) : f_(f) {}
@@ -67,10 +84,13 @@ class HandTarget : public Target {
              "how short rows turn (default: the project's short_rows: hand:)"},
             {"rounds",
              {"mirror", "inside-out"},
-             "rnds run left to right: mirror the model if most do, or work them WS facing"}};
+             "rnds run left to right: mirror the model if most do, or work them WS facing"},
+            {"builder",
+             {"schedule", "program"},
+             "build the pattern from the schedule (default) or the lowering's live-loop program"}};
   }
   void emit(const Compilation& c, const TargetOptions& options, std::ostream& out) const override {
-    HandPattern pattern = build_hand_pattern(c, turn_method_of(options), rounds_of(options));
+    HandPattern pattern = build_pattern(c, options);
     PatternDocument doc = make_document(pattern, dialect_of(options), gauge_of(c));
     // `--target hand --dialect knitspeak` writes what hand-knitspeak writes; the page stays a
     // page, with its rows in KnitSpeak.
