@@ -27,18 +27,19 @@ constexpr std::uint32_t kNoPiece = 0xffffffffu;
 constexpr std::uint32_t kNoLoopHere = 0xffffffffu;
 
 // What the knitter holds for one piece: its sts, split between the left needle (ahead of the
-// tip) and the right one (behind) on a flat piece, and where its rnds begin.
+// tip) and the right one (behind) on a flat piece; in the rnd, the ring of its sts from the
+// beginning-of-round marker on, the way the rnds go, and where the yarn is.
 struct Needle {
   std::uint32_t section = 0;
   std::uint32_t live = 0, ahead = 0, behind = 0;
   bool in_round = false;
   bool double_stitch_next = false;  // German short rows: the next row begins with DS
+  bool turned_at_sr4 = false;       // the last course ended on a short row's turn
+  bool worked = false;              // a course has worked its sts
   CourseDirection last = CourseDirection::left_to_right;
-  std::uint32_t bor_loop = kNoLoopHere;  // the loop a rnd begins with
-  // In the rnd after whole rnds: the live loops from the beginning of the rnd, in the order
-  // the rnds work them (empty when a row left them otherwise).
+  CourseDirection rnds = CourseDirection::left_to_right;  // the way its rnds go
   std::vector<std::uint32_t> ring;
-  std::uint32_t rnds = 0;  // whole rnds worked
+  std::uint32_t gap = 0;  // the yarn is before ring[gap], going the way the rnds go
 };
 
 class ProgramPatternBuilder {
@@ -114,10 +115,16 @@ class ProgramPatternBuilder {
   }
 
   PatternSection& section() { return out_.sections.back(); }
+  const PatternSection& section() const { return out_.sections.back(); }
 
   void end_section() {
     if (out_.sections.empty()) return;
     Needle& n = needles_.back();
+    if (row_open_)
+      unsupported(
+          fmt::format("yarn {} stops in the middle of a rnd, which the program's pattern "
+                      "builder does not write yet",
+                      section().yarn + 1));
     section().end_row = static_cast<std::uint32_t>(out_.rows.size());
     section().left_live = n.live != 0;
     section().live_at_end = n.live;
@@ -141,7 +148,10 @@ class ProgramPatternBuilder {
     needle.in_round = sec.in_round;
     needle.last = s.direction;
     // Joined in the rnd, the first rnd begins with the first st cast on.
-    needle.bor_loop = made_by(s.stitches.begin).front().loop;
+    needle.rnds = s.direction;
+    for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i)
+      for (const PlacedLoop& m : made_by(i)) needle.ring.push_back(m.loop);
+    index_ring(needle);
     piece_of_run_[s.run.index()] = static_cast<std::uint32_t>(needles_.size() - 1);
   }
 
@@ -240,9 +250,11 @@ class ProgramPatternBuilder {
     n.live = count;
     n.in_round = true;
     n.last = s.direction;
-    n.bor_loop = met.front();
+    n.rnds = s.direction;
     n.ring = met;
-    n.rnds = 0;
+    n.gap = 0;
+    n.worked = false;
+    index_ring(n);
     holder_of_run_[s.run.index()] = 0;
     piece_of_run_[s.run.index()] = static_cast<std::uint32_t>(needles_.size() - 1);
     return n;
@@ -256,23 +268,22 @@ class ProgramPatternBuilder {
     if (piece == kNoPiece || piece + 1 != needles_.size())
       not_yet(s, "cuts off sts of a piece not on the needle");
     Needle& n = needles_.back();
-    if (!n.in_round || n.ring.size() != n.live || n.rnds == 0)
-      not_yet(s, "parts the sts of a flat piece, or of a tube before it has worked a rnd");
+    if (!n.in_round || !n.worked || row_open_ || n.gap != 0)
+      not_yet(s, "parts the sts of a flat piece, or of a tube not at the end of a rnd");
     const auto size = static_cast<std::uint32_t>(n.ring.size());
-    auto at = static_cast<std::uint32_t>(std::find(n.ring.begin(), n.ring.end(), seg.first) -
-                                         n.ring.begin());
-    // The run's order is left to right seen from the RS; a rnd going right to left meets the
+    std::uint32_t at = pos_[seg.first];
+    // The run's order is left to right seen from the RS; rnds going right to left meet the
     // segment from its first loop down.
-    bool down = n.last == CourseDirection::right_to_left;
+    bool down = n.rnds == CourseDirection::right_to_left;
     std::uint32_t begin = down ? (at + size + 1 - seg.count) % size : at;
-    if (at == size || begin + seg.count > size)
+    if (n.ring[at] != seg.first || begin + seg.count > size)
       not_yet(s, "cuts off a run of sts across the beginning of the rnd");
     auto holder = static_cast<std::uint32_t>(holders_.size() + 1);
     auto first = n.ring.begin() + begin, end = first + seg.count;
     holders_.emplace_back(first, end);
     n.ring.erase(first, end);
     n.live -= seg.count;
-    if (!n.ring.empty()) n.bor_loop = n.ring.front();
+    index_ring(n);
     section().holdings.push_back(
         {static_cast<std::uint32_t>(out_.rows.size() - 1), begin + 1, seg.count, holder});
     holder_of_run_[s.run.index()] = holder;
@@ -280,64 +291,208 @@ class ProgramPatternBuilder {
 
   void course(const Step& s) {
     Needle& n = needle_of(s);
-    const Segment& seg = p_.segments[s.reads.begin];
+    if (n.in_round) return ring_course(s, n);
+    PatternRow r = open_row(s, n);
+    r.bind_off = std::all_of(stitches_of(s).begin(), stitches_of(s).end(),
+                             [&](const WorkedStitch& w) { return g_.type[w.stitch] == T::bo; });
+    begin_row(s, n);
+    std::uint32_t takes = 0;
+    for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i) takes += work(s, i, n, r);
+    end_row(s, n, r, takes);
+    r.end_op = static_cast<std::uint32_t>(out_.ops.size());
+    r.sts_after = n.live;
+    out_.rows.push_back(r);
+    note_course(s, n);
+  }
+
+  PatternRow open_row(const Step& s, const Needle& n) const {
     PatternRow r;
     r.side = s.direction == CourseDirection::right_to_left ? Side::rs : Side::ws;
-    r.round = n.in_round && s.shape == RowShape::closed && seg.count == n.live;
-    if (n.in_round && !r.round) not_yet(s, "is a row in the rnd (short rows in a tube)");
     r.number = static_cast<std::uint32_t>(out_.rows.size()) - section().first_row + 1;
     r.first_op = static_cast<std::uint32_t>(out_.ops.size());
     r.sts_before = n.live;
-    r.bind_off = std::all_of(stitches_of(s).begin(), stitches_of(s).end(),
-                             [&](const WorkedStitch& w) { return g_.type[w.stitch] == T::bo; });
-    if (r.round)
-      begin_round(s, n);
-    else
-      begin_row(s, n);
-    std::uint32_t takes = 0;
-    for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i) {
-      StitchId st = p_.stitches[i].stitch;
-      check_worked_here(s, i);
-      note_region_mark(st, r);
-      append_stitch_ops(g_, st, r.side, false, out_.turns, out_.ops, r.wraps_again);
-      takes += move_loops(st, n, s);
-    }
-    end_row(s, n, r, takes);
-    note_ring(s, n, r);
-    r.end_op = static_cast<std::uint32_t>(out_.ops.size());
-    r.sts_after = n.live;
+    return r;
+  }
+
+  // One stitch of the course: its ops; returns the loops it takes.
+  std::uint32_t work(const Step& s, std::uint32_t i, Needle& n, PatternRow& r) {
+    StitchId st = p_.stitches[i].stitch;
+    check_worked_here(s, i);
+    note_region_mark(st, r);
+    append_stitch_ops(g_, st, r.side, false, out_.turns, out_.ops, r.wraps_again);
+    return move_loops(st, n, s);
+  }
+
+  void note_course(const Step& s, Needle& n) {
+    StitchId last = p_.stitches[s.stitches.end - 1].stitch;
+    n.turned_at_sr4 = worked_by_hand(g_, last) == T::sr4;
+    n.last = s.direction;
+    n.worked = true;
     section().stitches += s.stitches.size();
     section().last_row_ends[0] = p_.stitches[s.stitches.begin].stitch;
-    section().last_row_ends[1] = p_.stitches[s.stitches.end - 1].stitch;
-    out_.rows.push_back(r);
+    section().last_row_ends[1] = last;
   }
 
-  // A rnd begins at the beginning-of-round marker: with the loop the last rnd's first st
-  // made (the first cast on), going the way the rnds go.
-  void begin_round(const Step& s, Needle& n) {
-    if (s.direction != n.last && out_.rows.size() > section().first_row)
-      not_yet(s, "is a rnd that goes the other way round from the rnd before");
-    n.last = s.direction;
-    auto taken = taken_by(s.stitches.begin);
-    if (taken.empty() || first_met(taken, s.direction) != n.bor_loop)
-      not_yet(s, "is a rnd that begins elsewhere than the beginning of the rnd");
-    auto made = made_by(s.stitches.begin);
-    n.bor_loop = made.empty() ? kNoLoopHere : first_met(made, s.direction).loop;
-    out_.ws_rounds = out_.ws_rounds || s.direction == CourseDirection::left_to_right;
-  }
+  // --- in the rnd ---------------------------------------------------------------------------
+  // A knitter's rnd runs from the beginning-of-round marker round to it, the way the rnds go;
+  // a course that turns is a row in the rnd (a short row), which slips the marker where it
+  // passes it. Courses going on the same way are one row until the work turns or the marker
+  // ends a rnd.
 
-  // After a rnd the needle holds the loops it made, from the beginning of the rnd on.
-  void note_ring(const Step& s, Needle& n, const PatternRow& r) {
-    n.ring.clear();
-    if (!r.round) return;
-    ++n.rnds;
-    for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i) {
-      auto made = made_by(i);
-      if (s.direction == CourseDirection::right_to_left)
-        for (auto m = made.rbegin(); m != made.rend(); ++m) n.ring.push_back(m->loop);
-      else
-        for (const PlacedLoop& m : made) n.ring.push_back(m.loop);
+  void ring_course(const Step& s, Needle& n) {
+    if (s.run_shape != RunShape::ring && s.run_shape != RunShape::line)
+      not_yet(s, "leaves its sts in no known order");
+    if (!n.worked && s.direction != n.rnds) {  // the first rnd goes against the cast-on
+      std::reverse(n.ring.begin() + 1, n.ring.end());
+      n.rnds = s.direction;
+      index_ring(n);
     }
+    bool turns = n.worked && s.direction != n.last;
+    if (turns) {
+      if (!row_open_) turn_after_last_rnd();
+      close_ring_row(s, n, true);
+      if (n.turned_at_sr4) step_over_turn(n, s.direction == n.rnds);
+    }
+    std::vector<std::uint32_t> met = loops_met(s);
+    bool forward = s.direction == n.rnds;
+    check_met_at_the_yarn(s, n, met, forward);
+    const auto size = static_cast<std::uint32_t>(n.ring.size());
+    std::uint32_t first = forward ? n.gap : (n.gap + size - 1) % size;
+    for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i) {
+      auto taken = taken_by(i);
+      std::uint32_t at = pos_[first_met(taken, s.direction)];
+      if (forward && at == 0 && row_open_ && out_.ops.size() > pending_.first_op)
+        close_ring_row(s, n, false);
+      if (!forward && at == size - 1 && row_open_ && out_.ops.size() > pending_.first_op)
+        out_.ops.push_back(HandOp::sm);
+      if (!row_open_) open_ring_row(s, n, forward);
+      work(s, i, n, pending_);
+      pending_takes_ += static_cast<std::uint32_t>(taken.size());
+    }
+    replace_in_ring(s, n, forward, first, static_cast<std::uint32_t>(met.size()));
+    note_course(s, n);
+    if (forward && (n.gap == 0 || n.ring.empty())) close_ring_row(s, n, false);
+    if (s.run_shape == RunShape::line && !n.ring.empty())
+      not_yet(s, "opens the rnd into rows (binds off part of it)");
+  }
+
+  // The work turns right after a rnd ended at the marker: that rnd ends with the turn.
+  void turn_after_last_rnd() {
+    PatternRow& r = out_.rows.back();
+    if (r.end_op != out_.ops.size() || out_.ops.back() == HandOp::wt) return;
+    out_.ops.push_back(HandOp::turn);
+    ++r.end_op;
+  }
+
+  // German short rows slip the st the work turned at (DS); a wrapped st went back to the left
+  // needle: either way the row after the turn begins past it.
+  void step_over_turn(Needle& n, bool forward) {
+    if (n.ring.empty()) return;
+    auto size = static_cast<std::uint32_t>(n.ring.size());
+    n.gap = forward ? (n.gap + 1) % size : (n.gap + size - 1) % size;
+    if (out_.turns == TurnMethod::german) ds_next_ = true;
+  }
+
+  // The course meets its loops side by side on the needle, from where the yarn is.
+  void check_met_at_the_yarn(const Step& s, const Needle& n, const std::vector<std::uint32_t>& met,
+                             bool forward) const {
+    const auto size = static_cast<std::uint32_t>(n.ring.size());
+    if (met.empty() || met.size() > size) not_yet(s, "takes no loop of the rnd, or too many");
+    std::uint32_t first = forward ? n.gap : (n.gap + size - 1) % size;
+    for (std::uint32_t i = 0; i < met.size(); ++i) {
+      std::uint32_t want = forward ? (first + i) % size : (first + size - i) % size;
+      if (pos_[met[i]] != want || n.ring[want] != met[i])
+        not_yet(s, i == 0 ? "begins away from where the yarn is on the needle"
+                          : "does not meet its loops side by side on the needle");
+    }
+  }
+
+  void open_ring_row(const Step& s, Needle& n, bool forward) {
+    pending_ = open_row(s, n);
+    pending_takes_ = 0;
+    row_open_ = true;
+    row_forward_ = forward;
+    row_at_marker_after_turn_ = forward && n.gap == 0 && n.worked && s.direction != row_dir_;
+    row_dir_ = s.direction;
+    if (ds_next_) out_.ops.push_back(HandOp::ds);
+    ds_next_ = false;
+  }
+
+  // Ends the hand row: at a turn, a row in the rnd (a short row); at the marker, a rnd.
+  void close_ring_row(const Step& s, Needle& n, bool turn) {
+    if (!row_open_) return;
+    PatternRow& r = pending_;
+    if (!turn && (!row_forward_ || (n.gap != 0 && !n.ring.empty())))
+      not_yet(s, "leaves a row in the rnd that neither turns nor ends at the marker");
+    r.round = !turn;
+    r.short_row = turn;
+    if (turn && out_.ops.back() != HandOp::wt) out_.ops.push_back(HandOp::turn);
+    if (turn && row_at_marker_after_turn_)
+      out_.ops.insert(out_.ops.begin() + r.first_op, HandOp::sm);
+    r.end_op = static_cast<std::uint32_t>(out_.ops.size());
+    r.sts_after = n.live;
+    r.bind_off = n.live == 0 && std::all_of(out_.ops.begin() + r.first_op, out_.ops.end(),
+                                            [](HandOp op) { return op == HandOp::bo; });
+    r.partial = r.short_row || (!r.bind_off && pending_takes_ != r.sts_before);
+    out_.short_rows = out_.short_rows || r.short_row;
+    out_.ws_rounds = out_.ws_rounds || (r.round && r.side == Side::ws);
+    out_.rows.push_back(r);
+    row_open_ = false;
+  }
+
+  // The loops the course took, a block of the ring, give way to those it made; the marker
+  // stays before the loops of the st that took the one after it.
+  void replace_in_ring(const Step& s, Needle& n, bool forward, std::uint32_t first,
+                       std::uint32_t count) {
+    const auto size = static_cast<std::uint32_t>(n.ring.size());
+    std::uint32_t begin = forward ? first : (first + size + 1 - count) % size;  // in ring order
+    std::vector<std::uint32_t> made;
+    std::uint32_t bor = n.ring[0], new_bor = kNoLoopHere;
+    for (std::uint32_t k = 0; k < s.stitches.size(); ++k) {
+      std::uint32_t i = forward ? s.stitches.begin + k : s.stitches.end - 1 - k;
+      auto m = made_by(i);
+      auto taken = taken_by(i);
+      bool takes_bor = std::find(taken.begin(), taken.end(), bor) != taken.end();
+      std::size_t before = made.size();
+      if ((s.direction == CourseDirection::right_to_left) == forward)
+        for (auto it = m.rbegin(); it != m.rend(); ++it) made.push_back(it->loop);
+      else
+        for (const PlacedLoop& pl : m) made.push_back(pl.loop);
+      if (takes_bor && made.size() > before) new_bor = made[before];
+    }
+    std::vector<std::uint32_t> ring = made;
+    for (std::uint32_t k = count; k < size; ++k) ring.push_back(n.ring[(begin + k) % size]);
+    // `ring` starts at the block; the marker goes before the loop that takes its place.
+    std::uint32_t start = static_cast<std::uint32_t>(made.size());
+    bool block_has_bor = begin == 0 || begin + count > size;
+    if (block_has_bor) {
+      if (new_bor == kNoLoopHere && !made.empty())
+        not_yet(s, "binds off the st the beginning-of-round marker sits before");
+      start = new_bor == kNoLoopHere
+                  ? 0
+                  : static_cast<std::uint32_t>(std::find(ring.begin(), ring.end(), new_bor) -
+                                               ring.begin());
+    } else {
+      start = static_cast<std::uint32_t>(std::find(ring.begin(), ring.end(), bor) - ring.begin());
+    }
+    if (!ring.empty()) std::rotate(ring.begin(), ring.begin() + start % ring.size(), ring.end());
+    n.ring = std::move(ring);
+    index_ring(n);
+    // The yarn: after the made loops going the rnds' way, before them going back.
+    std::uint32_t edge_loop = made.empty() ? kNoLoopHere : (forward ? made.back() : made.front());
+    if (n.ring.empty()) {
+      n.gap = 0;
+    } else if (edge_loop == kNoLoopHere) {
+      n.gap = 0;
+      not_yet(s, "leaves no loop where the yarn is");
+    } else {
+      auto sz = static_cast<std::uint32_t>(n.ring.size());
+      n.gap = forward ? (pos_[edge_loop] + 1) % sz : pos_[edge_loop];
+    }
+  }
+
+  void index_ring(const Needle& n) {
+    for (std::uint32_t i = 0; i < n.ring.size(); ++i) pos_[n.ring[i]] = i;
   }
 
   // A flat row turns the work: the sts behind the tip come ahead of it. German short rows
@@ -345,7 +500,6 @@ class ProgramPatternBuilder {
   void begin_row(const Step& s, Needle& n) {
     if (s.direction == n.last)
       not_yet(s, "is a row that goes on the way the row before went, without turning");
-    n.last = s.direction;
     std::swap(n.ahead, n.behind);
     if (!n.double_stitch_next) return;
     out_.ops.push_back(HandOp::ds);
@@ -418,6 +572,13 @@ class ProgramPatternBuilder {
   std::vector<std::uint8_t> yarn_started_;           // per yarn
   std::unordered_map<StitchId, MarkerKind> marked_;
   std::size_t step_ = 0;
+  std::vector<std::uint32_t> pos_ = std::vector<std::uint32_t>(g_.loops.size(), 0);  // in ring
+  // The row in the rnd being written, until the work turns or the marker ends it.
+  PatternRow pending_;
+  bool row_open_ = false, row_forward_ = false, ds_next_ = false;
+  bool row_at_marker_after_turn_ = false;
+  CourseDirection row_dir_ = CourseDirection::left_to_right;
+  std::uint32_t pending_takes_ = 0;
 };
 
 }  // namespace
