@@ -1,8 +1,12 @@
-// The hand pattern built on the lowering's live-loop program (issue 13): each run of live loops
-// is a piece's needle; each course a row or a rnd, with the side facing that its direction
-// gives (right to left seen from the RS: the RS faces the knitter; left to right: the WS), its
-// stitches in the course's working order. Nothing here votes on a direction or cuts rows from
-// the schedule. Steps the hand vocabulary cannot say yet are refused by name, before any text.
+// The hand pattern built on the lowering's live-loop program (issue 13): runs of live loops
+// are mapped onto needles, holders, spare needles and provisional cast-ons' chains; each course
+// is a row or a rnd with the side facing that its direction gives (right to left seen from the
+// RS: the RS faces the knitter; left to right: the WS), its stitches in the course's working
+// order. Nothing here votes on a direction or cuts rows from the schedule. A course that takes
+// loops from more than one place gathers them first (slips what it leaves to holders, joins a
+// yarn to a holder, places the others into the rnd) and checks the needle then holds its loops
+// in the order it meets them. Steps the hand vocabulary cannot say yet are refused by name,
+// before any text.
 #include "hand/program_pattern.hpp"
 
 #include <fmt/format.h>
@@ -14,6 +18,7 @@
 
 #include "common/error.hpp"
 #include "driver/pipeline.hpp"
+#include "hand/loop_places.hpp"
 #include "hand/marker_plan.hpp"
 #include "hand/piece_names.hpp"
 #include "hand/region_markers.hpp"
@@ -23,14 +28,13 @@ namespace skein::hand {
 namespace {
 
 using T = StitchType;
-constexpr std::uint32_t kNoPiece = 0xffffffffu;
-constexpr std::uint32_t kNoLoopHere = 0xffffffffu;
+constexpr std::uint32_t kNone = 0xffffffffu;
 
 // What the knitter holds for one piece: its sts, split between the left needle (ahead of the
 // tip) and the right one (behind) on a flat piece; in the rnd, the ring of its sts from the
 // beginning-of-round marker on, the way the rnds go, and where the yarn is.
 struct Needle {
-  std::uint32_t section = 0;
+  std::uint32_t section = 0;  // its latest section
   std::uint32_t live = 0, ahead = 0, behind = 0;
   bool in_round = false;
   bool double_stitch_next = false;  // German short rows: the next row begins with DS
@@ -38,19 +42,17 @@ struct Needle {
   bool worked = false;              // a course has worked its sts
   CourseDirection last = CourseDirection::left_to_right;
   CourseDirection rnds = CourseDirection::left_to_right;  // the way its rnds go
-  std::vector<std::uint32_t> ring;
-  std::uint32_t gap = 0;  // the yarn is before ring[gap], going the way the rnds go
+  std::vector<std::uint32_t> ring;  // its loops: from the marker (in the rnd), as cast on (flat)
+  std::uint32_t gap = 0;            // the yarn is before ring[gap], going the way the rnds go
 };
 
 class ProgramPatternBuilder {
  public:
   ProgramPatternBuilder(const Compilation& c, TurnMethod turns)
-      : c_(c),
-        g_(c.knit),
+      : g_(c.knit),
         p_(c.program),
-        piece_of_run_(p_.runs.size(), kNoPiece),
-        holder_of_run_(p_.runs.size(), 0),
-        yarn_started_(c.yarns.size(), 0) {
+        places_(c.knit.loops.size()),
+        needle_of_yarn_(c.yarns.size(), kNone) {
     out_.source = c.input;
     out_.turns = turns;
     for (const Event& e : c.schedule.events)
@@ -72,10 +74,17 @@ class ProgramPatternBuilder {
         case StepKind::bind_off:
           course(s);
           break;
-        case StepKind::split:
-          split(s);
+        case StepKind::hold:
+          set_aside(s);
           break;
-        default:
+        case StepKind::resume:
+          take_up(s);
+          break;
+        case StepKind::split:  // the loops stay where they are: the course that takes them
+        case StepKind::join:   // gathers them
+        case StepKind::reverse:
+          break;
+        case StepKind::three_needle_bind_off:
           not_yet(s, "is not written by the program's pattern builder yet");
       }
     }
@@ -88,7 +97,7 @@ class ProgramPatternBuilder {
     throw UnsupportedError(fmt::format("hand target: {}", what));
   }
 
-  // "step 12 (split of yarn 2 at face 40 (k, row 7)) is not ...".
+  // "step 12 (course of yarn 2 at face 40 (k, row 7)) works ...".
   [[noreturn]] void not_yet(const Step& s, const std::string& what) const {
     std::string where =
         s.stitches.size() > 0
@@ -114,76 +123,6 @@ class ProgramPatternBuilder {
     return d == CourseDirection::right_to_left ? loops.back() : loops.front();
   }
 
-  PatternSection& section() { return out_.sections.back(); }
-  const PatternSection& section() const { return out_.sections.back(); }
-
-  void end_section() {
-    if (out_.sections.empty()) return;
-    Needle& n = needles_.back();
-    if (row_open_)
-      unsupported(
-          fmt::format("yarn {} stops in the middle of a rnd, which the program's pattern "
-                      "builder does not write yet",
-                      section().yarn + 1));
-    section().end_row = static_cast<std::uint32_t>(out_.rows.size());
-    section().left_live = n.live != 0;
-    section().live_at_end = n.live;
-  }
-
-  void cast_on(const Step& s) {
-    for (const WorkedStitch& w : stitches_of(s))
-      if (g_.type[w.stitch] != T::co)
-        not_yet(s, fmt::format("casts on with {}, which the program's pattern builder does not "
-                               "write yet",
-                               g_.describe(w.stitch)));
-    auto n = static_cast<std::uint32_t>(s.stitches.size());
-    if (yarn_started_[s.yarn]) not_yet(s, "casts on with a yarn that worked before");
-    start_section(s.yarn, n);
-    PatternSection& sec = section();
-    sec.in_round = s.run_shape == RunShape::ring;
-    sec.last_row_ends[0] = p_.stitches[s.stitches.begin].stitch;
-    sec.last_row_ends[1] = p_.stitches[s.stitches.end - 1].stitch;
-    Needle& needle = needles_.back();
-    needle.live = needle.behind = n;
-    needle.in_round = sec.in_round;
-    needle.last = s.direction;
-    // Joined in the rnd, the first rnd begins with the first st cast on.
-    needle.rnds = s.direction;
-    for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i)
-      for (const PlacedLoop& m : made_by(i)) needle.ring.push_back(m.loop);
-    index_ring(needle);
-    piece_of_run_[s.run.index()] = static_cast<std::uint32_t>(needles_.size() - 1);
-  }
-
-  // A new piece: its section (the one before ends), its needle.
-  void start_section(std::uint32_t yarn, std::uint32_t cast_on) {
-    end_section();
-    yarn_started_[yarn] = 1;
-    PatternSection& sec = out_.sections.emplace_back();
-    sec.yarn = yarn;
-    sec.piece = static_cast<std::uint32_t>(out_.sections.size());
-    sec.cast_on = cast_on;
-    sec.first_row = sec.end_row = static_cast<std::uint32_t>(out_.rows.size());
-    sec.stitches = cast_on;
-    Needle& needle = needles_.emplace_back();
-    needle.section = static_cast<std::uint32_t>(out_.sections.size() - 1);
-  }
-
-  // The needle of the piece whose run the course works: the piece worked now, or one its yarn
-  // starts (or carries on to) on the sts of a holder.
-  Needle& needle_of(const Step& s) {
-    if (s.reads.size() != 1) not_yet(s, "reads more than one run");
-    if (s.picked_up > 0) not_yet(s, "picks up loops along an edge");
-    const Segment& seg = p_.segments[s.reads.begin];
-    if (std::uint32_t h = holder_of_run_[seg.run.index()]) return take_from_holder(s, h);
-    std::uint32_t piece = piece_of_run_[seg.run.index()];
-    if (piece == kNoPiece || piece + 1 != needles_.size() || section().yarn != s.yarn)
-      not_yet(s,
-              "works sts of another piece or another yarn, which the program's pattern "
-              "builder does not write yet");
-    return needles_.back();
-  }
-
   // The loops a course takes, in the order it meets them.
   std::vector<std::uint32_t> loops_met(const Step& s) const {
     std::vector<std::uint32_t> met;
@@ -197,100 +136,253 @@ class ProgramPatternBuilder {
     return met;
   }
 
-  // Where the holder's sts (in the order slipped) meet the course's order: a rnd that takes
-  // them round from one of them on, going up the holder or down it.
-  struct HolderStart {
-    bool from_last = false;
-    std::uint32_t at = 0;  // 1-based in the order slipped; 0: the first (or last) at the tip
-  };
-  std::optional<HolderStart> start_on(const std::vector<std::uint32_t>& held,
-                                      const std::vector<std::uint32_t>& met) const {
-    const std::size_t n = held.size();
-    auto first = std::find(held.begin(), held.end(), met.front());
-    if (met.size() != n || first == held.end()) return std::nullopt;
-    auto k = static_cast<std::size_t>(first - held.begin());
-    for (bool down : {false, true}) {
-      bool same = true;
-      for (std::size_t i = 0; i < n && same; ++i)
-        same = met[i] == held[(down ? k + n - i : k + i) % n];
-      if (!same) continue;
-      std::size_t tip = down ? n - 1 : 0;
-      return HolderStart{down, k == tip ? 0u : static_cast<std::uint32_t>(k + 1)};
-    }
-    return std::nullopt;
+  // --- pieces and sections ------------------------------------------------------------------
+
+  PatternSection& section() { return out_.sections.back(); }
+  const PatternSection& section() const { return out_.sections.back(); }
+  bool working() const { return current_ != kNone; }
+  Needle& needle() { return needles_[current_]; }
+
+  // The section worked now ends: its sts stay on the needle (set aside), wait on a spare
+  // needle for another piece (in the order the pattern counts them: as cast on, or round from
+  // the marker), or are all bound off.
+  void end_section(bool set_aside = false) {
+    if (!working()) return;
+    Needle& n = needle();
+    if (row_open_)
+      unsupported(
+          fmt::format("yarn {} stops in the middle of a rnd, which the program's pattern "
+                      "builder does not write yet",
+                      section().yarn + 1));
+    PatternSection& sec = section();
+    sec.end_row = static_cast<std::uint32_t>(out_.rows.size());
+    sec.set_aside = set_aside;
+    sec.left_live = !set_aside && n.live != 0;
+    sec.live_at_end = n.live;
+    bool counted = !n.worked || (n.in_round && n.gap == 0);
+    if (sec.left_live)
+      places_.leave(n.section, Place::spare,
+                    counted ? n.ring : std::vector<std::uint32_t>(n.ring.size(), kNone));
+    current_ = kNone;
   }
 
-  // A rnd on the sts of holder `h`: a new yarn joined to them (a piece of its own), or the
-  // yarn of the piece just bound off carried on to them.
-  Needle& take_from_holder(const Step& s, std::uint32_t h) {
+  // A new piece, or the yarn of one set aside taken up again (its rows count on).
+  void start_section(std::uint32_t yarn, std::uint32_t needle_index) {
+    end_section();
+    bool resumed = needle_index != kNone;
+    PatternSection sec;
+    if (resumed) {
+      const PatternSection& before = out_.sections[needles_[needle_index].section];
+      sec.piece = before.piece;
+      sec.in_round = before.in_round;
+      sec.resumed = true;
+      sec.first_number = before.first_number + (before.end_row - before.first_row);
+      std::copy(std::begin(before.last_row_ends), std::end(before.last_row_ends),
+                sec.last_row_ends);
+    } else {
+      sec.piece = ++pieces_;
+      needle_index = static_cast<std::uint32_t>(needles_.size());
+      needles_.emplace_back();
+    }
+    sec.yarn = yarn;
+    sec.first_row = sec.end_row = static_cast<std::uint32_t>(out_.rows.size());
+    out_.sections.push_back(sec);
+    current_ = needle_of_yarn_[yarn] = needle_index;
+    needle().section = static_cast<std::uint32_t>(out_.sections.size() - 1);
+  }
+
+  void set_aside(const Step& s) {
+    if (!working() || section().yarn != s.yarn) not_yet(s, "sets aside a yarn not being worked");
+    end_section(true);
+  }
+
+  void take_up(const Step& s) {
+    std::uint32_t n = needle_of_yarn_[s.yarn];
+    if (n == kNone || !out_.sections[needles_[n].section].set_aside)
+      not_yet(s, "takes up a yarn that was not set aside");
+    start_section(s.yarn, n);
+  }
+
+  // A cast-on starts a piece; a provisional one (along a split) keeps its chain's loops for
+  // the other side.
+  void cast_on(const Step& s) {
+    T type = g_.type[p_.stitches[s.stitches.begin].stitch];
+    for (const WorkedStitch& w : stitches_of(s))
+      if (g_.type[w.stitch] != type || (type != T::co && type != T::sco))
+        not_yet(s, fmt::format("casts on with {}, which the program's pattern builder does not "
+                               "write yet",
+                               g_.describe(w.stitch)));
+    if (needle_of_yarn_[s.yarn] != kNone) not_yet(s, "casts on with a yarn that worked before");
+    start_section(s.yarn, kNone);
+    auto count = static_cast<std::uint32_t>(s.stitches.size());
+    PatternSection& sec = section();
+    sec.cast_on = count;
+    sec.stitches = count;
+    sec.provisional = type == T::sco;
+    sec.in_round = s.run_shape == RunShape::ring;
+    sec.last_row_ends[0] = p_.stitches[s.stitches.begin].stitch;
+    sec.last_row_ends[1] = p_.stitches[s.stitches.end - 1].stitch;
+    Needle& n = needle();
+    n.live = n.behind = count;
+    n.in_round = sec.in_round;
+    n.last = n.rnds = s.direction;
+    // Joined in the rnd, the first rnd begins with the first st cast on.
+    std::vector<std::uint32_t> chain;
+    for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i)
+      for (const PlacedLoop& m : made_by(i))
+        (m.place == LoopPlace::in_run ? n.ring : chain).push_back(m.loop);
+    index_ring(n);
+    places_.set(n.ring, {Place::needle, current_});
+    if (!chain.empty()) places_.leave(n.section, Place::chain, std::move(chain));
+  }
+
+  // --- gathering a rnd ------------------------------------------------------------------------
+
+  // The needle the course works: the yarn's own, once the loops it meets are on it in order.
+  Needle& needle_for(const Step& s, const std::vector<std::uint32_t>& met) {
+    if (s.picked_up > 0) not_yet(s, "picks up loops along an edge");
+    std::uint32_t own = needle_of_yarn_[s.yarn];
+    if (own != kNone && current_ != own) not_yet(s, "works with a yarn set aside or ended");
+    bool on_needle = own != kNone && std::all_of(met.begin(), met.end(), [&](std::uint32_t l) {
+                       return places_.at(l) == LoopAt{Place::needle, own};
+                     });
+    Needle* n = own == kNone ? nullptr : &needles_[own];
+    bool leaves_some = n && n->in_round && s.shape == RowShape::closed && met.size() < n->live;
+    if (!on_needle || leaves_some) gather(s, met);
+    return needle();
+  }
+
+  // Slips the needle's loops the rnd leaves to holders, joins the yarn to (or carries it on
+  // to) the loops it starts on, places the others: the needle then holds `met` from the
+  // marker, the rnd's way round.
+  void gather(const Step& s, const std::vector<std::uint32_t>& met) {
     if (s.shape != RowShape::closed || s.run_shape != RunShape::ring)
       not_yet(s,
-              "works the sts of a holder in a row, which the program's pattern builder "
-              "does not write yet");
-    std::vector<std::uint32_t> met = loops_met(s);
-    std::optional<HolderStart> start = start_on(holders_[h - 1], met);
-    if (!start) not_yet(s, fmt::format("works the sts of holder {} out of their order", h));
-    bool carried = !out_.sections.empty() && section().yarn == s.yarn;
-    auto count = static_cast<std::uint32_t>(met.size());
-    if (carried) {
-      if (needles_.back().live > 0 || start->at != 0)
-        not_yet(s, fmt::format("carries its yarn on to holder {} with sts still on the needle "
-                               "or from the middle of the holder",
-                               h));
-      section().carries.push_back(
-          {static_cast<std::uint32_t>(out_.rows.size()), h, count, start->from_last});
-    } else {
-      if (yarn_started_[s.yarn]) not_yet(s, "takes up a yarn worked before on a holder's sts");
-      start_section(s.yarn, 0);
-      section().in_round = true;
-      section().starts_from =
-          PatternSection::Start{0, false, start->from_last, count, h, start->at};
-    }
-    Needle& n = needles_.back();
-    n.live = count;
-    n.in_round = true;
-    n.last = s.direction;
-    n.rnds = s.direction;
+              "takes sts from more than one place in a row, which the program's pattern "
+              "builder does not write yet");
+    for (std::uint32_t l : met) in_met_[l] = 1;
+    std::vector<std::uint32_t> host =
+        working() && needle().live > 0 && current_ == needle_of_yarn_[s.yarn]
+            ? hold_what_it_leaves(s)
+            : join_to_first_source(s, met);
+    place_the_others(s, met, host);
+    for (std::uint32_t l : met) in_met_[l] = 0;
+    Needle& n = needle();
     n.ring = met;
     n.gap = 0;
+    n.live = static_cast<std::uint32_t>(met.size());
+    n.in_round = true;
+    n.rnds = n.last = s.direction;
     n.worked = false;
     index_ring(n);
-    holder_of_run_[s.run.index()] = 0;
-    piece_of_run_[s.run.index()] = static_cast<std::uint32_t>(needles_.size() - 1);
-    return n;
+    places_.set(met, {Place::needle, current_});
   }
 
-  // The run cut off waits on a holder of its own: a block of the rnd, counted from the
-  // beginning of the rnd. The rest of the rnd stays, its marker where it was.
-  void split(const Step& s) {
-    const Segment& seg = p_.segments[s.reads.begin];
-    std::uint32_t piece = piece_of_run_[seg.run.index()];
-    if (piece == kNoPiece || piece + 1 != needles_.size())
-      not_yet(s, "cuts off sts of a piece not on the needle");
-    Needle& n = needles_.back();
-    if (!n.in_round || !n.worked || row_open_ || n.gap != 0)
-      not_yet(s, "parts the sts of a flat piece, or of a tube not at the end of a rnd");
-    const auto size = static_cast<std::uint32_t>(n.ring.size());
-    std::uint32_t at = pos_[seg.first];
-    // The run's order is left to right seen from the RS; rnds going right to left meet the
-    // segment from its first loop down.
-    bool down = n.rnds == CourseDirection::right_to_left;
-    std::uint32_t begin = down ? (at + size + 1 - seg.count) % size : at;
-    if (n.ring[at] != seg.first || begin + seg.count > size)
-      not_yet(s, "cuts off a run of sts across the beginning of the rnd");
-    auto holder = static_cast<std::uint32_t>(holders_.size() + 1);
-    auto first = n.ring.begin() + begin, end = first + seg.count;
-    holders_.emplace_back(first, end);
-    n.ring.erase(first, end);
-    n.live -= seg.count;
-    index_ring(n);
-    section().holdings.push_back(
-        {static_cast<std::uint32_t>(out_.rows.size() - 1), begin + 1, seg.count, holder});
-    holder_of_run_[s.run.index()] = holder;
+  // The needle's loops the rnd does not take go to holders, a block of the rnd each; the rest
+  // stay, from the marker on.
+  std::vector<std::uint32_t> hold_what_it_leaves(const Step& s) {
+    Needle& n = needle();
+    if (!n.in_round || row_open_ || n.gap != 0)
+      not_yet(s, "gathers sts onto a flat piece, or a tube not at the end of a rnd");
+    PatternSection& sec = section();
+    std::uint32_t after_row = static_cast<std::uint32_t>(out_.rows.size()) - 1;
+    if (out_.rows.empty()) not_yet(s, "gathers sts before any row is worked");
+    std::vector<std::uint32_t> stay;
+    for (std::uint32_t i = 0; i < n.ring.size();) {
+      if (in_met_[n.ring[i]]) {
+        stay.push_back(n.ring[i++]);
+        continue;
+      }
+      std::uint32_t end = i;
+      while (end < n.ring.size() && !in_met_[n.ring[end]]) ++end;
+      std::span<const std::uint32_t> block(n.ring.data() + i, end - i);
+      std::uint32_t holder = places_.hold(block, n.section);
+      sec.holdings.push_back({after_row, i + 1, end - i, holder});
+      i = end;
+    }
+    return stay;
   }
+
+  // A yarn that starts on loops another piece left (a holder, a spare needle, a chain) is
+  // joined to them; the yarn of a piece all bound off is carried on to a holder's. Returns the
+  // loops it starts on, in the order the rnd meets them.
+  std::vector<std::uint32_t> join_to_first_source(const Step& s,
+                                                  const std::vector<std::uint32_t>& met) {
+    LoopAt source = places_.at(met.front());
+    std::vector<std::uint32_t> host;
+    for (std::uint32_t l : met)
+      if (places_.at(l) == source) host.push_back(l);
+    std::optional<Lie> lie = places_.lie(source, host);
+    if (source.place == Place::none || source.place == Place::needle || !lie)
+      not_yet(s, "begins on sts that wait nowhere the pattern can name, or out of their order");
+    auto count = static_cast<std::uint32_t>(host.size());
+    std::uint32_t own = needle_of_yarn_[s.yarn];
+    if (own != kNone) {  // carried on from a bind-off
+      if (source.place != Place::holder || lie->at != 0 || needle().live != 0)
+        not_yet(s, "carries its yarn on to sts other than a holder's, from their end");
+      section().carries.push_back(
+          {static_cast<std::uint32_t>(out_.rows.size()), source.index, count, lie->from_last});
+      return host;
+    }
+    bool holder = source.place == Place::holder;
+    if (!holder && lie->at != 0)
+      not_yet(s, "joins a yarn to a spare needle in the middle of its sts");
+    start_section(s.yarn, kNone);
+    section().in_round = true;
+    section().starts_from =
+        PatternSection::Start{holder ? places_.holder_section(source.index) : source.index,
+                              source.place == Place::chain,
+                              lie->from_last,
+                              count,
+                              holder ? source.index : 0,
+                              lie->at};
+    return host;
+  }
+
+  // Each run of the rnd from elsewhere is placed into it where the rnd meets it, after the
+  // sts before it; what stays must then be the rest of the rnd, in order.
+  void place_the_others(const Step& s, const std::vector<std::uint32_t>& met,
+                        const std::vector<std::uint32_t>& host) {
+    std::vector<std::uint32_t> rest;
+    LoopAt hosted = places_.at(host.empty() ? met.front() : host.front());
+    for (std::uint32_t i = 0; i < met.size();) {
+      LoopAt source = places_.at(met[i]);
+      if (source == hosted) {
+        rest.push_back(met[i++]);
+        continue;
+      }
+      std::uint32_t end = i;
+      while (end < met.size() && places_.at(met[end]) == source) ++end;
+      place(s, source, std::span<const std::uint32_t>(met.data() + i, end - i), i);
+      i = end;
+    }
+    if (rest != host) not_yet(s, "meets the sts it keeps out of their order on the needle");
+  }
+
+  void place(const Step& s, LoopAt source, std::span<const std::uint32_t> block,
+             std::uint32_t after) {
+    std::optional<Lie> lie = places_.lie(source, block);
+    bool nameable = source.place == Place::holder || source.place == Place::spare ||
+                    source.place == Place::chain;
+    if (!nameable || !lie || (lie->from_last && lie->at != 0))
+      not_yet(s, fmt::format("takes {} sts it cannot place from where they wait (all of a "
+                             "holder, spare needle or chain, in their order)",
+                             block.size()));
+    bool holder = source.place == Place::holder;
+    PatternSection::Placement p{holder ? places_.holder_section(source.index) : source.index,
+                                static_cast<std::uint32_t>(block.size()), after, lie->from_last};
+    p.chain = source.place == Place::chain;
+    p.before_row = static_cast<std::uint32_t>(out_.rows.size());
+    p.holder = holder ? source.index : 0;
+    p.start = lie->at;
+    section().placements.push_back(p);
+  }
+
+  // --- courses ------------------------------------------------------------------------------
 
   void course(const Step& s) {
-    Needle& n = needle_of(s);
+    for (const WorkedStitch& w : stitches_of(s)) check_worked_here(s, p_.worked_at[w.stitch]);
+    Needle& n = needle_for(s, loops_met(s));
     if (n.in_round) return ring_course(s, n);
     PatternRow r = open_row(s, n);
     r.bind_off = std::all_of(stitches_of(s).begin(), stitches_of(s).end(),
@@ -308,7 +400,8 @@ class ProgramPatternBuilder {
   PatternRow open_row(const Step& s, const Needle& n) const {
     PatternRow r;
     r.side = s.direction == CourseDirection::right_to_left ? Side::rs : Side::ws;
-    r.number = static_cast<std::uint32_t>(out_.rows.size()) - section().first_row + 1;
+    r.number =
+        static_cast<std::uint32_t>(out_.rows.size()) - section().first_row + section().first_number;
     r.first_op = static_cast<std::uint32_t>(out_.ops.size());
     r.sts_before = n.live;
     return r;
@@ -317,7 +410,6 @@ class ProgramPatternBuilder {
   // One stitch of the course: its ops; returns the loops it takes.
   std::uint32_t work(const Step& s, std::uint32_t i, Needle& n, PatternRow& r) {
     StitchId st = p_.stitches[i].stitch;
-    check_worked_here(s, i);
     note_region_mark(st, r);
     append_stitch_ops(g_, st, r.side, false, out_.turns, out_.ops, r.wraps_again);
     return move_loops(st, n, s);
@@ -325,6 +417,10 @@ class ProgramPatternBuilder {
 
   void note_course(const Step& s, Needle& n) {
     StitchId last = p_.stitches[s.stitches.end - 1].stitch;
+    for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i) {
+      for (std::uint32_t l : taken_by(i)) places_.take(l);
+      for (const PlacedLoop& m : made_by(i)) places_.set({&m.loop, 1}, {Place::needle, current_});
+    }
     n.turned_at_sr4 = worked_by_hand(g_, last) == T::sr4;
     n.last = s.direction;
     n.worked = true;
@@ -447,7 +543,7 @@ class ProgramPatternBuilder {
     const auto size = static_cast<std::uint32_t>(n.ring.size());
     std::uint32_t begin = forward ? first : (first + size + 1 - count) % size;  // in ring order
     std::vector<std::uint32_t> made;
-    std::uint32_t bor = n.ring[0], new_bor = kNoLoopHere;
+    std::uint32_t bor = n.ring[0], new_bor = kNone;
     for (std::uint32_t k = 0; k < s.stitches.size(); ++k) {
       std::uint32_t i = forward ? s.stitches.begin + k : s.stitches.end - 1 - k;
       auto m = made_by(i);
@@ -466,12 +562,11 @@ class ProgramPatternBuilder {
     std::uint32_t start = static_cast<std::uint32_t>(made.size());
     bool block_has_bor = begin == 0 || begin + count > size;
     if (block_has_bor) {
-      if (new_bor == kNoLoopHere && !made.empty())
+      if (new_bor == kNone && !made.empty())
         not_yet(s, "binds off the st the beginning-of-round marker sits before");
-      start = new_bor == kNoLoopHere
-                  ? 0
-                  : static_cast<std::uint32_t>(std::find(ring.begin(), ring.end(), new_bor) -
-                                               ring.begin());
+      start = new_bor == kNone ? 0
+                               : static_cast<std::uint32_t>(
+                                     std::find(ring.begin(), ring.end(), new_bor) - ring.begin());
     } else {
       start = static_cast<std::uint32_t>(std::find(ring.begin(), ring.end(), bor) - ring.begin());
     }
@@ -479,10 +574,10 @@ class ProgramPatternBuilder {
     n.ring = std::move(ring);
     index_ring(n);
     // The yarn: after the made loops going the rnds' way, before them going back.
-    std::uint32_t edge_loop = made.empty() ? kNoLoopHere : (forward ? made.back() : made.front());
+    std::uint32_t edge_loop = made.empty() ? kNone : (forward ? made.back() : made.front());
     if (n.ring.empty()) {
       n.gap = 0;
-    } else if (edge_loop == kNoLoopHere) {
+    } else if (edge_loop == kNone) {
       n.gap = 0;
       not_yet(s, "leaves no loop where the yarn is");
     } else {
@@ -561,15 +656,15 @@ class ProgramPatternBuilder {
                                  at->second});
   }
 
-  const Compilation& c_;
   const KnitGraph& g_;
   const Program& p_;
   HandPattern out_;
-  std::vector<Needle> needles_;                      // per piece, in the order they start
-  std::vector<std::uint32_t> piece_of_run_;          // per run: its piece's needle, or kNoPiece
-  std::vector<std::uint32_t> holder_of_run_;         // per run: its holder (1-based), or 0
-  std::vector<std::vector<std::uint32_t>> holders_;  // per holder: its loops, in the order slipped
-  std::vector<std::uint8_t> yarn_started_;           // per yarn
+  std::uint32_t pieces_ = 0;
+  std::vector<Needle> needles_;    // per piece, in the order they start
+  std::uint32_t current_ = kNone;  // the needle of the section being written
+  LoopPlaces places_;
+  std::vector<std::uint32_t> needle_of_yarn_;  // per yarn
+  std::vector<std::uint8_t> in_met_ = std::vector<std::uint8_t>(g_.loops.size(), 0);
   std::unordered_map<StitchId, MarkerKind> marked_;
   std::size_t step_ = 0;
   std::vector<std::uint32_t> pos_ = std::vector<std::uint32_t>(g_.loops.size(), 0);  // in ring
