@@ -23,6 +23,13 @@ void LoopPlaces::leave(std::uint32_t section, Place place, std::vector<std::uint
   lists[section] = std::move(loops);
 }
 
+void LoopPlaces::add(std::uint32_t section, Place place, std::uint32_t loop) {
+  auto& lists = place == Place::chain ? chains_ : spares_;
+  if (lists.size() <= section) lists.resize(section + 1);
+  lists[section].push_back(loop);
+  at_[loop] = {place, section};
+}
+
 const std::vector<std::uint32_t>& LoopPlaces::loops_of(LoopAt source) const {
   static const std::vector<std::uint32_t> kNone;
   const std::vector<std::vector<std::uint32_t>>* lists = nullptr;

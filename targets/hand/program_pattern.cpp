@@ -38,7 +38,7 @@ struct Needle {
   std::uint32_t live = 0, ahead = 0, behind = 0;
   bool in_round = false;
   bool double_stitch_next = false;  // German short rows: the next row begins with DS
-  bool turned_at_sr4 = false;       // the last course ended on a short row's turn
+  std::size_t turn_loops = 0;       // loops of the st the last course turned at (sr4, sr5)
   bool worked = false;              // a course has worked its sts
   CourseDirection last = CourseDirection::left_to_right;
   CourseDirection rnds = CourseDirection::left_to_right;  // the way its rnds go
@@ -159,10 +159,12 @@ class ProgramPatternBuilder {
     sec.set_aside = set_aside;
     sec.left_live = !set_aside && n.live != 0;
     sec.live_at_end = n.live;
+    // Loops whose order on the spare needle the pattern cannot count wait there unnamed.
     bool counted = !n.worked || (n.in_round && n.gap == 0);
-    if (sec.left_live)
-      places_.leave(n.section, Place::spare,
-                    counted ? n.ring : std::vector<std::uint32_t>(n.ring.size(), kNone));
+    if (sec.left_live) {
+      places_.leave(n.section, Place::spare, counted ? n.ring : std::vector<std::uint32_t>{});
+      places_.set(n.ring, {Place::spare, n.section});
+    }
     current_ = kNone;
   }
 
@@ -270,12 +272,21 @@ class ProgramPatternBuilder {
     Needle& n = needle();
     n.ring = met;
     n.gap = 0;
-    n.live = static_cast<std::uint32_t>(met.size());
+    n.live = hand_sts(met);
     n.in_round = true;
     n.rnds = n.last = s.direction;
     n.worked = false;
     index_ring(n);
     places_.set(met, {Place::needle, current_});
+  }
+
+  // The sts a knitter counts on the needle: the two loops of an sr5 are one (a DS, a wrapped
+  // st).
+  std::uint32_t hand_sts(std::span<const std::uint32_t> loops) const {
+    std::uint32_t sr5 = 0;
+    for (std::uint32_t l : loops)
+      sr5 += g_.loops[l].maker != kNoStitch && g_.type[g_.loops[l].maker] == T::sr5;
+    return static_cast<std::uint32_t>(loops.size()) - sr5 / 2;
   }
 
   // The needle's loops the rnd does not take go to holders, a block of the rnd each; the rest
@@ -411,17 +422,34 @@ class ProgramPatternBuilder {
   std::uint32_t work(const Step& s, std::uint32_t i, Needle& n, PatternRow& r) {
     StitchId st = p_.stitches[i].stitch;
     note_region_mark(st, r);
+    if (g_.type[st] == T::sco) return cast_on_in_row(i, n);
     append_stitch_ops(g_, st, r.side, false, out_.turns, out_.ops, r.wraps_again);
     return move_loops(st, n, s);
+  }
+
+  // A provisional cast-on in the middle of a row: the st goes on the needle, the loop of its
+  // chain waits for the piece on the other side of the split.
+  std::uint32_t cast_on_in_row(std::uint32_t i, Needle& n) {
+    out_.ops.push_back(HandOp::provisional_co);
+    PatternSection& sec = section();
+    StitchId st = p_.stitches[i].stitch;
+    if (sec.row_chain++ == 0) sec.row_chain_ends[0] = st;
+    sec.row_chain_ends[1] = st;
+    for (const PlacedLoop& m : made_by(i))
+      if (m.place == LoopPlace::other_side) places_.add(n.section, Place::chain, m.loop);
+    ++n.live;
+    if (!n.in_round) ++n.behind;
+    return 0;
   }
 
   void note_course(const Step& s, Needle& n) {
     StitchId last = p_.stitches[s.stitches.end - 1].stitch;
     for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i) {
       for (std::uint32_t l : taken_by(i)) places_.take(l);
-      for (const PlacedLoop& m : made_by(i)) places_.set({&m.loop, 1}, {Place::needle, current_});
+      for (const PlacedLoop& m : made_by(i))
+        if (m.place == LoopPlace::in_run) places_.set({&m.loop, 1}, {Place::needle, current_});
     }
-    n.turned_at_sr4 = worked_by_hand(g_, last) == T::sr4;
+    n.turn_loops = worked_by_hand(g_, last) == T::sr4 ? made_by(s.stitches.end - 1).size() : 0;
     n.last = s.direction;
     n.worked = true;
     section().stitches += s.stitches.size();
@@ -447,7 +475,7 @@ class ProgramPatternBuilder {
     if (turns) {
       if (!row_open_) turn_after_last_rnd();
       close_ring_row(s, n, true);
-      if (n.turned_at_sr4) step_over_turn(n, s.direction == n.rnds);
+      if (n.turn_loops) step_over_turn(n, s.direction == n.rnds);
     }
     std::vector<std::uint32_t> met = loops_met(s);
     bool forward = s.direction == n.rnds;
@@ -456,14 +484,12 @@ class ProgramPatternBuilder {
     std::uint32_t first = forward ? n.gap : (n.gap + size - 1) % size;
     for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i) {
       auto taken = taken_by(i);
-      std::uint32_t at = pos_[first_met(taken, s.direction)];
-      if (forward && at == 0 && row_open_ && out_.ops.size() > pending_.first_op)
-        close_ring_row(s, n, false);
-      if (!forward && at == size - 1 && row_open_ && out_.ops.size() > pending_.first_op)
+      std::uint32_t at = taken.empty() ? kNone : pos_[first_met(taken, s.direction)];
+      if (forward && at == 0 && row_open_ && pending_takes_ > 0) close_ring_row(s, n, false);
+      if (!forward && at == size - 1 && row_open_ && pending_takes_ > 0)
         out_.ops.push_back(HandOp::sm);
       if (!row_open_) open_ring_row(s, n, forward);
-      work(s, i, n, pending_);
-      pending_takes_ += static_cast<std::uint32_t>(taken.size());
+      pending_takes_ += work(s, i, n, pending_);
     }
     replace_in_ring(s, n, forward, first, static_cast<std::uint32_t>(met.size()));
     note_course(s, n);
@@ -485,7 +511,8 @@ class ProgramPatternBuilder {
   void step_over_turn(Needle& n, bool forward) {
     if (n.ring.empty()) return;
     auto size = static_cast<std::uint32_t>(n.ring.size());
-    n.gap = forward ? (n.gap + 1) % size : (n.gap + size - 1) % size;
+    auto by = static_cast<std::uint32_t>(n.turn_loops % size);
+    n.gap = forward ? (n.gap + by) % size : (n.gap + size - by) % size;
     if (out_.turns == TurnMethod::german) ds_next_ = true;
   }
 
@@ -550,12 +577,15 @@ class ProgramPatternBuilder {
       auto taken = taken_by(i);
       bool takes_bor = std::find(taken.begin(), taken.end(), bor) != taken.end();
       std::size_t before = made.size();
-      if ((s.direction == CourseDirection::right_to_left) == forward)
-        for (auto it = m.rbegin(); it != m.rend(); ++it) made.push_back(it->loop);
-      else
-        for (const PlacedLoop& pl : m) made.push_back(pl.loop);
+      bool reversed = (s.direction == CourseDirection::right_to_left) == forward;
+      for (std::size_t j = 0; j < m.size(); ++j) {
+        const PlacedLoop& pl = m[reversed ? m.size() - 1 - j : j];
+        if (pl.place == LoopPlace::in_run) made.push_back(pl.loop);
+      }
       if (takes_bor && made.size() > before) new_bor = made[before];
     }
+    // A rnd (or a row) that begins at the marker leaves all its loops after it.
+    if (forward && first == 0 && !made.empty()) new_bor = made.front();
     std::vector<std::uint32_t> ring = made;
     for (std::uint32_t k = count; k < size; ++k) ring.push_back(n.ring[(begin + k) % size]);
     // `ring` starts at the block; the marker goes before the loop that takes its place.
@@ -608,12 +638,12 @@ class ProgramPatternBuilder {
   void check_worked_here(const Step& s, std::uint32_t worked) const {
     StitchId st = p_.stitches[worked].stitch;
     T type = g_.type[st];
-    if (type == T::co || type == T::sco || type == T::tnbo)
+    if (type == T::co || type == T::tnbo)
       not_yet(s, fmt::format("works {}, a {} in a course, which the program's pattern builder "
                              "does not write yet",
                              g_.describe(st), info(type).name));
     for (const PlacedLoop& m : made_by(worked))
-      if (m.place != LoopPlace::in_run)
+      if (m.place == LoopPlace::along_edge)
         not_yet(s, fmt::format("makes a loop at {} that waits along an edge or across a split",
                                g_.describe(st)));
   }
