@@ -159,10 +159,14 @@ class ProgramPatternBuilder {
     sec.set_aside = set_aside;
     sec.left_live = !set_aside && n.live != 0;
     sec.live_at_end = n.live;
-    // Loops whose order on the spare needle the pattern cannot count wait there unnamed.
-    bool counted = !n.worked || (n.in_round && n.gap == 0);
+    // On a spare needle a flat piece's sts lie along the way its last row went; loops whose
+    // order there the pattern cannot count wait unnamed.
+    bool counted = !n.in_round || !n.worked || n.gap == 0;
+    std::vector<std::uint32_t> spare = counted ? n.ring : std::vector<std::uint32_t>{};
+    if (!n.in_round && n.last == CourseDirection::right_to_left)
+      std::reverse(spare.begin(), spare.end());
     if (sec.left_live) {
-      places_.leave(n.section, Place::spare, counted ? n.ring : std::vector<std::uint32_t>{});
+      places_.leave(n.section, Place::spare, std::move(spare));
       places_.set(n.ring, {Place::spare, n.section});
     }
     current_ = kNone;
@@ -233,6 +237,10 @@ class ProgramPatternBuilder {
     for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i)
       for (const PlacedLoop& m : made_by(i))
         (m.place == LoopPlace::in_run ? n.ring : chain).push_back(m.loop);
+    if (!n.in_round) {  // a line, left to right seen from the RS; the yarn at its end
+      if (s.direction == CourseDirection::right_to_left) std::reverse(n.ring.begin(), n.ring.end());
+      n.gap = s.direction == CourseDirection::right_to_left ? 0 : count;
+    }
     index_ring(n);
     places_.set(n.ring, {Place::needle, current_});
     if (!chain.empty()) places_.leave(n.section, Place::chain, std::move(chain));
@@ -258,17 +266,17 @@ class ProgramPatternBuilder {
   // to) the loops it starts on, places the others: the needle then holds `met` from the
   // marker, the rnd's way round.
   void gather(const Step& s, const std::vector<std::uint32_t>& met) {
-    if (s.shape != RowShape::closed || s.run_shape != RunShape::ring)
-      not_yet(s,
-              "takes sts from more than one place in a row, which the program's pattern "
-              "builder does not write yet");
+    bool round = s.shape == RowShape::closed && s.run_shape == RunShape::ring;
+    bool own = working() && needle().live > 0 && current_ == needle_of_yarn_[s.yarn];
+    if (!round && own && needle().in_round)
+      not_yet(s, "takes sts from elsewhere into a row in the rnd");
     for (std::uint32_t l : met) in_met_[l] = 1;
-    std::vector<std::uint32_t> host =
-        working() && needle().live > 0 && current_ == needle_of_yarn_[s.yarn]
-            ? hold_what_it_leaves(s)
-            : join_to_first_source(s, met);
+    std::vector<std::uint32_t> host = !own    ? join_to_first_source(s, met, round)
+                                      : round ? hold_what_it_leaves(s)
+                                              : row_ahead(s);
     place_the_others(s, met, host);
     for (std::uint32_t l : met) in_met_[l] = 0;
+    if (!round) return lay_row_ahead(s, met, own);
     Needle& n = needle();
     n.ring = met;
     n.gap = 0;
@@ -276,6 +284,36 @@ class ProgramPatternBuilder {
     n.in_round = true;
     n.rnds = n.last = s.direction;
     n.worked = false;
+    index_ring(n);
+    places_.set(met, {Place::needle, current_});
+  }
+
+  // A flat piece's next row, all of whose own sts it works, takes others placed among them:
+  // its own sts are those ahead once it turns, in the order it meets them.
+  std::vector<std::uint32_t> row_ahead(const Step& s) {
+    Needle& n = needle();
+    if (row_open_ || s.direction == n.last || n.live != hand_sts(n.ring))
+      not_yet(s, "places sts into a row that does not turn from a whole row");
+    for (std::uint32_t l : n.ring)
+      if (!in_met_[l]) not_yet(s, "places sts into a row that leaves some of its own");
+    std::vector<std::uint32_t> own = n.ring;
+    if (s.direction == CourseDirection::right_to_left) std::reverse(own.begin(), own.end());
+    return own;
+  }
+
+  // After a flat gather the needle holds the row's loops, all ahead of the tip once the work
+  // is turned; `own`: the piece's own were there before.
+  void lay_row_ahead(const Step& s, const std::vector<std::uint32_t>& met, bool own) {
+    Needle& n = needle();
+    n.ring = met;
+    if (s.direction == CourseDirection::right_to_left) std::reverse(n.ring.begin(), n.ring.end());
+    n.gap =
+        s.direction == CourseDirection::right_to_left ? static_cast<std::uint32_t>(met.size()) : 0;
+    n.live = hand_sts(met);
+    n.ahead = 0;
+    n.behind = n.live;
+    n.last = reversed(s.direction);
+    n.worked = own;
     index_ring(n);
     places_.set(met, {Place::needle, current_});
   }
@@ -318,7 +356,9 @@ class ProgramPatternBuilder {
   // joined to them; the yarn of a piece all bound off is carried on to a holder's. Returns the
   // loops it starts on, in the order the rnd meets them.
   std::vector<std::uint32_t> join_to_first_source(const Step& s,
-                                                  const std::vector<std::uint32_t>& met) {
+                                                  const std::vector<std::uint32_t>& met,
+                                                  bool round) {
+    if (needle_of_yarn_[s.yarn] == kNone) end_section();  // the piece worked before waits
     LoopAt source = places_.at(met.front());
     std::vector<std::uint32_t> host;
     for (std::uint32_t l : met)
@@ -329,17 +369,17 @@ class ProgramPatternBuilder {
     auto count = static_cast<std::uint32_t>(host.size());
     std::uint32_t own = needle_of_yarn_[s.yarn];
     if (own != kNone) {  // carried on from a bind-off
-      if (source.place != Place::holder || lie->at != 0 || needle().live != 0)
+      if (!round || source.place != Place::holder || lie->at != 0 || needle().live != 0)
         not_yet(s, "carries its yarn on to sts other than a holder's, from their end");
       section().carries.push_back(
           {static_cast<std::uint32_t>(out_.rows.size()), source.index, count, lie->from_last});
       return host;
     }
     bool holder = source.place == Place::holder;
-    if (!holder && lie->at != 0)
-      not_yet(s, "joins a yarn to a spare needle in the middle of its sts");
+    if ((!holder || !round) && lie->at != 0)
+      not_yet(s, "joins a yarn to a spare needle, or to a row's sts, in the middle of its sts");
     start_section(s.yarn, kNone);
-    section().in_round = true;
+    section().in_round = round;
     section().starts_from =
         PatternSection::Start{holder ? places_.holder_section(source.index) : source.index,
                               source.place == Place::chain,
@@ -399,9 +439,11 @@ class ProgramPatternBuilder {
     r.bind_off = std::all_of(stitches_of(s).begin(), stitches_of(s).end(),
                              [&](const WorkedStitch& w) { return g_.type[w.stitch] == T::bo; });
     begin_row(s, n);
+    check_met_along_the_row(s, n);
     std::uint32_t takes = 0;
     for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i) takes += work(s, i, n, r);
     end_row(s, n, r, takes);
+    replace_in_line(s, n);
     r.end_op = static_cast<std::uint32_t>(out_.ops.size());
     r.sts_after = n.live;
     out_.rows.push_back(r);
@@ -626,6 +668,9 @@ class ProgramPatternBuilder {
     if (s.direction == n.last)
       not_yet(s, "is a row that goes on the way the row before went, without turning");
     std::swap(n.ahead, n.behind);
+    auto by = static_cast<std::uint32_t>(n.turn_loops);  // past the st it turned at
+    n.gap =
+        s.direction == CourseDirection::left_to_right ? n.gap + by : n.gap - std::min(by, n.gap);
     if (!n.double_stitch_next) return;
     out_.ops.push_back(HandOp::ds);
     n.double_stitch_next = false;
@@ -660,6 +705,37 @@ class ProgramPatternBuilder {
     n.ahead -= t.loops_in;
     n.behind += t.loops_out;
     return t.loops_in;
+  }
+
+  // A flat row meets its loops side by side along the line from where the yarn is.
+  void check_met_along_the_row(const Step& s, const Needle& n) const {
+    std::vector<std::uint32_t> met = loops_met(s);
+    bool right = s.direction == CourseDirection::left_to_right;
+    if (met.size() > (right ? n.ring.size() - std::min<std::size_t>(n.gap, n.ring.size()) : n.gap))
+      not_yet(s, "works past the end of the needle");
+    for (std::uint32_t i = 0; i < met.size(); ++i)
+      if (n.ring[right ? n.gap + i : n.gap - 1 - i] != met[i])
+        not_yet(s, i == 0 ? "begins away from where the yarn is on the needle"
+                          : "does not meet its loops side by side on the needle");
+  }
+
+  // The row's loops give way to those it made, in the line's order; the yarn stays at the
+  // end it went to.
+  void replace_in_line(const Step& s, Needle& n) {
+    bool right = s.direction == CourseDirection::left_to_right;
+    std::vector<std::uint32_t> made;
+    std::uint32_t taken = 0;
+    for (std::uint32_t k = 0; k < s.stitches.size(); ++k) {
+      std::uint32_t i = right ? s.stitches.begin + k : s.stitches.end - 1 - k;
+      taken += static_cast<std::uint32_t>(taken_by(i).size());
+      for (const PlacedLoop& m : made_by(i))
+        if (m.place == LoopPlace::in_run) made.push_back(m.loop);
+    }
+    std::uint32_t lo = right ? n.gap : n.gap - taken;
+    n.ring.erase(n.ring.begin() + lo, n.ring.begin() + lo + taken);
+    n.ring.insert(n.ring.begin() + lo, made.begin(), made.end());
+    n.gap = right ? lo + static_cast<std::uint32_t>(made.size()) : lo;
+    index_ring(n);
   }
 
   // A row that stops with sts left ahead turns there (a short row); German short rows make the
