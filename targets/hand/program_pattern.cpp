@@ -52,7 +52,8 @@ class ProgramPatternBuilder {
       : g_(c.knit),
         p_(c.program),
         places_(c.knit.loops.size()),
-        needle_of_yarn_(c.yarns.size(), kNone) {
+        needle_of_yarn_(c.yarns.size(), kNone),
+        yarn_of_(c.yarns.piece_of) {
     out_.source = c.input;
     out_.turns = turns;
     for (const Event& e : c.schedule.events)
@@ -438,6 +439,7 @@ class ProgramPatternBuilder {
     PatternRow r = open_row(s, n);
     r.bind_off = std::all_of(stitches_of(s).begin(), stitches_of(s).end(),
                              [&](const WorkedStitch& w) { return g_.type[w.stitch] == T::bo; });
+    hold_what_others_work(s, n);
     begin_row(s, n);
     check_met_along_the_row(s, n);
     std::uint32_t takes = 0;
@@ -707,6 +709,48 @@ class ProgramPatternBuilder {
     return t.loops_in;
   }
 
+  // Sts of a flat piece that another yarn works (a flap of their own) go to a holder before
+  // the row that leaves them: a block of the last row's sts, counted in the order it worked
+  // them.
+  void hold_what_others_work(const Step& s, Needle& n) {
+    std::vector<std::uint32_t> others;
+    for (std::uint32_t l : n.ring) {
+      StitchId taker = g_.loops[l].taker;
+      if (taker != kNoStitch && yarn_of_[taker] != s.yarn) others.push_back(l);
+    }
+    if (others.empty()) return;
+    if (!n.worked || n.ahead != 0 || out_.rows.size() == section().first_row)
+      not_yet(s, "leaves sts to another yarn that its last row did not work to the end");
+    std::vector<std::uint32_t> order = n.ring;  // as the last row worked them
+    if (n.last == CourseDirection::right_to_left) std::reverse(order.begin(), order.end());
+    auto first = std::find(order.begin(), order.end(), others.front());
+    auto k = static_cast<std::uint32_t>(first - order.begin());
+    for (std::uint32_t i = 0; i < others.size(); ++i)
+      if (k + i >= order.size() || order[k + i] != others[i]) {
+        std::reverse(others.begin(), others.end());
+        break;
+      }
+    k = static_cast<std::uint32_t>(std::find(order.begin(), order.end(), others.front()) -
+                                   order.begin());
+    if (!std::equal(others.begin(), others.end(),
+                    order.begin() + std::min<std::size_t>(k, order.size())))
+      not_yet(s, "leaves sts to another yarn that are not side by side");
+    std::uint32_t holder = places_.hold(others, n.section);
+    PatternSection::Holding h{static_cast<std::uint32_t>(out_.rows.size() - 1), k + 1,
+                              static_cast<std::uint32_t>(others.size()), holder};
+    h.of_row = true;
+    section().holdings.push_back(h);
+    for (std::uint32_t l : others) in_met_[l] = 1;
+    std::uint32_t before_gap = 0;
+    for (std::uint32_t i = 0; i < n.gap; ++i) before_gap += in_met_[n.ring[i]];
+    std::erase_if(n.ring, [&](std::uint32_t l) { return in_met_[l] != 0; });
+    for (std::uint32_t l : others) in_met_[l] = 0;
+    n.gap -= before_gap;
+    n.live -= hand_sts(others);
+    n.behind -= hand_sts(others);
+    index_ring(n);
+  }
+
   // A flat row meets its loops side by side along the line from where the yarn is.
   void check_met_along_the_row(const Step& s, const Needle& n) const {
     std::vector<std::uint32_t> met = loops_met(s);
@@ -770,6 +814,7 @@ class ProgramPatternBuilder {
   std::uint32_t current_ = kNone;  // the needle of the section being written
   LoopPlaces places_;
   std::vector<std::uint32_t> needle_of_yarn_;  // per yarn
+  const std::vector<std::uint32_t>& yarn_of_;  // per stitch
   std::vector<std::uint8_t> in_met_ = std::vector<std::uint8_t>(g_.loops.size(), 0);
   std::unordered_map<StitchId, MarkerKind> marked_;
   std::size_t step_ = 0;
