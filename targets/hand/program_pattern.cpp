@@ -86,7 +86,8 @@ class ProgramPatternBuilder {
         case StepKind::reverse:
           break;
         case StepKind::three_needle_bind_off:
-          not_yet(s, "is not written by the program's pattern builder yet");
+          three_needle_bind_off(s);
+          break;
       }
     }
     end_section();
@@ -245,6 +246,48 @@ class ProgramPatternBuilder {
     index_ring(n);
     places_.set(n.ring, {Place::needle, current_});
     if (!chain.empty()) places_.leave(n.section, Place::chain, std::move(chain));
+  }
+
+  // A new yarn binds off the sts of two pieces left on spare needles (or holders) together,
+  // pair by pair: the first loop of each st from the front needle, the second from the back.
+  void three_needle_bind_off(const Step& s) {
+    bool all_pairs =
+        std::all_of(stitches_of(s).begin(), stitches_of(s).end(),
+                    [&](const WorkedStitch& w) { return g_.type[w.stitch] == T::tnbo; });
+    if (!all_pairs || needle_of_yarn_[s.yarn] != kNone)
+      not_yet(s,
+              "binds off with a three-needle bind-off in a row of its own sts, which the "
+              "program's pattern builder does not write yet");
+    end_section();
+    std::vector<std::uint32_t> side[2];
+    for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i) {
+      auto taken = taken_by(i);
+      for (int k : {0, 1}) side[k].push_back(taken[k]);
+    }
+    PatternSection sec;
+    std::optional<Lie> lie[2];
+    for (int k : {0, 1}) {
+      LoopAt source = places_.at(side[k].front());
+      lie[k] = places_.lie(source, side[k]);
+      bool nameable = source.place == Place::holder || source.place == Place::spare;
+      if (!nameable || !lie[k] || lie[k]->at != 0)
+        not_yet(s,
+                "binds off sts that do not wait on one spare needle or holder each, from an "
+                "end");
+      bool holder = source.place == Place::holder;
+      (k == 0 ? sec.front : sec.back) =
+          holder ? places_.holder_section(source.index) : source.index;
+      sec.holders[k] = holder ? source.index : 0;
+      sec.from_last[k] = lie[k]->from_last;
+    }
+    sec.yarn = s.yarn;
+    sec.piece = ++pieces_;
+    sec.joins = true;
+    sec.pairs = sec.stitches = static_cast<std::uint32_t>(s.stitches.size());
+    sec.first_row = sec.end_row = static_cast<std::uint32_t>(out_.rows.size());
+    out_.sections.push_back(sec);
+    for (int k : {0, 1})
+      for (std::uint32_t l : side[k]) places_.take(l);
   }
 
   // --- gathering a rnd ------------------------------------------------------------------------
