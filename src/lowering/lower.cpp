@@ -212,15 +212,24 @@ class Lowering {
       for (const Segment& needle : needles) keep_tail(step, take_second(needle, step.yarn), first);
       step.run = segments.front().run;
       RowShape shape = step.shape;
+      std::uint32_t second_line = kNone;
       if (segments.front().count == live_.size(step.run) &&
           live_.shape(step.run) == RunShape::ring) {
-        std::uint32_t at = opening(left_per_stitch, first);
+        auto [at, second] = opening(left_per_stitch, first);
         if (at != kNone) {  // the ring opens where the course bound off
           std::rotate(in_run.begin(), in_run.begin() + at, in_run.end());
           shape = RowShape::open;
         }
+        if (second != kNone) second_line = second;
       }
       keep_tail(step, take(segments.front(), in_run, shape, step.yarn), first);
+      if (second_line != kNone) {          // bound off in two places: the loops after the second
+        RunId other = new_run(step.yarn);  // block are a line of their own
+        live_.cut({step.run, in_run[second_line],
+                   static_cast<std::uint32_t>(in_run.size()) - second_line, Walk::forward},
+                  other, RunId());
+        keep_tail(step, other, first);
+      }
       out_.runs[step.run.index()].yarn = step.yarn;
     }
     if (!other_side.empty()) {
@@ -234,19 +243,29 @@ class Lowering {
   }
 
   // Where a course over a whole ring that binds off some of its sts (an underarm) opens it: the
-  // index of the first loop it leaves after them, or kNone when it binds off none.
-  static std::uint32_t opening(const std::vector<std::uint32_t>& left, StitchId at) {
-    std::size_t n = left.size(), blocks = 0, first_after = n;
+  // index of the first loop it leaves after them (kNone when it binds off none); bound off in
+  // two places (both underarms), also the index, from there, of the first loop after the
+  // second block (the line that goes on from there is a run of its own).
+  static std::pair<std::uint32_t, std::uint32_t> opening(const std::vector<std::uint32_t>& left,
+                                                         StitchId at) {
+    std::size_t n = left.size();
+    std::vector<std::size_t> after;  // the first st after each block
     for (std::size_t i = 0; i < n; ++i) {
       bool here = left[i] == kBindsOff, before = left[(i + n - 1) % n] == kBindsOff;
-      if (before && !here) ++blocks, first_after = i;
+      if (before && !here) after.push_back(i);
     }
-    if (blocks == 0) return kNone;
-    if (blocks > 1) throw Stop{at, "the round binds off its sts in more than one place"};
-    std::uint32_t index = 0;
-    for (std::size_t i = 0; i < first_after; ++i)
-      if (left[i] != kBindsOff) index += left[i];
-    return index;
+    if (after.empty()) return {kNone, kNone};
+    if (after.size() > 2) throw Stop{at, "the round binds off its sts in more than two places"};
+    auto loops_before = [&](std::size_t from, std::size_t to) {  // made by sts [from, to)
+      std::uint32_t count = 0;
+      for (std::size_t i = from; i != to; i = (i + 1) % n)
+        if (left[i] != kBindsOff) count += left[i];
+      return count;
+    };
+    std::size_t first_after = after.back();  // the line the program keeps starts here
+    std::uint32_t index = loops_before(0, first_after);
+    if (after.size() == 1) return {index, kNone};
+    return {index, loops_before(first_after, after.front())};
   }
 
   // A course may leave one line cut in its middle (its tail a run of its own, `other`).

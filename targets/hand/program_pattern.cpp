@@ -40,6 +40,7 @@ struct Needle {
   bool double_stitch_next = false;  // German short rows: the next row begins with DS
   std::size_t turn_loops = 0;       // loops of the st the last course turned at (sr4, sr5)
   bool worked = false;              // a course has worked its sts
+  bool opened = false;              // a rnd bound off in places: only a rnd takes it up again
   CourseDirection last = CourseDirection::left_to_right;
   CourseDirection rnds = CourseDirection::left_to_right;  // the way its rnds go
   std::vector<std::uint32_t> ring;  // its loops: from the marker (in the rnd), as cast on (flat)
@@ -551,6 +552,11 @@ class ProgramPatternBuilder {
   // ends a rnd.
 
   void ring_course(const Step& s, Needle& n) {
+    if (n.opened && s.shape != RowShape::closed)
+      not_yet(s,
+              "works rows on a rnd bound off in places, which the program's pattern builder "
+              "does not write yet");
+    n.opened = n.opened && s.shape != RowShape::closed;
     if (s.run_shape != RunShape::ring && s.run_shape != RunShape::line)
       not_yet(s, "leaves its sts in no known order");
     if (!n.worked && s.direction != n.rnds) {  // the first rnd goes against the cast-on
@@ -581,8 +587,9 @@ class ProgramPatternBuilder {
     replace_in_ring(s, n, forward, first, static_cast<std::uint32_t>(met.size()));
     note_course(s, n);
     if (forward && (n.gap == 0 || n.ring.empty())) close_ring_row(s, n, false);
-    if (s.run_shape == RunShape::line && !n.ring.empty())
-      not_yet(s, "opens the rnd into rows (binds off part of it)");
+    // Bound off in one or two places (underarms), the rest stays on the circular needle in
+    // its order, for a rnd that takes it up again with others (a yoke).
+    if (s.run_shape == RunShape::line && !n.ring.empty()) n.opened = true;
   }
 
   // The work turns right after a rnd ended at the marker: that rnd ends with the turn.
