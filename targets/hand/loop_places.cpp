@@ -30,6 +30,12 @@ void LoopPlaces::add(std::uint32_t section, Place place, std::uint32_t loop) {
   at_[loop] = {place, section};
 }
 
+void LoopPlaces::take_off_spare(std::uint32_t section, std::span<const std::uint32_t> loops) {
+  std::vector<std::uint32_t>& spare = spares_[section];
+  for (std::uint32_t loop : loops) at_[loop] = {};
+  std::erase_if(spare, [&](std::uint32_t loop) { return at_[loop].place != Place::spare; });
+}
+
 const std::vector<std::uint32_t>& LoopPlaces::loops_of(LoopAt source) const {
   static const std::vector<std::uint32_t> kNone;
   const std::vector<std::vector<std::uint32_t>>* lists = nullptr;

@@ -42,6 +42,8 @@ class LoopPlaces {
   // Leaves a section's loops on a spare needle (or its chain), in the order the pattern counts
   // them.
   void leave(std::uint32_t section, Place place, std::vector<std::uint32_t> loops);
+  // Takes `loops` off a section's spare needle (the rest keep their order).
+  void take_off_spare(std::uint32_t section, std::span<const std::uint32_t> loops);
   // One more loop at the end of a section's spare needle (or chain).
   void add(std::uint32_t section, Place place, std::uint32_t loop);
   // The loops on a holder, spare needle or chain, in order.

@@ -363,6 +363,36 @@ class ProgramPatternBuilder {
     places_.set(met, {Place::needle, current_});
   }
 
+  // Part of a piece in the rnd that waits on a spare needle goes elsewhere (a body's front
+  // and back into a yoke, each between the sleeves): before the piece is left, that block of
+  // its last rnd goes to a holder of its own. Returns where the block then waits (the spare
+  // needle still, when it is no block of it).
+  LoopAt hold_part_of_spare_needle(std::uint32_t section, std::span<const std::uint32_t> block) {
+    PatternSection& sec = out_.sections[section];
+    const std::vector<std::uint32_t>& spare = places_.loops_of({Place::spare, section});
+    auto first = std::find(spare.begin(), spare.end(), block.front());
+    auto last = std::find(spare.begin(), spare.end(), block.back());
+    bool rnd = sec.in_round && sec.end_row > sec.first_row && out_.rows[sec.end_row - 1].round;
+    // One block a piece (a second would count its sts in the rnd the first left).
+    bool held_before = std::any_of(sec.holdings.begin(), sec.holdings.end(),
+                                   [&](const auto& h) { return h.after_row + 1 == sec.end_row; });
+    if (!rnd || held_before || first == spare.end() || last == spare.end())
+      return {Place::spare, section};
+    bool down = last < first;
+    std::vector<std::uint32_t> held(down ? last : first, (down ? first : last) + 1);
+    if (held.size() != block.size() || held.size() == spare.size()) return {Place::spare, section};
+    std::vector<std::uint32_t> in_block(block.begin(), block.end());
+    if (down) std::reverse(in_block.begin(), in_block.end());
+    if (held != in_block) return {Place::spare, section};
+    auto at = static_cast<std::uint32_t>((down ? last : first) - spare.begin());
+    places_.take_off_spare(section, held);
+    std::uint32_t holder = places_.hold(held, section);
+    sec.holdings.push_back(
+        {sec.end_row - 1, at + 1, static_cast<std::uint32_t>(held.size()), holder});
+    sec.live_at_end -= hand_sts(held);
+    return {Place::holder, holder};
+  }
+
   // The sts a knitter counts on the needle: the two loops of an sr5 are one (a DS, a wrapped
   // st).
   std::uint32_t hand_sts(std::span<const std::uint32_t> loops) const {
@@ -458,6 +488,10 @@ class ProgramPatternBuilder {
   void place(const Step& s, LoopAt source, std::span<const std::uint32_t> block,
              std::uint32_t after) {
     std::optional<Lie> lie = places_.lie(source, block);
+    if (!lie && source.place == Place::spare) {
+      source = hold_part_of_spare_needle(source.index, block);
+      lie = places_.lie(source, block);
+    }
     bool nameable = source.place == Place::holder || source.place == Place::spare ||
                     source.place == Place::chain;
     if (!nameable || !lie || (lie->from_last && lie->at != 0))
