@@ -364,33 +364,43 @@ class ProgramPatternBuilder {
   }
 
   // Part of a piece in the rnd that waits on a spare needle goes elsewhere (a body's front
-  // and back into a yoke, each between the sleeves): before the piece is left, that block of
-  // its last rnd goes to a holder of its own. Returns where the block then waits (the spare
-  // needle still, when it is no block of it).
+  // and back into a yoke, each between the sleeves; a leg's inside to the crotch): before the
+  // piece is left, a block of its last rnd goes to a holder of its own, the block taken or
+  // (where that one goes round past the beginning of the rnd) the rest. Returns where the
+  // block then waits.
   LoopAt hold_part_of_spare_needle(std::uint32_t section, std::span<const std::uint32_t> block) {
     PatternSection& sec = out_.sections[section];
-    const std::vector<std::uint32_t>& spare = places_.loops_of({Place::spare, section});
-    auto first = std::find(spare.begin(), spare.end(), block.front());
-    auto last = std::find(spare.begin(), spare.end(), block.back());
+    const LoopAt spare_needle{Place::spare, section};
+    const std::vector<std::uint32_t>& spare = places_.loops_of(spare_needle);
     bool rnd = sec.in_round && sec.end_row > sec.first_row && out_.rows[sec.end_row - 1].round;
     // One block a piece (a second would count its sts in the rnd the first left).
     bool held_before = std::any_of(sec.holdings.begin(), sec.holdings.end(),
                                    [&](const auto& h) { return h.after_row + 1 == sec.end_row; });
-    if (!rnd || held_before || first == spare.end() || last == spare.end())
-      return {Place::spare, section};
-    bool down = last < first;
-    std::vector<std::uint32_t> held(down ? last : first, (down ? first : last) + 1);
-    if (held.size() != block.size() || held.size() == spare.size()) return {Place::spare, section};
-    std::vector<std::uint32_t> in_block(block.begin(), block.end());
-    if (down) std::reverse(in_block.begin(), in_block.end());
-    if (held != in_block) return {Place::spare, section};
-    auto at = static_cast<std::uint32_t>((down ? last : first) - spare.begin());
-    places_.take_off_spare(section, held);
-    std::uint32_t holder = places_.hold(held, section);
+    if (!rnd || held_before || block.size() >= spare.size()) return spare_needle;
+    for (std::uint32_t l : block) in_met_[l] += 2;
+    std::vector<std::uint32_t> part = one_block(spare, true);  // the block, in order there
+    bool rest = part.empty();
+    if (rest) part = one_block(spare, false);
+    for (std::uint32_t l : block) in_met_[l] -= 2;
+    if (part.empty()) return spare_needle;
+    auto at = static_cast<std::uint32_t>(std::find(spare.begin(), spare.end(), part.front()) -
+                                         spare.begin());
+    places_.take_off_spare(section, part);
+    std::uint32_t holder = places_.hold(part, section);
     sec.holdings.push_back(
-        {sec.end_row - 1, at + 1, static_cast<std::uint32_t>(held.size()), holder});
-    sec.live_at_end -= hand_sts(held);
-    return {Place::holder, holder};
+        {sec.end_row - 1, at + 1, static_cast<std::uint32_t>(part.size()), holder});
+    sec.live_at_end -= hand_sts(part);
+    return rest ? spare_needle : LoopAt{Place::holder, holder};
+  }
+
+  // The loops of `line` marked (in_met_ bit 2) or not, if they lie side by side there; else
+  // none.
+  std::vector<std::uint32_t> one_block(const std::vector<std::uint32_t>& line, bool marked) const {
+    auto in = [&](std::uint32_t l) { return ((in_met_[l] & 2) != 0) == marked; };
+    auto first = std::find_if(line.begin(), line.end(), in);
+    auto end = std::find_if_not(first, line.end(), in);
+    if (std::find_if(end, line.end(), in) != line.end()) return {};
+    return {first, end};
   }
 
   // The sts a knitter counts on the needle: the two loops of an sr5 are one (a DS, a wrapped
