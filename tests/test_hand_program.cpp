@@ -72,13 +72,18 @@ Tally samples_at_gauges(const std::string& builder) {
   return tally;
 }
 
-TEST(HandProgramBuilder, SamplesAtTheIssuesGaugesAsTheScheduleBuilder) {
+// Measured: the schedule's builder 55 of 60, the program's 30 (it does not pick up along an
+// edge, bind off with a three-needle bind-off among a row's own sts, or place part of a
+// holder into a row in the rnd yet: the letters, the bars, the teapot).
+TEST(HandProgramBuilder, SamplesAtTheIssuesGaugesBesideTheScheduleBuilder) {
   Tally schedule = samples_at_gauges("schedule");
   Tally program = samples_at_gauges("program");
-  EXPECT_GE(schedule.proven, 40);
-  EXPECT_GE(program.proven, 25);
+  EXPECT_GE(schedule.proven, 55);
+  EXPECT_GE(program.proven, 30);
 }
 
+// test-B and test-C proven by both; test-A (short rows turned on tucks) refused by the
+// program's builder.
 TEST(HandProgramBuilder, AutoKnitStitchGraphs) {
   const fs::path shared = SKEIN_SOURCE_DIR "/../shared/data/autoknit-st";
   if (!fs::exists(shared)) GTEST_SKIP() << shared << " is absent";
@@ -90,6 +95,7 @@ TEST(HandProgramBuilder, AutoKnitStitchGraphs) {
       if (c.knittability.knittable) measure(c, builder, f.path().filename().string(), tally);
     }
     print("AutoKnit stitch graphs", builder, tally);
+    EXPECT_GE(tally.proven, builder == std::string("program") ? 2 : 3);
   }
 }
 
