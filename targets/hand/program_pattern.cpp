@@ -113,8 +113,14 @@ class ProgramPatternBuilder {
   std::span<const WorkedStitch> stitches_of(const Step& s) const {
     return {p_.stitches.data() + s.stitches.begin, s.stitches.size()};
   }
-  std::span<const std::uint32_t> taken_by(std::uint32_t worked) const {
+  std::span<const std::uint32_t> all_taken_by(std::uint32_t worked) const {
     return {p_.taken.data() + p_.taken_at[worked], p_.taken_at[worked + 1] - p_.taken_at[worked]};
+  }
+  // The loops a stitch takes off the needle it works: a three-needle bind-off st's second
+  // loop comes from the needle held behind.
+  std::span<const std::uint32_t> taken_by(std::uint32_t worked) const {
+    auto all = all_taken_by(worked);
+    return g_.type[p_.stitches[worked].stitch] == T::tnbo ? all.first(1) : all;
   }
   std::span<const PlacedLoop> made_by(std::uint32_t worked) const {
     return {p_.made.data() + p_.made_at[worked], p_.made_at[worked + 1] - p_.made_at[worked]};
@@ -255,14 +261,11 @@ class ProgramPatternBuilder {
     bool all_pairs =
         std::all_of(stitches_of(s).begin(), stitches_of(s).end(),
                     [&](const WorkedStitch& w) { return g_.type[w.stitch] == T::tnbo; });
-    if (!all_pairs || needle_of_yarn_[s.yarn] != kNone)
-      not_yet(s,
-              "binds off with a three-needle bind-off in a row of its own sts, which the "
-              "program's pattern builder does not write yet");
+    if (!all_pairs || needle_of_yarn_[s.yarn] != kNone) return course(s);
     end_section();
     std::vector<std::uint32_t> side[2];
     for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i) {
-      auto taken = taken_by(i);
+      auto taken = all_taken_by(i);
       for (int k : {0, 1}) side[k].push_back(taken[k]);
     }
     PatternSection sec;
@@ -555,8 +558,47 @@ class ProgramPatternBuilder {
     StitchId st = p_.stitches[i].stitch;
     note_region_mark(st, r);
     if (g_.type[st] == T::sco) return cast_on_in_row(i, n);
+    if (g_.type[st] == T::tnbo) return bind_off_with_held_st(i, n);
     append_stitch_ops(g_, st, r.side, false, out_.turns, out_.ops, r.wraps_again);
     return move_loops(st, n, s);
+  }
+
+  // A three-needle bind-off in a row: its st in front, the other piece's held behind the
+  // needle (from a spare needle or holder, all of it, an end at the tip), said before the row
+  // that binds off its first st.
+  std::uint32_t bind_off_with_held_st(std::uint32_t i, Needle& n) {
+    const Step& s = p_.steps[step_];
+    if (held_behind_left_ == 0) {
+      std::vector<std::uint32_t> behind;
+      for (std::uint32_t k = i; k < s.stitches.end; ++k)
+        if (g_.type[p_.stitches[k].stitch] == T::tnbo) behind.push_back(all_taken_by(k)[1]);
+      LoopAt source = places_.at(behind.front());
+      std::optional<Lie> lie = places_.lie(source, behind);
+      if (!lie && source.place == Place::spare) {
+        source = hold_part_of_spare_needle(source.index, behind);
+        lie = places_.lie(source, behind);
+      }
+      bool nameable = source.place == Place::holder || source.place == Place::spare;
+      if (!nameable || !lie || lie->at != 0)
+        not_yet(s,
+                "binds off sts held behind that do not wait on one spare needle or holder, "
+                "from an end");
+      bool holder = source.place == Place::holder;
+      PatternSection::Hold h;
+      h.section = holder ? places_.holder_section(source.index) : source.index;
+      h.count = static_cast<std::uint32_t>(behind.size());
+      h.from_last = lie->from_last;
+      h.first = p_.stitches[i].stitch;
+      h.holder = holder ? source.index : 0;
+      h.before_row = static_cast<std::uint32_t>(out_.rows.size());
+      section().holds.push_back(h);
+      held_behind_left_ = h.count;
+    }
+    --held_behind_left_;
+    out_.ops.push_back(HandOp::tnbo);
+    --n.live;
+    if (!n.in_round) --n.ahead;
+    return 1;
   }
 
   // A provisional cast-on in the middle of a row: the st goes on the needle, the loop of its
@@ -577,7 +619,7 @@ class ProgramPatternBuilder {
   void note_course(const Step& s, Needle& n) {
     StitchId last = p_.stitches[s.stitches.end - 1].stitch;
     for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i) {
-      for (std::uint32_t l : taken_by(i)) places_.take(l);
+      for (std::uint32_t l : all_taken_by(i)) places_.take(l);
       for (const PlacedLoop& m : made_by(i))
         if (m.place == LoopPlace::in_run) places_.set({&m.loop, 1}, {Place::needle, current_});
     }
@@ -779,7 +821,7 @@ class ProgramPatternBuilder {
   void check_worked_here(const Step& s, std::uint32_t worked) const {
     StitchId st = p_.stitches[worked].stitch;
     T type = g_.type[st];
-    if (type == T::co || type == T::tnbo)
+    if (type == T::co)
       not_yet(s, fmt::format("works {}, a {} in a course, which the program's pattern builder "
                              "does not write yet",
                              g_.describe(st), info(type).name));
@@ -919,6 +961,7 @@ class ProgramPatternBuilder {
   bool row_at_marker_after_turn_ = false;
   CourseDirection row_dir_ = CourseDirection::left_to_right;
   std::uint32_t pending_takes_ = 0;
+  std::uint32_t held_behind_left_ = 0;  // sts held behind the needle for 3-needle BO
 };
 
 }  // namespace
