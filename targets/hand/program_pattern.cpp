@@ -568,6 +568,11 @@ class ProgramPatternBuilder {
   // that binds off its first st.
   std::uint32_t bind_off_with_held_st(std::uint32_t i, Needle& n) {
     const Step& s = p_.steps[step_];
+    // In the rnd the pairs may pass the beginning-of-round marker, which is not written yet.
+    if (n.in_round)
+      not_yet(s,
+              "binds off with a three-needle bind-off among the sts of a rnd, which the "
+              "program's pattern builder does not write yet");
     if (held_behind_left_ == 0) {
       std::vector<std::uint32_t> behind;
       for (std::uint32_t k = i; k < s.stitches.end; ++k)
