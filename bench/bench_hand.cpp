@@ -15,6 +15,7 @@
 #include "hand/pattern_document.hpp"
 #include "hand/pattern_model.hpp"
 #include "hand/pattern_writers.hpp"
+#include "hand/program_pattern.hpp"
 #include "mesh/generate.hpp"
 
 namespace skein {
@@ -58,8 +59,10 @@ const Compilation& model(HandCase c) {
   return *slot;
 }
 
-std::string pattern_of(const Compilation& c) {
-  hand::HandPattern pattern = hand::build_hand_pattern(c);
+// The pattern as markdown, from the schedule's builder or (`program`) the live-loop program's.
+std::string pattern_of(const Compilation& c, bool program = false) {
+  hand::HandPattern pattern =
+      program ? hand::build_pattern_from_program(c) : hand::build_hand_pattern(c);
   std::ostringstream out;
   hand::write_markdown(hand::make_document(pattern), out);
   return out.str();
@@ -75,6 +78,13 @@ void BM_HandEmit(benchmark::State& state) {
   }
   state.counters["stitches"] = c.knit.size();
   state.counters["pattern_bytes"] = static_cast<double>(bytes);
+}
+
+// The same from the live-loop program (`--set builder=program`).
+void BM_HandEmitFromProgram(benchmark::State& state) {
+  const Compilation& c = model(static_cast<HandCase>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(pattern_of(c, true));
+  state.counters["stitches"] = c.knit.size();
 }
 
 void BM_HandVerify(benchmark::State& state) {
@@ -95,6 +105,7 @@ void hand_cases(benchmark::internal::Benchmark* b) {
 }
 
 BENCHMARK(BM_HandEmit)->Apply(hand_cases);
+BENCHMARK(BM_HandEmitFromProgram)->Apply(hand_cases);
 BENCHMARK(BM_HandVerify)->Apply(hand_cases);
 
 }  // namespace

@@ -192,9 +192,8 @@ TEST_F(Cli, AValidInputTheTargetCannotKnitExitsThree) {
       skein("compile samples/sweater/sweater.yaml -t knitout -m swg091n2 -o " + in_dir("s.k"));
   EXPECT_EQ(r.exit_code, 3);
   EXPECT_EQ(r.err,
-            "skein: unsupported: not yet supported by the knitout target: a course the lowering "
-            "could not lower (the round binds off its sts in more than one place), at face 20425 "
-            "(bo, row 108)\n");
+            "skein: unsupported: not yet supported by the knitout target: a course that binds off "
+            "its run in two places (several runs on the bed), at face 20425 (bo, row 108)\n");
   EXPECT_TRUE(outputs().empty());
 }
 

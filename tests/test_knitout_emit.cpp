@@ -123,10 +123,10 @@ TEST(KnitoutFit, WhatIsNotSupportedYetIsNamedWithItsStitch) {
             "wraps or the bind-off chain), kniterate allows 2");
   // Its two legs share the bed, each with its carrier (KnitoutPieces).
   EXPECT_EQ(emit_error(compile_model("samples/autoknit/test-C.st"), "generic"), "no error");
-  // The lowering stops at the round that binds off both underarms.
+  // The round that binds off both underarms parts the body's run into two lines.
   EXPECT_EQ(emit_error(compile_model("samples/sweater/sweater.yaml"), "generic"),
-            "not yet supported by the knitout target: a course the lowering could not lower (the "
-            "round binds off its sts in more than one place), at face 20425 (bo, row 108)");
+            "not yet supported by the knitout target: a course that binds off its run in two "
+            "places (several runs on the bed), at face 20425 (bo, row 108)");
   EXPECT_EQ(emit_error(compile_model("samples/two-bars/two-bars.yaml"), "generic"),
             "not yet supported by the knitout target: the three-needle bind-off stitch (3nbo), at "
             "extruded 3nbo on edge 197-12 (row 117)");

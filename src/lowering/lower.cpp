@@ -186,7 +186,8 @@ class Lowering {
     Takes takes = sort_takes(stitches, input_direction(stitches));
     step.direction = resolve(stitches, g_.direction[first], takes);
     step.picked_up = takes.picked_up;
-    std::vector<Segment> segments = walks(takes.run, step.direction);
+    std::vector<Segment> segments =
+        walks(takes.run, step.direction, step.shape == RowShape::closed);
     if (segments.size() > 1) segments = {join(split_off(segments), step.yarn)};
     std::vector<Segment> needles = second_needles(takes.second, first);
     segments.insert(segments.end(), needles.begin(), needles.end());
@@ -211,15 +212,24 @@ class Lowering {
       for (const Segment& needle : needles) keep_tail(step, take_second(needle, step.yarn), first);
       step.run = segments.front().run;
       RowShape shape = step.shape;
+      std::uint32_t second_line = kNone;
       if (segments.front().count == live_.size(step.run) &&
           live_.shape(step.run) == RunShape::ring) {
-        std::uint32_t at = opening(left_per_stitch, first);
+        auto [at, second] = opening(left_per_stitch, first);
         if (at != kNone) {  // the ring opens where the course bound off
           std::rotate(in_run.begin(), in_run.begin() + at, in_run.end());
           shape = RowShape::open;
         }
+        if (second != kNone) second_line = second;
       }
       keep_tail(step, take(segments.front(), in_run, shape, step.yarn), first);
+      if (second_line != kNone) {          // bound off in two places: the loops after the second
+        RunId other = new_run(step.yarn);  // block are a line of their own
+        live_.cut({step.run, in_run[second_line],
+                   static_cast<std::uint32_t>(in_run.size()) - second_line, Walk::forward},
+                  other, RunId());
+        keep_tail(step, other, first);
+      }
       out_.runs[step.run.index()].yarn = step.yarn;
     }
     if (!other_side.empty()) {
@@ -233,19 +243,29 @@ class Lowering {
   }
 
   // Where a course over a whole ring that binds off some of its sts (an underarm) opens it: the
-  // index of the first loop it leaves after them, or kNone when it binds off none.
-  static std::uint32_t opening(const std::vector<std::uint32_t>& left, StitchId at) {
-    std::size_t n = left.size(), blocks = 0, first_after = n;
+  // index of the first loop it leaves after them (kNone when it binds off none); bound off in
+  // two places (both underarms), also the index, from there, of the first loop after the
+  // second block (the line that goes on from there is a run of its own).
+  static std::pair<std::uint32_t, std::uint32_t> opening(const std::vector<std::uint32_t>& left,
+                                                         StitchId at) {
+    std::size_t n = left.size();
+    std::vector<std::size_t> after;  // the first st after each block
     for (std::size_t i = 0; i < n; ++i) {
       bool here = left[i] == kBindsOff, before = left[(i + n - 1) % n] == kBindsOff;
-      if (before && !here) ++blocks, first_after = i;
+      if (before && !here) after.push_back(i);
     }
-    if (blocks == 0) return kNone;
-    if (blocks > 1) throw Stop{at, "the round binds off its sts in more than one place"};
-    std::uint32_t index = 0;
-    for (std::size_t i = 0; i < first_after; ++i)
-      if (left[i] != kBindsOff) index += left[i];
-    return index;
+    if (after.empty()) return {kNone, kNone};
+    if (after.size() > 2) throw Stop{at, "the round binds off its sts in more than two places"};
+    auto loops_before = [&](std::size_t from, std::size_t to) {  // made by sts [from, to)
+      std::uint32_t count = 0;
+      for (std::size_t i = from; i != to; i = (i + 1) % n)
+        if (left[i] != kBindsOff) count += left[i];
+      return count;
+    };
+    std::size_t first_after = after.back();  // the line the program keeps starts here
+    std::uint32_t index = loops_before(0, first_after);
+    if (after.size() == 1) return {index, kNone};
+    return {index, loops_before(first_after, after.front())};
   }
 
   // A course may leave one line cut in its middle (its tail a run of its own, `other`).
@@ -269,10 +289,11 @@ class Lowering {
   // The loops a course takes from runs as maximal walks of one run each, in run order. A run
   // cast on across a split has the order of the side that takes it: the first course that
   // meets it backward turns it round (a reverse step) and walks it again.
-  std::vector<Segment> walks(const std::vector<std::uint32_t>& loops, CourseDirection d) {
+  std::vector<Segment> walks(const std::vector<std::uint32_t>& loops, CourseDirection d,
+                             bool closed) {
     for (;;) {
       std::vector<Segment> segments;
-      RunId backward = find_walks(loops, d, segments);
+      RunId backward = find_walks(loops, d, closed, segments);
       if (!backward.valid()) {
         for (const Segment& seg : segments) unoriented_[seg.run.index()] = 0;
         return segments;
@@ -286,9 +307,13 @@ class Lowering {
     }
   }
 
-  // Fills `segments`; returns a run still unoriented that the course meets backward.
-  RunId find_walks(const std::vector<std::uint32_t>& loops, CourseDirection d,
+  // Fills `segments`; returns a run still unoriented that the course meets backward. A round
+  // may meet one run at its start and again at its end, where it goes round past where it
+  // began (a leg whose first rnd begins in the middle of the body's sts it takes): the two
+  // walks are cut off and joined in the order met, no crossing.
+  RunId find_walks(const std::vector<std::uint32_t>& loops, CourseDirection d, bool closed,
                    std::vector<Segment>& segments) const {
+    bool round_past_start = false;
     for (std::size_t i = 0; i < loops.size(); ++i) {
       std::uint32_t loop = loops[i];
       RunId run = live_.run_of(loop);
@@ -304,14 +329,31 @@ class Lowering {
                                "other way round: it needs a crossing here",
                                course_direction_name(d))};
       }
-      for (const Segment& seg : segments)
-        if (seg.run == run && !round_the_gap(seg, loop))
-          throw Stop{g_.loops[loop].taker,
-                     "the course takes the loops of one run in two places, out of their order: "
-                     "it needs a crossing here"};
+      for (const Segment& seg : segments) {
+        if (seg.run != run || round_the_gap(seg, loop)) continue;
+        if (closed && !round_past_start && &seg == &segments.front()) {
+          round_past_start = true;
+          continue;
+        }
+        throw two_places(loop);
+      }
       segments.push_back({run, loop, 1, Walk::forward});
     }
+    if (round_past_start && !goes_round_to_its_start(segments)) throw two_places(loops.back());
     return RunId();
+  }
+
+  Stop two_places(std::uint32_t loop) const {
+    return Stop{g_.loops[loop].taker,
+                "the course takes the loops of one run in two places, out of their order: it "
+                "needs a crossing here"};
+  }
+
+  // The round's last walk is of its first walk's run and ends right before it begins.
+  bool goes_round_to_its_start(const std::vector<Segment>& segments) const {
+    const Segment &first = segments.front(), &last = segments.back();
+    return segments.size() > 1 && last.run == first.run &&
+           live_.follows(first.first, live_.walk_end(last));
   }
 
   Stop not_live(std::uint32_t loop) const {

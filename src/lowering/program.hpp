@@ -100,7 +100,9 @@ struct Step {
   RunShape run_shape = RunShape::line;  // `run`'s shape after the step
   bool run_ends = false;                // `run` holds no loop after the step
   RunId other;  // a cast-on across a split: the other side's run; a split of a line in its
-                // middle: the run its tail becomes
+                // middle: the run its tail becomes; a round over a ring that binds off in
+                // two places (both underarms): the line after the second block (`run` is
+                // the line after the first)
   std::uint32_t picked_up = 0;     // loops taken along an edge (not from a run)
   StitchId waits_for = kNoStitch;  // hold: the stitch it waits for
 };

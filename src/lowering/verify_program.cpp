@@ -285,9 +285,15 @@ class Verifier {
     }
     std::size_t first = pos_[seg.first], n = r.loops.size();
     std::vector<std::uint32_t> loops;
-    if (r.shape == RunShape::ring && whole && opens_after_bind_off(made, loops)) {
+    std::vector<std::uint32_t> second;
+    if (r.shape == RunShape::ring && whole && opens_after_bind_off(made, loops, second)) {
       r.shape = RunShape::line;
       set(s.run, std::move(loops));
+      if (second.empty()) return;
+      check(tail.valid(), "a ring bound off in two places names its second line");
+      run(tail).shape = RunShape::line;
+      set(tail, std::move(second));
+      tail = RunId();
       return;
     }
     if (r.shape == RunShape::ring) {  // from the segment on round the ring
@@ -306,18 +312,31 @@ class Verifier {
   }
 
   // A round over a whole ring that binds off a block of its sts leaves a line that starts
-  // after them: `line` gets its loops; false when it binds off none.
+  // after them: `line` gets its loops; false when it binds off none. Bound off in two blocks,
+  // the line ends at the second and `second` gets the loops after it.
   bool opens_after_bind_off(const std::vector<std::uint32_t>& made,
-                            std::vector<std::uint32_t>& line) const {
-    std::size_t n = bound_off_.size(), start = n;
+                            std::vector<std::uint32_t>& line,
+                            std::vector<std::uint32_t>& second) const {
+    std::size_t n = bound_off_.size();
+    std::vector<std::size_t> starts;  // sts that follow a bound-off block
     for (std::size_t i = 0; i < n; ++i)
-      if (bound_off_[(i + n - 1) % n] && !bound_off_[i]) start = i;
-    if (start == n) return false;
-    std::size_t first_loop = 0;
-    for (std::size_t i = 0; i < start; ++i) first_loop += made_by_[i];
-    line.assign(made.begin() + static_cast<std::ptrdiff_t>(first_loop % made.size()), made.end());
-    line.insert(line.end(), made.begin(),
-                made.begin() + static_cast<std::ptrdiff_t>(first_loop % made.size()));
+      if (bound_off_[(i + n - 1) % n] && !bound_off_[i]) starts.push_back(i);
+    if (starts.empty()) return false;
+    check(starts.size() <= 2, "a round opens where it binds off, in at most two places");
+    auto loops_before = [&](std::size_t end) {
+      std::size_t count = 0;
+      for (std::size_t i = 0; i < end; ++i) count += made_by_[i];
+      return count;
+    };
+    std::size_t from = loops_before(starts.back()) % made.size();
+    std::vector<std::uint32_t> ring(made.begin() + static_cast<std::ptrdiff_t>(from), made.end());
+    ring.insert(ring.end(), made.begin(), made.begin() + static_cast<std::ptrdiff_t>(from));
+    std::size_t cut = ring.size();
+    if (starts.size() == 2) cut = loops_before(starts.front()) + made.size() - from;
+    cut %= made.size() == 0 ? 1 : made.size();
+    if (starts.size() == 1) cut = ring.size();
+    line.assign(ring.begin(), ring.begin() + static_cast<std::ptrdiff_t>(cut));
+    second.assign(ring.begin() + static_cast<std::ptrdiff_t>(cut), ring.end());
     return true;
   }
 

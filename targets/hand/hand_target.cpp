@@ -10,6 +10,8 @@
 #include "hand/needle_sim.hpp"
 #include "hand/pattern_reader.hpp"
 #include "hand/pattern_writers.hpp"
+#include "hand/program_pattern.hpp"
+#include "hand/stitch_working.hpp"
 
 namespace skein {
 namespace hand {
@@ -54,6 +56,32 @@ Rounds rounds_of(const TargetOptions& options) {
   return inside_out ? Rounds::ws_facing : Rounds::mirror_most;
 }
 
+// Which builder writes the pattern (`--set builder=`): the one that reads the schedule (the
+// default: it mirrors a model whose rnds run left to right, where the program's works them WS
+// facing, inside out), the one on the lowering's live-loop program, or auto: the program's,
+// and where it refuses a structure by name (picking up along an edge, a holder's sts placed
+// into a row in the rnd), the schedule's. Every pattern is proven before it is written.
+enum class Builder : std::uint8_t { automatic, program, schedule };
+
+Builder builder_of(const TargetOptions& options) {
+  auto set = options.settings.find("builder");
+  if (set == options.settings.end() || set->second == "schedule") return Builder::schedule;
+  return set->second == "program" ? Builder::program : Builder::automatic;
+}
+
+HandPattern build_pattern(const Compilation& c, const TargetOptions& options) {
+  Builder builder = builder_of(options);
+  if (builder == Builder::schedule)
+    return build_hand_pattern(c, turn_method_of(options), rounds_of(options));
+  check_stitch_types(c.knit);
+  try {
+    return build_pattern_from_program(c, turn_method_of(options));
+  } catch (const UnsupportedError&) {
+    if (builder == Builder::program) throw;
+  }
+  return build_hand_pattern(c, turn_method_of(options), rounds_of(options));
+}
+
 class HandTarget : public Target {
  public:
   explicit HandTarget(const FormatInfo& f) : f_(f) {}
@@ -67,10 +95,14 @@ class HandTarget : public Target {
              "how short rows turn (default: the project's short_rows: hand:)"},
             {"rounds",
              {"mirror", "inside-out"},
-             "rnds run left to right: mirror the model if most do, or work them WS facing"}};
+             "rnds run left to right: mirror the model if most do, or work them WS facing"},
+            {"builder",
+             {"schedule", "program", "auto"},
+             "build the pattern from the schedule (default) or the lowering's live-loop "
+             "program; auto: the program's, else the schedule's where the program's refuses"}};
   }
   void emit(const Compilation& c, const TargetOptions& options, std::ostream& out) const override {
-    HandPattern pattern = build_hand_pattern(c, turn_method_of(options), rounds_of(options));
+    HandPattern pattern = build_pattern(c, options);
     PatternDocument doc = make_document(pattern, dialect_of(options), gauge_of(c));
     // `--target hand --dialect knitspeak` writes what hand-knitspeak writes; the page stays a
     // page, with its rows in KnitSpeak.

@@ -11,51 +11,20 @@
 #include "hand/marker_plan.hpp"
 #include "hand/piece_names.hpp"
 #include "hand/region_markers.hpp"
+#include "hand/stitch_working.hpp"
 
 namespace skein::hand {
 namespace {
 
 using T = StitchType;
 
-constexpr std::array kSupported = {T::k,   T::p,   T::co,    T::bo,  T::kfb,   T::m1l,
-                                   T::m1r, T::yo,  T::k2tog, T::ssk, T::p2tog, T::s2kp,
-                                   T::sr4, T::sr5, T::tnbo,  T::sco, T::tuck,  T::sl};
-
 [[noreturn]] void unsupported(const std::string& what) {
   throw UnsupportedError(fmt::format("hand target: {}", what));
 }
 
-// Is `s` a decrease that knits the two loops of an sr5 together, and no other?
-bool knits_an_sr5_as_one(const KnitGraph& g, StitchId s) {
-  auto taken = g.loops_taken_by(s);
-  T t = g.type[s];
-  if (taken.size() != 2 || (t != T::k2tog && t != T::ssk && t != T::p2tog)) return false;
-  StitchId maker = g.loops[taken[0]].maker;
-  return maker != kNoStitch && g.type[maker] == T::sr5 && g.loops[taken[1]].maker == maker;
-}
-
-// A knitter works a DS or a wrap as one st with its st: an sr5's two loops must go into one
-// decrease above it that takes no other loop.
-void check_sr5_knit_together(const KnitGraph& g, StitchId s) {
-  auto made = g.loops_made_by(s);
-  StitchId above = g.loops[made[0]].taker;
-  if (above != kNoStitch && g.loops[made[1]].taker == above && knits_an_sr5_as_one(g, above))
-    return;
-  unsupported(fmt::format(
-      "{} is an sr5 whose two loops (its st's and the turn's) are not knit together by one "
-      "k2tog, ssk or p2tog above it, as a knitter works a double stitch or a wrap with its "
-      "st; make it an sr4",
-      g.describe(s)));
-}
-
 void check_supported(const Compilation& c) {
   const KnitGraph& g = c.knit;
-  for (StitchId s = 0; s < g.size(); ++s) {
-    if (g.type[s] == T::sr5) check_sr5_knit_together(g, s);
-    if (std::find(kSupported.begin(), kSupported.end(), g.type[s]) != kSupported.end()) continue;
-    unsupported(fmt::format("{} is a {} ({}), which hand patterns do not cover yet", g.describe(s),
-                            info(g.type[s]).name, abbreviation(g.type[s])));
-  }
+  check_stitch_types(g);
   for (const Loop& l : g.loops) {
     bool joined = l.kind == LoopKind::joined && l.taker != kNoStitch && g.type[l.taker] == T::tnbo;
     bool split = l.kind == LoopKind::split && l.maker != kNoStitch && g.type[l.maker] == T::sco;
@@ -1765,41 +1734,10 @@ class PatternBuilder {
     }
   }
 
-  // Does `s` work the loop a short row turned at?
-  bool works_a_turn(StitchId s) const {
-    for (std::uint32_t l : g_.loops_taken_by(s))
-      if (g_.loops[l].maker != kNoStitch && worked_by_hand(g_, g_.loops[l].maker) == T::sr4)
-        return true;
-    return false;
-  }
-
-  // kw / pw (wrap and turn) or k DS / p DS (German short rows) for the plain st that works it.
-  HandOp resolving(HandOp plain, StitchId s) const {
-    if (!is_plain(plain))
-      unsupported(
-          fmt::format("{} works the loop a short row turned at as a {}; hand patterns "
-                      "resolve a turn with a plain k or p only",
-                      g_.describe(s), info(plain).abbreviation));
-    bool knit = plain == HandOp::k;
-    if (out_.turns == TurnMethod::wrap_and_turn) return knit ? HandOp::kw : HandOp::pw;
-    return knit ? HandOp::kds : HandOp::pds;
-  }
-
-  // The st a short row turns at. Turning again at the st the last short row turned at, the
-  // row works its double stitch as one first, or wraps the wrapped st again (heel-turn patterns
-  // do: the st then has two wraps, and kw / pw later work both with it).
-  HandOp turning_op(StitchId s, PatternRow& r) const {
-    HandOp plain = r.side == Side::rs ? HandOp::k : HandOp::p;
-    if (out_.turns == TurnMethod::wrap_and_turn) {
-      r.wraps_again = works_a_turn(s);
-      return HandOp::wt;
-    }
-    return works_a_turn(s) ? resolving(plain, s) : plain;
-  }
-
   void append_ops(StitchId s, PatternRow& r) {
     T type = worked_by_hand(g_, s);
-    if (type == T::sr4) return out_.ops.push_back(turning_op(s, r));
+    if (type == T::sr4)
+      return append_stitch_ops(g_, s, r.side, out_.mirror, out_.turns, out_.ops, r.wraps_again);
     for (std::uint32_t l : g_.loops_taken_by(s))
       if (g_.loops[l].maker != kNoStitch && unwritten_[g_.loops[l].maker])
         unsupported(
@@ -1815,41 +1753,11 @@ class PatternBuilder {
       unsupported(fmt::format("{} is a {} in the middle of the work, which is not covered yet",
                               g_.describe(s), info(type).name));
     refuse_loop_of_a_piece_not_placed(s);
-    std::optional<Working> w = working_of(out_.mirror ? mirrored(type) : type, r.side);
-    SKEIN_ASSERT(w.has_value(), "every supported stitch type has a hand working");
-    HandOp op = works_a_turn(s) ? resolving(w->op, s) : w->op;
-    out_.ops.push_back(works_a_st_with_its_yo(s) ? with_its_yo(op) : op);
-    if (w->make) out_.ops.push_back(*w->make);
+    append_stitch_ops(g_, s, r.side, out_.mirror, out_.turns, out_.ops, r.wraps_again);
   }
 
-  // Does `s` work a st with a yo laid over it (a tuck's, or one slipped since)? Slipping it
-  // again keeps the yo with it.
-  bool works_a_st_with_its_yo(StitchId s) const {
-    if (g_.type[s] == T::sl) return false;
-    for (std::uint32_t l : g_.loops_taken_by(s)) {
-      StitchId maker = g_.loops[l].maker;
-      while (maker != kNoStitch && g_.type[maker] == T::sl)
-        maker = g_.loops[g_.loops_taken_by(maker)[0]].maker;
-      if (maker != kNoStitch && g_.type[maker] == T::tuck) return true;
-    }
-    return false;
-  }
-
-  // brk / brp: a plain st that works a st and its yo as one (a decrease takes the two as one
-  // of its sts, as brioche patterns count them).
-  static HandOp with_its_yo(HandOp op) {
-    if (!is_plain(op)) return op;
-    return op == HandOp::k ? HandOp::brk : HandOp::brp;
-  }
-
-  // A make-one lifts the strand to the next stitch; the last stitch of a flat row has none.
   void check_make_one_has_a_strand(const PatternRow& r) const {
-    T last = g_.type[row_.back()];
-    if (!r.round && (last == T::m1l || last == T::m1r))
-      unsupported(
-          fmt::format("{} is a make-one worked last in its row, where there is no strand "
-                      "to lift; make it kfb, or move it one stitch in",
-                      g_.describe(row_.back())));
+    if (!r.round) hand::check_make_one_has_a_strand(g_, row_.back());
   }
 
   const Compilation& c_;
@@ -1907,12 +1815,6 @@ class PatternBuilder {
 };
 
 }  // namespace
-
-StitchType worked_by_hand(const KnitGraph& g, StitchId s) {
-  if (g.type[s] == T::sr5) return T::sr4;
-  if (knits_an_sr5_as_one(g, s)) return g.type[s] == T::p2tog ? T::p : T::k;
-  return g.type[s];
-}
 
 HandPattern build_hand_pattern(const Compilation& c, TurnMethod turns, Rounds rounds) {
   check_supported(c);

@@ -318,12 +318,14 @@ class SentenceReader {
     return need_number(c, "a row number");
   }
 
-  // "the 3 sts of Piece 1", "the 7 sts of holder 2" or "the 3 loops of Piece 1's chain".
+  // "the 3 sts of Piece 1", "the 7 sts of holder 2", "the 1 st of holder 3" or "the 3 loops
+  // of Piece 1's chain".
   void whose_sts(Cursor& c, Step& step, const char* count) {
     c.eat("the");
     step.count = need_number(c, count);
-    step.provisional = c.eat("loops");
-    need(step.provisional || c.eat("sts"), c, "'sts' or 'loops'");
+    step.provisional = c.eat("loops") || (step.count == 1 && c.eat("loop"));
+    need(step.provisional || c.eat("sts") || (step.count == 1 && c.eat("st")), c,
+         "'sts' or 'loops'");
     need(c.eat("of"), c, "'of Piece N' or 'of holder N'");
     step.holder[0] = !step.provisional && c.eat("holder");
     step.number = step.holder[0]

@@ -159,8 +159,14 @@ class ProgramLayouts {
   void take_step(const Step& step) {
     switch (step.kind) {
       case StepKind::cast_on:
+        return add_course(step);
       case StepKind::course:
       case StepKind::bind_off:
+        // A course that binds off in two places parts its run into two lines (`other`): two
+        // runs on the bed.
+        if (step.other.valid())
+          unsupported(g_, "a course that binds off its run in two places (several runs on the bed)",
+                      first_stitch(step));
         return add_course(step);
       case StepKind::three_needle_bind_off:
       case StepKind::split:

@@ -1,0 +1,13 @@
+// The hand pattern built on the lowering's live-loop program (`--set builder=program`): runs
+// of live loops mapped onto needles, courses onto rows and rnds with the side their direction
+// gives. Throws UnsupportedError naming the step where the hand vocabulary cannot say it yet.
+#pragma once
+
+#include "hand/pattern_model.hpp"
+
+namespace skein::hand {
+
+HandPattern build_pattern_from_program(const Compilation& compilation,
+                                       TurnMethod turns = TurnMethod::german);
+
+}  // namespace skein::hand
