@@ -1,8 +1,8 @@
 // The knitting page's style and script, inlined into every page (page_writer.cpp). The script
 // reads the data the page embeds (#skein-data, the cells and yarn as base64 typed arrays), so
 // it is the same for every model. Query flags: ?selftest=1 steps through every stitch and checks
-// text, counts and 3D agree; ?selftest=reload checks progress survives a reload. Both report
-// into <pre id="selftest">, for `chromium --headless --dump-dom`.
+// text, counts and 3D agree; ?selftest=reload checks progress survives a reload; ?selftest=perf
+// only times. Each reports into <pre id="selftest">, for `chromium --headless --dump-dom`.
 #include "hand_web/page_writer.hpp"
 
 namespace skein::hand_web {
@@ -53,7 +53,8 @@ body.big #instr { font-size: 1.8em; }
   body { grid-template-columns: minmax(0, 1fr); grid-template-rows: auto 36vh minmax(0, 1fr);
     height: auto; min-height: 100vh; overflow: auto; }
   #panel { border-left: none; border-top: 1px solid var(--line); }
-  header { font-size: .9em; }
+  header { font-size: .9em; flex-wrap: nowrap; }
+  #counter { min-width: 0; overflow: hidden; text-overflow: ellipsis; white-space: nowrap; }
   header h1 { max-width: 30vw; }
   #view { height: 36vh; }
 }
@@ -142,7 +143,12 @@ function buildView() {
   colourAttr.setUsage && colourAttr.setUsage(T.DynamicDrawUsage);
   geometry.setAttribute('color', colourAttr);
   const index = new Uint32Array(S * 6);
-  for (let s = 0; s < S; ++s) index.set([4 * s, 4 * s + 1, 4 * s + 2, 4 * s, 4 * s + 2, 4 * s + 3], 6 * s);
+  for (let s = 0, k = 0; s < S; ++s, k += 6) {
+    index[k] = index[k + 3] = 4 * s;
+    index[k + 1] = 4 * s + 1;
+    index[k + 2] = index[k + 4] = 4 * s + 2;
+    index[k + 5] = 4 * s + 3;
+  }
   geometry.setIndex(new T.BufferAttribute(index, 1));
   geometry.computeVertexNormals();
   geometry.computeBoundingSphere();
@@ -291,6 +297,7 @@ function buildView() {
     const c = colour[12 * s];
     return c === COLOURS.done[0] ? 'done' : c === COLOURS.current[0] ? 'current' : 'todo';
   };
+  view.built = performance.now();
   Object.assign(view, { ok: true, show, showMarkers, currentInPicture, stateOf, render, renderer, camera });
 }
 
@@ -421,17 +428,31 @@ function selftestSteps() {
   const missing = seen.reduce((n, v) => n + (v === 0 ? 1 : 0), 0);
   if (missing) errors.push(`${missing} stitches never stepped on`);
   const stepMs = (performance.now() - t0) / N;
-  // Steps with a frame drawn each: what a knitter waits for.
-  const t1 = performance.now(), drawn = Math.min(N, 30);
-  for (let i = 0; i < drawn; ++i) { go(i, true); if (view.ok) view.render(true); }
-  const frameMs = (performance.now() - t1) / drawn;
-  go(0, true);
   // The layout fits the window: nothing wider than it (a phone scrolls down, never across).
   const wide = document.documentElement.scrollWidth;
   if (wide > window.innerWidth) errors.push(`the page is ${wide} px wide in a ${window.innerWidth} px window`);
   report((errors.length ? 'selftest: FAIL\n' + errors.join('\n')
     : `selftest: ok ${N} stitches, ${rows} rows checked, 3D ${view.ok ? 'checked' : 'absent'}`) +
-    `\nperf: script ${Math.round(scriptStart)} ms, first frame ${Math.round(window.__skeinFirstFrame || -1)} ms, step ${stepMs.toFixed(3)} ms, step with frame ${frameMs.toFixed(2)} ms`);
+    '\n' + timings(0, stepMs));
+}
+
+// What a knitter waits for: the page's start, and a step (text and colours) with and without
+// its frame drawn (readPixels waits for the drawing, not only its queueing).
+function timings(from, stepMs) {
+  const frames = Math.min(N - from, 30), t = performance.now();
+  for (let i = from; i < from + frames; ++i) { go(i, true); if (view.ok) view.render(true); }
+  const frameMs = (performance.now() - t) / frames;
+  go(0, true);
+  return `perf: ${N} stitches, script ${Math.round(scriptStart)} ms, view built ` +
+    `${Math.round(view.built || -1)} ms, first frame ${Math.round(window.__skeinFirstFrame || -1)} ms, ` +
+    `step ${stepMs.toFixed(3)} ms, step with frame ${frameMs.toFixed(2)} ms`;
+}
+
+// Timings alone, from the middle of the work (for models too large to step through in a test).
+function selftestPerf() {
+  const from = Math.floor(N / 2), steps = Math.min(N - from, 2000), t = performance.now();
+  for (let i = from; i < from + steps; ++i) go(i, true);
+  report(timings(from, (performance.now() - t) / steps));
 }
 
 function selftestReload() {
@@ -457,7 +478,10 @@ go(restore(), true);
 // reads their report without virtual time (which would make the timings meaningless).
 const test = query.get('selftest');
 if (test === 'reload') selftestReload();
-else if (test) { if (view.ok) view.render(); selftestSteps(); }
+else if (test) {
+  if (view.ok) view.render();
+  if (test === 'perf') selftestPerf(); else selftestSteps();
+}
 window.__skein = { go, state: () => cur, data: D };
 window.__skeinReady = true;
 })();
