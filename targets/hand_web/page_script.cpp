@@ -226,6 +226,7 @@ function buildView() {
     if (Math.hypot(e.clientX - down.x, e.clientY - down.y) > 5) return;
     const box = renderer.domElement.getBoundingClientRect();
     const ndc = new T.Vector2(((e.clientX - box.left) / box.width) * 2 - 1, -((e.clientY - box.top) / box.height) * 2 + 1);
+    camera.updateMatrixWorld();
     raycaster.setFromCamera(ndc, camera);
     const hit = raycaster.intersectObject(mesh)[0];
     if (hit && indexOf[Math.floor(hit.faceIndex / 2)] >= 0) go(indexOf[Math.floor(hit.faceIndex / 2)]);
@@ -269,6 +270,7 @@ function buildView() {
   // The current stitch stays in view: when it leaves the middle of the picture the view pans to
   // it, and when its right side faces away the camera goes round to face it.
   function keepInView(p, normal) {
+    camera.updateMatrixWorld();
     const ndc = p.clone().project(camera);
     const toCamera = camera.position.clone().sub(p);
     if (normal.lengthSq() > 0 && normal.dot(toCamera) < 0) {
@@ -297,8 +299,15 @@ function buildView() {
     const c = colour[12 * s];
     return c === COLOURS.done[0] ? 'done' : c === COLOURS.current[0] ? 'current' : 'todo';
   };
+  // Where a stitch's centre is drawn, in the window's pixels.
+  function screenPoint(s) {
+    camera.updateMatrixWorld();  // the controls may have moved it since the last frame
+    const p = new T.Vector3().fromArray(centre, 3 * s).project(camera);
+    const box = renderer.domElement.getBoundingClientRect();
+    return { x: box.left + ((p.x + 1) / 2) * box.width, y: box.top + ((1 - p.y) / 2) * box.height };
+  }
   view.built = performance.now();
-  Object.assign(view, { ok: true, show, showMarkers, currentInPicture, stateOf, render, renderer, camera });
+  Object.assign(view, { ok: true, show, showMarkers, currentInPicture, stateOf, render, renderer, camera, screenPoint });
 }
 
 function paint(colour, s, c) {
@@ -428,12 +437,40 @@ function selftestSteps() {
   const missing = seen.reduce((n, v) => n + (v === 0 ? 1 : 0), 0);
   if (missing) errors.push(`${missing} stitches never stepped on`);
   const stepMs = (performance.now() - t0) / N;
+  const clicked = checkKeysAndClicks(errors);
   // The layout fits the window: nothing wider than it (a phone scrolls down, never across).
   const wide = document.documentElement.scrollWidth;
   if (wide > window.innerWidth) errors.push(`the page is ${wide} px wide in a ${window.innerWidth} px window`);
   report((errors.length ? 'selftest: FAIL\n' + errors.join('\n')
-    : `selftest: ok ${N} stitches, ${rows} rows checked, 3D ${view.ok ? 'checked' : 'absent'}`) +
+    : `selftest: ok ${N} stitches, ${rows} rows checked, 3D ${view.ok ? 'checked' : 'absent'}` +
+      `${clicked ? ', click checked' : ''}, window ${window.innerWidth}x${window.innerHeight}`) +
     '\n' + timings(0, stepMs));
+}
+
+// Keys step as the help says (a different key each time: a second press of one key within
+// 250 ms is a pedal's bounce), and a click on a stitch in the model goes there. Says whether
+// the click was tried (there is a model drawn).
+function checkKeysAndClicks(errors) {
+  const press = (key, shiftKey) => document.dispatchEvent(new KeyboardEvent('keydown', { key, shiftKey }));
+  const start = Math.min(N - 1, rowEnd(0) + 3);
+  go(start, true);
+  press('ArrowRight');
+  press(' ');
+  press('ArrowLeft');
+  if (cur !== start + 1) errors.push(`keys: Right, Space, Left from ${start} went to ${cur}`);
+  press('ArrowUp');
+  if (cur !== Math.min(N - 1, rowEnd(start) + 1)) errors.push(`keys: Up went to ${cur}, not the next row`);
+  press('ArrowDown');
+  if (cur !== rowStart(start)) errors.push(`keys: Down went to ${cur}, not the row's start`);
+  if (!view.ok) return false;
+  // The view faces the current stitch; its neighbour along the row is in sight beside it.
+  go(start, true);
+  const target = start + 1 < N && O.row[start + 1] === O.row[start] ? start + 1 : start;
+  const at = view.screenPoint(O.stitch[target]), canvas = view.renderer.domElement;
+  for (const type of ['pointerdown', 'pointerup'])
+    canvas.dispatchEvent(new PointerEvent(type, { clientX: at.x, clientY: at.y, bubbles: true }));
+  if (cur !== target) errors.push(`a click on stitch ${O.stitch[target]} went to ${O.stitch[cur]}`);
+  return true;
 }
 
 // What a knitter waits for: the page's start, and a step (text and colours) with and without
