@@ -82,10 +82,28 @@ struct RowText {
   std::vector<std::uint8_t> marker;
 };
 
-// The written row's operations against its text: per stitch the token that names it. Empty
-// when the text does not read back as these operations (then the whole line is shown).
+// Does the stitch the simulator knitted look like what operation `op` makes? Checked for the
+// plain stitches and decreases that nothing beside them changes (a make-one after one forms one
+// stitch with it; a German short row's turn after one, the end of its row, or a DS before can
+// make it the turn's), so that a row whose operations do not line up with its stitches marks no
+// token.
+bool looks_like(const Fabric& f, std::uint32_t x, std::span<const HandOp> ops, std::size_t i) {
+  HandOp op = ops[i];
+  bool simple = op == HandOp::k || op == HandOp::p || op == HandOp::k2tog || op == HandOp::ssk ||
+                op == HandOp::p2tog || op == HandOp::ssp;
+  bool changed = i + 1 == ops.size() || hand::is_make_one(ops[i + 1]) ||
+                 hand::ends_row(ops[i + 1]) || (i > 0 && ops[i - 1] == HandOp::ds);
+  if (!simple || changed) return true;
+  std::optional<StitchType> face = hand::rs_face(op, f.facing[x]);
+  return !face || *face == f.type[x];
+}
+
+// The written row's operations against its text and the stitches the simulator knitted for it
+// (`count` of them from fabric stitch `first` on): per stitch the token that names it. Empty when
+// the text does not read back as these operations, or they do not line up with the stitches (then
+// the whole line is shown).
 RowText row_text(const hand::HandPattern& p, const hand::PatternRow& row, const std::string& text,
-                 std::uint32_t stitches) {
+                 const Fabric& f, std::uint32_t first, std::uint32_t count) {
   std::size_t colon = text.find(": ");
   if (colon == std::string::npos) return {};
   std::size_t from = colon + 2;
@@ -99,6 +117,8 @@ RowText row_text(const hand::HandPattern& p, const hand::PatternRow& row, const 
   for (std::size_t i = 0; i < ops.size(); ++i) {
     marked = marked || marks(ops[i]);
     if (!makes_a_stitch(ops[i])) continue;
+    std::size_t n = out.spans.size();
+    if (n >= count || !looks_like(f, first + static_cast<std::uint32_t>(n), ops, i)) return {};
     OpSpan s = (*spans)[i];
     s.begin = utf16_offset(text, s.begin + static_cast<std::uint32_t>(from));
     s.end = utf16_offset(text, s.end + static_cast<std::uint32_t>(from));
@@ -106,7 +126,7 @@ RowText row_text(const hand::HandPattern& p, const hand::PatternRow& row, const 
     out.marker.push_back(marked);
     marked = false;
   }
-  if (out.spans.size() != stitches) return {};
+  if (out.spans.size() != count) return {};
   return out;
 }
 
@@ -126,6 +146,7 @@ class Builder {
     SKEIN_ASSERT(r.ok, "a proven pattern replays");
     const Fabric& f = r.fabric;
     add_rows(f, lines_starting_pieces(script));
+    add_row_spans(f);
     std::vector<StitchId> model = model_of(f, c_);
     std::vector<std::uint32_t> fabric_of(c_.knit.size(), kNone);
     for (std::uint32_t x = 0; x < f.size(); ++x) fabric_of[model[x]] = x;
@@ -164,7 +185,6 @@ class Builder {
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> written_at;  // piece, no.
     std::vector<std::uint32_t> sts(f.rows.size(), 0);
     for (std::uint32_t x = 0; x < f.size(); ++x) ++sts[f.row[x]];
-    std::size_t next_written = 0;
     for (std::uint32_t r = 0; r < f.rows.size(); ++r) {
       const Fabric::RowWorked& w = f.rows[r];
       std::size_t line = line_of(w);
@@ -178,11 +198,25 @@ class Builder {
         written_at[{w.piece, w.number}] = r;
       }
       out_.rows.push_back(std::move(row));
-      // The written rows follow the worked ones in order; a cast-on is not a row.
+    }
+  }
+
+  // Per worked row, its tokens: the written rows follow the worked ones in order (a cast-on is
+  // not a row); a row's stitches are consecutive in the fabric.
+  void add_row_spans(const Fabric& f) {
+    std::vector<std::uint32_t> first(f.rows.size(), 0);
+    for (std::uint32_t x = f.size(); x-- > 0;) first[f.row[x]] = x;
+    std::size_t next_written = 0;
+    for (std::uint32_t r = 0; r < f.rows.size(); ++r) {
+      const Fabric::RowWorked& w = f.rows[r];
+      std::uint32_t n = out_.rows[r].stitches;
       bool written = w.number != 0 && !w.join && next_written < written_.rows.size();
-      spans_.push_back(
-          written ? row_text(written_, written_.rows[next_written++], out_.rows.back().text, sts[r])
-                  : RowText{});
+      bool consecutive =
+          n == 0 || (f.row[first[r] + n - 1] == r && f.position[first[r] + n - 1] == n);
+      spans_.push_back(written && consecutive ? row_text(written_, written_.rows[next_written],
+                                                         out_.rows[r].text, f, first[r], n)
+                                              : RowText{});
+      next_written += written ? 1 : 0;
     }
   }
 
@@ -280,7 +314,7 @@ PageData build_page_data(const Compilation& c, const std::string& pattern,
                          const hand::HandPattern& written) {
   VerifyReport proof = hand::verify_pattern(pattern, kPatternName, &c);
   if (!proof.proven)
-    throw Error(
+    throw UnsupportedError(
         fmt::format("{}: the hand pattern is not proven, so no knitting page is written: {}",
                     c.input, proof.summary));
   return Builder(c, pattern, written).run(proof.summary);

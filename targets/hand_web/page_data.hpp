@@ -64,8 +64,8 @@ struct PageData {
 
 // Builds the page's data from a knittable compilation, its hand pattern as `--target hand`
 // writes it (markdown) and the pattern model that text was written from: proves the text with
-// the hand simulator and maps its rows onto the program. Throws Error when the pattern is not
-// proven (nothing is written then).
+// the hand simulator and maps its rows onto the program. Throws UnsupportedError when the pattern
+// is not proven (nothing is written then).
 PageData build_page_data(const Compilation& c, const std::string& pattern,
                          const hand::HandPattern& written);
 
