@@ -55,6 +55,7 @@ body.big #instr { font-size: 1.8em; }
   #panel { border-left: none; border-top: 1px solid var(--line); }
   header { font-size: .9em; flex-wrap: nowrap; }
   #counter { min-width: 0; overflow: hidden; text-overflow: ellipsis; white-space: nowrap; }
+  body.big header h1 { display: none; }
   header h1 { max-width: 30vw; }
   #view { height: 36vh; }
 }
@@ -88,6 +89,7 @@ for (let i = 0; i < N; ++i) indexOf[O.stitch[i]] = i;
 // ---- the page's skeleton -------------------------------------------------------------------
 document.body.insertAdjacentHTML('afterbegin', `
 <header><h1 id="title"></h1><span id="counter" aria-live="polite"></span>
+<button id="yarn" title="Show or hide the yarn (Y)">Yarn</button>
 <button id="big" title="Large print (B)">Aa</button>
 <button id="reset" title="Start again from the first stitch">Reset</button></header>
 <section id="view" aria-label="The model in 3D"><div id="toast"></div></section>
@@ -109,7 +111,7 @@ document.body.insertAdjacentHTML('afterbegin', `
 <details><summary>Whole pattern</summary><pre id="pattern"></pre><p id="proof"></p></details>
 <details><summary>Keys</summary><p>Right, Space, PageDown: next stitch. Left, Backspace,
 PageUp: previous. Up / Down: next / previous row. Shift+Up / Shift+Down: section. B: large
-print. Click a stitch in the model to go there.</p></details>
+print. Y: yarn shown or hidden. Click a stitch in the model to go there.</p></details>
 <pre id="perf"></pre><pre id="selftest"></pre>
 </section>`);
 $('title').textContent = D.title;
@@ -176,7 +178,9 @@ function buildView() {
   const yarnGeometry = new T.BufferGeometry();
   yarnGeometry.setAttribute('position', new T.BufferAttribute(yarnPos, 3));
   yarnGeometry.setAttribute('color', new T.BufferAttribute(yarnCol, 3));
-  scene.add(new T.LineSegments(yarnGeometry, new T.LineBasicMaterial({ vertexColors: T.VertexColors, transparent: true, opacity: 0.45 })));
+  const yarnLines = new T.LineSegments(yarnGeometry, new T.LineBasicMaterial({ vertexColors: T.VertexColors, transparent: true, opacity: 0.45 }));
+  yarnLines.visible = query.get('yarn') !== '0';
+  scene.add(yarnLines);
   // Markers of the current row, and a ring on the current stitch.
   const markerGeometry = new T.BufferGeometry();
   markerGeometry.setAttribute('position', new T.BufferAttribute(new Float32Array(3), 3));
@@ -306,9 +310,10 @@ function buildView() {
     const box = renderer.domElement.getBoundingClientRect();
     return { x: box.left + ((p.x + 1) / 2) * box.width, y: box.top + ((1 - p.y) / 2) * box.height };
   }
+  const toggleYarn = () => { yarnLines.visible = !yarnLines.visible; requestRender(); };
   const distance = (s) => camera.position.distanceTo(new T.Vector3().fromArray(centre, 3 * s));
   view.built = performance.now();
-  Object.assign(view, { ok: true, show, showMarkers, currentInPicture, stateOf, render, renderer, camera, screenPoint, distance });
+  Object.assign(view, { ok: true, show, showMarkers, currentInPicture, stateOf, render, renderer, camera, screenPoint, distance, toggleYarn });
 }
 
 function paint(colour, s, c) {
@@ -383,6 +388,7 @@ function prevSection() {
 
 const actions = {
   next: () => go(cur + 1), prev: () => go(cur - 1), nextRow, prevRow, nextSection, prevSection,
+  yarn: () => { if (view.ok) view.toggleYarn(); },
   big: () => { document.body.classList.toggle('big'); localStorage.setItem('skein-page:big', document.body.classList.contains('big') ? '1' : ''); },
   reset: () => { if (query.has('selftest') || confirm('Start again from the first stitch?')) go(0); },
 };
@@ -394,7 +400,7 @@ let lastKey = '', lastTime = 0;
 document.addEventListener('keydown', (e) => {
   const map = { ArrowRight: 'next', ' ': 'next', PageDown: 'next', ArrowLeft: 'prev',
     Backspace: 'prev', PageUp: 'prev', ArrowUp: e.shiftKey ? 'nextSection' : 'nextRow',
-    ArrowDown: e.shiftKey ? 'prevSection' : 'prevRow', b: 'big', B: 'big' };
+    ArrowDown: e.shiftKey ? 'prevSection' : 'prevRow', b: 'big', B: 'big', y: 'yarn', Y: 'yarn' };
   const act = map[e.key];
   if (!act || e.ctrlKey || e.metaKey || e.altKey) return;
   e.preventDefault();
@@ -511,7 +517,7 @@ function selftestReload() {
 }
 
 // ---- start ---------------------------------------------------------------------------------
-if (localStorage.getItem('skein-page:big')) document.body.classList.add('big');
+if (query.has('big') || localStorage.getItem('skein-page:big')) document.body.classList.add('big');
 try { buildView(); } catch (err) { $('view').insertAdjacentHTML('beforeend', '<p id="no3d">No 3D view: ' + esc(String(err)) + '</p>'); }
 go(restore(), true);
 // The self-tests run before the page's load event, so that `--dump-dom` (which waits for it)
