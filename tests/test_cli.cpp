@@ -225,8 +225,9 @@ TEST_F(Cli, AnOverlongPathIsBadInputSaidInWords) {
 TEST_F(Cli, EachCommandsHelpHasItsOwnExamplesNotTheTargetList) {
   CliRun compile = skein("compile --help");
   EXPECT_EQ(compile.exit_code, 0);
-  EXPECT_NE(compile.out.find("Targets: hand, hand-html, hand-knitspeak, knitout, schedule (skein "
-                             "--help describes each and its --set settings).\n"),
+  EXPECT_NE(compile.out.find(
+                "Targets: hand, hand-html, hand-knitspeak, hand-web, knitout, schedule (skein "
+                "--help describes each and its --set settings).\n"),
             std::string::npos)
       << compile.out;
   EXPECT_NE(compile.out.find("  skein compile samples/hat/hat.obj -t schedule -o -"),
