@@ -311,10 +311,14 @@ class Generator {
         row.push_back(g);
       for (CoarseFace g : row) seen[g.index()] = 1;
       // An open row ending in a short-row triangle can only start at its other end.
-      if (!closed && !side(row.front(), CoarseRole::left).valid())
-        wanted_starts_.push_back(m_.tail(side(row.back(), CoarseRole::right)));
-      if (!closed && !side(row.back(), CoarseRole::right).valid())
-        wanted_starts_.push_back(m_.head(side(row.front(), CoarseRole::left)));
+      CoarseHalfedge left = side(row.front(), CoarseRole::left);
+      CoarseHalfedge right = side(row.back(), CoarseRole::right);
+      if (!closed && !left.valid() && !right.valid())
+        fail(row.front(),
+             "its open row ends in a point at both ends (a short-row triangle or a "
+             "face without a side), so the yarn has no side to start it from");
+      if (!closed && !left.valid()) wanted_starts_.push_back(m_.tail(right));
+      if (!closed && !right.valid()) wanted_starts_.push_back(m_.head(left));
       rows.emplace_back(std::move(row), closed);
     }
     std::vector<PlannedRow> planned;
