@@ -247,6 +247,25 @@ struct LimbRings {
   double end() const { return distances.empty() ? 0 : distances.back(); }
 };
 
+// A mitten's or glove's cuff and palm, knit from the cuff up to `base`, where the thumb (of
+// radius thumb_r, `thumb` long, closed by decreases) parts from the hand: the thumb takes the
+// three vertices round +x, the hand the other seven and the crotch. Returns the hand's ring.
+Ring cuff_palm_and_thumb(CoarseDraft& d, double r, double cuff, double base, double thumb,
+                         double thumb_r) {
+  Ring bottom = d.ring(0, r), below = d.ring(cuff, r);
+  d.band(bottom, below, {0, 0, 0}, kUp, "cuff");
+  Ring palm = d.ring(base, r);
+  d.band(below, palm, {0, 0, 0}, kUp, "palm");
+  auto [thumb_base, hand_base] =
+      fork(d, palm, kSides - 1, 1,
+           {static_cast<float>(r * 0.45), static_cast<float>(base + r * 0.3), 0});
+  LimbRings t;
+  t.straight(0, thumb * 0.7, 2.5, thumb_r, "thumb");
+  t.crown(t.end(), thumb * 0.3, {0.6, 0.3}, thumb_r, "thumb");
+  d.limb(thumb_base, unit({0.5, 0.87f, 0}), t.distances, t.radii, t.groups);
+  return hand_base;
+}
+
 // A mitten knit from the cuff up: at the base of the thumb the tube parts into the hand and
 // the thumb (a split: the sts between them are cast on along the crotch), each closed by
 // decreases to a small ring.
@@ -255,18 +274,7 @@ Shape mitten(const ShapeSize& s, const std::string& name) {
   double r = radius_for(c), cuff = std::min(5.0, l * 0.2), base = std::max(cuff + 1, l * 0.42);
   double thumb_r = r * 0.45, thumb = std::max(2.0, l * 0.22), top = std::max(2.0, l * 0.16);
   CoarseDraft d;
-  Ring bottom = d.ring(0, r), below = d.ring(cuff, r);
-  d.band(bottom, below, {0, 0, 0}, kUp, "cuff");
-  Ring palm = d.ring(base, r);
-  d.band(below, palm, {0, 0, 0}, kUp, "palm");
-  // The thumb takes the three vertices round +x, the hand the other seven.
-  auto [thumb_base, hand_base] =
-      fork(d, palm, kSides - 1, 1,
-           {static_cast<float>(r * 0.45), static_cast<float>(base + r * 0.3), 0});
-  LimbRings t;
-  t.straight(0, thumb * 0.7, 2.5, thumb_r, "thumb");
-  t.crown(t.end(), thumb * 0.3, {0.6, 0.3}, thumb_r, "thumb");
-  d.limb(thumb_base, unit({0.5, 0.87f, 0}), t.distances, t.radii, t.groups);
+  Ring hand_base = cuff_palm_and_thumb(d, r, cuff, base, thumb, thumb_r);
   LimbRings h;
   h.straight(0, std::max(1.0, l - base - top), 4, r, "hand");
   h.crown(h.end(), top, {0.8, 0.55, 0.3}, r, "top");
@@ -289,17 +297,7 @@ Shape glove(const ShapeSize& s, const std::string& name) {
   double knuckles = std::max(base + 2, l * 0.6), finger_r = r * 0.4;
   double finger = std::max(2.0, l - knuckles), thumb = std::max(2.0, l * 0.22);
   CoarseDraft d;
-  Ring bottom = d.ring(0, r), below = d.ring(cuff, r);
-  d.band(bottom, below, {0, 0, 0}, kUp, "cuff");
-  Ring palm = d.ring(base, r);
-  d.band(below, palm, {0, 0, 0}, kUp, "palm");
-  auto [thumb_base, hand_base] =
-      fork(d, palm, kSides - 1, 1,
-           {static_cast<float>(r * 0.45), static_cast<float>(base + r * 0.3), 0});
-  LimbRings t;
-  t.straight(0, thumb * 0.7, 2.5, finger_r * 1.1, "thumb");
-  t.crown(t.end(), thumb * 0.3, {0.6, 0.3}, finger_r * 1.1, "thumb");
-  d.limb(thumb_base, unit({0.5, 0.87f, 0}), t.distances, t.radii, t.groups);
+  Ring hand_base = cuff_palm_and_thumb(d, r, cuff, base, thumb, finger_r * 1.1);
   LimbRings h;
   h.straight(0, knuckles - base, 4, r, "hand");
   Ring rest = d.limb(hand_base, kUp, h.distances, h.radii, h.groups);
