@@ -397,6 +397,11 @@ function renderChart(i) {
   $('chartSt').setAttribute('x', CHART_MARGIN + col * CHART_CELL);
   $('chartSt').setAttribute('y', y);
   box.dataset.col = col;
+  if (box.scrollWidth > box.clientWidth) {  // a wide chart (large print) scrolls to the square
+    const scale = box.firstChild.getBoundingClientRect().width / box.firstChild.viewBox.baseVal.width;
+    const x = (CHART_MARGIN + (col + 0.5) * CHART_CELL) * scale;
+    if (x < box.scrollLeft || x > box.scrollLeft + box.clientWidth) box.scrollLeft = x - box.clientWidth / 2;
+  }
   if (chart.row === row.cr) return;
   chart.row = row.cr;
   box.dataset.row = row.cr;
