@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <functional>
+#include <map>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -112,6 +115,56 @@ TEST_F(HandWebPage, IsOneFileThatFetchesNothing) {
   if (hand_web::find_three_js()) {
     EXPECT_NE(page_->find("three.js r111"), std::string::npos);
   }
+}
+
+// The squares of the printable page's chart (hand-html), its first row (the bottom) first:
+// 'p' where a square has a dot, 'k' where it is blank.
+std::vector<std::string> printed_chart(const std::string& html) {
+  std::map<int, std::map<int, char>, std::greater<>> squares;  // by y (down the page), x
+  const std::regex square(R"re(<rect x="(\d+)" y="(\d+)" width="12" height="12" fill="#fff")re");
+  const std::regex dot(R"re(<circle cx="(\d+)" cy="(\d+)" r="2")re");
+  for (std::sregex_iterator m(html.begin(), html.end(), square), end; m != end; ++m)
+    squares[std::stoi((*m)[2])][std::stoi((*m)[1])] = 'k';
+  for (std::sregex_iterator m(html.begin(), html.end(), dot), end; m != end; ++m)
+    squares.at(std::stoi((*m)[2]) - 6).at(std::stoi((*m)[1]) - 6) = 'p';
+  std::vector<std::string> rows;
+  for (const auto& [y, row] : squares) {
+    rows.emplace_back();
+    for (const auto& [x, ch] : row) rows.back() += ch;
+  }
+  return rows;
+}
+
+// The page's charts' rows, each chart's first row first, the charts one after another.
+std::vector<std::string> page_chart_rows(const std::string& page) {
+  std::vector<std::string> rows;
+  const std::regex cells(R"re("cells":\[([^\]]*)\])re"), row(R"re("([kp]+)")re");
+  for (std::sregex_iterator m(page.begin(), page.end(), cells), end; m != end; ++m) {
+    std::string list = (*m)[1];
+    for (std::sregex_iterator r(list.begin(), list.end(), row); r != end; ++r)
+      rows.push_back((*r)[1]);
+  }
+  return rows;
+}
+
+TEST_F(HandWebPage, EmbedsTheChartThePrintablePageDrawsAndNoneWhereItDrawsNone) {
+  Compilation rib = compile_model(SKEIN_SOURCE_DIR "/samples/rib-swatch/rib-swatch.obj");
+  std::vector<std::string> printed = printed_chart(emit(registry_, "hand-html", rib));
+  ASSERT_FALSE(printed.empty());
+  std::string page = emit(registry_, "hand-web", rib);
+  EXPECT_EQ(page_chart_rows(page), printed);
+  // Each charted row of the page names its chart row; every worked row but the bind-off has one.
+  std::vector<long> chart_rows;
+  for (std::size_t at = 0; (at = page.find("\"cr\":", at)) != std::string::npos; at += 5)
+    if (page.compare(at - 7, 7, "\"c\":-1,") != 0)
+      chart_rows.push_back(std::stol(page.substr(at + 5)));
+  EXPECT_EQ(chart_rows.size(), printed.size());
+  for (std::size_t r = 0; r < chart_rows.size(); ++r)
+    EXPECT_EQ(chart_rows[r], static_cast<long>(r));
+
+  EXPECT_TRUE(printed_chart(emit(registry_, "hand-html", *hat_)).empty());
+  EXPECT_NE(page_->find("\"charts\":[]"), std::string::npos);
+  EXPECT_EQ(page_->find("\"c\":0,"), std::string::npos);
 }
 
 std::string marked(std::string_view text, const std::vector<hand_web::OpSpan>& spans,

@@ -47,24 +47,27 @@ class HandWebBrowser : public ::testing::Test {
     fs::create_directories(dir_);
     Registry registry;
     register_builtin_targets(registry);
-    Compilation hat = compile_model(SKEIN_SOURCE_DIR "/samples/hat/hat.obj");
-    std::ofstream out(dir_ / "hat.html", std::ios::binary);
-    registry.target("hand-web")->emit(hat, {}, out);
+    for (auto [model, page] : {std::pair{"hat/hat.obj", "hat.html"},
+                               std::pair{"rib-swatch/rib-swatch.obj", "rib-swatch.html"}}) {
+      Compilation c = compile_model(std::string(SKEIN_SOURCE_DIR "/samples/") + model);
+      std::ofstream out(dir_ / page, std::ios::binary);
+      registry.target("hand-web")->emit(c, {}, out);
+    }
   }
   void TearDown() override {
     if (!dir_.empty()) fs::remove_all(dir_);
   }
 
-  // Runs headless Chromium (software WebGL) on the hat's page with `query`; returns stdout.
+  // Runs headless Chromium (software WebGL) on `page` (the hat's) with `query`; returns stdout.
   // Each `run` has a profile and output files of its own, so that runs may go at once.
   std::string chromium(const std::string& args, const std::string& query,
-                       const std::string& run = "run") const {
+                       const std::string& run = "run", const std::string& page = "hat.html") const {
     fs::path out = dir_ / (run + ".out"), err = dir_ / (run + ".err");
     std::string command = std::string(kChromium) +
                           " --headless --no-sandbox --use-angle=swiftshader "
                           "--enable-unsafe-swiftshader --hide-scrollbars --user-data-dir=" +
                           (dir_ / (run + ".profile")).string() + " " + args + " 'file://" +
-                          (dir_ / "hat.html").string() + query + "' >" + out.string() + " 2>" +
+                          (dir_ / page).string() + query + "' >" + out.string() + " 2>" +
                           err.string();
     int status = std::system(("timeout 240 " + command).c_str());
     EXPECT_EQ(status, 0) << command << "\n" << read_file(err);
@@ -72,8 +75,9 @@ class HandWebBrowser : public ::testing::Test {
   }
 
   // The self-test's report, from the page's <pre id="selftest">.
-  std::string self_test(const std::string& args, const std::string& query) const {
-    std::string dom = chromium("--dump-dom " + args, query);
+  std::string self_test(const std::string& args, const std::string& query,
+                        const std::string& page = "hat.html") const {
+    std::string dom = chromium("--dump-dom " + args, query, "run", page);
     std::size_t at = dom.find("<pre id=\"selftest\">");
     if (at == std::string::npos) return "no report in:\n" + dom.substr(0, 2000);
     at += 19;
@@ -90,6 +94,14 @@ TEST_F(HandWebBrowser, StepsThroughEveryStitchWithTextCountsAndModelAgreeing) {
       report.rfind("selftest: ok 2048 stitches, 39 rows checked, 3D checked, click checked", 0), 0u)
       << report;
   std::cout << report << "\n";  // the timings
+}
+
+TEST_F(HandWebBrowser, ShowsTheChartOfAChartedPieceWithTheCurrentRowAndStitchMarked) {
+  // The rib swatch's piece has a chart: at each stitch of each of its rows but the bind-off the
+  // page shows it, that row and that stitch's square marked (the hat's page, above, none).
+  std::string report = self_test("--window-size=390,844", "?selftest=1", "rib-swatch.html");
+  EXPECT_EQ(report.rfind("selftest: ok 360 stitches", 0), 0u) << report;
+  EXPECT_NE(report.find(" chart rows checked"), std::string::npos) << report;
 }
 
 TEST_F(HandWebBrowser, ProgressSurvivesAReload) {

@@ -8,6 +8,7 @@
 #include <ostream>
 
 #include "driver/pipeline.hpp"
+#include "hand/chart.hpp"
 #include "hand/pattern_writers.hpp"
 
 namespace skein::hand {
@@ -15,8 +16,6 @@ namespace {
 
 constexpr double kSchematicPx = 280;            // the longer side of a schematic
 constexpr std::uint32_t kSchematicCells = 140;  // ... in cells of the model's picture
-constexpr std::uint32_t kChartWidest = 60;
-constexpr std::uint32_t kChartRows = 80;
 constexpr int kCellPx = 12;
 
 constexpr const char* kStyle = R"(<style>
@@ -128,30 +127,11 @@ class Schematic {
   double cell_px_;
 };
 
-// The RS view of a row's stitches, left to right, when every one is a knit or a purl.
-std::optional<std::vector<StitchType>> plain_faces(const HandPattern& p, const PatternRow& row) {
-  std::vector<StitchType> faces;
-  for (HandOp op : p.ops_of(row)) {
-    if (!is_plain(op)) return std::nullopt;
-    faces.push_back(*rs_face(op, row.side));
-  }
-  if (row.side == Side::rs) std::reverse(faces.begin(), faces.end());  // worked right to left
-  return faces;
-}
-
 // A chart of knits and purls for a piece without shaping: clearer than words for ribs and
 // textures. Read RS rows (and every round) from right to left, WS rows from left to right.
 std::string chart(const HandPattern& p, const PatternSection& s) {
-  std::vector<std::vector<StitchType>> rows;
-  bool purls = false, knits = false;
-  for (std::uint32_t r = s.first_row; r < s.end_row; ++r) {
-    if (p.rows[r].bind_off) continue;
-    auto faces = plain_faces(p, p.rows[r]);
-    if (!faces || faces->size() != s.cast_on) return "";
-    for (StitchType t : *faces) (t == StitchType::p ? purls : knits) = true;
-    rows.push_back(std::move(*faces));
-  }
-  if (!purls || !knits || s.cast_on > kChartWidest || rows.size() > kChartRows) return "";
+  std::vector<ChartRow> rows = chart_rows(p, s);
+  if (rows.empty()) return "";
   int w = static_cast<int>(s.cast_on) * kCellPx + 60,
       h = static_cast<int>(rows.size()) * kCellPx + 30;
   std::string out = fmt::format(
@@ -160,14 +140,14 @@ std::string chart(const HandPattern& p, const PatternSection& s) {
       w, h, w, h);
   for (std::size_t r = 0; r < rows.size(); ++r) {
     int y = h - 20 - static_cast<int>(r + 1) * kCellPx;
-    const PatternRow& row = p.rows[s.first_row + r];
-    for (std::size_t c = 0; c < rows[r].size(); ++c) {
+    const PatternRow& row = p.rows[rows[r].row];
+    for (std::size_t c = 0; c < rows[r].cells.size(); ++c) {
       int x = 30 + static_cast<int>(c) * kCellPx;
       out += fmt::format(
           "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"#fff\" "
           "stroke=\"#888\" stroke-width=\"0.6\"/>",
           x, y, kCellPx, kCellPx);
-      if (rows[r][c] == StitchType::p)
+      if (rows[r].cells[c] == StitchType::p)
         out += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"2\" fill=\"#222\"/>", x + kCellPx / 2,
                            y + kCellPx / 2);
     }

@@ -6,9 +6,11 @@
 #include <map>
 #include <sstream>
 #include <string_view>
+#include <tuple>
 
 #include "common/error.hpp"
 #include "driver/pipeline.hpp"
+#include "hand/chart.hpp"
 #include "hand/hand_target.hpp"
 #include "hand/needle_sim.hpp"
 #include "hand/pattern_model.hpp"
@@ -147,6 +149,7 @@ class Builder {
     const Fabric& f = r.fabric;
     add_rows(f, lines_starting_pieces(script));
     add_row_spans(f);
+    add_charts();
     std::vector<StitchId> model = model_of(f, c_);
     std::vector<std::uint32_t> fabric_of(c_.knit.size(), kNone);
     for (std::uint32_t x = 0; x < f.size(); ++x) fabric_of[model[x]] = x;
@@ -216,7 +219,34 @@ class Builder {
       spans_.push_back(written && consecutive ? row_text(written_, written_.rows[next_written],
                                                          out_.rows[r].text, f, first[r], n)
                                               : RowText{});
+      written_row_.push_back(written ? static_cast<std::uint32_t>(next_written) : kNone);
       next_written += written ? 1 : 0;
+    }
+  }
+
+  // The charts of the pieces that have one, and per worked row its row of its piece's chart.
+  void add_charts() {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> chart_at(written_.rows.size(), {kNone, 0});
+    for (const hand::PatternSection& s : written_.sections) {
+      std::vector<hand::ChartRow> rows = hand::chart_rows(written_, s);
+      if (rows.empty()) continue;
+      auto chart = static_cast<std::uint32_t>(out_.charts.size());
+      PageChart& c = out_.charts.emplace_back();
+      for (const hand::ChartRow& row : rows) {
+        chart_at[row.row] = {chart, static_cast<std::uint32_t>(c.cells.size())};
+        std::string& squares = c.cells.emplace_back();
+        for (StitchType t : row.cells) squares += t == StitchType::p ? 'p' : 'k';
+        c.number.push_back(written_.rows[row.row].number);
+        c.leftward.push_back(written_.rows[row.row].side == hand::Side::rs);
+      }
+    }
+    // A worked row whose stitches are not its chart row's squares (none seen) shows no chart:
+    // its current square would be a guess.
+    for (std::size_t r = 0; r < out_.rows.size(); ++r) {
+      if (written_row_[r] == kNone) continue;
+      auto [chart, row] = chart_at[written_row_[r]];
+      if (chart != kNone && out_.charts[chart].cells[row].size() == out_.rows[r].stitches)
+        std::tie(out_.rows[r].chart, out_.rows[r].chart_row) = std::tie(chart, row);
     }
   }
 
@@ -304,7 +334,8 @@ class Builder {
   const Compilation& c_;
   const hand::HandPattern& written_;
   std::vector<std::string> lines_;
-  std::vector<RowText> spans_;  // per page row
+  std::vector<RowText> spans_;              // per page row
+  std::vector<std::uint32_t> written_row_;  // per page row: into written_.rows (kNone: none)
   PageData out_;
 };
 

@@ -30,6 +30,17 @@ struct PageRow {
   std::string said_by;  // the line that said to work it, when not `text` ("Rep Rnds 25–26 ...")
   std::uint32_t stitches = 0;
   std::uint32_t piece = 0;  // 1-based
+  // The chart of its piece it is a row of (into PageData::charts; kNone: none) and which row.
+  std::uint32_t chart = kNone, chart_row = 0;
+};
+
+// A piece's knit/purl chart, as the printable page draws it (hand/chart.hpp).
+struct PageChart {
+  // Per chart row, its first row first: per square, left to right as seen from the RS, 'k' (a
+  // blank square: k on RS rows, p on WS rows) or 'p' (a dot).
+  std::vector<std::string> cells;
+  std::vector<std::uint32_t> number;   // per chart row: its number in the piece
+  std::vector<std::uint8_t> leftward;  // per chart row: worked from its last square to its first
 };
 
 // Per stitch in program order.
@@ -53,6 +64,7 @@ struct PageData {
   std::string proof;    // the hand simulator's summary
   std::string note;     // where the order is not the program's (the lowering stopped early)
   std::vector<PageRow> rows;
+  std::vector<PageChart> charts;
   std::vector<PageStitch> order;  // program order
   // Per model stitch its cell's corners (4 × xyz, counter-clockwise from the bottom left, the
   // right side facing); empty when the model has no positions.

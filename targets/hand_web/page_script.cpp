@@ -34,6 +34,16 @@ button:focus-visible { outline: 3px solid var(--accent); }
 #instr mark { background: var(--current); color: #fff; border-radius: .2em; padding: 0 .15em; }
 #instr mark.line { background: transparent; color: inherit; box-shadow: inset 0 -.25em 0 var(--current); }
 #said { font-size: .95em; opacity: .8; }
+#chart { margin: 0; }
+#chart figcaption { font-size: .85em; opacity: .8; }
+#chartScroll { overflow: auto; max-height: 40vh; }
+#chartScroll svg { display: block; width: min(100%, calc(var(--cols) * 18px + 60px)); height: auto; }
+body.big #chartScroll svg { width: max(100%, calc(var(--cols) * 27px + 90px)); }
+#chartScroll .sq { fill: #fff; stroke: #888; stroke-width: .6; }
+#chartScroll .dot { fill: #222; }
+#chartScroll text { font-size: 8px; fill: var(--ink); }
+#chartRow { fill: rgba(21, 101, 192, .22); stroke: var(--accent); stroke-width: 1; }
+#chartSt { fill: none; stroke: var(--current); stroke-width: 2.2; }
 #counts { font-variant-numeric: tabular-nums; }
 #next { font-size: 1.6em; min-height: 3.2em; width: 100%; background: var(--accent); color: #fff;
   border: none; margin-top: auto; }
@@ -95,6 +105,9 @@ document.body.insertAdjacentHTML('afterbegin', `
 <section id="view" aria-label="The model in 3D"><div id="toast"></div></section>
 <section id="panel">
 <div id="heading"></div><div id="where"></div><p id="instr"></p><div id="said"></div>
+<figure id="chart" hidden><figcaption>This piece's chart, as seen from the RS: a blank square
+is k on RS rows and p on WS rows, a dot p on RS rows and k on WS rows; RS rows are read from
+right to left, WS rows from left to right.</figcaption><div id="chartScroll"></div></figure>
 <div id="counts"></div>
 <div id="legend"><span style="background:var(--done)"></span>Done<span
  style="background:var(--current)"></span>Now<span style="background:var(--todo)"></span>To do
@@ -335,6 +348,7 @@ function render(i) {
     : esc(row.t.slice(0, b)) + '<mark>' + esc(row.t.slice(b, e)) + '</mark>' + esc(row.t.slice(e));
   $('instr').dataset.stitch = O.stitch[i];
   $('said').textContent = row.s ? 'Worked as: ' + row.s : '';
+  renderChart(i);
   $('counts').textContent = `Stitch ${i + 1} of ${N} \u00b7 ${Math.round((100 * i) / N)}% done` +
     (O.mark[i] ? ' \u00b7 marker before this stitch' : '');
   $('counter').textContent = `${O.row[i]} of ${D.rows.length} rows done \u00b7 st ${i + 1} / ${N}`;
@@ -346,6 +360,55 @@ function render(i) {
       for (let k = rowStart(i), end = rowEnd(i); k <= end; ++k) if (O.mark[k]) list.push(O.stitch[k]);
       view.showMarkers(list);
     }
+  }
+}
+
+// ---- the row's chart (pieces of knits and purls alone, as the printable page charts) -------
+const CHART_CELL = 10, CHART_MARGIN = 26;
+const chart = { shown: -1, row: -1 };
+const chartHeight = (c) => c.cells.length * CHART_CELL + 4;
+const chartY = (c, r) => chartHeight(c) - 2 - (r + 1) * CHART_CELL;  // its first row at the bottom
+function chartSvg(c) {
+  const cols = c.cells[0].length, C = CHART_CELL, M = CHART_MARGIN;
+  const w = cols * C + 2 * M, h = chartHeight(c);
+  const out = [`<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 ${w} ${h}" style="--cols:${cols}" role="img">`];
+  c.cells.forEach((squares, r) => {
+    const y = chartY(c, r);
+    for (let x = 0; x < cols; ++x) {
+      out.push(`<rect class="sq" x="${M + x * C}" y="${y}" width="${C}" height="${C}"/>`);
+      if (squares[x] === 'p') out.push(`<circle class="dot" cx="${M + x * C + C / 2}" cy="${y + C / 2}" r="2"/>`);
+    }
+    const right = c.left[r];  // the number where the row starts
+    out.push(`<text x="${right ? w - M + 3 : M - 3}" y="${y + C - 2}" text-anchor="${right ? 'start' : 'end'}">${c.num[r]}</text>`);
+  });
+  out.push(`<rect id="chartRow" x="${M}" width="${cols * C}" height="${C}"/><rect id="chartSt" width="${C}" height="${C}"/></svg>`);
+  return out.join('');
+}
+// The current row's chart with that row and the current stitch's square marked; none where
+// its piece has no chart.
+function renderChart(i) {
+  const row = D.rows[O.row[i]], box = $('chartScroll');
+  $('chart').hidden = row.c < 0;
+  if (row.c < 0) return;
+  const c = D.charts[row.c];
+  if (chart.shown !== row.c) { box.innerHTML = chartSvg(c); chart.shown = row.c; chart.row = -1; }
+  const cols = c.cells[row.cr].length, col = c.left[row.cr] ? cols - O.pos[i] : O.pos[i] - 1;
+  const y = chartY(c, row.cr);
+  $('chartSt').setAttribute('x', CHART_MARGIN + col * CHART_CELL);
+  $('chartSt').setAttribute('y', y);
+  box.dataset.col = col;
+  if (box.scrollWidth > box.clientWidth) {  // a wide chart (large print) scrolls to the square
+    const scale = box.firstChild.getBoundingClientRect().width / box.firstChild.viewBox.baseVal.width;
+    const x = (CHART_MARGIN + (col + 0.5) * CHART_CELL) * scale;
+    if (x < box.scrollLeft || x > box.scrollLeft + box.clientWidth) box.scrollLeft = x - box.clientWidth / 2;
+  }
+  if (chart.row === row.cr) return;
+  chart.row = row.cr;
+  box.dataset.row = row.cr;
+  $('chartRow').setAttribute('y', y);
+  if (box.scrollHeight > box.clientHeight) {  // a tall chart scrolls: its current row in the middle
+    const svg = box.firstChild, scale = svg.getBoundingClientRect().height / chartHeight(c);
+    box.scrollTop = (y + CHART_CELL / 2) * scale - box.clientHeight / 2;
   }
 }
 
@@ -415,7 +478,7 @@ function report(text) { $('selftest').textContent = text; document.title = text.
 
 function selftestSteps() {
   const t0 = performance.now(), errors = [], seen = new Uint8Array(D.stitches);
-  let rows = 0, inRow = 0;
+  let rows = 0, inRow = 0, charted = 0;
   for (let i = 0; i < N && errors.length < 10; ++i) {
     go(i, true);
     const s = O.stitch[i], row = D.rows[O.row[i]];
@@ -430,9 +493,11 @@ function selftestSteps() {
       if (i > 0 && view.stateOf(O.stitch[i - 1]) !== 'done') errors.push(`step ${i}: the stitch before is not done in 3D`);
       if (i + 1 < N && view.stateOf(O.stitch[i + 1]) !== 'todo') errors.push(`step ${i}: the stitch after is not to do in 3D`);
     }
+    checkChart(i, errors);
     ++inRow;
     if (i + 1 === N || O.row[i + 1] !== O.row[i]) {  // the row's end: the counts agree
       ++rows;
+      charted += row.c >= 0 ? 1 : 0;
       if (view.ok) {
         const pic = view.currentInPicture();
         if (pic.count !== 1 || pic.stitch !== s) errors.push(`row ${row.l}: the picture shows ${pic.count} current stitch(es)`);
@@ -450,8 +515,31 @@ function selftestSteps() {
   if (wide > window.innerWidth) errors.push(`the page is ${wide} px wide in a ${window.innerWidth} px window`);
   report((errors.length ? 'selftest: FAIL\n' + errors.join('\n')
     : `selftest: ok ${N} stitches, ${rows} rows checked, 3D ${view.ok ? 'checked' : 'absent'}` +
-      `${clicked ? ', click checked' : ''}, window ${window.innerWidth}x${window.innerHeight}`) +
+      `${clicked ? ', click checked' : ''}${charted ? `, ${charted} chart rows checked` : ''}, window ${window.innerWidth}x${window.innerHeight}`) +
     '\n' + timings(0, stepMs));
+}
+
+// A row of a charted piece shows its chart, the row marked where the chart prints that row's
+// number and the current stitch's square in it, counted from where the row starts; any other
+// row shows none.
+function checkChart(i, errors) {
+  const row = D.rows[O.row[i]];
+  if (row.c < 0) {
+    if (!$('chart').hidden) errors.push(`step ${i}: ${row.l} shows a chart; its piece has none`);
+    return;
+  }
+  const c = D.charts[row.c], r = row.cr, squares = c.cells[r];
+  if ($('chart').hidden) return errors.push(`step ${i}: ${row.l} shows no chart`);
+  if (!new RegExp(`^(Row|Rnd) ${c.num[r]}\\b`).test(row.l)) errors.push(`step ${i}: chart row ${c.num[r]} for ${row.l}`);
+  if (squares.length !== row.n) errors.push(`${row.l}: ${row.n} sts, ${squares.length} squares in its chart row`);
+  const marked = $('chartRow'), here = $('chartSt');
+  const number = [...$('chartScroll').querySelectorAll('text')].find((t) => t.textContent === String(c.num[r]));
+  if (!number || Number(number.getAttribute('y')) !== Number(marked.getAttribute('y')) + CHART_CELL - 2)
+    errors.push(`step ${i}: the chart marks another row than ${c.num[r]}`);
+  const col = (Number(here.getAttribute('x')) - CHART_MARGIN) / CHART_CELL;
+  const want = c.left[r] ? squares.length - O.pos[i] : O.pos[i] - 1;
+  if (here.getAttribute('y') !== marked.getAttribute('y') || col !== want)
+    errors.push(`step ${i}: the chart marks square ${col} of its row, not ${want}`);
 }
 
 // Keys step as the help says (a different key each time: a second press of one key within

@@ -1,6 +1,7 @@
 #include "hand_web/page_writer.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cstdlib>
 #include <cstring>
@@ -91,6 +92,14 @@ std::int64_t or_minus_one(std::uint32_t v) {
   return v == kNone ? -1 : static_cast<std::int64_t>(v);
 }
 
+std::string chart_json(const PageChart& c) {
+  std::string out = "{\"cells\":[";
+  for (std::size_t r = 0; r < c.cells.size(); ++r)
+    out += fmt::format("{}\"{}\"", r ? "," : "", c.cells[r]);
+  return out + fmt::format("],\"num\":[{}],\"left\":[{}]}}", fmt::join(c.number, ","),
+                           fmt::join(c.leftward, ","));
+}
+
 std::string page_json(const PageData& d) {
   std::string out =
       fmt::format("{{\"title\":{},\"source\":{},\"proof\":{},\"note\":{},\"key\":{},\"rows\":[",
@@ -98,9 +107,15 @@ std::string page_json(const PageData& d) {
                   json_string(d.note), json_string(d.key));
   for (std::size_t r = 0; r < d.rows.size(); ++r) {
     const PageRow& row = d.rows[r];
-    out += fmt::format("{}{{\"h\":{},\"l\":{},\"t\":{},\"s\":{},\"n\":{},\"p\":{}}}", r ? "," : "",
-                       json_string(row.heading), json_string(row.label), json_string(row.text),
-                       json_string(row.said_by), row.stitches, row.piece);
+    out += fmt::format(
+        "{}{{\"h\":{},\"l\":{},\"t\":{},\"s\":{},\"n\":{},\"p\":{},\"c\":{},\"cr\":{}}}",
+        r ? "," : "", json_string(row.heading), json_string(row.label), json_string(row.text),
+        json_string(row.said_by), row.stitches, row.piece, or_minus_one(row.chart), row.chart_row);
+  }
+  out += "],\"charts\":[";
+  for (std::size_t k = 0; k < d.charts.size(); ++k) {
+    if (k) out += ',';
+    out += chart_json(d.charts[k]);
   }
   const auto& o = d.order;
   out += "],\"order\":{";
