@@ -248,11 +248,12 @@ int run_render(const Request& r) {
 Compilation yarn_input(const Registry& registry, const Request& r,
                        std::vector<std::array<double, 3>>& positions) {
   std::string extension = std::filesystem::path(r.input).extension().string();
-  if (extension == ".obj" || extension == ".yaml" || extension == ".yml" || extension == ".st") {
-    Compilation c = compile_model(r.input, progress_printer(r.verbose));
-    if (!c.mesh) positions = read_stitch_positions(r.input);
-    return c;
+  if (extension == ".st") {  // read once, with the stitches' positions
+    KnitGraph graph = parse_autoknit_st(read_file(r.input), r.input, &positions);
+    return compile_knit_graph(std::move(graph), r.input, progress_printer(r.verbose));
   }
+  if (extension == ".obj" || extension == ".yaml" || extension == ".yml")
+    return compile_model(r.input, progress_printer(r.verbose));
   const Target& target = target_of(registry, r.input, r.target);
   std::optional<std::string> fabric =
       simulator_for(registry, target).fabric_stitch_graph(read_file(r.input), r.input, r.options);

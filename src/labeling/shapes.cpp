@@ -419,8 +419,8 @@ Shape bag(const ShapeSize& s, const std::string& name) {
   }
   return {d.finish(name + ".obj"),
           project_text(name, fmt::format("a bag {} cm round, {} cm high, with two handles", c, h),
-                       fmt::format("start:                 # the bottom edge\n  - vertex: 1\n"
-                                   "patterns: {{rim: k2p2}}\n"))};
+                       "start:                 # the bottom edge\n  - vertex: 1\n"
+                       "patterns: {rim: k2p2}\n")};
 }
 
 // Shorts or trousers: a body tube from the waist and two legs parting at the crotch (the sts
