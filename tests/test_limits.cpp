@@ -107,7 +107,7 @@ TEST(LimitsHand, WorkWithinTheNumberLimitStopsAtTheWorkLimit) {
   hand::Replay r = hand::replay(hand::read_pattern(text, "deep.md"), "deep.md");
   EXPECT_FALSE(r.ok);
   EXPECT_EQ(r.failure,
-            "deep.md:5: Rnd 1: the pattern works more than 10000000 sts and "
+            "deep.md:5: Rnd 1: the pattern works more than 4000000 sts and "
             "instructions, skein's limit (docs/formats.md, \"Limits\")");
 }
 

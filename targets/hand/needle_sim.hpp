@@ -65,9 +65,9 @@ struct Replay {
 };
 
 // The simulator stops a pattern that works more sts and instructions than this (its failure
-// names the line): 10 times the largest garment skein is measured on (1M sts), and what keeps
-// the fabric it builds under a gigabyte.
-inline constexpr std::uint64_t kMaxPatternWork = 10'000'000;
+// names the line): twice what a pattern of the largest stitch mesh skein generates works (2M
+// sts), and what keeps a hostile pattern under a second and the fabric it builds under 200 MB.
+inline constexpr std::uint64_t kMaxPatternWork = 4'000'000;
 
 Replay replay(const Script& script, const std::string& file);
 
