@@ -149,6 +149,15 @@ Program lower_to_program(const KnitGraph& graph, const YarnPieces& yarns, const 
 // Throws InternalError naming the step on the first broken rule.
 void verify_program(const KnitGraph& graph, const Program& program);
 
+// The program that knits the model's mirror image, left and right swapped: every course goes
+// the other way, each stitch takes and makes its loops in the other slot order, runs lie the
+// other way round; yarn order is kept. A hand knitter works rnds right to left: a model whose
+// rnds mostly run left to right is knitted as its mirror image (decreases swap lean).
+Program mirror_image(const KnitGraph& graph, const Program& program);
+
+// The stitches of the rnds (closed courses) that go `direction`.
+std::uint64_t stitches_in_rounds_going(const Program& program, CourseDirection direction);
+
 // One step a line, for debugging and golden tests ("12 course R2 rnd left to right ...").
 std::string program_text(const KnitGraph& graph, const Program& program);
 

@@ -75,7 +75,7 @@ HandPattern build_pattern(const Compilation& c, const TargetOptions& options) {
     return build_hand_pattern(c, turn_method_of(options), rounds_of(options));
   check_stitch_types(c.knit);
   try {
-    return build_pattern_from_program(c, turn_method_of(options));
+    return build_pattern_from_program(c, turn_method_of(options), rounds_of(options));
   } catch (const UnsupportedError&) {
     if (builder == Builder::program) throw;
   }

@@ -1,7 +1,8 @@
 // Where each live loop waits while a hand pattern is written from the live-loop program: on a
 // piece's needle, on a holder, on the spare needle a piece was left on, or in the chain of a
-// provisional cast-on. Holders, spare needles and chains keep their loops in the order the
-// knitter put them there, which is the order the pattern counts them in.
+// provisional cast-on, or along the edge of the piece whose edge st made it (to be picked up).
+// Holders, spare needles and chains keep their loops in the order the knitter put them there,
+// which is the order the pattern counts them in.
 #pragma once
 
 #include <cstdint>
@@ -11,12 +12,13 @@
 
 namespace skein::hand {
 
-enum class Place : std::uint8_t { none, needle, holder, spare, chain };
+enum class Place : std::uint8_t { none, needle, holder, spare, chain, edge };
 
 struct LoopAt {
   Place place = Place::none;
   std::uint32_t index = 0;  // needle: the piece's needle; holder: its number (1-based);
-                            // spare, chain: the section left there
+                            // spare, chain: the section left there; edge: the
+                            // section whose row made it
   bool operator==(const LoopAt&) const = default;
 };
 

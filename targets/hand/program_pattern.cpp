@@ -49,14 +49,16 @@ struct Needle {
 
 class ProgramPatternBuilder {
  public:
-  ProgramPatternBuilder(const Compilation& c, TurnMethod turns)
+  ProgramPatternBuilder(const Compilation& c, const Program& program, TurnMethod turns,
+                        bool mirror)
       : g_(c.knit),
-        p_(c.program),
+        p_(program),
         places_(c.knit.loops.size()),
         needle_of_yarn_(c.yarns.size(), kNone),
         yarn_of_(c.yarns.piece_of) {
     out_.source = c.input;
     out_.turns = turns;
+    out_.mirror = mirror;
     for (const Event& e : c.schedule.events)
       if (e.kind == EventKind::marker && e.marker != MarkerKind::beginning_of_round)
         marked_[e.stitch] = e.marker;
@@ -244,8 +246,11 @@ class ProgramPatternBuilder {
     // Joined in the rnd, the first rnd begins with the first st cast on.
     std::vector<std::uint32_t> chain;
     for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i)
-      for (const PlacedLoop& m : made_by(i))
+      for (const PlacedLoop& m : made_by(i)) {
+        if (m.place == LoopPlace::along_edge)
+          not_yet(s, "casts on a st that makes a loop along an edge, to be picked up");
         (m.place == LoopPlace::in_run ? n.ring : chain).push_back(m.loop);
+      }
     if (!n.in_round) {  // a line, left to right seen from the RS; the yarn at its end
       if (s.direction == CourseDirection::right_to_left) std::reverse(n.ring.begin(), n.ring.end());
       n.gap = s.direction == CourseDirection::right_to_left ? 0 : count;
@@ -298,7 +303,6 @@ class ProgramPatternBuilder {
 
   // The needle the course works: the yarn's own, once the loops it meets are on it in order.
   Needle& needle_for(const Step& s, const std::vector<std::uint32_t>& met) {
-    if (s.picked_up > 0) not_yet(s, "picks up loops along an edge");
     std::uint32_t own = needle_of_yarn_[s.yarn];
     if (own != kNone && current_ != own) not_yet(s, "works with a yarn set aside or ended");
     bool on_needle = own != kNone && std::all_of(met.begin(), met.end(), [&](std::uint32_t l) {
@@ -451,6 +455,7 @@ class ProgramPatternBuilder {
     std::vector<std::uint32_t> host;
     for (std::uint32_t l : met)
       if (places_.at(l) == source) host.push_back(l);
+    if (source.place == Place::edge) return start_from_pick_up(s, host, round);
     std::optional<Lie> lie = places_.lie(source, host);
     if (source.place == Place::none || source.place == Place::needle || !lie)
       not_yet(s, "begins on sts that wait nowhere the pattern can name, or out of their order");
@@ -500,6 +505,7 @@ class ProgramPatternBuilder {
 
   void place(const Step& s, LoopAt source, std::span<const std::uint32_t> block,
              std::uint32_t after) {
+    if (source.place == Place::edge) return pick_up_into_rnd(s, source, block, after);
     std::optional<Lie> lie = places_.lie(source, block);
     if (!lie && source.place == Place::spare) {
       source = hold_part_of_spare_needle(source.index, block);
@@ -519,6 +525,85 @@ class ProgramPatternBuilder {
     p.holder = holder ? source.index : 0;
     p.start = lie->at;
     section().placements.push_back(p);
+  }
+
+  // --- picking up along an edge ----------------------------------------------------------------
+  // A loop made across an expanding perpendicular edge (paper §3.2) waits along the edge of
+  // its maker's piece; a knitter picks it up, one in each row, from the edge st of that row.
+
+  // The first and last st a row worked, and the side facing: which is its edge st.
+  struct RowEnds {
+    StitchId first = kNoStitch, last = kNoStitch;
+    Side side = Side::rs;
+  };
+
+  void note_row_end(StitchId st, const PatternRow& r) {
+    auto row = static_cast<std::uint32_t>(out_.rows.size());  // the row being written
+    if (row_ends_.size() <= row) row_ends_.resize(row + 1);
+    RowEnds& ends = row_ends_[row];
+    if (ends.first == kNoStitch) ends.first = st;
+    ends.last = st;
+    ends.side = r.side;
+    row_of_[st] = row;
+    number_of_[st] = r.number;
+  }
+
+  // The pick-up that gives `loops` in their order: one in each row, rows numbered one after
+  // the other, each from the st at the same edge of its row; none where they are not.
+  std::optional<PatternSection::PickUp> pick_up_of(LoopAt source,
+                                                   std::span<const std::uint32_t> loops) const {
+    PatternSection::PickUp p;
+    p.section = source.index;
+    for (std::size_t i = 0; i < loops.size(); ++i) {
+      StitchId maker = g_.loops[loops[i]].maker;
+      if (places_.at(loops[i]) != source || maker == kNoStitch || row_of_[maker] == kNone)
+        return std::nullopt;
+      auto made = made_by(p_.worked_at[maker]);
+      bool right = made.size() > 1 && made.back().loop == loops[i];
+      const RowEnds& ends = row_ends_[row_of_[maker]];
+      if (maker != ((ends.side == Side::rs) == right ? ends.first : ends.last)) return std::nullopt;
+      std::uint32_t row = number_of_[maker];
+      if (i == 0) {
+        p.right = right;
+        p.from_row = p.to_row = row;
+        continue;
+      }
+      bool up = row == p.to_row + 1 && (i == 1 || p.from_row < p.to_row);
+      bool down = row + 1 == p.to_row && (i == 1 || p.from_row > p.to_row);
+      if (right != p.right || !(up || down)) return std::nullopt;
+      p.to_row = row;
+    }
+    return p;
+  }
+
+  // A piece that starts on loops picked up along another's edge: the knitter picks them up,
+  // and its first course works them, the last picked up first.
+  std::vector<std::uint32_t> start_from_pick_up(const Step& s,
+                                                const std::vector<std::uint32_t>& host,
+                                                bool round) {
+    std::vector<std::uint32_t> picked(host.rbegin(), host.rend());
+    std::optional<PatternSection::PickUp> p = pick_up_of(places_.at(host.front()), picked);
+    if (!p) not_yet(s, "begins on loops along an edge that are not one in each row of an edge");
+    start_section(s.yarn, kNone);
+    section().in_round = round;
+    section().picks_up = *p;
+    section().cast_on = hand_sts(host);
+    return host;
+  }
+
+  // Loops picked up along an edge go into the rnd where it meets them, in the order picked up.
+  void pick_up_into_rnd(const Step& s, LoopAt source, std::span<const std::uint32_t> block,
+                        std::uint32_t after) {
+    std::optional<PatternSection::PickUp> p = pick_up_of(source, block);
+    if (!p || !section().in_round)
+      not_yet(s, fmt::format("picks up {} loops along an edge into a row, or not one in each "
+                             "row of an edge",
+                             block.size()));
+    PatternSection::Placement placed{p->section, static_cast<std::uint32_t>(block.size()), after,
+                                     false};
+    placed.before_row = static_cast<std::uint32_t>(out_.rows.size());
+    placed.edge = p;
+    section().placements.push_back(placed);
   }
 
   // --- courses ------------------------------------------------------------------------------
@@ -557,9 +642,10 @@ class ProgramPatternBuilder {
   std::uint32_t work(const Step& s, std::uint32_t i, Needle& n, PatternRow& r) {
     StitchId st = p_.stitches[i].stitch;
     note_region_mark(st, r);
+    note_row_end(st, r);
     if (g_.type[st] == T::sco) return cast_on_in_row(i, n);
     if (g_.type[st] == T::tnbo) return bind_off_with_held_st(i, n);
-    append_stitch_ops(g_, st, r.side, false, out_.turns, out_.ops, r.wraps_again);
+    append_stitch_ops(g_, st, r.side, out_.mirror, out_.turns, out_.ops, r.wraps_again);
     return move_loops(st, n, s);
   }
 
@@ -625,8 +711,10 @@ class ProgramPatternBuilder {
     StitchId last = p_.stitches[s.stitches.end - 1].stitch;
     for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i) {
       for (std::uint32_t l : all_taken_by(i)) places_.take(l);
-      for (const PlacedLoop& m : made_by(i))
+      for (const PlacedLoop& m : made_by(i)) {
         if (m.place == LoopPlace::in_run) places_.set({&m.loop, 1}, {Place::needle, current_});
+        if (m.place == LoopPlace::along_edge) places_.set({&m.loop, 1}, {Place::edge, n.section});
+      }
     }
     n.turn_loops = worked_by_hand(g_, last) == T::sr4 ? made_by(s.stitches.end - 1).size() : 0;
     n.last = s.direction;
@@ -821,8 +909,8 @@ class ProgramPatternBuilder {
     ++n.behind;
   }
 
-  // The stitch takes and makes live loops of the run only (no cast-on, no three-needle
-  // bind-off, no loop left along an edge or on the other side of a split).
+  // The stitch takes and makes live loops of the run only (no cast-on in a course); a loop made
+  // along an edge waits there to be picked up.
   void check_worked_here(const Step& s, std::uint32_t worked) const {
     StitchId st = p_.stitches[worked].stitch;
     T type = g_.type[st];
@@ -830,10 +918,6 @@ class ProgramPatternBuilder {
       not_yet(s, fmt::format("works {}, a {} in a course, which the program's pattern builder "
                              "does not write yet",
                              g_.describe(st), info(type).name));
-    for (const PlacedLoop& m : made_by(worked))
-      if (m.place == LoopPlace::along_edge)
-        not_yet(s, fmt::format("makes a loop at {} that waits along an edge or across a split",
-                               g_.describe(st)));
   }
 
   // Loops ahead of and behind the needle tip as the stitch is worked; returns the loops it
@@ -960,6 +1044,10 @@ class ProgramPatternBuilder {
   std::unordered_map<StitchId, MarkerKind> marked_;
   std::size_t step_ = 0;
   std::vector<std::uint32_t> pos_ = std::vector<std::uint32_t>(g_.loops.size(), 0);  // in ring
+  // Per stitch worked in a row: the row (into out_.rows) and its number; per row, its ends.
+  std::vector<std::uint32_t> row_of_ = std::vector<std::uint32_t>(g_.size(), kNone);
+  std::vector<std::uint32_t> number_of_ = std::vector<std::uint32_t>(g_.size(), 0);
+  std::vector<RowEnds> row_ends_;
   // The row in the rnd being written, until the work turns or the marker ends it.
   PatternRow pending_;
   bool row_open_ = false, row_forward_ = false, ds_next_ = false;
@@ -971,8 +1059,13 @@ class ProgramPatternBuilder {
 
 }  // namespace
 
-HandPattern build_pattern_from_program(const Compilation& c, TurnMethod turns) {
-  HandPattern pattern = ProgramPatternBuilder(c, turns).run();
+HandPattern build_pattern_from_program(const Compilation& c, TurnMethod turns, Rounds rounds) {
+  bool mirror = rounds == Rounds::mirror_most &&
+                stitches_in_rounds_going(c.program, CourseDirection::left_to_right) >
+                    stitches_in_rounds_going(c.program, CourseDirection::right_to_left);
+  HandPattern pattern =
+      mirror ? ProgramPatternBuilder(c, mirror_image(c.knit, c.program), turns, true).run()
+             : ProgramPatternBuilder(c, c.program, turns, false).run();
   name_pieces(c.knit, c.yarns, pattern);
   place_section_markers(pattern);
   place_region_markers(pattern);
