@@ -76,9 +76,9 @@ Tally samples_at_gauges(const std::string& builder) {
 // edge, bind off with a three-needle bind-off among a row's own sts, or place part of a
 // holder into a row in the rnd yet: the letters, the bars, the teapot).
 TEST(HandProgramBuilder, SamplesAtTheIssuesGaugesBesideTheScheduleBuilder) {
-  Tally schedule = samples_at_gauges("schedule");
+  Tally automatic = samples_at_gauges("auto");
   Tally program = samples_at_gauges("program");
-  EXPECT_GE(schedule.proven, 55);
+  EXPECT_GE(automatic.proven, 55);
   EXPECT_GE(program.proven, 30);
 }
 
@@ -87,7 +87,7 @@ TEST(HandProgramBuilder, SamplesAtTheIssuesGaugesBesideTheScheduleBuilder) {
 TEST(HandProgramBuilder, AutoKnitStitchGraphs) {
   const fs::path shared = SKEIN_SOURCE_DIR "/../shared/data/autoknit-st";
   if (!fs::exists(shared)) GTEST_SKIP() << shared << " is absent";
-  for (const char* builder : {"schedule", "program"}) {
+  for (const char* builder : {"auto", "program"}) {
     Tally tally;
     for (const auto& f : fs::directory_iterator(shared)) {
       if (f.path().extension() != ".st") continue;

@@ -278,9 +278,11 @@ Tally random_garments(const std::string& builder) {
   return tally;
 }
 
+// The default builder (auto): the program's, else the schedule's where the program's refuses
+// (263 proven; the schedule's alone 230).
 TEST(HandRandomGarments, EachIsProvenOrRefusedByNameBeforeWriting) {
-  Tally tally = random_garments("schedule");
-  EXPECT_GE(tally.proven, 230);
+  Tally tally = random_garments("auto");
+  EXPECT_GE(tally.proven, 263);
 }
 
 // The pattern built on the lowering's live-loop program (`--set builder=program`), measured on

@@ -56,18 +56,19 @@ Rounds rounds_of(const TargetOptions& options) {
   return inside_out ? Rounds::ws_facing : Rounds::mirror_most;
 }
 
-// Which builder writes the pattern (`--set builder=`): the one that reads the schedule (the
-// default: it mirrors a model whose rnds run left to right, where the program's works them WS
-// facing, inside out), the one on the lowering's live-loop program, or auto: the program's,
-// and where it refuses a structure by name (picking up along an edge, a holder's sts placed
-// into a row in the rnd), the schedule's. Every pattern is proven before it is written.
+// Which builder writes the pattern (`--set builder=`): auto (the default): the one on the
+// lowering's live-loop program, and where it refuses a structure by name (a row in the rnd
+// that takes sts from a spare needle, a three-needle bind-off among the sts of a rnd), the one
+// that reads the schedule; or either alone. Every pattern is proven before it is written.
 enum class Builder : std::uint8_t { automatic, program, schedule };
 
 Builder builder_of(const TargetOptions& options) {
   auto set = options.settings.find("builder");
-  if (set == options.settings.end() || set->second == "schedule") return Builder::schedule;
-  return set->second == "program" ? Builder::program : Builder::automatic;
+  if (set == options.settings.end() || set->second == "auto") return Builder::automatic;
+  return set->second == "program" ? Builder::program : Builder::schedule;
 }
+
+}  // namespace
 
 HandPattern build_pattern(const Compilation& c, const TargetOptions& options) {
   Builder builder = builder_of(options);
@@ -81,6 +82,8 @@ HandPattern build_pattern(const Compilation& c, const TargetOptions& options) {
   }
   return build_hand_pattern(c, turn_method_of(options), rounds_of(options));
 }
+
+namespace {
 
 class HandTarget : public Target {
  public:
@@ -97,9 +100,9 @@ class HandTarget : public Target {
              {"mirror", "inside-out"},
              "rnds run left to right: mirror the model if most do, or work them WS facing"},
             {"builder",
-             {"schedule", "program", "auto"},
-             "build the pattern from the schedule (default) or the lowering's live-loop "
-             "program; auto: the program's, else the schedule's where the program's refuses"}};
+             {"auto", "program", "schedule"},
+             "build the pattern from the lowering's live-loop program, or from the schedule; "
+             "auto (default): the program's, else the schedule's where the program's refuses"}};
   }
   void emit(const Compilation& c, const TargetOptions& options, std::ostream& out) const override {
     HandPattern pattern = build_pattern(c, options);

@@ -15,6 +15,13 @@ void register_hand_target(Registry& registry);
 
 namespace hand {
 
+struct HandPattern;
+
+// The pattern the hand targets write for `c` with the options' settings (`short-rows`,
+// `rounds`, `builder`), not yet proven: built from the lowering's live-loop program; where that
+// builder refuses a structure by name and `builder` is not `program`, from the schedule.
+HandPattern build_pattern(const Compilation& c, const TargetOptions& options);
+
 // Reads, works and (with `against`) compares a pattern; what `skein verify` runs. Throws
 // ParseError for text it cannot read; an impossible step or a different fabric is a report
 // that is not proven.

@@ -16,6 +16,11 @@ std::uint32_t LoopPlaces::hold(std::span<const std::uint32_t> loops, std::uint32
   return number;
 }
 
+void LoopPlaces::hold_onto(std::uint32_t holder, std::span<const std::uint32_t> loops) {
+  holders_[holder - 1].insert(holders_[holder - 1].end(), loops.begin(), loops.end());
+  set(loops, {Place::holder, holder});
+}
+
 void LoopPlaces::leave(std::uint32_t section, Place place, std::vector<std::uint32_t> loops) {
   auto& lists = place == Place::chain ? chains_ : spares_;
   if (lists.size() <= section) lists.resize(section + 1);

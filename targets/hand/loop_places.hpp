@@ -40,6 +40,9 @@ class LoopPlaces {
 
   // Slips `loops` (in that order) to a new holder, from section `section`; its number.
   std::uint32_t hold(std::span<const std::uint32_t> loops, std::uint32_t section);
+  // Slips `loops` onto holder `holder` after those it holds.
+  void hold_onto(std::uint32_t holder, std::span<const std::uint32_t> loops);
+  std::uint32_t holders() const { return static_cast<std::uint32_t>(holders_.size()); }
   std::uint32_t holder_section(std::uint32_t holder) const { return holder_section_[holder - 1]; }
   // Leaves a section's loops on a spare needle (or its chain), in the order the pattern counts
   // them.

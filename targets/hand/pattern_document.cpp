@@ -247,7 +247,7 @@ class InstructionWriter {
     const char* along = p_.sections[section_].in_round ? "rnd" : "row";
     std::string where = p.after == 0
                             ? fmt::format("at the beginning of the {}", along)
-                            : fmt::format("after the first {} sts of the {}", p.after, along);
+                            : fmt::format("after the first {} of the {}", sts(p.after), along);
     if (p.edge)  // "Pick up 10 sts along ..., onto the needle after the first 18 sts of the rnd."
       return fmt::format("{}, onto the needle {}.", pick_up_words(*p.edge, p.count), where);
     if (p.to_spare)

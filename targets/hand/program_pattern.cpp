@@ -49,8 +49,7 @@ struct Needle {
 
 class ProgramPatternBuilder {
  public:
-  ProgramPatternBuilder(const Compilation& c, const Program& program, TurnMethod turns,
-                        bool mirror)
+  ProgramPatternBuilder(const Compilation& c, const Program& program, TurnMethod turns, bool mirror)
       : g_(c.knit),
         p_(program),
         places_(c.knit.loops.size()),
@@ -68,6 +67,7 @@ class ProgramPatternBuilder {
     if (p_.gap)
       unsupported(fmt::format("the live-loop program stops at {}: {}", g_.describe(p_.gap->stitch),
                               p_.gap->why));
+    index_loops_met();
     for (step_ = 0; step_ < p_.steps.size(); ++step_) {
       const Step& s = p_.steps[step_];
       switch (s.kind) {
@@ -437,11 +437,58 @@ class ProgramPatternBuilder {
       std::uint32_t end = i;
       while (end < n.ring.size() && !in_met_[n.ring[end]]) ++end;
       std::span<const std::uint32_t> block(n.ring.data() + i, end - i);
-      std::uint32_t holder = places_.hold(block, n.section);
-      sec.holdings.push_back({after_row, i + 1, end - i, holder});
+      std::uint32_t holder = holder_met_before(block, n.section), onto = 0;
+      if (holder != 0) {
+        onto = static_cast<std::uint32_t>(places_.loops_of({Place::holder, holder}).size());
+        places_.hold_onto(holder, block);
+      } else {
+        holder = places_.hold(block, n.section);
+      }
+      sec.holdings.push_back({after_row, i + 1, end - i, holder, onto});
       i = end;
     }
     return stay;
+  }
+
+  // The section's latest holder, if the course that takes its loops meets `block` right after
+  // them, one after the other (a tube parting over two rnds: the leg's sts go to one holder);
+  // else 0.
+  std::uint32_t holder_met_before(std::span<const std::uint32_t> block,
+                                  std::uint32_t section) const {
+    for (std::uint32_t h = places_.holders(); h > 0; --h) {
+      if (places_.holder_section(h) != section) continue;
+      std::vector<std::uint32_t> all = places_.loops_of({Place::holder, h});
+      all.insert(all.end(), block.begin(), block.end());
+      return met_one_after_another(all) ? h : 0;
+    }
+    return 0;
+  }
+
+  // Are the loops met by one course, one after the other (either way)?
+  bool met_one_after_another(const std::vector<std::uint32_t>& loops) const {
+    if (loops.size() < 2 || taker_step_[loops[0]] == kNone) return false;
+    int by = static_cast<int>(met_at_[loops[1]]) - static_cast<int>(met_at_[loops[0]]);
+    for (std::size_t k = 1; k < loops.size(); ++k)
+      if (taker_step_[loops[k]] != taker_step_[loops[0]] ||
+          static_cast<int>(met_at_[loops[k]]) - static_cast<int>(met_at_[loops[k - 1]]) != by ||
+          (by != 1 && by != -1) || places_.at(loops[k - 1]).place == Place::none)
+        return false;
+    return true;
+  }
+
+  // Per loop: the course that takes it and its place in the order that course meets them.
+  void index_loops_met() {
+    for (std::uint32_t i = 0; i < p_.steps.size(); ++i) {
+      const Step& s = p_.steps[i];
+      if (s.kind != StepKind::course && s.kind != StepKind::bind_off &&
+          s.kind != StepKind::three_needle_bind_off)
+        continue;
+      std::vector<std::uint32_t> met = loops_met(s);
+      for (std::uint32_t k = 0; k < met.size(); ++k) {
+        taker_step_[met[k]] = i;
+        met_at_[met[k]] = k;
+      }
+    }
   }
 
   // A yarn that starts on loops another piece left (a holder, a spare needle, a chain) is
@@ -1048,6 +1095,8 @@ class ProgramPatternBuilder {
   std::vector<std::uint32_t> row_of_ = std::vector<std::uint32_t>(g_.size(), kNone);
   std::vector<std::uint32_t> number_of_ = std::vector<std::uint32_t>(g_.size(), 0);
   std::vector<RowEnds> row_ends_;
+  std::vector<std::uint32_t> taker_step_ = std::vector<std::uint32_t>(g_.loops.size(), kNone);
+  std::vector<std::uint32_t> met_at_ = std::vector<std::uint32_t>(g_.loops.size(), 0);
   // The row in the rnd being written, until the work turns or the marker ends it.
   PatternRow pending_;
   bool row_open_ = false, row_forward_ = false, ds_next_ = false;

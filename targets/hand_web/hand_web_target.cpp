@@ -17,11 +17,6 @@ namespace {
 
 constexpr const char* kName = "hand-web";
 
-bool setting_is(const TargetOptions& options, const char* key, const char* value) {
-  auto it = options.settings.find(key);
-  return it != options.settings.end() && it->second == value;
-}
-
 class HandWebTarget : public Target {
  public:
   explicit HandWebTarget(const Target& hand) : hand_(hand) {}
@@ -42,12 +37,7 @@ class HandWebTarget : public Target {
     text_options.dialect = "standard";
     std::ostringstream pattern;
     hand_.emit(c, text_options, pattern);
-    hand::HandPattern written = hand::build_hand_pattern(
-        c,
-        setting_is(options, "short-rows", "wrap-and-turn") ? hand::TurnMethod::wrap_and_turn
-                                                           : hand::TurnMethod::german,
-        setting_is(options, "rounds", "inside-out") ? hand::Rounds::ws_facing
-                                                    : hand::Rounds::mirror_most);
+    hand::HandPattern written = hand::build_pattern(c, options);
     hand_web::PageData data = hand_web::build_page_data(c, pattern.str(), written);
     std::optional<hand_web::ThreeJs> three = hand_web::find_three_js();
     hand_web::write_page(data, three ? &*three : nullptr, out);
