@@ -62,7 +62,8 @@ struct StepFailure {
 
 class NeedleSimulator {
  public:
-  NeedleSimulator(const Script& script, const std::string& file) : script_(script), file_(file) {
+  NeedleSimulator(const Script& script, const std::string& file, std::uint64_t max_work)
+      : script_(script), file_(file), max_work_(max_work) {
     work_even_.resize(2);
     for (HandOp op : {HandOp::k, HandOp::p}) {
       Program& p = work_even_[op == HandOp::k ? 0 : 1];
@@ -1082,14 +1083,14 @@ class NeedleSimulator {
     for (std::uint32_t i = begin; i < end; ++i) run_node(p, p.nodes[i]);
   }
 
-  // Every instruction and st worked counts against kMaxPatternWork, so that repeats inside
+  // Every instruction and st worked counts against the work limit, so that repeats inside
   // repeats cannot run for minutes: each loop below works at least one of them per turn.
   void count_work() {
-    if (++work_ > kMaxPatternWork)
+    if (++work_ > max_work_)
       fail(
           fmt::format("the pattern works more than {} sts and instructions, skein's limit "
                       "(docs/formats.md, \"Limits\")",
-                      kMaxPatternWork));
+                      max_work_));
   }
 
   void run_node(const Program& p, const Node& n) {
@@ -1597,7 +1598,8 @@ class NeedleSimulator {
   std::vector<std::uint32_t> to_marker_;
   std::vector<std::uint8_t> marker_ahead_;
   std::uint32_t left_loops_ = 0;
-  std::uint64_t work_ = 0;  // instructions and sts worked, for kMaxPatternWork
+  std::uint64_t work_ = 0;  // instructions and sts worked, up to max_work_
+  std::uint64_t max_work_;
   std::uint32_t markers_ = 0;
 
   // The row being worked.
@@ -1614,8 +1616,8 @@ class NeedleSimulator {
 
 }  // namespace
 
-Replay replay(const Script& script, const std::string& file) {
-  return NeedleSimulator(script, file).run();
+Replay replay(const Script& script, const std::string& file, std::uint64_t max_work) {
+  return NeedleSimulator(script, file, max_work).run();
 }
 
 }  // namespace skein::hand

@@ -69,6 +69,8 @@ struct Replay {
 // sts), and what keeps a hostile pattern under a second and the fabric it builds under 200 MB.
 inline constexpr std::uint64_t kMaxPatternWork = 4'000'000;
 
-Replay replay(const Script& script, const std::string& file);
+// `max_work`: the fuzz harness lowers it, so that each run stays short under the sanitizers.
+Replay replay(const Script& script, const std::string& file,
+              std::uint64_t max_work = kMaxPatternWork);
 
 }  // namespace skein::hand
