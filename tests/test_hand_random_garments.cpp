@@ -279,18 +279,18 @@ Tally random_garments(const std::string& builder) {
 }
 
 // The default builder (auto): the program's, else the schedule's where the program's refuses
-// (263 proven; the schedule's alone 230).
+// (267 proven; the schedule's alone 230).
 TEST(HandRandomGarments, EachIsProvenOrRefusedByNameBeforeWriting) {
   Tally tally = random_garments("auto");
-  EXPECT_GE(tally.proven, 263);
+  EXPECT_GE(tally.proven, 267);
 }
 
 // The pattern built on the lowering's live-loop program (`--set builder=program`), measured on
-// the same garments: what it writes is proven, the rest refused by name (255 proven against
+// the same garments: what it writes is proven, the rest refused by name (264 proven against
 // the schedule builder's 230).
 TEST(HandRandomGarments, ProgramBuilderProvesOrRefusesEachByName) {
   Tally tally = random_garments("program");
-  EXPECT_GE(tally.proven, 255);
+  EXPECT_GE(tally.proven, 264);
 }
 
 }  // namespace

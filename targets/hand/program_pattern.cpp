@@ -260,43 +260,67 @@ class ProgramPatternBuilder {
     if (!chain.empty()) places_.leave(n.section, Place::chain, std::move(chain));
   }
 
-  // A new yarn binds off the sts of two pieces left on spare needles (or holders) together,
-  // pair by pair: the first loop of each st from the front needle, the second from the back.
+  // A yarn binds off the sts of two pieces together, pair by pair: the first loop of each st
+  // from the front needle, the second from the back. A new yarn joins two pieces left on spare
+  // needles (or holders); a piece's own yarn binds off all its sts with another's held behind.
   void three_needle_bind_off(const Step& s) {
     bool all_pairs =
         std::all_of(stitches_of(s).begin(), stitches_of(s).end(),
                     [&](const WorkedStitch& w) { return g_.type[w.stitch] == T::tnbo; });
-    if (!all_pairs || needle_of_yarn_[s.yarn] != kNone) return course(s);
-    end_section();
+    std::uint32_t own = needle_of_yarn_[s.yarn];
+    bool all_of_its_sts =
+        own != kNone && current_ == own && !row_open_ && needles_[own].live == s.stitches.size();
+    if (!all_pairs || (own != kNone && !all_of_its_sts)) return course(s);
     std::vector<std::uint32_t> side[2];
     for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i) {
       auto taken = all_taken_by(i);
       for (int k : {0, 1}) side[k].push_back(taken[k]);
     }
-    PatternSection sec;
-    std::optional<Lie> lie[2];
+    std::uint32_t joined = own == kNone ? kNone : needles_[own].section;
+    end_section();
+    PatternSection join;
+    join.yarn = s.yarn;
+    join.joins = true;
+    join.own_yarn = own != kNone;
     for (int k : {0, 1}) {
       LoopAt source = places_.at(side[k].front());
-      lie[k] = places_.lie(source, side[k]);
+      std::optional<Lie> lie = places_.lie(source, side[k]);
       bool nameable = source.place == Place::holder || source.place == Place::spare;
-      if (!nameable || !lie[k] || lie[k]->at != 0)
+      if (!nameable || !lie || lie->at != 0 ||
+          (k == 0 && join.own_yarn && source.place != Place::spare))
         not_yet(s,
                 "binds off sts that do not wait on one spare needle or holder each, from an "
                 "end");
       bool holder = source.place == Place::holder;
-      (k == 0 ? sec.front : sec.back) =
+      (k == 0 ? join.front : join.back) =
           holder ? places_.holder_section(source.index) : source.index;
-      sec.holders[k] = holder ? source.index : 0;
-      sec.from_last[k] = lie[k]->from_last;
+      join.holders[k] = holder ? source.index : 0;
+      join.from_last[k] = lie->from_last;
     }
-    sec.yarn = s.yarn;
-    sec.piece = ++pieces_;
-    sec.joins = true;
-    sec.pairs = sec.stitches = static_cast<std::uint32_t>(s.stitches.size());
-    sec.first_row = sec.end_row = static_cast<std::uint32_t>(out_.rows.size());
-    out_.sections.push_back(sec);
+    join.pairs = static_cast<std::uint32_t>(s.stitches.size());
     for (int k : {0, 1})
       for (std::uint32_t l : side[k]) places_.take(l);
+    if (join.own_yarn) return bind_off_with_its_yarn(join, joined);
+    join.piece = ++pieces_;
+    join.stitches = join.pairs;
+    join.first_row = join.end_row = static_cast<std::uint32_t>(out_.rows.size());
+    out_.sections.push_back(join);
+  }
+
+  // The piece just worked ends by binding off its sts with another's: its section says so.
+  void bind_off_with_its_yarn(const PatternSection& join, std::uint32_t section) {
+    PatternSection& sec = out_.sections[section];
+    if (join.front != section) unsupported("a piece's yarn binds off sts that are not its own");
+    sec.joins = true;
+    sec.own_yarn = true;
+    sec.front = join.front;
+    sec.back = join.back;
+    std::copy(std::begin(join.from_last), std::end(join.from_last), sec.from_last);
+    std::copy(std::begin(join.holders), std::end(join.holders), sec.holders);
+    sec.pairs = join.pairs;
+    sec.stitches += join.pairs;
+    sec.left_live = false;
+    sec.live_at_end = 0;
   }
 
   // --- gathering a rnd ------------------------------------------------------------------------
@@ -701,11 +725,6 @@ class ProgramPatternBuilder {
   // that binds off its first st.
   std::uint32_t bind_off_with_held_st(std::uint32_t i, Needle& n) {
     const Step& s = p_.steps[step_];
-    // In the rnd the pairs may pass the beginning-of-round marker, which is not written yet.
-    if (n.in_round)
-      not_yet(s,
-              "binds off with a three-needle bind-off among the sts of a rnd, which the "
-              "program's pattern builder does not write yet");
     if (held_behind_left_ == 0) {
       std::vector<std::uint32_t> behind;
       for (std::uint32_t k = i; k < s.stitches.end; ++k)
@@ -737,6 +756,10 @@ class ProgramPatternBuilder {
     --n.live;
     if (!n.in_round) --n.ahead;
     return 1;
+  }
+
+  bool binds_off_together(std::uint32_t worked) const {
+    return g_.type[p_.stitches[worked].stitch] == T::tnbo;
   }
 
   // A provisional cast-on in the middle of a row: the st goes on the needle, the loop of its
@@ -804,6 +827,9 @@ class ProgramPatternBuilder {
     for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i) {
       auto taken = taken_by(i);
       std::uint32_t at = taken.empty() ? kNone : pos_[first_met(taken, s.direction)];
+      bool at_marker = at == (forward ? 0 : size - 1) && row_open_ && pending_takes_ > 0;
+      if (at_marker && i > s.stitches.begin && binds_off_together(i - 1) && binds_off_together(i))
+        not_yet(s, "binds off with a three-needle bind-off across the beginning-of-round marker");
       if (forward && at == 0 && row_open_ && pending_takes_ > 0) close_ring_row(s, n, false);
       if (!forward && at == size - 1 && row_open_ && pending_takes_ > 0)
         out_.ops.push_back(HandOp::sm);
