@@ -1,14 +1,39 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <limits>
+
+#ifdef __linux__
+#include <sys/mman.h>
+#endif
 
 #include "knitout/vbed_bed.hpp"
 
 namespace skein::knitout {
 namespace vbed {
+namespace {
+
+// Asks for 2 MB pages under a large reserved buffer (Linux's transparent huge pages, where they
+// are given on request): a replay writes each page of its fabric once, and a page fault costs
+// more than filling the page (in a virtual machine, 4 KB page faults were a quarter of a
+// replay's time).
+template <typename T>
+void advise_huge_pages(std::vector<T>& v) {
+#ifdef __linux__
+  constexpr std::uintptr_t kHuge = std::uintptr_t{2} << 20;
+  auto begin = reinterpret_cast<std::uintptr_t>(v.data());
+  std::uintptr_t from = (begin + kHuge - 1) & ~(kHuge - 1);
+  std::uintptr_t to = (begin + v.capacity() * sizeof(T)) & ~(kHuge - 1);
+  if (from < to) madvise(reinterpret_cast<void*>(from), to - from, MADV_HUGEPAGE);
+#else
+  (void)v;
+#endif
+}
+
+}  // namespace
 
 std::size_t VirtualBed::next_line(std::size_t pos) const {
   const void* end = std::memchr(text_.data() + pos, '\n', text_.size() - pos);
@@ -30,6 +55,8 @@ Replay VirtualBed::run() {
   r_.fabric.by_carrier.assign(r_.header.carriers.size(), {});
   r_.fabric.loops.reserve(line_count_);  // at most one loop a line: no regrowth
   r_.fabric.parents.reserve(line_count_);
+  advise_huge_pages(r_.fabric.loops);
+  advise_huge_pages(r_.fabric.parents);
   r_.stats.min_needle = std::numeric_limits<std::int32_t>::max();
   r_.stats.max_needle = std::numeric_limits<std::int32_t>::min();
   last_slot_.assign(r_.header.carriers.size(), kNoSlot);
@@ -194,7 +221,10 @@ LoopId VirtualBed::new_loop(OpCode by, Direction dir, Needle n, CarrierMask yarn
   each(yarn, [&](Carrier&, std::size_t c) {
     count_float(c, n.index);
     std::vector<LoopId>& along = r_.fabric.by_carrier[c];
-    if (along.empty()) along.reserve(line_count_);
+    if (along.empty()) {
+      along.reserve(line_count_);
+      advise_huge_pages(along);
+    }
     along.push_back(id);
   });
   return id;
