@@ -84,8 +84,9 @@ int main(int argc, char** argv) {
   verify->add_option("--picture", r.options.picture,
                      "an .svg to draw the fabric OUT makes in (knitout)");
   verify->add_option("--fabric", r.options.fabric,
-                     "an AutoKnit stitch graph (.st) to write the fabric OUT makes in, "
-                     "for skein check (knitout; cast-on tucks, dropped loops and tags left out)");
+                     "a stitch mesh (.obj) or AutoKnit stitch graph (.st) to write the fabric OUT "
+                     "makes in, for skein check (knitout; cast-on tucks, dropped loops and tags "
+                     "left out; .obj: whole rows or rounds of one yarn only)");
   add_force(*verify, r);
 
   auto* new_cmd = app.add_subcommand("new", "write a parametric coarse mesh and its project file");

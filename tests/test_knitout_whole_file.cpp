@@ -1,5 +1,5 @@
 // The whole-file proof (targets/knitout/whole_file_proof.*): the piece proven stitch for stitch
-// must also come free of everything else the file knits.
+// must also come free of everything else the file knits, off a whole border.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -56,6 +56,86 @@ TEST(KnitoutWholeFile, APieceLoopCaughtInAnotherYarnIsRefused) {
   EXPECT_FALSE(proof.proven);
   EXPECT_NE(proof.summary.find("(carrier 1), which is not the piece's yarn"), std::string::npos)
       << proof.summary;
+}
+
+// Replayed by each rule's severity (an edited border may knit an empty needle, which generic
+// allows), then proven.
+knitout::ProofResult prove_lenient(const std::string& text, const Compilation& c,
+                                   const knitout::MachineProfile& p) {
+  knitout::Replay replay = knitout::replay_knitout(text, "out.k", p, {.strict = false});
+  return knitout::prove_whole_file(replay, text, c);
+}
+
+std::string without_line(const std::string& text, const std::string& line) {
+  std::size_t at = text.find(line + "\n");
+  EXPECT_NE(at, std::string::npos) << line;
+  return text.substr(0, at) + text.substr(at + line.size() + 1);
+}
+
+std::string rib_swatch_on(const char* profile, Compilation& c) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  c = compile_model("samples/rib-swatch/rib-swatch.obj");
+  return testing::emit_knitout_text(c, testing::shipped_profile(profile));
+}
+
+TEST(KnitoutWholeFile, ADrawThreadMissingANeedleLeavesThePieceOnTheWaste) {
+  Compilation c;
+  std::string text = swatch_on_kniterate(c);
+  std::size_t draw = text.find(";!source: draw thread");
+  std::size_t knit = text.find("knit ", draw);
+  std::string line = text.substr(knit, text.find('\n', knit) - knit);
+  knitout::ProofResult proof =
+      prove_lenient(without_line(text, line), c, testing::shipped_profile("kniterate"));
+  EXPECT_FALSE(proof.proven);
+  EXPECT_NE(proof.summary.find("the piece does not come free"), std::string::npos) << proof.summary;
+}
+
+TEST(KnitoutWholeFile, AMissingBorderLoopIsRefused) {
+  Compilation c;
+  knitout::MachineProfile p = testing::shipped_profile("generic");
+  std::string text = rib_swatch_on("generic", c);
+  ASSERT_TRUE(prove_lenient(text, c, p).proven);
+  // Without its tuck (the last of the border) the first row's stitch on f491 is pulled through
+  // nothing.
+  knitout::ProofResult proof = prove_lenient(without_line(text, "tuck - f491 1"), c, p);
+  EXPECT_FALSE(proof.proven);
+  EXPECT_NE(proof.summary.find("19 cast-on loops of the piece hang on border loops, the input "
+                               "has 20 cast-on stitches"),
+            std::string::npos)
+      << proof.summary;
+  // Inside a pass, the border's yarn skips a needle there.
+  proof = prove_lenient(without_line(text, "tuck + f496 1"), c, p);
+  EXPECT_FALSE(proof.proven);
+  EXPECT_NE(proof.summary.find("the border it is cast on is not whole"), std::string::npos)
+      << proof.summary;
+}
+
+TEST(KnitoutWholeFile, ABorderEditThatChangesTheFabricIsRefused) {
+  Compilation c;
+  knitout::MachineProfile p = testing::shipped_profile("swg091n2");
+  std::string text = rib_swatch_on("swg091n2", c);
+  ASSERT_TRUE(prove_lenient(text, c, p).proven);
+  // A tuck made going the other way in the middle of its pass.
+  std::string flipped = text;
+  flipped.replace(flipped.find("tuck - f275 3"), 13, "tuck + f275 3");
+  knitout::ProofResult proof = prove_lenient(flipped, c, p);
+  EXPECT_FALSE(proof.proven);
+  EXPECT_NE(proof.summary.find("the border it is cast on is not whole: the loop of line 14 "
+                               "(carrier 3) is made going right in the middle of a pass going "
+                               "the other way"),
+            std::string::npos)
+      << proof.summary;
+  // One loop of the pass over the tucks left out: the first row hangs on a tuck there.
+  proof = prove_lenient(without_line(text, "knit - f270 3"), c, p);
+  EXPECT_FALSE(proof.proven);
+  EXPECT_NE(proof.summary.find("holding the cast-on is not made as"), std::string::npos)
+      << proof.summary;
+  // Two tucks of one pass swapped.
+  std::string swapped = text;
+  swapped.replace(swapped.find("tuck - f275 3\ntuck - f273 3"), 27, "tuck - f273 3\ntuck - f275 3");
+  proof = prove_lenient(swapped, c, p);
+  EXPECT_FALSE(proof.proven);
+  EXPECT_NE(proof.summary.find("out of its pass's order"), std::string::npos) << proof.summary;
 }
 
 }  // namespace

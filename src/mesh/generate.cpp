@@ -13,7 +13,20 @@
 namespace skein {
 namespace {
 
-// Vertices of one ring (the boundary between two rows): `loops` course edges wide.
+std::uint32_t loops_made(const std::vector<StitchType>& row) {
+  std::uint32_t n = 0;
+  for (StitchType t : row) n += info(t).top_edges;
+  return n;
+}
+
+std::uint32_t edges_consumed(const std::vector<StitchType>& row) {
+  std::uint32_t n = 0;
+  for (StitchType t : row) n += info(t).bottom_edges;
+  return n;
+}
+
+}  // namespace
+
 std::vector<Vertex> add_ring(StitchMeshBuilder& builder, std::uint32_t loops, std::uint32_t level,
                              Layout layout) {
   std::vector<Vertex> ring;
@@ -31,18 +44,6 @@ std::vector<Vertex> add_ring(StitchMeshBuilder& builder, std::uint32_t loops, st
     ring.push_back(ring.front());  // closed: index `loops` wraps to 0
   }
   return ring;
-}
-
-std::uint32_t loops_made(const std::vector<StitchType>& row) {
-  std::uint32_t n = 0;
-  for (StitchType t : row) n += info(t).top_edges;
-  return n;
-}
-
-std::uint32_t edges_consumed(const std::vector<StitchType>& row) {
-  std::uint32_t n = 0;
-  for (StitchType t : row) n += info(t).bottom_edges;
-  return n;
 }
 
 void add_row(StitchMeshBuilder& builder, const std::vector<StitchType>& row,
@@ -66,8 +67,6 @@ void add_row(StitchMeshBuilder& builder, const std::vector<StitchType>& row,
     c += t.top_edges;
   }
 }
-
-}  // namespace
 
 StitchMesh build_from_rows(const RowPlan& plan, Layout layout) {
   if (plan.size() < 2) throw Error("a row plan needs at least a cast-on row and a bind-off row");

@@ -23,6 +23,16 @@ enum class Layout : std::uint8_t {
   tube,   // closed rounds, one shift-path up the seam at the first stitch
 };
 
+// The two steps build_from_rows repeats, for builders of other row plans (the fabric a knitout
+// file makes): the vertices of a ring between two rows, `loops` course edges wide at height
+// `level` (a tube's ring closes: its last vertex is its first again); and a row of faces, its
+// stitches left to right, on the ring below (from its first vertex on) under the ring above.
+std::vector<Vertex> add_ring(StitchMeshBuilder& builder, std::uint32_t loops, std::uint32_t level,
+                             Layout layout);
+void add_row(StitchMeshBuilder& builder, const std::vector<StitchType>& row,
+             const std::vector<Vertex>& below, const std::vector<Vertex>& above,
+             bool left_to_right);
+
 // Throws Error when a row does not consume what the row below makes.
 StitchMesh build_from_rows(const RowPlan& plan, Layout layout);
 

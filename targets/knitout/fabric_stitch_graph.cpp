@@ -212,6 +212,42 @@ std::vector<bool> tubular_pieces(const Fabric& f) {
   return tube;
 }
 
+// Per loop: the bed of the pass it was made in (a run of its yarn piece's loops going one way),
+// by the bed most of the pass's loops are on; in a tie (a 2x2 rib), the front's if the pass
+// goes the way most of the piece's front loops go. On a tube a pass knits one half round; a
+// purl in it is knit on the other bed, going the same way round as the knits beside it.
+std::vector<bool> pass_on_front(const Fabric& f) {
+  std::vector<std::int64_t> front_plus;  // per piece: front loops going + less those going -
+  for (const FabricLoop& l : f.loops) {
+    if (l.piece >= front_plus.size()) front_plus.resize(l.piece + 1, 0);
+    if (l.front) front_plus[l.piece] += l.dir == Direction::plus ? 1 : -1;
+  }
+  struct Pass {
+    std::vector<LoopId> loops;
+    std::int64_t front_minus_back = 0;
+    Direction dir = Direction::none;
+  };
+  std::vector<bool> front(f.loops.size(), true);
+  std::vector<Pass> open(front_plus.size());  // per yarn piece: its pass so far
+  auto close = [&](Pass& p) {
+    if (p.loops.empty()) return;
+    bool front_way = (p.dir == Direction::plus) == (front_plus[f.loops[p.loops[0]].piece] >= 0);
+    bool on_front = p.front_minus_back > 0 || (p.front_minus_back == 0 && front_way);
+    for (LoopId l : p.loops) front[l] = on_front;
+    p = Pass{};
+  };
+  for (LoopId l = 0; l < f.loops.size(); ++l) {
+    const FabricLoop& loop = f.loops[l];
+    Pass& p = open[loop.piece];
+    if (p.dir != loop.dir) close(p);
+    p.dir = loop.dir;
+    p.loops.push_back(l);
+    p.front_minus_back += loop.front ? 1 : -1;
+  }
+  for (Pass& p : open) close(p);
+  return front;
+}
+
 class StWriter {
  public:
   StWriter(const Fabric& f, StitchGraph graph, std::ostream& out)
@@ -220,7 +256,8 @@ class StWriter {
         stitch_of_(std::move(graph.stitch_of)),
         out_(out),
         height_(loop_heights(f)),
-        tube_(tubular_pieces(f)) {
+        tube_(tubular_pieces(f)),
+        pass_front_(pass_on_front(f)) {
     std::uint32_t line = 0;
     for (Stitch& s : stitches_) {
       s.first_line = line;
@@ -285,7 +322,7 @@ class StWriter {
             std::array<std::int64_t, 2> outs) {
     const FabricLoop& l = f_.loops[s.loop];
     bool plus = l.dir == Direction::plus;
-    bool round_way = tube_[l.piece] ? plus == l.front : plus;
+    bool round_way = tube_[l.piece] ? plus == pass_front_[s.loop] : plus;
     fmt::format_to(std::back_inserter(buffer_), "{} {} {} {} {} {} {} {} {} {}\n", l.piece, type,
                    round_way ? 'a' : 'c', in[0], in[1], outs[0], outs[1], l.needle, height_[s.loop],
                    l.front ? 0 : 1);
@@ -302,7 +339,7 @@ class StWriter {
   std::ostream& out_;
   fmt::memory_buffer buffer_;
   std::vector<std::uint32_t> height_;
-  std::vector<bool> tube_;
+  std::vector<bool> tube_, pass_front_;
   std::uint32_t lines_ = 0;
 };
 

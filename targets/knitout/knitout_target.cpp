@@ -11,6 +11,7 @@
 #include "knitout/fabric_picture.hpp"
 #include "knitout/fabric_report.hpp"
 #include "knitout/fabric_stitch_graph.hpp"
+#include "knitout/fabric_stitch_mesh.hpp"
 #include "knitout/machine_profile.hpp"
 #include "knitout/vbed_simulator.hpp"
 #include "knitout/whole_file_proof.hpp"
@@ -51,10 +52,11 @@ class VbedSimulator : public Simulator {
   }
   VerifyReport verify(const std::string& text, const std::string& file, const Compilation* against,
                       const TargetOptions& options) const override {
-    if (!options.fabric.empty() && !options.fabric.ends_with(".st"))
+    bool as_mesh = options.fabric.ends_with(".obj");
+    if (!options.fabric.empty() && !as_mesh && !options.fabric.ends_with(".st"))
       throw UsageError(
-          fmt::format("--fabric {}: the fabric is written as an AutoKnit stitch "
-                      "graph, so the file must end in .st",
+          fmt::format("--fabric {}: the fabric is written as a stitch mesh (.obj) or an AutoKnit "
+                      "stitch graph (.st), so the file must end in one of them",
                       options.fabric));
     knitout::ProfileChoice chosen =
         knitout::choose_profile(text, file, options.machine, options.strict);
@@ -69,11 +71,14 @@ class VbedSimulator : public Simulator {
       shop += fmt::format("\n  the fabric drawn in {}", options.picture);
     }
     if (!options.fabric.empty()) {
-      write_file_atomically(options.fabric, [&](std::ostream& out) {
-        knitout::write_fabric_stitch_graph(replay, file, out);
-      });
-      shop += fmt::format("\n  the fabric written as a stitch graph in {} (skein check reads it)",
-                          options.fabric);
+      std::ostringstream fabric;  // made whole before the file is touched: a refusal writes none
+      if (as_mesh)
+        knitout::write_fabric_stitch_mesh(replay, file, fabric);
+      else
+        knitout::write_fabric_stitch_graph(replay, file, fabric);
+      write_file_atomically(options.fabric, [&](std::ostream& out) { out << fabric.view(); });
+      shop += fmt::format("\n  the fabric written as a stitch {} in {} (skein check reads it)",
+                          as_mesh ? "mesh" : "graph", options.fabric);
     }
     std::string valid =
         fmt::format("{}: every operation is valid on {}{}", file, profile.name, chosen.how);

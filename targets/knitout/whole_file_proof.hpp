@@ -4,7 +4,13 @@
 // that comes out when pulled, a draw thread: one course, none of its loops pulled through
 // another of its loops; and no loop of the piece is caught in a loop of any other yarn (a loop
 // of the piece's own yarn after it, its tag, may hang from it). So pulling the draw thread frees
-// the piece from the waste section, and nothing else holds it.
+// the piece from the waste section, and nothing else holds it. Its cast-on border, which comes
+// off the machine with it, must be whole: each cast-on loop hangs on a border loop of its own
+// (as many as the input's cast-on stitches), the loops holding the cast-on on one bed are made
+// alike, every loop of a border in the piece's own yarn is a tuck through nothing or a loop
+// through one loop below the piece and holds exactly one loop, and that border's yarn runs in
+// passes (each the same step along, none taking up where an earlier one left off, no loop made
+// against its pass). Every loop of a draw thread holds one cast-on loop.
 #pragma once
 
 #include <string_view>

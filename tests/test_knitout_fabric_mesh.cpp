@@ -1,0 +1,181 @@
+// `skein verify FILE.k --fabric OUT.obj`: the fabric the v-bed rebuilt from a knitout file,
+// written as a skein stitch mesh, reads back, checks as knittable and has the model's stitches,
+// type by type, where the file knits the model on whole rows or rounds of one yarn; a fabric a
+// stitch mesh of whole rows cannot say (several yarn pieces, short rows) is refused by name and
+// nothing is written.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <map>
+#include <random>
+#include <set>
+#include <sstream>
+
+#include "builtin_targets.hpp"
+#include "cli_runner.hpp"
+#include "common/atomic_file.hpp"
+#include "common/error.hpp"
+#include "driver/pipeline.hpp"
+#include "knitout/fabric_stitch_graph.hpp"
+#include "knitout/fabric_stitch_mesh.hpp"
+#include "labeling/shapes.hpp"
+#include "mesh/obj_format.hpp"
+#include "test_knitout_util.hpp"
+
+namespace skein {
+namespace {
+
+namespace fs = std::filesystem;
+
+knitout::Replay replay(const std::string& text, const std::string& name) {
+  knitout::ProfileChoice chosen = knitout::choose_profile(text, name, "", false);
+  return knitout::replay_knitout(text, name, chosen.profile, chosen.options);
+}
+
+// The fabric written as a stitch mesh, read back and compiled as `skein check` does.
+Compilation fabric_mesh(const knitout::Replay& r, const std::string& name) {
+  std::ostringstream obj;
+  knitout::write_fabric_stitch_mesh(r, name, obj);
+  return compile_stitch_mesh(parse_stitch_mesh(obj.str(), name + ".obj"), name + ".obj");
+}
+
+std::map<StitchType, int> types(const KnitGraph& g) {
+  std::map<StitchType, int> n;
+  for (StitchType t : g.type) ++n[t];
+  return n;
+}
+
+// On the generic profile skein knits a model and its tuck border only: the fabric is the
+// model, stitch type for stitch type (purls are the back bed's loops on a sheet; a decrease is
+// written k2tog, as the model's are).
+TEST(KnitoutFabricMesh, TheSamplesRoundTripWithTheirStitches) {
+  fs::current_path(SKEIN_SOURCE_DIR);
+  for (const char* sample : {"hat/hat.obj", "rib-swatch/rib-swatch.obj", "swatch/swatch.yaml"}) {
+    SCOPED_TRACE(sample);
+    Compilation model = compile_model(fmt::format("samples/{}", sample));
+    knitout::MachineProfile p = testing::shipped_profile("generic");
+    std::string text = testing::emit_knitout_text(model, p);
+    ASSERT_TRUE(testing::replay_and_prove(text, model, p).proven);
+    Compilation fabric = fabric_mesh(replay(text, "out.k"), "out");
+    EXPECT_TRUE(fabric.knittability.knittable) << check_report(fabric);
+    EXPECT_EQ(types(fabric.knit), types(model.knit)) << check_report(fabric);
+  }
+}
+
+class KnitoutFabricMeshCli : public testing::SkeinCliTest {};
+
+// What a user types: compile, verify --fabric x.obj, check x.obj.
+TEST_F(KnitoutFabricMeshCli, TheHatRoundTrips) {
+  std::string k = in_dir("hat.k"), obj = in_dir("x.obj");
+  ASSERT_EQ(skein("compile samples/hat/hat.obj -t knitout -m generic -o " + k).exit_code, 0);
+  testing::CliRun verify = skein(fmt::format("verify {} --fabric {}", k, obj));
+  EXPECT_NE(verify.out.find("the fabric written as a stitch mesh in"), std::string::npos)
+      << verify.out << verify.err;
+  testing::CliRun check = skein("check " + obj);
+  EXPECT_EQ(check.exit_code, 0) << check.out << check.err;
+  EXPECT_NE(check.out.find("knittable"), std::string::npos) << check.out;
+  EXPECT_NE(check.out.find("stitches: 2048"), std::string::npos) << check.out;
+}
+
+// The third-party files whose fabric is a plain sheet or tube of one yarn are written, check as
+// knittable and have the stitch graph's stitches; the others are refused, each by name.
+TEST(KnitoutFabricMesh, ForeignSheetsAndTubesAreWrittenTheRestRefused) {
+  // The others: short rows (garter's and the Milano ribs' rows on one bed at a time, entrelac,
+  // the i-cord cast-on), courses knit in two passes (interlock, alternating jersey, the tubes
+  // knit front and back as one row), yarn-overs (the lace tests' loops through nothing), a
+  // wale ending inside the fabric (the hyperbolic plane), several yarns (intarsia).
+  const std::set<std::string> sheets_and_tubes = {"Tutorial1/helloworld.k",
+                                                  "Tutorial2/rib1x1.k",
+                                                  "basic-vol-1/fullrib.knitout",
+                                                  "basic-vol-1/rib-1x1.knitout",
+                                                  "basic-vol-1/rib-2x2.knitout",
+                                                  "basic-vol-1/rib-4x4.knitout",
+                                                  "basic-vol-1/singlejersey.knitout",
+                                                  "image-kp-half-rib.k",
+                                                  "k.knitout",
+                                                  "lace.knitout",
+                                                  "rectangle.knitout"};
+  std::set<std::string> written;
+  const fs::path root = testing::source_path("tests/data/knitout-foreign/knitout-examples");
+  for (const auto& entry : fs::recursive_directory_iterator(root)) {
+    std::string ext = entry.path().extension().string();
+    if (ext != ".k" && ext != ".knitout") continue;
+    std::string name = fs::relative(entry.path(), root).generic_string();
+    SCOPED_TRACE(name);
+    knitout::Replay r = replay(read_file(entry.path().string()), name);
+    try {
+      Compilation fabric = fabric_mesh(r, name);
+      std::ostringstream st;
+      knitout::write_fabric_stitch_graph(r, name, st);
+      KnitGraph graph = parse_autoknit_st(st.str(), name + ".st");
+      EXPECT_TRUE(fabric.knittability.knittable) << check_report(fabric);
+      EXPECT_EQ(fabric.knit.size(), graph.size());
+      written.insert(name);
+    } catch (const UnsupportedError& e) {
+      EXPECT_NE(std::string(e.what()).find("cannot be written as a stitch mesh: "),
+                std::string::npos)
+          << e.what();
+    }
+  }
+  EXPECT_EQ(written, sheets_and_tubes);
+}
+
+// Kniterate's waste section and draw thread are yarn pieces of their own: refused, exit code 3
+// ("not yet"), and no file is left.
+TEST_F(KnitoutFabricMeshCli, SeveralYarnPiecesAreRefusedAndNothingIsWritten) {
+  std::string k = in_dir("swatch.k"), obj = in_dir("never.obj");
+  ASSERT_EQ(
+      skein("compile samples/rib-swatch/rib-swatch.obj -t knitout -m kniterate -o " + k).exit_code,
+      0);
+  testing::CliRun verify = skein(fmt::format("verify {} --fabric {}", k, obj));
+  EXPECT_EQ(verify.exit_code, 3) << verify.out << verify.err;
+  EXPECT_NE(verify.err.find("begins a second yarn piece"), std::string::npos) << verify.err;
+  EXPECT_FALSE(fs::exists(obj));
+}
+
+// `skein new` shapes at random sizes, knit on generic: each fabric is either written as a
+// stitch mesh with the model's stitch count and checks as knittable, or refused by name
+// (short rows: a sock's heel).
+TEST(KnitoutFabricMesh, RandomShapesRoundTripOrAreRefused) {
+  std::mt19937_64 rng(16);
+  const std::string dir = ::testing::TempDir();
+  knitout::MachineProfile p = testing::shipped_profile("generic");
+  int written = 0;
+  std::string refusals;
+  for (std::string kind : {"tube", "sheet", "hat", "sock"}) {
+    for (int trial = 0; trial < 4; ++trial) {
+      ShapeSize size;
+      size.circumference = 10 + static_cast<double>(rng() % 30);
+      size.width = 5 + static_cast<double>(rng() % 30);
+      size.length = 4 + static_cast<double>(rng() % 30);
+      std::string name = fmt::format("fabric-mesh-{}{}", kind, trial);
+      std::string project = write_shape(make_shape(kind, size, name), dir + "/" + name);
+      SCOPED_TRACE(project);
+      Compilation model = compile_model(project);
+      if (!model.knittability.knittable) continue;
+      std::string text;
+      try {
+        text = testing::emit_knitout_text(model, p);
+      } catch (const UnsupportedError&) {
+        continue;
+      }
+      try {
+        Compilation fabric = fabric_mesh(replay(text, name + ".k"), name);
+        EXPECT_TRUE(fabric.knittability.knittable) << check_report(fabric);
+        EXPECT_EQ(fabric.knit.size(), model.knit.size());
+        ++written;
+      } catch (const UnsupportedError& e) {
+        EXPECT_NE(std::string(e.what()).find("cannot be written as a stitch mesh: "),
+                  std::string::npos);
+        refusals += fmt::format("{}\n", e.what());
+      }
+    }
+  }
+  // The tubes, sheets and hats (their ribbing's purls knit on the other bed, in their half's
+  // pass) are written; the socks are refused: their heels are short rows.
+  EXPECT_EQ(written, 12) << refusals;
+}
+
+}  // namespace
+}  // namespace skein
