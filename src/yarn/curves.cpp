@@ -11,13 +11,14 @@ namespace {
 
 // The lobe's shape in its share of the cell (x across the lobe, y up the cell): an omega,
 // narrow at the neck where it passes through the old loop and wide at the head.
-constexpr float kLean = 0.2f;       // how far the legs lean in at the neck (of the lobe width)
-constexpr float kDip = -0.15f;      // the lobe's foot reaches into the row below
-constexpr float kHeadTop = 1.2f;    // and its head into the row above
-constexpr float kBoundTop = 0.55f;  // a bound-off lobe's head stays in its cell
-constexpr float kDepth = 1.2f;      // front-to-back amplitude, in yarn diameters
-constexpr float kStack = 0.5f;      // offset between stacked loops, in yarn diameters
-constexpr float kWiden = 1.25f;     // an increase's old loop is gripped wider than its lobes
+constexpr float kLean = 0.2f;           // how far the legs lean in at the neck (of the lobe width)
+constexpr float kDip = -0.15f;          // the lobe's foot reaches into the row below
+constexpr float kHeadTop = 1.2f;        // and its head into the row above
+constexpr float kBoundTop = 0.55f;      // a bound-off lobe's head stays in its cell
+constexpr float kDepth = 1.2f;          // front-to-back amplitude, in yarn diameters
+constexpr float kStack = 0.5f;          // offset between stacked loops, in yarn diameters
+constexpr float kWiden = 1.25f;         // an increase's old loop is gripped wider than its lobes
+constexpr float kRowsPerStitch = 1.5f;  // rows of this height take yarn sized by the width
 
 struct Sample {
   float x, y, z;
@@ -171,7 +172,10 @@ std::vector<StitchId> yarn_order(const KnitGraph& graph, const YarnPieces& piece
 
 YarnModel generate_yarn(const KnitGraph& graph, const YarnPieces& pieces,
                         const StitchLayout& layout, const CurveOptions& options) {
-  const float diameter = options.diameter * layout.gauge.stitch_width;
+  // Yarn as thick as a quarter stitch fits rows 0.7 stitches high (Munden's plain knit);
+  // flatter fabric (AutoKnit's rows are half a stitch high) gets yarn sized by its rows.
+  const float diameter = options.diameter * std::min(layout.gauge.stitch_width,
+                                                     kRowsPerStitch * layout.gauge.row_height);
   const float spacing = diameter / 2;
   const std::vector<StitchId> order = yarn_order(graph, pieces);
   const unsigned threads = options.threads ? options.threads : default_threads();
