@@ -132,21 +132,16 @@ TEST(YarnModel, RandomShapesHoldEveryLoopAndStayClear) {
 
 // AutoKnit's stitch graphs get yarn from their stitches' positions alone (no stitch mesh).
 // Their rows come in close pairs (0.10 apart, then 0.27) and lean beside decreases; the layout
-// spaces the rows evenly and squares the cells. test-B and test-C then pass the samples'
-// checks: every loop held by its taker and by no unrelated stitch, as laid and relaxed, and no
-// yarn through another. test-A does not yet: 4 of its 381 loops are pierced by a neighbour too
-// (at the two folds of its flat cast-on, beside a decrease, and at a short row's tuck), and 7
-// segment pairs stay closer than 0.9 d at the tuck-and-miss turns of its short rows.
-struct StitchGraphSample {
-  const char* name;
-  double unrelated;         // share of loops an unrelated stitch may pierce too
-  std::uint64_t too_close;  // segment pairs closer than kClearance allowed after relaxation
-};
-
+// spaces the rows evenly and squares the cells. All three relax to tolerance with no yarn
+// through another, and every loop is held by its taker, as laid and relaxed; test-B and test-C
+// pass the samples' checks, test-A's loops are pierced by an unrelated neighbour too at 3 of
+// 381 as laid and 2 relaxed (beside a decrease whose wales lean a stitch and a half, and at a
+// short row's tuck).
 TEST(YarnModel, AutoKnitStitchGraphsHoldEveryLoopAndStayClear) {
-  for (StitchGraphSample sample :
-       {StitchGraphSample{"test-A", 0.011, 10}, {"test-B", 0, 0}, {"test-C", 0, 0}}) {
-    std::string input = std::string(SKEIN_SOURCE_DIR) + "/samples/autoknit/" + sample.name + ".st";
+  const std::vector<std::pair<std::string, double>> samples = {
+      {"test-A", 0.008}, {"test-B", 0}, {"test-C", 0}};  // and the share wrongly held
+  for (const auto& [name, unrelated] : samples) {
+    std::string input = std::string(SKEIN_SOURCE_DIR) + "/samples/autoknit/" + name + ".st";
     SCOPED_TRACE(input);
     std::vector<std::array<double, 3>> positions;
     KnitGraph graph = parse_autoknit_st(read_file(input), input, &positions);
@@ -154,14 +149,12 @@ TEST(YarnModel, AutoKnitStitchGraphsHoldEveryLoopAndStayClear) {
     YarnOptions options;
     options.relax_yarn = false;
     YarnBuild laid = build_yarn(c.knit, c.yarns, nullptr, positions, options);
-    expect_held(c, laid.model, "as laid", sample.unrelated);
+    expect_held(c, laid.model, "as laid", unrelated);
     options.relax_yarn = true;
     YarnBuild relaxed = build_yarn(c.knit, c.yarns, nullptr, positions, options);
-    if (sample.too_close == 0) {
-      EXPECT_TRUE(relaxed.relaxation.converged);
-    }
-    expect_held(c, relaxed.model, "relaxed", sample.unrelated);
-    EXPECT_LE(yarn_clearance(relaxed.model, kClearance).closer, sample.too_close);
+    EXPECT_TRUE(relaxed.relaxation.converged);
+    expect_held(c, relaxed.model, "relaxed", unrelated);
+    expect_clear(c, relaxed.model);
   }
 }
 

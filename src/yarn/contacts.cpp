@@ -121,7 +121,7 @@ bool close_along_yarn(std::span<const Point3> point, std::span<const std::uint8_
 
 std::vector<SegmentPair> close_segments(std::span<const Point3> point,
                                         std::span<const std::uint32_t> piece_first, float reach,
-                                        unsigned threads) {
+                                        float along, unsigned threads) {
   std::vector<std::uint8_t> starts = segment_starts(point.size(), piece_first);
   float longest = 0;
   for (std::size_t i = 0; i + 1 < point.size(); ++i)
@@ -170,7 +170,7 @@ std::vector<SegmentPair> close_segments(std::span<const Point3> point,
           float r = sphere[i].radius + sphere[j].radius;
           if ((sphere[i].centre - sphere[j].centre).squaredNorm() >= r * r) continue;
           if (closest_points(point[lo], point[lo + 1], point[hi], point[hi + 1]).distance < reach &&
-              !close_along_yarn(point, starts, lo, hi, reach))
+              !close_along_yarn(point, starts, lo, hi, along))
             out.push_back({lo, hi});
         }
       }

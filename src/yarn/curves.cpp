@@ -11,11 +11,13 @@ namespace {
 
 // The lobe's shape in its share of the cell (x across the lobe, y up the cell): an omega,
 // narrow at the neck where it passes through the old loop and wide at the head.
-constexpr float kLean = 0.2f;           // how far the legs lean in at the neck (of the lobe width)
-constexpr float kDip = -0.15f;          // the lobe's foot reaches into the row below
-constexpr float kHeadTop = 1.2f;        // and its head into the row above
-constexpr float kBoundTop = 0.55f;      // a bound-off lobe's head stays in its cell
-constexpr float kDepth = 1.2f;          // front-to-back amplitude, in yarn diameters
+constexpr float kLean = 0.2f;       // how far the legs lean in at the neck (of the lobe width)
+constexpr float kDip = -0.15f;      // the lobe's foot reaches into the row below
+constexpr float kHeadTop = 1.2f;    // and its head into the row above
+constexpr float kBoundTop = 0.55f;  // a bound-off lobe's head stays in its cell
+constexpr float kDepth = 1.2f;      // front-to-back amplitude, in yarn diameters
+// A slip's float passes a diameter behind the loop it holds (a tuck's lies at 0.8 of the depth).
+constexpr float kFloatDepth = 1.9f;     // of the depth amplitude
 constexpr float kStack = 0.5f;          // offset between stacked loops, in yarn diameters
 constexpr float kWiden = 1.25f;         // an increase's old loop is gripped wider than its lobes
 constexpr float kRowsPerStitch = 1.5f;  // rows of this height take yarn sized by the width
@@ -50,7 +52,7 @@ Sample lobe_sample(const StitchTemplate& t, std::uint32_t j, std::uint32_t k, fl
   float x = (static_cast<float>(j) + table.u[k] + table.lean[k]) / lobes;
   switch (t.kind) {
     case LobeKind::slipped:
-      return {(static_cast<float>(j) + table.u[k]) / lobes, 0.5f, -amplitude};
+      return {(static_cast<float>(j) + table.u[k]) / lobes, 0.5f, -kFloatDepth * amplitude};
     case LobeKind::tucked:
       return {x, 0.35f + (kHeadTop - 0.35f) * table.rise[k], -0.8f * amplitude};
     case LobeKind::cast_on:

@@ -138,9 +138,12 @@ std::vector<Point3> evenly_spaced_rows(const KnitGraph& graph, const std::vector
   if (springs.empty()) return centre;
   const auto row_height = static_cast<float>(wale_sum / static_cast<double>(springs.size()));
   for (Spring& s : springs) s.rest = row_height;
+  std::vector<float> widths;
   for (StitchId s = 0; s < graph.size(); ++s)
-    if (beside(graph, s))
-      springs.push_back({s, graph.yarn_next[s], (centre[graph.yarn_next[s]] - centre[s]).norm()});
+    if (beside(graph, s)) widths.push_back((centre[graph.yarn_next[s]] - centre[s]).norm());
+  const float stitch_width = median(widths, row_height);
+  for (StitchId s = 0; s < graph.size(); ++s)
+    if (beside(graph, s)) springs.push_back({s, graph.yarn_next[s], stitch_width});
   return relax_springs(centre, springs, MeshRelaxOptions{});
 }
 
