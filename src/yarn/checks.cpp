@@ -74,7 +74,7 @@ Clearance yarn_clearance(const YarnModel& model, float allowed, unsigned threads
   threads = threads ? threads : default_threads();
   const float diameter = 2 * model.radius;
   std::vector<SegmentPair> pairs =
-      close_segments(model.point, model.piece_first, diameter, threads);
+      close_segments(model.point, model.piece_first, diameter, diameter, threads);
   Clearance c;
   c.checked = pairs.size();
   for (const SegmentPair& p : pairs) {

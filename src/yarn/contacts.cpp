@@ -99,9 +99,29 @@ std::vector<std::uint8_t> segment_starts(std::size_t points,
   return starts;
 }
 
+namespace {
+
+// Segments lo < hi of one piece with less than `length` of yarn between them are neighbours
+// whatever their indices: a straight float's points lie close together (a slip's yarn
+// across the back of its cell), and yarn cannot pass through itself there.
+bool close_along_yarn(std::span<const Point3> point, std::span<const std::uint8_t> starts,
+                      std::uint32_t lo, std::uint32_t hi, float length) {
+  constexpr std::uint32_t kLongest = 96;  // segments (a few stitches): bounds the walk
+  if (hi - lo > kLongest) return false;
+  float between = 0;
+  for (std::uint32_t k = lo + 1; k < hi; ++k) {
+    if (!starts[k]) return false;  // another piece
+    between += (point[k + 1] - point[k]).norm();
+    if (between >= length) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 std::vector<SegmentPair> close_segments(std::span<const Point3> point,
                                         std::span<const std::uint32_t> piece_first, float reach,
-                                        unsigned threads) {
+                                        float along, unsigned threads) {
   std::vector<std::uint8_t> starts = segment_starts(point.size(), piece_first);
   float longest = 0;
   for (std::size_t i = 0; i + 1 < point.size(); ++i)
@@ -149,7 +169,8 @@ std::vector<SegmentPair> close_segments(std::span<const Point3> point,
           if (hi <= lo + kNeighbourSegments) continue;
           float r = sphere[i].radius + sphere[j].radius;
           if ((sphere[i].centre - sphere[j].centre).squaredNorm() >= r * r) continue;
-          if (closest_points(point[lo], point[lo + 1], point[hi], point[hi + 1]).distance < reach)
+          if (closest_points(point[lo], point[lo + 1], point[hi], point[hi + 1]).distance < reach &&
+              !close_along_yarn(point, starts, lo, hi, along))
             out.push_back({lo, hi});
         }
       }

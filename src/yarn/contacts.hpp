@@ -28,11 +28,12 @@ Closest closest_points(const Point3& p0, const Point3& p1, const Point3& q0, con
 // `reach` or more apart (their midpoints farther than the half lengths and the reach).
 bool may_touch(std::span<const Point3> point, std::size_t a, std::size_t b, float reach);
 
-// Every pair of segments (not neighbours along a piece) whose closest distance is below
-// `reach`. `piece_first` is the CSR of points per piece (a segment never spans two pieces).
+// Every pair of segments whose closest distance is below `reach`, but neighbours along a
+// piece: fewer than kNeighbourSegments apart, or with less than `along` of yarn between them.
+// `piece_first` is the CSR of points per piece (a segment never spans two pieces).
 std::vector<SegmentPair> close_segments(std::span<const Point3> point,
                                         std::span<const std::uint32_t> piece_first, float reach,
-                                        unsigned threads);
+                                        float along, unsigned threads);
 
 // Per point: 1 when a segment starts there (the point is not its piece's last).
 std::vector<std::uint8_t> segment_starts(std::size_t points,

@@ -16,8 +16,11 @@ constexpr float kDip = -0.15f;      // the lobe's foot reaches into the row belo
 constexpr float kHeadTop = 1.2f;    // and its head into the row above
 constexpr float kBoundTop = 0.55f;  // a bound-off lobe's head stays in its cell
 constexpr float kDepth = 1.2f;      // front-to-back amplitude, in yarn diameters
-constexpr float kStack = 0.5f;      // offset between stacked loops, in yarn diameters
-constexpr float kWiden = 1.25f;     // an increase's old loop is gripped wider than its lobes
+// A slip's float passes a diameter behind the loop it holds (a tuck's lies at 0.8 of the depth).
+constexpr float kFloatDepth = 1.9f;     // of the depth amplitude
+constexpr float kStack = 0.5f;          // offset between stacked loops, in yarn diameters
+constexpr float kWiden = 1.25f;         // an increase's old loop is gripped wider than its lobes
+constexpr float kRowsPerStitch = 1.5f;  // rows of this height take yarn sized by the width
 
 struct Sample {
   float x, y, z;
@@ -49,7 +52,7 @@ Sample lobe_sample(const StitchTemplate& t, std::uint32_t j, std::uint32_t k, fl
   float x = (static_cast<float>(j) + table.u[k] + table.lean[k]) / lobes;
   switch (t.kind) {
     case LobeKind::slipped:
-      return {(static_cast<float>(j) + table.u[k]) / lobes, 0.5f, -amplitude};
+      return {(static_cast<float>(j) + table.u[k]) / lobes, 0.5f, -kFloatDepth * amplitude};
     case LobeKind::tucked:
       return {x, 0.35f + (kHeadTop - 0.35f) * table.rise[k], -0.8f * amplitude};
     case LobeKind::cast_on:
@@ -171,7 +174,10 @@ std::vector<StitchId> yarn_order(const KnitGraph& graph, const YarnPieces& piece
 
 YarnModel generate_yarn(const KnitGraph& graph, const YarnPieces& pieces,
                         const StitchLayout& layout, const CurveOptions& options) {
-  const float diameter = options.diameter * layout.gauge.stitch_width;
+  // Yarn as thick as a quarter stitch fits rows 0.7 stitches high (Munden's plain knit);
+  // flatter fabric (AutoKnit's rows are half a stitch high) gets yarn sized by its rows.
+  const float diameter = options.diameter * std::min(layout.gauge.stitch_width,
+                                                     kRowsPerStitch * layout.gauge.row_height);
   const float spacing = diameter / 2;
   const std::vector<StitchId> order = yarn_order(graph, pieces);
   const unsigned threads = options.threads ? options.threads : default_threads();

@@ -11,6 +11,8 @@
 namespace skein {
 namespace {
 
+constexpr float kNarrowest = 0.5f;  // the narrowest cell, in stitch widths
+
 std::vector<StitchId> yarn_predecessors(const KnitGraph& graph) {
   std::vector<StitchId> prev(graph.size(), kNoStitch);
   for (StitchId s = 0; s < graph.size(); ++s)
@@ -73,6 +75,9 @@ StitchFrame frame_at(const Point3& centre, Point3 course, Point3 wale, Point3 no
   normal.normalize();
   if (!course.allFinite() || course.norm() < 1e-3f * gauge.stitch_width)
     course = normal.unitOrthogonal() * gauge.stitch_width;
+  // A stitch on top of its neighbour (AutoKnit's miss beside the tuck that turns a short
+  // row) still gets a cell its yarn fits in: half a stitch at least.
+  course *= std::max(1.0f, kNarrowest * gauge.stitch_width / course.norm());
   if (!wale.allFinite() || wale.cross(course).norm() < 0.1f * wale.norm() * course.norm())
     wale = normal.cross(course).normalized() * gauge.row_height;
   StitchFrame f;
@@ -107,6 +112,39 @@ void orient_normals(const KnitGraph& graph, std::span<const StitchId> prev,
       for (std::uint32_t l : graph.loops_made_by(s)) visit(s, graph.loops[l].taker);
     }
   }
+}
+
+// The wale axis without its part along the course. Where wales lean (beside AutoKnit's
+// decreases a loop's taker sits more than a stitch aside) a sheared cell would put a
+// stitch's lobe over its neighbour's; a square one keeps it over its own slot, and its head
+// still bends to wherever the taker grips it.
+void square_to_course(NeighbourAxes& axes) {
+  float along = axes.course.squaredNorm();
+  if (along > 0) axes.wale -= axes.course * (axes.wale.dot(axes.course) / along);
+}
+
+// AutoKnit places rows in close pairs (test-A: 0.10 apart, then 0.27), so cells centred on
+// the stitches would overlap a row's neighbour and leave gaps at the next. Springs along the
+// yarn (at their own lengths: the course keeps its shape) and along every loop (at the mean
+// of the loops' lengths) space the rows evenly; a weak pull to the input keeps the shape.
+std::vector<Point3> evenly_spaced_rows(const KnitGraph& graph, const std::vector<Point3>& centre) {
+  std::vector<Spring> springs;
+  double wale_sum = 0;
+  for (const Loop& loop : graph.loops) {
+    if (loop.maker == kNoStitch || loop.taker == kNoStitch) continue;
+    wale_sum += (centre[loop.taker] - centre[loop.maker]).norm();
+    springs.push_back({loop.maker, loop.taker, 0});
+  }
+  if (springs.empty()) return centre;
+  const auto row_height = static_cast<float>(wale_sum / static_cast<double>(springs.size()));
+  for (Spring& s : springs) s.rest = row_height;
+  std::vector<float> widths;
+  for (StitchId s = 0; s < graph.size(); ++s)
+    if (beside(graph, s)) widths.push_back((centre[graph.yarn_next[s]] - centre[s]).norm());
+  const float stitch_width = median(widths, row_height);
+  for (StitchId s = 0; s < graph.size(); ++s)
+    if (beside(graph, s)) springs.push_back({s, graph.yarn_next[s], stitch_width});
+  return relax_springs(centre, springs, MeshRelaxOptions{});
 }
 
 Gauge gauge_of(const std::vector<NeighbourAxes>& axes) {
@@ -188,6 +226,7 @@ StitchLayout layout_from_positions(const KnitGraph& graph,
     if (!centre[s].allFinite()) centre[s] = Point3::Zero();
     middle += centre[s] / static_cast<float>(n);
   }
+  centre = evenly_spaced_rows(graph, centre);
   std::vector<StitchId> prev = yarn_predecessors(graph);
   std::vector<NeighbourAxes> axes(n);
   std::vector<Point3> normal(n);
@@ -195,6 +234,7 @@ StitchLayout layout_from_positions(const KnitGraph& graph,
     axes[s] = neighbour_axes(graph, centre, prev, s);
     normal[s] = axes[s].course.cross(axes[s].wale).normalized();
     if (!normal[s].allFinite()) normal[s] = Point3::UnitZ();
+    square_to_course(axes[s]);
   }
   orient_normals(graph, prev, normal);
   float outwards = 0;

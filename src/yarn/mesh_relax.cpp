@@ -8,11 +8,6 @@
 namespace skein {
 namespace {
 
-struct Spring {
-  std::uint32_t a, b;
-  float rest;
-};
-
 Point3 point(const Vec3& v) {
   return {v.x, v.y, v.z};
 }
@@ -100,17 +95,14 @@ Gauge stitch_mesh_gauge(const StitchMesh& mesh) {
   return g;
 }
 
-std::vector<Point3> relax_stitch_mesh(const StitchMesh& mesh, const Gauge& gauge,
-                                      const MeshRelaxOptions& options) {
-  const std::uint32_t n = mesh.num_vertices();
-  std::vector<Point3> start(n), x(n), delta(n);
-  for (Vertex v : mesh.vertices()) start[v.index()] = point(mesh.position[v]);
-  x = start;
-  std::vector<Spring> springs = springs_of(mesh, gauge);
+std::vector<Point3> relax_springs(const std::vector<Point3>& start, std::span<const Spring> springs,
+                                  const MeshRelaxOptions& options) {
+  const auto n = static_cast<std::uint32_t>(start.size());
+  std::vector<Point3> x = start, delta(n);
   std::vector<float> valence(n, 0);
   for (const Spring& s : springs) valence[s.a] += 1, valence[s.b] += 1;
-  // Jacobi iterations: each spring moves its ends half way to its rest length, averaged over
-  // the springs at a vertex, so that no step overshoots whatever the valence.
+  // Each spring moves its ends half way to its rest length, averaged over the springs at a
+  // point, so that no step overshoots whatever the valence.
   for (int it = 0; it < options.iterations; ++it) {
     std::fill(delta.begin(), delta.end(), Point3::Zero());
     for (const Spring& s : springs) {
@@ -127,6 +119,13 @@ std::vector<Point3> relax_stitch_mesh(const StitchMesh& mesh, const Gauge& gauge
     }
   }
   return x;
+}
+
+std::vector<Point3> relax_stitch_mesh(const StitchMesh& mesh, const Gauge& gauge,
+                                      const MeshRelaxOptions& options) {
+  std::vector<Point3> start(mesh.num_vertices());
+  for (Vertex v : mesh.vertices()) start[v.index()] = point(mesh.position[v]);
+  return relax_springs(start, springs_of(mesh, gauge), options);
 }
 
 }  // namespace skein

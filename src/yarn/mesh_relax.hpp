@@ -28,6 +28,17 @@ struct MeshRelaxOptions {
   float anchor = 0.05f;  // pull back towards the input position per iteration
 };
 
+// A spring between points a and b.
+struct Spring {
+  std::uint32_t a, b;
+  float rest;
+};
+
+// Jacobi iterations of `springs` from `start`, each point pulled back towards its start by
+// `options.anchor` per iteration. Linear in points and springs per iteration.
+std::vector<Point3> relax_springs(const std::vector<Point3>& start, std::span<const Spring> springs,
+                                  const MeshRelaxOptions& options);
+
 // The input's gauge: median course and wale edge lengths (the mesh was generated at it).
 Gauge stitch_mesh_gauge(const StitchMesh& mesh);
 

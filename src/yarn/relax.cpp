@@ -38,7 +38,8 @@ class Relaxation {
     float drift = kSkin;  // forces a first build of the pair list
     for (report.steps = 0; report.steps < o_.max_steps;) {
       if (drift >= kSkin / 2) {
-        pairs_ = close_segments(m_.point, m_.piece_first, diameter_ + kSkin * m_.radius, threads_);
+        pairs_ = close_segments(m_.point, m_.piece_first, diameter_ + kSkin * m_.radius, diameter_,
+                                threads_);
         drift = 0;
       }
       report.overlap = push_apart();
