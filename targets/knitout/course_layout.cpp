@@ -79,7 +79,9 @@ void check_borders(const KnitGraph& g, const CourseLayout& l) {
   for (const Course& c : l.courses) {
     StitchId s = l.order[c.begin];
     auto before = last_of.find(c.yarn);
-    if (before != last_of.end() && g.yarn_link[before->second] != YarnLink::turn)
+    // After binding off part of the work (a flap) the yarn goes on to the rest without a turn.
+    if (before != last_of.end() && g.yarn_link[before->second] != YarnLink::turn &&
+        !is_bind_off(g, before->second))
       unsupported(g, "a row that does not start with a turn", s);
     last_of[c.yarn] = l.order[c.end - 1];
   }
@@ -147,11 +149,21 @@ class ProgramLayouts {
 
   std::vector<CourseLayout> run() && {
     for (const Step& step : p_.steps) take_step(step);
-    for (CourseLayout& l : layouts_) finish(l);
+    for (std::uint32_t i = 0; i < layouts_.size(); ++i) finish(i);
     return std::move(layouts_);
   }
 
  private:
+  // A short row's turn beside a waiting loop (`beyond`), which may take a wrap.
+  struct Turn {
+    std::uint32_t layout, course;
+    StitchId turning;
+    std::uint32_t beyond;
+  };
+  std::uint32_t index_of(const CourseLayout& l) const {
+    return static_cast<std::uint32_t>(&l - layouts_.data());
+  }
+
   struct Piece {
     std::uint32_t round_start = kNoWrap;  // the first loop of the last full round
   };
@@ -303,7 +315,8 @@ class ProgramLayouts {
     StitchId last = l.order[course.end - 1];
     bool turns_next = g_.yarn_link[last] == YarnLink::turn && g_.yarn_next[last] != kNoStitch;
     if (course.partial && turns_next && !left.empty())
-      choose_wrap(g_, last, left_to_right ? after : before, course, wrapped_);
+      turns_.push_back({index_of(l), static_cast<std::uint32_t>(l.courses.size() - 1), last,
+                        left_to_right ? after : before});
   }
 
   // A block of bind-offs straight after the bind-offs that ended the course before, along the
@@ -329,7 +342,8 @@ class ProgramLayouts {
     return made[sr5 ? knit_slot(StitchType::sr5, c.left_to_right) : 0];
   }
 
-  void finish(CourseLayout& l) const {
+  void finish(std::uint32_t index) {
+    CourseLayout& l = layouts_[index];
     for (const Course& course : l.courses) {
       RowShape shape = g_.row_shape[course.row];
       if (shape != RowShape::short_row && (shape == RowShape::closed) != l.tube)
@@ -337,12 +351,40 @@ class ProgramLayouts {
     }
     if (l.courses.size() < 2) unsupported(g_, "a piece with fewer than two rows", l.order.front());
     mark_yarn_ends(l);
+    wrap_turns(index);
     check_borders(g_, l);
     check_sr5_turn_loops(g_, l);
     l.left_to_right.assign(g_.size(), 1);
     for (const Course& course : l.courses)
       for (std::uint32_t i = course.begin; i < course.end; ++i)
         l.left_to_right[l.order[i]] = course.left_to_right;
+  }
+
+  // A turn's wrap closes the gap beside a short row, which a later course knits across: the
+  // course that takes the waiting loop beyond the turn takes loops made since the turn too.
+  // Beside a slit (a sheet parted into flaps, each knit on its own) the course that takes the
+  // other flap's loop takes none: a wrap there would join the flaps, so the turn goes unwrapped.
+  void wrap_turns(std::uint32_t index) {
+    CourseLayout& l = layouts_[index];
+    std::vector<std::uint32_t> course_of(g_.size(), kNoWrap);
+    for (std::uint32_t i = 0; i < l.courses.size(); ++i)
+      for (std::uint32_t k = l.courses[i].begin; k < l.courses[i].end; ++k)
+        course_of[l.order[k]] = i;
+    for (const Turn& t : turns_) {
+      if (t.layout != index) continue;
+      std::uint32_t across = t.beyond == kNoWrap ? kNoWrap : course_of[g_.loops[t.beyond].taker];
+      if (across != kNoWrap && takes_loops_made_since(l, l.courses[across], t.course, course_of))
+        choose_wrap(g_, t.turning, t.beyond, l.courses[t.course], wrapped_);
+    }
+  }
+  bool takes_loops_made_since(const CourseLayout& l, const Course& c, std::uint32_t since,
+                              const std::vector<std::uint32_t>& course_of) const {
+    for (std::uint32_t k = c.begin; k < c.end; ++k)
+      for (std::uint32_t loop : g_.loops_taken_by(l.order[k])) {
+        std::uint32_t made_in = course_of[g_.loops[loop].maker];
+        if (made_in != kNoWrap && made_in >= since) return true;
+      }
+    return false;
   }
 
   // Each yarn's first and last course in the layout.
@@ -365,6 +407,7 @@ class ProgramLayouts {
   std::vector<CourseLayout> layouts_;
   std::vector<Piece> pieces_;          // per layout
   std::vector<std::uint8_t> wrapped_;  // per loop: a short row's turn wraps it
+  std::vector<Turn> turns_;            // in knitting order
   std::uint32_t tails_ = 0;
 };
 

@@ -45,6 +45,13 @@ class Matcher {
     wrap_taker_.assign(f_.loops.size(), kNoStitch);
     wrap_stamp_.assign(f_.loops.size(), 0);
     turned_.assign(f_.loops.size(), 0);
+    for (StitchId s = 0; s < g_.size(); ++s) {
+      std::uint32_t row = g_.row[s];
+      if (row >= latest_taken_row_.size()) latest_taken_row_.resize(row + 1, 0);
+      for (std::uint32_t loop : g_.loops_taken_by(s))
+        if (StitchId maker = g_.loops[loop].maker; maker != kNoStitch)
+          latest_taken_row_[row] = std::max(latest_taken_row_[row], g_.row[maker]);
+    }
   }
   void begin_piece(const std::vector<StitchId>& order) {
     order_ = &order;
@@ -60,6 +67,7 @@ class Matcher {
              std::size_t& end) {
     ++try_;
     wraps_.clear();
+    turners_.clear();
     last_guess_ = kNoLoop;
     const std::vector<LoopId>& yarn = f_.by_carrier[carrier];
     CarrierMask mask = CarrierMask{1} << carrier;
@@ -93,6 +101,7 @@ class Matcher {
         stamp_[yarn[pos]] = wrap_stamp_[yarn[pos]] = try_;
         wrap_taker_[yarn[pos]] = kNoStitch;
         wraps_.push_back(yarn[pos++]);
+        turners_.push_back(s);
       }
       ++reached;
     }
@@ -157,10 +166,21 @@ class Matcher {
     return false;
   }
   bool is_wrap(LoopId x) const { return wrap_stamp_[x] == try_; }
-  // Each turn's tuck is pulled through by one st (twice by a kfb), which takes a loop too.
+  // Each turn's tuck is pulled through by one st (twice by a kfb), which takes a loop too, in a
+  // row that knits across the turn: one that takes loops made at or after it. Beside a slit (a
+  // sheet parted into flaps) the row taking the other flap's loop takes none: a tuck there
+  // would join the flaps.
   bool wraps_taken(std::string& why) const {
-    for (LoopId x : wraps_) {
+    for (std::size_t i = 0; i < wraps_.size(); ++i) {
+      LoopId x = wraps_[i];
       StitchId taker = wrap_taker_[x];
+      if (taker != kNoStitch && latest_taken_row_[g_.row[taker]] < g_.row[turners_[i]]) {
+        why = fmt::format(
+            "the turn's tuck {} after {} joins what the model leaves apart: {}, pulled through "
+            "it, is in a row that takes no loop made since the turn",
+            where(x), g_.describe(turners_[i]), g_.describe(taker));
+        return false;
+      }
       std::uint8_t want = taker != kNoStitch && g_.type[taker] == StitchType::kfb ? 2 : 1;
       if (taker == kNoStitch || f_.loops[x].children != want) {
         why = fmt::format("the turn's tuck {} is pulled through {} times, expected {} by {}",
@@ -385,7 +405,9 @@ class Matcher {
   std::vector<std::uint32_t> wrap_stamp_;  // per fabric loop: the try that took it for a wrap
   std::vector<StitchId> wrap_taker_;       // per fabric loop (a wrap): the st pulled through it
   std::vector<LoopId> wraps_;              // the turns' tucks of this try
-  std::vector<std::uint32_t> turned_;      // per fabric loop: `guesses_` when its guess is turned
+  std::vector<StitchId> turners_;          // per wrap: the st whose yarn turns before it
+  std::vector<std::uint32_t> latest_taken_row_;  // per row: the latest row whose loops it takes
+  std::vector<std::uint32_t> turned_;  // per fabric loop: `guesses_` when its guess is turned
   std::uint32_t guesses_ = 1;
   LoopId last_guess_ = kNoLoop;  // the last tuck of this try guessed a wrap or not
   std::uint32_t try_ = 0;
