@@ -83,6 +83,11 @@ class Emitter {
     for (std::size_t i = 1; i < l_.courses.size(); ++i) {
       const Course& course = l_.courses[i];
       carrier_ = carriers_[course.yarn];
+      if (course.cast_on) {  // a sheet beside the loops on the bed, its yarn and border its own
+        plan_beside(course);
+        cast_on(course);
+        continue;
+      }
       plan_course(course, false);
       transition(course);
       // A yarn that starts on loops on the bed comes in for its first course: the hook (if
@@ -93,6 +98,7 @@ class Emitter {
       } else {
         knit_course(course);
         wrap_turn(course);
+        if (course.last_of_yarn) leave_loops(course);
       }
       if (course.first_of_yarn) release(carrier_);
     }
@@ -432,6 +438,34 @@ class Emitter {
     each_in_layout_order(c, [&](StitchId s) { place(s, offset, false); });
   }
 
+  // A sheet cast on while another piece's loops wait on the bed: on the needles beside theirs,
+  // with one empty needle between, on the side from which the course joining them takes it.
+  void plan_beside(const Course& c) {
+    std::int32_t low = std::numeric_limits<std::int32_t>::max(), high = -1;
+    for (std::uint32_t loop : on_needles_) {
+      for (const Place& p : {live_[loop].now, live_[loop].home}) {
+        low = std::min(low, p.needle);
+        high = std::max(high, p.needle);
+      }
+    }
+    auto total = static_cast<std::int32_t>(measure(c).total);
+    std::int32_t first = c.beside == Beside::right ? high + 2 : low - 1 - total;
+    if (first < 0 || first + total > static_cast<std::int32_t>(p_.needles))
+      throw UnsupportedError(fmt::format(
+          "{}: {} is cast on beside the loops on needles {}..{}, which leaves it no room on "
+          "{}'s {} needles",
+          c_.input, g_.describe(l_.order[c.begin]), low, high, p_.name, p_.needles));
+    std::uint32_t q = 0;
+    each_in_layout_order(c, [&](StitchId s) {
+      StitchPlan& sp = plan_[s];
+      sp.knit_slot = knit_slot(g_.type[s], l_.left_to_right[s]);
+      sp.home = Bed::f;
+      sp.needle = first + static_cast<std::int32_t>(q + sp.knit_slot);
+      aim(s, sp, false);
+      q += footprint(g_.type[s]);
+    });
+  }
+
   // ---- output helpers ----
   void source(const Course& c, const char* what) {
     StitchId a = l_.order[c.begin], b = l_.order[c.end - 1];
@@ -757,6 +791,14 @@ class Emitter {
       if (plus ? sp.needle < edge.index : sp.needle > edge.index) edge = {sp.knit, sp.needle};
     }
     w_.miss(p_.first_pass, edge, carrier_);
+  }
+  // A yarn whose last course leaves its loops to another yarn (a flap's, which a course of the
+  // other flap's yarn later joins) goes out after it; its loops wait on their needles.
+  void leave_loops(const Course& c) {
+    w_.line(
+        fmt::format(";!source: carrier {} goes out: yarn piece {}'s loops wait for another yarn",
+                    carrier_, c.yarn + 1));
+    yarn_out(carrier_);
   }
   void release(const std::string& carrier) {
     if (p_.hook == YarnHook::inhook) w_.carriers("releasehook", carrier);
