@@ -25,10 +25,7 @@ TEST(KnitoutJoining, TheSecondFlapIsCastOnBesideTheFirstAndTheJoinClosesTheGap) 
   std::vector<knitout::CourseLayout> layouts = knitout::lay_out_pieces(c);
   ASSERT_EQ(layouts.size(), 1u);
   EXPECT_EQ(layouts[0].courses[3].beside, knitout::Beside::right);
-  std::size_t from = text.find(";!source: row 3 knit");
-  std::size_t to = text.find(";!source: row 5", from);
-  ASSERT_NE(from, std::string::npos);
-  EXPECT_EQ(text.substr(from, to - from),
+  EXPECT_EQ(testing::section(text, ";!source: row 3 knit", ";!source: row 5"),
             ";!source: row 3 knit: lines 9..12 (left to right)\n"
             "knit + f498 1\nknit + f499 1\nknit + f500 1\nknit + f501 1\n"
             ";!source: carrier 1 goes out: yarn piece 1's loops wait for another yarn\nout 1\n"
@@ -36,9 +33,7 @@ TEST(KnitoutJoining, TheSecondFlapIsCastOnBesideTheFirstAndTheJoinClosesTheGap) 
             "tuck + f503 2\ntuck + f505 2\ntuck - f506 2\ntuck - f504 2\n"
             ";!source: row 4 knit: lines 13..16 (left to right)\n"
             "knit + f503 2\nknit + f504 2\nknit + f505 2\nknit + f506 2\n");
-  from = text.find(";!source: row 7 transfers");
-  to = text.find(";!source: row 8", from);
-  EXPECT_EQ(text.substr(from, to - from),
+  EXPECT_EQ(testing::section(text, ";!source: row 7 transfers", ";!source: row 8"),
             ";!source: row 7 transfers: lines 25..32 (right to left)\n"
             "xfer f501 b501\nxfer f500 b500\nxfer f499 b499\nxfer f498 b498\nrack 1\n"
             "xfer b501 f502\nxfer b500 f501\nxfer b499 f500\nxfer b498 f499\n"

@@ -71,10 +71,7 @@ const char* const kFlaps =
 
 TEST(KnitoutParting, AFlapsTurnsBesideTheSlitAreNotWrapped) {
   auto [c, p, text] = testing::emit_letters(kFlaps, "flaps.st", "generic");
-  std::size_t from = text.find(";!source: row 3 knit");
-  std::size_t to = text.find(";!source: row 4", from);
-  ASSERT_NE(from, std::string::npos);
-  EXPECT_EQ(text.substr(from, to - from),
+  EXPECT_EQ(testing::section(text, ";!source: row 3 knit", ";!source: row 4"),
             ";!source: row 3 knit (short row): lines 17..20 (left to right)\n"
             "knit + f496 1\nknit + f497 1\nknit + f498 1\nknit + f499 1\n");
   EXPECT_TRUE(testing::replay_and_prove(text, c, p).proven);
@@ -84,7 +81,7 @@ TEST(KnitoutParting, AFlapsTurnsBesideTheSlitAreNotWrapped) {
   }
   // A wrap over the right flap's first loop, as a short row's turn would take: the right flap's
   // first stitch pulls it through, joining the flaps at the slit. The proof refuses it.
-  text.insert(to, "tuck + f500 1\n");
+  text.insert(text.find(";!source: row 4"), "tuck + f500 1\n");
   EXPECT_EQ(testing::replay_and_prove(text, c, p).summary,
             "NOT proven against flaps.st: the turn's tuck line 40 (tuck + f500 1) after line 20 "
             "(k) joins what the model leaves apart: line 29 (k), pulled through it, is in a row "
