@@ -17,7 +17,8 @@ namespace {
 using testing::shipped_profile;
 
 // Two flaps of 4 (the second cast on right of the first by a yarn of its own), joined by a
-// row from the right, then bound off.
+// row from the right, then bound off. The first is placed so that both fit centred: f495..498,
+// the second f500..503.
 const char* const kJoinedFlaps = "ssss|kkkk|kkkk/ssss|kkkk|kkkk|kkkkkkkk|eeeeeeee";
 
 TEST(KnitoutJoining, TheSecondFlapIsCastOnBesideTheFirstAndTheJoinClosesTheGap) {
@@ -27,19 +28,19 @@ TEST(KnitoutJoining, TheSecondFlapIsCastOnBesideTheFirstAndTheJoinClosesTheGap) 
   EXPECT_EQ(layouts[0].courses[3].beside, knitout::Beside::right);
   EXPECT_EQ(testing::section(text, ";!source: row 3 knit", ";!source: row 5"),
             ";!source: row 3 knit: lines 9..12 (left to right)\n"
-            "knit + f498 1\nknit + f499 1\nknit + f500 1\nknit + f501 1\n"
+            "knit + f495 1\nknit + f496 1\nknit + f497 1\nknit + f498 1\n"
             ";!source: carrier 1 goes out: yarn piece 1's loops wait for another yarn\nout 1\n"
             ";!source: cast-on border: alternating tucks\nin 2\n"
-            "tuck + f503 2\ntuck + f505 2\ntuck - f506 2\ntuck - f504 2\n"
+            "tuck + f500 2\ntuck + f502 2\ntuck - f503 2\ntuck - f501 2\n"
             ";!source: row 4 knit: lines 13..16 (left to right)\n"
-            "knit + f503 2\nknit + f504 2\nknit + f505 2\nknit + f506 2\n");
+            "knit + f500 2\nknit + f501 2\nknit + f502 2\nknit + f503 2\n");
   EXPECT_EQ(testing::section(text, ";!source: row 7 transfers", ";!source: row 8"),
             ";!source: row 7 transfers: lines 25..32 (right to left)\n"
-            "xfer f501 b501\nxfer f500 b500\nxfer f499 b499\nxfer f498 b498\nrack 1\n"
-            "xfer b501 f502\nxfer b500 f501\nxfer b499 f500\nxfer b498 f499\n"
+            "xfer f498 b498\nxfer f497 b497\nxfer f496 b496\nxfer f495 b495\nrack 1\n"
+            "xfer b498 f499\nxfer b497 f498\nxfer b496 f497\nxfer b495 f496\n"
             ";!source: row 7 knit: lines 25..32 (right to left)\nrack 0\n"
-            "knit - f506 2\nknit - f505 2\nknit - f504 2\nknit - f503 2\n"
-            "knit - f502 2\nknit - f501 2\nknit - f500 2\nknit - f499 2\n");
+            "knit - f503 2\nknit - f502 2\nknit - f501 2\nknit - f500 2\n"
+            "knit - f499 2\nknit - f498 2\nknit - f497 2\nknit - f496 2\n");
   for (const char* profile : {"generic", "swg091n2", "kniterate"}) {
     knitout::MachineProfile on = shipped_profile(profile);
     knitout::ProofResult proof =
@@ -49,7 +50,7 @@ TEST(KnitoutJoining, TheSecondFlapIsCastOnBesideTheFirstAndTheJoinClosesTheGap) 
 }
 
 // Without the transfers that close the gap, the joining row knits the empty needle between the
-// flaps (f502): the replay refuses it.
+// flaps (f499): the replay refuses it.
 TEST(KnitoutJoining, TheJoiningRowNeedsTheGapClosed) {
   auto [c, p, text] = testing::emit_letters(kJoinedFlaps, "flaps.st", "generic");
   std::size_t from = text.find(";!source: row 7 transfers");
@@ -59,8 +60,35 @@ TEST(KnitoutJoining, TheJoiningRowNeedsTheGapClosed) {
     testing::replay_and_prove(text.erase(from, to - from), c, p);
     ADD_FAILURE() << "replayed";
   } catch (const ParseError& e) {
-    EXPECT_NE(std::string(e.what()).find("knit on f502, which holds no loop"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("knit on f499, which holds no loop"), std::string::npos)
         << e.what();
+  }
+}
+
+// Two flaps of `n` stitches, two rows each, joined by a row from the right.
+std::string joined_flaps_of(std::size_t n) {
+  std::string flap = std::string(n, 's') + "|" + std::string(n, 'k') + "|" + std::string(n, 'k');
+  return flap + "/" + flap + "|" + std::string(n, 'k') + "|" + std::string(2 * n, 'k') + "|" +
+         std::string(2 * n, 'e');
+}
+
+// The first flap is placed where both fit side by side: two flaps of 120 on kniterate's 252
+// needles (the first centred alone would leave the second 66 needles too few). Two of 126 need
+// 253 with the needle between them: refused in words before anything is written.
+TEST(KnitoutJoining, FlapsSideBySideFitTheBedOrAreRefusedInWords) {
+  knitout::MachineProfile p = shipped_profile("kniterate");
+  std::string letters = joined_flaps_of(120);
+  Compilation c = testing::compile_letters(letters.c_str(), "wide.st");
+  EXPECT_TRUE(testing::replay_and_prove(testing::emit_knitout_text(c, p), c, p).proven);
+  letters = joined_flaps_of(126);
+  Compilation wider = testing::compile_letters(letters.c_str(), "wider.st");
+  try {
+    testing::emit_knitout_text(wider, p);
+    ADD_FAILURE() << "written";
+  } catch (const UnsupportedError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "wider.st needs 253 needles for its pieces cast on side by side (from line 1 "
+              "(co)), kniterate has 252");
   }
 }
 

@@ -163,6 +163,24 @@ class Emitter {
           fmt::format("{} needs {} needles{} (row {}, from {}), {} has {}", c_.input, widest,
                       l_.tube ? " in half gauge" : "", at_course->row + 1,
                       g_.describe(l_.order[at_course->begin]), p_.name, p_.needles));
+    check_side_by_side();
+  }
+
+  // Sheets cast on beside the first (flaps a later row joins): the needles they take at their
+  // cast-on, one empty needle apart, left and right of the first, so that the first is placed
+  // where all of them fit.
+  void check_side_by_side() {
+    for (const Course& c : l_.courses) {
+      if (c.beside == Beside::none) continue;
+      auto width = static_cast<std::int32_t>(measure(c).total) + 1;
+      (c.beside == Beside::left ? beside_left_ : beside_right_) += width;
+    }
+    const Course& first = l_.courses.front();
+    auto needed = static_cast<std::uint32_t>(beside_left_ + beside_right_) + measure(first).total;
+    if (needed > p_.needles)
+      throw UnsupportedError(fmt::format(
+          "{} needs {} needles for its pieces cast on side by side (from {}), {} has {}", c_.input,
+          needed, g_.describe(l_.order[first.begin]), p_.name, p_.needles));
   }
 
   // The loops each stitch gathers on one needle, and the transfers a double decrease needs.
@@ -426,7 +444,7 @@ class Emitter {
     std::int32_t span = static_cast<std::int32_t>(l_.tube ? p_.needles / 2 : p_.needles);
     std::int32_t used = static_cast<std::int32_t>(l_.tube ? std::max(f.front, back) : f.total);
     std::int32_t low = l_.tube ? used - 1 : 0, high = l_.tube ? span - 1 : span - used;
-    std::int32_t offset = (span - used) / 2 + low;
+    std::int32_t offset = (span - used - beside_left_ - beside_right_) / 2 + low + beside_left_;
     if (!wants.empty()) {
       auto mid = wants.begin() + static_cast<std::ptrdiff_t>(wants.size() / 2);
       std::nth_element(wants.begin(), mid, wants.end());
@@ -892,9 +910,10 @@ class Emitter {
   const CourseLayout& l_;
   KnitoutWriter& w_;
   std::int32_t pitch_ = 1, reach_ = 1;
-  std::int32_t fold_ = 0;         // a tube's right fold: front f2R faces back b2R+1 beside it
-  std::vector<StitchPlan> plan_;  // per stitch, for the course being knit
-  std::vector<LoopPlace> live_;   // per loop of the knit graph
+  std::int32_t fold_ = 0;  // a tube's right fold: front f2R faces back b2R+1 beside it
+  std::int32_t beside_left_ = 0, beside_right_ = 0;  // needles for the sheets cast on beside
+  std::vector<StitchPlan> plan_;                     // per stitch, for the course being knit
+  std::vector<LoopPlace> live_;                      // per loop of the knit graph
   std::vector<std::uint32_t> on_needles_, index_on_needles_;  // the loops made, not yet taken
   std::array<std::vector<Shaping>, 2> shaping_;  // a short row's shaped stitches, per bed
   std::vector<RoomMove> room_;                   // the waiting loops the shaping moves
