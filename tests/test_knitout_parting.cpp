@@ -56,6 +56,38 @@ TEST(KnitoutParting, TheProofWantsTheMidWorkChainsLastLoopDropped) {
             "(line 62 (knit - b501 1)) on the needle: a bind-off of part of the work drops it");
 }
 
+// A sheet parted at a slit into two flaps, knit one after the other by one yarn: the left
+// flap's rows turn beside the right flap's loops, which wait. Those turns are not short rows:
+// no later row knits across the slit, so none is wrapped (a wrap would join the flaps there).
+const char* const kFlaps =
+    "ssssssss|"
+    "kkkkkkkk|"
+    "kkkk|"
+    "kkkk|"
+    "eeee"
+    "kkkk|"
+    "kkkk|"
+    "eeee";
+
+TEST(KnitoutParting, AFlapsTurnsBesideTheSlitAreNotWrapped) {
+  auto [c, p, text] = testing::emit_letters(kFlaps, "flaps.st", "generic");
+  EXPECT_EQ(testing::section(text, ";!source: row 3 knit", ";!source: row 4"),
+            ";!source: row 3 knit (short row): lines 17..20 (left to right)\n"
+            "knit + f496 1\nknit + f497 1\nknit + f498 1\nknit + f499 1\n");
+  EXPECT_TRUE(testing::replay_and_prove(text, c, p).proven);
+  for (const char* profile : {"swg091n2", "kniterate"}) {
+    knitout::MachineProfile other = shipped_profile(profile);
+    EXPECT_TRUE(testing::replay_and_prove(testing::emit_knitout_text(c, other), c, other).proven);
+  }
+  // A wrap over the right flap's first loop, as a short row's turn would take: the right flap's
+  // first stitch pulls it through, joining the flaps at the slit. The proof refuses it.
+  text.insert(text.find(";!source: row 4"), "tuck + f500 1\n");
+  EXPECT_EQ(testing::replay_and_prove(text, c, p).summary,
+            "NOT proven against flaps.st: the turn's tuck line 40 (tuck + f500 1) after line 20 "
+            "(k) joins what the model leaves apart: line 29 (k), pulled through it, is in a row "
+            "that takes no loop made since the turn");
+}
+
 TEST(KnitoutParting, PartedTubesProveOnEveryProfile) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
   std::vector<std::pair<std::string, Compilation>> inputs;

@@ -168,6 +168,15 @@ inline EmittedLetters emit_letters(const char* letters, const char* name,
   return e;
 }
 
+// The lines of `text` from the first that starts with `from` up to the next that starts with
+// `to` ("" when `from` is not there).
+inline std::string section(const std::string& text, const std::string& from,
+                           const std::string& to) {
+  std::size_t begin = text.find(from);
+  if (begin == std::string::npos) return "";
+  return text.substr(begin, text.find(to, begin) - begin);
+}
+
 // Random letters taking exactly `loops` loops: knits, kfbs, k2togs, tucks and slips.
 inline std::string random_run(std::mt19937_64& rng, std::size_t loops, std::size_t& made) {
   std::string run;

@@ -57,20 +57,26 @@ bool is_bind_off(const KnitGraph& g, StitchId s) {
   return g.type[s] == StitchType::bo;
 }
 
+// Its loops are all taken by another yarn (which knits on from them).
+bool left_to_another_yarn(const KnitGraph& g, const YarnPieces& yarns, StitchId s) {
+  for (std::uint32_t loop : g.loops_made_by(s))
+    if (yarns.piece_of[g.loops[loop].taker] == yarns.piece_of[s]) return false;
+  return true;
+}
+
 // A bind-off course may come before the last (part of the work bound off, as a tube's first
-// leg, while the rest waits and is knit on after it); the last course is all bind-off.
-void check_borders(const KnitGraph& g, const CourseLayout& l) {
-  const Course& first = l.courses.front();
+// leg, while the rest waits and is knit on after it); a yarn's last course is all bind-off, or
+// leaves its loops to another yarn (a flap's, before the course that joins it).
+void check_borders(const KnitGraph& g, const YarnPieces& yarns, const CourseLayout& l) {
   for (const Course& c : l.courses) {
     for (std::uint32_t i = c.begin; i < c.end; ++i) {
       StitchId s = l.order[i];
-      bool in_first = i < first.end;
-      if (in_first != (g.type[s] == StitchType::co))
+      if (c.cast_on != (g.type[s] == StitchType::co))
         unsupported(g,
-                    in_first ? "a first row that is not all cast-on stitches"
-                             : "a cast-on stitch above the first row",
+                    c.cast_on ? "a first row that is not all cast-on stitches"
+                              : "a cast-on stitch above the first row",
                     s);
-      if (c.last_of_yarn && !is_bind_off(g, s))
+      if (c.last_of_yarn && !is_bind_off(g, s) && !left_to_another_yarn(g, yarns, s))
         unsupported(g, "a last row that is not all bind-off stitches", s);
     }
   }
@@ -79,7 +85,9 @@ void check_borders(const KnitGraph& g, const CourseLayout& l) {
   for (const Course& c : l.courses) {
     StitchId s = l.order[c.begin];
     auto before = last_of.find(c.yarn);
-    if (before != last_of.end() && g.yarn_link[before->second] != YarnLink::turn)
+    // After binding off part of the work (a flap) the yarn goes on to the rest without a turn.
+    if (before != last_of.end() && g.yarn_link[before->second] != YarnLink::turn &&
+        !is_bind_off(g, before->second))
       unsupported(g, "a row that does not start with a turn", s);
     last_of[c.yarn] = l.order[c.end - 1];
   }
@@ -143,18 +151,78 @@ class ProgramLayouts {
         yarns_(c.yarns),
         runs_(c.knit),
         layout_of_(c.yarns.size(), kNoWrap),
-        wrapped_(c.knit.loops.size(), 0) {}
+        wrapped_(c.knit.loops.size(), 0),
+        joined_to_(c.program.runs.size()),
+        join_place_(c.program.runs.size(), kNoWrap) {
+    for (std::uint32_t r = 0; r < joined_to_.size(); ++r) joined_to_[r] = r;
+    for (const Step& step : p_.steps) {
+      if (step.kind != StepKind::join) continue;
+      for (std::uint32_t i = step.reads.begin; i < step.reads.end; ++i) {
+        std::uint32_t run = p_.segments[i].run.index();
+        joined_to_[root(run)] = root(step.run.index());
+        if (join_place_[run] == kNoWrap) join_place_[run] = i - step.reads.begin;
+      }
+    }
+  }
 
   std::vector<CourseLayout> run() && {
     for (const Step& step : p_.steps) take_step(step);
-    for (CourseLayout& l : layouts_) finish(l);
+    for (std::uint32_t i = 0; i < layouts_.size(); ++i) finish(i);
     return std::move(layouts_);
   }
 
  private:
+  // A short row's turn beside a waiting loop (`beyond`), which may take a wrap.
+  struct Turn {
+    std::uint32_t layout, course;
+    StitchId turning;
+    std::uint32_t beyond;
+  };
+  std::uint32_t index_of(const CourseLayout& l) const {
+    return static_cast<std::uint32_t>(&l - layouts_.data());
+  }
+
   struct Piece {
     std::uint32_t round_start = kNoWrap;  // the first loop of the last full round
+    std::uint32_t on_bed = 0;             // live loops on the bed (every run of the layout)
+    // The places in their join of the runs cast on so far (the leftmost and rightmost).
+    std::uint32_t leftmost = kNoWrap, rightmost = 0;
   };
+
+  // The run a run is joined into at last (runs that a join takes share a layout).
+  std::uint32_t root(std::uint32_t run) {
+    while (joined_to_[run] != run) run = joined_to_[run] = joined_to_[joined_to_[run]];
+    return run;
+  }
+
+  // A sheet cast on while loops wait on the bed goes left of them when the join takes it before
+  // every run cast on so far, right of them when after; between them there is no room.
+  Beside side_of(const Step& step, Piece& piece, StitchId at) {
+    std::uint32_t place = join_place_[step.run.index()];
+    if (step.run_shape == RunShape::ring || place == kNoWrap)
+      unsupported(g_,
+                  step.run_shape == RunShape::ring
+                      ? "a tube cast on while another piece waits on the bed (tubes joined on "
+                        "the bed, as legs into a body)"
+                      : "a piece cast on while another waits on the bed, which no course joins",
+                  at);
+    if (place < piece.leftmost) return piece.leftmost = place, Beside::left;
+    if (place > piece.rightmost) return piece.rightmost = place, Beside::right;
+    unsupported(g_, "a sheet cast on between two pieces on the bed", at);
+  }
+
+  // Runs taken up by one course become one (flaps into a sheet): the program's join, on the
+  // lowering's list of live loops. The course after it knits across the pieces.
+  void join(const Step& step) {
+    for (std::uint32_t i = step.reads.begin; i < step.reads.end; ++i) {
+      const Segment& seg = p_.segments[i];
+      if (runs_.shape(seg.run) == RunShape::ring)
+        unsupported(g_, "tubes joined on the bed (as legs into a body, a thumb into a hand)",
+                    first_stitch(step));
+      runs_.open_at(seg.run, seg.first);
+      if (i > step.reads.begin) runs_.append(step.run, seg.run);
+    }
+  }
 
   void take_step(const Step& step) {
     switch (step.kind) {
@@ -168,9 +236,10 @@ class ProgramLayouts {
           unsupported(g_, "a course that binds off its run in two places (several runs on the bed)",
                       first_stitch(step));
         return add_course(step);
+      case StepKind::join:
+        return join(step);
       case StepKind::three_needle_bind_off:
       case StepKind::split:
-      case StepKind::join:
       case StepKind::reverse:
         unsupported(g_,
                     fmt::format("a {} step of the live-loop program (several runs on the bed)",
@@ -211,10 +280,13 @@ class ProgramLayouts {
     std::uint32_t& mine = layout_of_[step.yarn];
     if (cast_on) {
       if (mine != kNoWrap) unsupported(g_, "a second cast-on in one yarn piece", at);
-      mine = static_cast<std::uint32_t>(layouts_.size());
-      layouts_.emplace_back();
-      pieces_.emplace_back();
-      return mine;
+      std::uint32_t& group = layout_of_group_[root(step.run.index())];
+      if (group == 0) {
+        layouts_.emplace_back();
+        pieces_.emplace_back();
+        group = static_cast<std::uint32_t>(layouts_.size());
+      }
+      return mine = group - 1;
     }
     const Segment& seg = p_.segments[step.reads.begin];
     std::uint32_t theirs = layout_of_[yarns_.piece_of[g_.loops[seg.first].maker]];
@@ -240,10 +312,18 @@ class ProgramLayouts {
     bool left_to_right = step.direction != CourseDirection::right_to_left;
     if (cast_on) {
       std::vector<std::uint32_t> left = left_in_run(step.stitches, left_to_right);
+      Beside beside = Beside::none;
+      if (l.courses.empty())
+        piece.leftmost = piece.rightmost = join_place_[step.run.index()];
+      else
+        beside = side_of(step, piece, first);
       l.tube = step.run_shape == RunShape::ring;
       runs_.start(step.run, left, step.run_shape);
       piece.round_start = left.empty() ? kNoWrap : left.front();
-      l.courses.push_back(append(l, step.stitches, left_to_right));
+      piece.on_bed += static_cast<std::uint32_t>(left.size());
+      Course& course = l.courses.emplace_back(append(l, step.stitches, left_to_right));
+      course.cast_on = true;
+      course.beside = beside;
       return;
     }
     for (std::uint32_t begin = step.stitches.begin; begin < step.stitches.end;) {
@@ -282,6 +362,8 @@ class ProgramLayouts {
     Segment seg = segment_of(stitches, left_to_right);
     std::vector<std::uint32_t> left = left_in_run(stitches, left_to_right);
     bool whole = seg.count == runs_.size(seg.run);
+    bool others_wait = piece.on_bed > runs_.size(seg.run);  // another piece's loops
+    piece.on_bed = piece.on_bed + static_cast<std::uint32_t>(left.size()) - seg.count;
     bool takes_start = whole;
     for (std::uint32_t loop = seg.first, n = 0; n < seg.count; ++n, loop = runs_.next(loop))
       takes_start |= loop == piece.round_start;
@@ -292,7 +374,7 @@ class ProgramLayouts {
       return;
     }
     Course& course = l.courses.emplace_back(append(l, stitches, left_to_right));
-    course.partial = !whole;
+    course.partial = !whole || others_wait;
     course.rotated = l.tube && whole && seg.first != piece.round_start;
     if (course.rotated)
       course.layout_start = taker_of_round_start(g_, l, course, piece.round_start);
@@ -303,7 +385,8 @@ class ProgramLayouts {
     StitchId last = l.order[course.end - 1];
     bool turns_next = g_.yarn_link[last] == YarnLink::turn && g_.yarn_next[last] != kNoStitch;
     if (course.partial && turns_next && !left.empty())
-      choose_wrap(g_, last, left_to_right ? after : before, course, wrapped_);
+      turns_.push_back({index_of(l), static_cast<std::uint32_t>(l.courses.size() - 1), last,
+                        left_to_right ? after : before});
   }
 
   // A block of bind-offs straight after the bind-offs that ended the course before, along the
@@ -329,7 +412,8 @@ class ProgramLayouts {
     return made[sr5 ? knit_slot(StitchType::sr5, c.left_to_right) : 0];
   }
 
-  void finish(CourseLayout& l) const {
+  void finish(std::uint32_t index) {
+    CourseLayout& l = layouts_[index];
     for (const Course& course : l.courses) {
       RowShape shape = g_.row_shape[course.row];
       if (shape != RowShape::short_row && (shape == RowShape::closed) != l.tube)
@@ -337,12 +421,40 @@ class ProgramLayouts {
     }
     if (l.courses.size() < 2) unsupported(g_, "a piece with fewer than two rows", l.order.front());
     mark_yarn_ends(l);
-    check_borders(g_, l);
+    wrap_turns(index);
+    check_borders(g_, yarns_, l);
     check_sr5_turn_loops(g_, l);
     l.left_to_right.assign(g_.size(), 1);
     for (const Course& course : l.courses)
       for (std::uint32_t i = course.begin; i < course.end; ++i)
         l.left_to_right[l.order[i]] = course.left_to_right;
+  }
+
+  // A turn's wrap closes the gap beside a short row, which a later course knits across: the
+  // course that takes the waiting loop beyond the turn takes loops made since the turn too.
+  // Beside a slit (a sheet parted into flaps, each knit on its own) the course that takes the
+  // other flap's loop takes none: a wrap there would join the flaps, so the turn goes unwrapped.
+  void wrap_turns(std::uint32_t index) {
+    CourseLayout& l = layouts_[index];
+    std::vector<std::uint32_t> course_of(g_.size(), kNoWrap);
+    for (std::uint32_t i = 0; i < l.courses.size(); ++i)
+      for (std::uint32_t k = l.courses[i].begin; k < l.courses[i].end; ++k)
+        course_of[l.order[k]] = i;
+    for (const Turn& t : turns_) {
+      if (t.layout != index) continue;
+      std::uint32_t across = t.beyond == kNoWrap ? kNoWrap : course_of[g_.loops[t.beyond].taker];
+      if (across != kNoWrap && takes_loops_made_since(l, l.courses[across], t.course, course_of))
+        choose_wrap(g_, t.turning, t.beyond, l.courses[t.course], wrapped_);
+    }
+  }
+  bool takes_loops_made_since(const CourseLayout& l, const Course& c, std::uint32_t since,
+                              const std::vector<std::uint32_t>& course_of) const {
+    for (std::uint32_t k = c.begin; k < c.end; ++k)
+      for (std::uint32_t loop : g_.loops_taken_by(l.order[k])) {
+        std::uint32_t made_in = course_of[g_.loops[loop].maker];
+        if (made_in != kNoWrap && made_in >= since) return true;
+      }
+    return false;
   }
 
   // Each yarn's first and last course in the layout.
@@ -363,8 +475,12 @@ class ProgramLayouts {
   LiveRuns runs_;
   std::vector<std::uint32_t> layout_of_;  // per yarn piece: its layout (kNoWrap: none yet)
   std::vector<CourseLayout> layouts_;
-  std::vector<Piece> pieces_;          // per layout
-  std::vector<std::uint8_t> wrapped_;  // per loop: a short row's turn wraps it
+  std::vector<Piece> pieces_;              // per layout
+  std::vector<std::uint8_t> wrapped_;      // per loop: a short row's turn wraps it
+  std::vector<Turn> turns_;                // in knitting order
+  std::vector<std::uint32_t> joined_to_;   // per run of the program: a run it is joined into
+  std::vector<std::uint32_t> join_place_;  // per run: its place in the first join taking it
+  std::unordered_map<std::uint32_t, std::uint32_t> layout_of_group_;  // root run -> layout + 1
   std::uint32_t tails_ = 0;
 };
 

@@ -13,6 +13,10 @@ namespace skein::knitout {
 
 inline constexpr std::uint32_t kNoWrap = 0xffffffffu;
 
+// Where a sheet cast on while another piece's loops wait on the bed goes: beside them, on the
+// side from which the course that later joins the pieces takes it (a flap left of the other).
+enum class Beside : std::uint8_t { none, left, right };
+
 struct Course {
   std::uint32_t row = 0;             // the knit graph's row number
   std::uint32_t begin = 0, end = 0;  // its stitches: CourseLayout::order[begin, end)
@@ -20,7 +24,9 @@ struct Course {
   bool first_of_yarn = false;        // its yarn's first course: the carrier comes in
   bool last_of_yarn = false;         // its yarn's last course: the carrier goes out after it
   bool left_to_right = true;         // the yarn runs left to right in its stitches' frames
-  bool partial = false;              // a short row: loops beside it wait on their needles
+  bool partial = false;              // a short row (or a flap's row): loops beside it wait
+  bool cast_on = false;              // a cast-on: its yarn comes in with a border of its own
+  Beside beside = Beside::none;      // a cast-on beside loops on the bed: which side
   bool rotated = false;              // a tube's round that starts elsewhere than the round below it
   // Its stitch (counted left to right from the first) that takes the round's start: laid out
   // first, at the tube's front left end, so that its loops need not move round the tube.
@@ -41,9 +47,12 @@ struct CourseLayout {
 
 // One layout per piece cast on, in the order the program starts them, each knit on its own from
 // cast-on to bind-off; a yarn that starts on another's loops (a leg after a leg) is knit in the
-// layout of the yarn that made them, with its own carrier. Throws UnsupportedError "not yet
-// supported by the knitout target: <what>, at <stitch>" for inputs the target does not handle yet
-// (pieces joined on the bed, splits, mismatches, stitch types without a machine recipe).
+// layout of the yarn that made them, with its own carrier. Sheets that a course later joins
+// (flaps knit from their tops into one sheet) share a layout: each is cast on beside the loops
+// already on the bed, on the side the join takes it, and knit in place until the join. Throws
+// UnsupportedError "not yet supported by the knitout target: <what>, at <stitch>" for inputs the
+// target does not handle yet (tubes joined on the bed, splits, mismatches, stitch types without a
+// machine recipe).
 std::vector<CourseLayout> lay_out_pieces(const Compilation& compilation);
 
 }  // namespace skein::knitout

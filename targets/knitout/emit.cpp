@@ -83,6 +83,11 @@ class Emitter {
     for (std::size_t i = 1; i < l_.courses.size(); ++i) {
       const Course& course = l_.courses[i];
       carrier_ = carriers_[course.yarn];
+      if (course.cast_on) {  // a sheet beside the loops on the bed, its yarn and border its own
+        plan_beside(course);
+        cast_on(course);
+        continue;
+      }
       plan_course(course, false);
       transition(course);
       // A yarn that starts on loops on the bed comes in for its first course: the hook (if
@@ -93,6 +98,7 @@ class Emitter {
       } else {
         knit_course(course);
         wrap_turn(course);
+        if (course.last_of_yarn) leave_loops(course);
       }
       if (course.first_of_yarn) release(carrier_);
     }
@@ -157,6 +163,24 @@ class Emitter {
           fmt::format("{} needs {} needles{} (row {}, from {}), {} has {}", c_.input, widest,
                       l_.tube ? " in half gauge" : "", at_course->row + 1,
                       g_.describe(l_.order[at_course->begin]), p_.name, p_.needles));
+    check_side_by_side();
+  }
+
+  // Sheets cast on beside the first (flaps a later row joins): the needles they take at their
+  // cast-on, one empty needle apart, left and right of the first, so that the first is placed
+  // where all of them fit.
+  void check_side_by_side() {
+    for (const Course& c : l_.courses) {
+      if (c.beside == Beside::none) continue;
+      auto width = static_cast<std::int32_t>(measure(c).total) + 1;
+      (c.beside == Beside::left ? beside_left_ : beside_right_) += width;
+    }
+    const Course& first = l_.courses.front();
+    auto needed = static_cast<std::uint32_t>(beside_left_ + beside_right_) + measure(first).total;
+    if (needed > p_.needles)
+      throw UnsupportedError(fmt::format(
+          "{} needs {} needles for its pieces cast on side by side (from {}), {} has {}", c_.input,
+          needed, g_.describe(l_.order[first.begin]), p_.name, p_.needles));
   }
 
   // The loops each stitch gathers on one needle, and the transfers a double decrease needs.
@@ -420,7 +444,7 @@ class Emitter {
     std::int32_t span = static_cast<std::int32_t>(l_.tube ? p_.needles / 2 : p_.needles);
     std::int32_t used = static_cast<std::int32_t>(l_.tube ? std::max(f.front, back) : f.total);
     std::int32_t low = l_.tube ? used - 1 : 0, high = l_.tube ? span - 1 : span - used;
-    std::int32_t offset = (span - used) / 2 + low;
+    std::int32_t offset = (span - used - beside_left_ - beside_right_) / 2 + low + beside_left_;
     if (!wants.empty()) {
       auto mid = wants.begin() + static_cast<std::ptrdiff_t>(wants.size() / 2);
       std::nth_element(wants.begin(), mid, wants.end());
@@ -430,6 +454,34 @@ class Emitter {
     if (l_.tube) fold_ = offset;
     q = index = 0;
     each_in_layout_order(c, [&](StitchId s) { place(s, offset, false); });
+  }
+
+  // A sheet cast on while another piece's loops wait on the bed: on the needles beside theirs,
+  // with one empty needle between, on the side from which the course joining them takes it.
+  void plan_beside(const Course& c) {
+    std::int32_t low = std::numeric_limits<std::int32_t>::max(), high = -1;
+    for (std::uint32_t loop : on_needles_) {
+      for (const Place& p : {live_[loop].now, live_[loop].home}) {
+        low = std::min(low, p.needle);
+        high = std::max(high, p.needle);
+      }
+    }
+    auto total = static_cast<std::int32_t>(measure(c).total);
+    std::int32_t first = c.beside == Beside::right ? high + 2 : low - 1 - total;
+    if (first < 0 || first + total > static_cast<std::int32_t>(p_.needles))
+      throw UnsupportedError(fmt::format(
+          "{}: {} is cast on beside the loops on needles {}..{}, which leaves it no room on "
+          "{}'s {} needles",
+          c_.input, g_.describe(l_.order[c.begin]), low, high, p_.name, p_.needles));
+    std::uint32_t q = 0;
+    each_in_layout_order(c, [&](StitchId s) {
+      StitchPlan& sp = plan_[s];
+      sp.knit_slot = knit_slot(g_.type[s], l_.left_to_right[s]);
+      sp.home = Bed::f;
+      sp.needle = first + static_cast<std::int32_t>(q + sp.knit_slot);
+      aim(s, sp, false);
+      q += footprint(g_.type[s]);
+    });
   }
 
   // ---- output helpers ----
@@ -758,6 +810,14 @@ class Emitter {
     }
     w_.miss(p_.first_pass, edge, carrier_);
   }
+  // A yarn whose last course leaves its loops to another yarn (a flap's, which a course of the
+  // other flap's yarn later joins) goes out after it; its loops wait on their needles.
+  void leave_loops(const Course& c) {
+    w_.line(
+        fmt::format(";!source: carrier {} goes out: yarn piece {}'s loops wait for another yarn",
+                    carrier_, c.yarn + 1));
+    yarn_out(carrier_);
+  }
   void release(const std::string& carrier) {
     if (p_.hook == YarnHook::inhook) w_.carriers("releasehook", carrier);
   }
@@ -850,9 +910,10 @@ class Emitter {
   const CourseLayout& l_;
   KnitoutWriter& w_;
   std::int32_t pitch_ = 1, reach_ = 1;
-  std::int32_t fold_ = 0;         // a tube's right fold: front f2R faces back b2R+1 beside it
-  std::vector<StitchPlan> plan_;  // per stitch, for the course being knit
-  std::vector<LoopPlace> live_;   // per loop of the knit graph
+  std::int32_t fold_ = 0;  // a tube's right fold: front f2R faces back b2R+1 beside it
+  std::int32_t beside_left_ = 0, beside_right_ = 0;  // needles for the sheets cast on beside
+  std::vector<StitchPlan> plan_;                     // per stitch, for the course being knit
+  std::vector<LoopPlace> live_;                      // per loop of the knit graph
   std::vector<std::uint32_t> on_needles_, index_on_needles_;  // the loops made, not yet taken
   std::array<std::vector<Shaping>, 2> shaping_;  // a short row's shaped stitches, per bed
   std::vector<RoomMove> room_;                   // the waiting loops the shaping moves

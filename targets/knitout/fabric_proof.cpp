@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 #include <unordered_map>
 
 #include "knitout/stitch_recipes.hpp"
@@ -45,6 +46,13 @@ class Matcher {
     wrap_taker_.assign(f_.loops.size(), kNoStitch);
     wrap_stamp_.assign(f_.loops.size(), 0);
     turned_.assign(f_.loops.size(), 0);
+    for (StitchId s = 0; s < g_.size(); ++s) {
+      std::uint32_t row = g_.row[s];
+      if (row >= latest_taken_row_.size()) latest_taken_row_.resize(row + 1, 0);
+      for (std::uint32_t loop : g_.loops_taken_by(s))
+        if (StitchId maker = g_.loops[loop].maker; maker != kNoStitch)
+          latest_taken_row_[row] = std::max(latest_taken_row_[row], g_.row[maker]);
+    }
   }
   void begin_piece(const std::vector<StitchId>& order) {
     order_ = &order;
@@ -60,6 +68,7 @@ class Matcher {
              std::size_t& end) {
     ++try_;
     wraps_.clear();
+    turners_.clear();
     last_guess_ = kNoLoop;
     const std::vector<LoopId>& yarn = f_.by_carrier[carrier];
     CarrierMask mask = CarrierMask{1} << carrier;
@@ -93,11 +102,12 @@ class Matcher {
         stamp_[yarn[pos]] = wrap_stamp_[yarn[pos]] = try_;
         wrap_taker_[yarn[pos]] = kNoStitch;
         wraps_.push_back(yarn[pos++]);
+        turners_.push_back(s);
       }
       ++reached;
     }
     end = pos;
-    return children_match(why) && wraps_taken(why);
+    return yarn_ends_with_piece(carrier, end, why) && children_match(why) && wraps_taken(why);
   }
 
  private:
@@ -157,10 +167,39 @@ class Matcher {
     return false;
   }
   bool is_wrap(LoopId x) const { return wrap_stamp_[x] == try_; }
-  // Each turn's tuck is pulled through by one st (twice by a kfb), which takes a loop too.
+  // A piece whose yarn ends on live loops (another yarn knits on from them, as the course that
+  // joins two flaps) ends its yarn there: the carrier's next loops of the same piece of yarn are
+  // not pulled through the piece's loops. (Otherwise a flap could be matched where another yarn
+  // knits a flap of the same size and then goes on.)
+  bool yarn_ends_with_piece(std::size_t carrier, std::size_t end, std::string& why) const {
+    const std::vector<LoopId>& yarn = f_.by_carrier[carrier];
+    StitchId last = order_->back();
+    if (g_.type[last] == StitchType::bo || end == 0) return true;  // a tag follows a bind-off
+    std::uint32_t piece = f_.loops[yarn[end - 1]].piece;
+    for (std::size_t i = end; i < yarn.size() && f_.loops[yarn[i]].piece == piece; ++i)
+      for (LoopId parent : f_.parents_of(yarn[i]))
+        if (stamp_[parent] == try_) {
+          why = fmt::format("the yarn of {} goes on after it: {} is pulled through its loops",
+                            g_.describe(last), where(yarn[i]));
+          return false;
+        }
+    return true;
+  }
+  // Each turn's tuck is pulled through by one st (twice by a kfb), which takes a loop too, in a
+  // row that knits across the turn: one that takes loops made at or after it. Beside a slit (a
+  // sheet parted into flaps) the row taking the other flap's loop takes none: a tuck there
+  // would join the flaps.
   bool wraps_taken(std::string& why) const {
-    for (LoopId x : wraps_) {
+    for (std::size_t i = 0; i < wraps_.size(); ++i) {
+      LoopId x = wraps_[i];
       StitchId taker = wrap_taker_[x];
+      if (taker != kNoStitch && latest_taken_row_[g_.row[taker]] < g_.row[turners_[i]]) {
+        why = fmt::format(
+            "the turn's tuck {} after {} joins what the model leaves apart: {}, pulled through "
+            "it, is in a row that takes no loop made since the turn",
+            where(x), g_.describe(turners_[i]), g_.describe(taker));
+        return false;
+      }
       std::uint8_t want = taker != kNoStitch && g_.type[taker] == StitchType::kfb ? 2 : 1;
       if (taker == kNoStitch || f_.loops[x].children != want) {
         why = fmt::format("the turn's tuck {} is pulled through {} times, expected {} by {}",
@@ -385,7 +424,9 @@ class Matcher {
   std::vector<std::uint32_t> wrap_stamp_;  // per fabric loop: the try that took it for a wrap
   std::vector<StitchId> wrap_taker_;       // per fabric loop (a wrap): the st pulled through it
   std::vector<LoopId> wraps_;              // the turns' tucks of this try
-  std::vector<std::uint32_t> turned_;      // per fabric loop: `guesses_` when its guess is turned
+  std::vector<StitchId> turners_;          // per wrap: the st whose yarn turns before it
+  std::vector<std::uint32_t> latest_taken_row_;  // per row: the latest row whose loops it takes
+  std::vector<std::uint32_t> turned_;  // per fabric loop: `guesses_` when its guess is turned
   std::uint32_t guesses_ = 1;
   LoopId last_guess_ = kNoLoop;  // the last tuck of this try guessed a wrap or not
   std::uint32_t try_ = 0;
@@ -399,17 +440,20 @@ struct PieceMatch {
   std::string why;  // when not found: the first difference of the closest try
 };
 
-// Looks for the piece along every carrier's yarn, in a yarn piece no other piece matched.
+// Looks for the piece along every carrier's yarn, in a yarn piece no other piece matched; after
+// `after` (an earlier match of it) when given.
 PieceMatch find_piece(const Replay& r, const Compilation& c, const std::vector<StitchId>& order,
-                      Matcher& m, std::vector<std::uint32_t>& used) {
+                      Matcher& m, std::vector<std::uint32_t>& used, const PieceMatch* after) {
   PieceMatch match;
   std::size_t least = 0;  // the piece's loops, the turns' tucks aside
   for (StitchId s : order) least += fabric_loops(c.knit.type[s]);
   m.begin_piece(order);
   std::size_t best = 0;
-  for (std::size_t carrier = 0; carrier < r.fabric.by_carrier.size(); ++carrier) {
+  for (std::size_t carrier = after ? after->carrier : 0; carrier < r.fabric.by_carrier.size();
+       ++carrier) {
     const auto& yarn = r.fabric.by_carrier[carrier];
-    for (std::size_t start = 0; start + least <= yarn.size(); ++start) {
+    std::size_t first = after && carrier == after->carrier ? after->start + 1 : 0;
+    for (std::size_t start = first; start + least <= yarn.size(); ++start) {
       std::uint32_t piece = r.fabric.loops[yarn[start]].piece;
       if (std::find(used.begin(), used.end(), piece) != used.end()) continue;
       std::string why;
@@ -464,23 +508,59 @@ std::vector<std::uint32_t> pieces_in_knitting_order(const KnitGraph& g, const Ya
   return order;
 }
 
+// Each piece in knitting order, where its loops are; when a piece is not found, an earlier one
+// is looked for further on (two flaps of one size, a flap the size of the waste section: the
+// first place an earlier piece matched may be where a later one is knit). Within a bound: the
+// first failure is reported once it is reached.
+std::optional<std::vector<PieceMatch>> match_pieces(const Replay& r, std::string_view text,
+                                                    const Compilation& c,
+                                                    const std::vector<std::uint32_t>& pieces,
+                                                    std::string& why) {
+  constexpr int kMaxRetries = 64;
+  std::vector<std::vector<StitchId>> orders;
+  for (std::uint32_t i : pieces) orders.push_back(yarn_order(c.knit, c.yarns, i));
+  Matcher matcher(r, text, c);
+  std::vector<std::uint32_t> used;
+  std::vector<PieceMatch> found;
+  bool resume = false;
+  int retries = 0;
+  for (std::size_t k = 0; k < pieces.size();) {
+    PieceMatch m = find_piece(r, c, orders[k], matcher, used, resume ? &found[k] : nullptr);
+    found.resize(k);
+    if (m.found) {
+      found.push_back(std::move(m));
+      ++k;
+      resume = false;
+      continue;
+    }
+    if (why.empty())
+      why = fmt::format(
+          "{}{}", c.yarns.size() > 1 ? fmt::format("yarn piece {}: ", pieces[k] + 1) : "", m.why);
+    if (k == 0 || ++retries > kMaxRetries) return std::nullopt;
+    --k;
+    used.pop_back();
+    resume = true;
+  }
+  return found;
+}
+
 ProofResult prove_fabric(const Replay& r, std::string_view text, const Compilation& c) {
   const YarnPieces& yarns = c.yarns;
   ProofResult result;
   result.first_line = std::numeric_limits<std::size_t>::max();
-  std::vector<std::uint32_t> used;
   std::vector<std::string> where;
   bool sheets = true;
-  Matcher matcher(r, text, c);
-  for (std::uint32_t i : pieces_in_knitting_order(c.knit, yarns)) {
-    std::string piece = yarns.size() > 1 ? fmt::format("yarn piece {}: ", i + 1) : "";
-    std::vector<StitchId> order = yarn_order(c.knit, yarns, i);
-    PieceMatch m = find_piece(r, c, order, matcher, used);
-    if (!m.found) {
-      result.summary = fmt::format("NOT proven against {}: {}{}", c.input, piece, m.why);
-      return result;
-    }
-    sheets &= !matcher.tube();
+  std::vector<std::uint32_t> pieces = pieces_in_knitting_order(c.knit, yarns);
+  std::string why;
+  std::optional<std::vector<PieceMatch>> found = match_pieces(r, text, c, pieces, why);
+  if (!found) {
+    result.summary = fmt::format("NOT proven against {}: {}", c.input, why);
+    return result;
+  }
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    const PieceMatch& m = (*found)[k];
+    std::uint32_t i = pieces[k];
+    sheets &= !piece_is_tube(c.knit, yarn_order(c.knit, yarns, i));
     const auto& yarn = r.fabric.by_carrier[m.carrier];
     result.pieces.push_back({m.carrier, m.start, m.needed});
     result.wrap_lines.insert(result.wrap_lines.end(), m.wrap_lines.begin(), m.wrap_lines.end());
