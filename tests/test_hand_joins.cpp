@@ -432,6 +432,13 @@ TEST(HandPieces, TheSweaterIsProvenInEveryFormat) {
         "sts.\n",
         "**Rnd 108:** K106, pm, k to end.\n"})
     EXPECT_NE(pattern.find(line), std::string::npos) << line;
+  // The body is taken up once, for the yoke: the program takes its yarn up and sets it aside
+  // again between the sleeves, which the pattern does not write.
+  const std::string taken_up = "### Body (yarn 1), taken up again";
+  auto first = pattern.find(taken_up);
+  EXPECT_EQ(pattern.find(taken_up, first + 1), std::string::npos) << pattern;
+  EXPECT_NE(pattern.find(taken_up + " for the yoke\n\nTake up Body again with its yarn. Place"),
+            std::string::npos);
   EXPECT_EQ(testing::unproven_hand_formats(c), "");
 }
 

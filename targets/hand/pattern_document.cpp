@@ -78,6 +78,7 @@ class InstructionWriter {
   void write() {
     for (std::uint32_t s = 0; s < p_.sections.size(); ++s) {
       const PatternSection& sec = p_.sections[s];
+      if (only_pauses(sec)) continue;
       section_ = s;
       if (p_.sections.size() > 1)
         add(InstructionLine::Kind::heading, "",
@@ -147,6 +148,15 @@ class InstructionWriter {
   // " Pm and join to work in the rnd, being careful not to twist." after the cast-on (or the
   // new yarn joined to another piece's sts) of a piece worked in the rnd from its first row (a
   // flat piece joined in the rnd later says so before its first rnd).
+  // A piece taken up and set aside again with nothing worked or moved in between ("Take up
+  // Body again. Leave the 96 sts on the needle and set the yarn aside."): not worth a heading.
+  static bool only_pauses(const PatternSection& sec) {
+    return sec.resumed && sec.set_aside && sec.first_row == sec.end_row && !sec.joins &&
+           sec.placements.empty() && sec.holdings.empty() && sec.carries.empty() &&
+           sec.holds.empty() && !sec.starts_from && !sec.picks_up && sec.row_chain == 0 &&
+           !sec.joined_in_rnd_at;
+  }
+
   std::string join_round_text(const PatternSection& sec) const {
     if (!sec.in_round || sec.joined_in_rnd_at) return "";
     return fmt::format(" Pm and join to work in the rnd{}, being careful not to twist.",

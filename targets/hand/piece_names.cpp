@@ -59,7 +59,9 @@ std::vector<std::string> named_pieces(const KnitGraph& g, const YarnPieces& yarn
 void name_section_parts(const KnitGraph& g, const YarnPieces& yarns,
                         std::vector<PatternSection>& sections) {
   std::vector<std::vector<std::uint32_t>> of_yarn(yarns.size());  // its sections, in order
-  for (std::uint32_t i = 0; i < sections.size(); ++i) of_yarn[sections[i].yarn].push_back(i);
+  // A section that works no st (a piece taken up and set aside again) is in no part.
+  for (std::uint32_t i = 0; i < sections.size(); ++i)
+    if (sections[i].stitches > 0) of_yarn[sections[i].yarn].push_back(i);
   for (std::uint32_t y = 0; y < yarns.size(); ++y) {
     // Along the yarn, a section ends once both ends of its last row are passed.
     std::size_t k = 0;
