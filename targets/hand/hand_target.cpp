@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <exception>
 #include <ostream>
 
 #include "common/error.hpp"
@@ -75,12 +76,19 @@ HandPattern build_pattern(const Compilation& c, const TargetOptions& options) {
   if (builder == Builder::schedule)
     return build_hand_pattern(c, turn_method_of(options), rounds_of(options));
   check_stitch_types(c.knit);
+  std::exception_ptr refused;
   try {
     return build_pattern_from_program(c, turn_method_of(options), rounds_of(options));
   } catch (const UnsupportedError&) {
     if (builder == Builder::program) throw;
+    refused = std::current_exception();
   }
-  return build_hand_pattern(c, turn_method_of(options), rounds_of(options));
+  // Where neither can, the program's builder says why: it is the one that stays.
+  try {
+    return build_hand_pattern(c, turn_method_of(options), rounds_of(options));
+  } catch (const UnsupportedError&) {
+    std::rethrow_exception(refused);
+  }
 }
 
 namespace {
