@@ -1,0 +1,236 @@
+// The emitter knits the courses: the stitches and a short row's wrap, the cast-on border,
+// waste section and draw thread, the bind-off, and the yarns in and out (emitter.hpp has the
+// state).
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <limits>
+
+#include "knitout/emitter.hpp"
+
+namespace skein::knitout::emit {
+
+// ---- knitting ----
+void Emitter::made(StitchId s, std::uint32_t slot, Place now) {
+  auto loops = g_.loops_made_by(s);
+  if (slot < loops.size()) live_[loops[slot]] = {now, plan_[s].home_of(slot)};
+}
+
+// The loops on the needles (made and not yet taken), for a short row's shaping to move.
+void Emitter::track_loops(StitchId s) {
+  for (std::uint32_t loop : taken(s)) {
+    std::uint32_t last = on_needles_.back();
+    on_needles_[index_on_needles_[loop]] = last;
+    index_on_needles_[last] = index_on_needles_[loop];
+    on_needles_.pop_back();
+  }
+  for (std::uint32_t loop : g_.loops_made_by(s)) {
+    index_on_needles_[loop] = static_cast<std::uint32_t>(on_needles_.size());
+    on_needles_.push_back(loop);
+  }
+}
+
+void Emitter::knit_stitch(StitchId s) {
+  track_loops(s);
+  const StitchPlan& sp = plan_[s];
+  Needle n{sp.knit, sp.needle};
+  StitchType t = g_.type[s];
+  if (keeps_loop_below(t)) {  // the needle keeps its loops: a tuck adds one, a slip nothing
+    if (t == StitchType::tuck) w_.tuck(sp.travel, n, carrier_);
+    made(s, 0, {sp.knit, sp.needle});
+    return;
+  }
+  if (info(t).loops_out < 2) {
+    w_.knit(sp.travel, n, carrier_);
+    made(s, 0, {sp.knit, sp.needle});
+    return;
+  }
+  std::uint32_t extra = 1u - sp.knit_slot;
+  if (t == StitchType::sr5) {  // the turn's loop: a tuck on the facing needle on the way back
+    Place turn = facing({sp.knit, sp.needle});
+    w_.knit(sp.travel, n, carrier_);
+    w_.tuck(opposite(sp.travel), at(turn), carrier_);
+    made(s, sp.knit_slot, {sp.knit, sp.needle});
+    live_[g_.loops_made_by(s)[extra]] = {turn, turn};  // it waits there for its decrease
+    return;
+  }
+  Place extra_home = sp.home_of(extra);
+  if (t == StitchType::kfb) {  // split: the old loop waits on the facing needle, then is knit there
+    Needle behind{other(sp.knit), sp.needle};
+    w_.split(sp.travel, n, behind, carrier_);
+    w_.knit(sp.travel, behind, carrier_);
+    made(s, sp.knit_slot, {sp.knit, sp.needle});
+    made(s, extra, {behind.bed, behind.index});
+    return;
+  }
+  // yo, m1l, m1r: a tuck on the empty needle beside the knit, in the order the yarn passes.
+  bool tuck_first = (extra_home.needle < sp.needle) == (sp.travel == Direction::plus);
+  if (tuck_first) w_.tuck(sp.travel, at(extra_home), carrier_);
+  w_.knit(sp.travel, n, carrier_);
+  if (!tuck_first) w_.tuck(sp.travel, at(extra_home), carrier_);
+  made(s, sp.knit_slot, {sp.knit, sp.needle});
+  made(s, extra, extra_home);
+}
+
+void Emitter::knit_course(const Course& c) {
+  source(c, c.partial ? "knit (short row)" : "knit");
+  w_.rack(0);
+  for (std::uint32_t i = c.begin; i < c.end; ++i) knit_stitch(l_.order[i]);
+}
+
+// Before turning beside a waiting loop, the yarn tucks over its needle, going on the way it
+// went: the waiting stitch is later knit through the tuck too, which closes the turn's hole.
+// A wrap over the turning stitch's own loop is made on the way back.
+void Emitter::wrap_turn(const Course& c) {
+  if (c.wrap == kNoWrap) return;
+  const LoopPlace& waiting = live_[c.wrap];
+  bool on_back = l_.tube && waiting.home.bed == Bed::b;
+  bool rightward = (!on_back == c.left_to_right) != c.wrap_back;
+  w_.tuck(rightward ? Direction::plus : Direction::minus, at(waiting.now), carrier_);
+}
+
+// ---- cast-on and bind-off ----
+// The course's needles on the bed a pass in direction d works, in the order it meets them.
+std::vector<Needle> Emitter::pass_needles(const Course& c, Direction d) const {
+  std::vector<Needle> needles;
+  for (std::uint32_t i = c.begin; i < c.end; ++i) {
+    const StitchPlan& sp = plan_[l_.order[i]];
+    if (sp.travel == d || !l_.tube) needles.push_back({sp.knit, sp.needle});
+  }
+  std::sort(needles.begin(), needles.end(), [d](const Needle& a, const Needle& b) {
+    return d == Direction::plus ? a.index < b.index : a.index > b.index;
+  });
+  return needles;
+}
+
+// Alternating tucks over the cast-on needles (two passes per bed), starting in the profile's
+// first direction; returns the direction of the next pass. Each bed's first pass tucks the
+// first needle it meets, so a yarn-inserting hook beside the first stitch is beyond them all.
+Direction Emitter::tuck_border(const Course& c, const std::string& carrier) {
+  Direction d = p_.first_pass;
+  std::int32_t beds = l_.tube ? 2 : 1, start[2] = {0, 0};
+  for (std::int32_t pass = 0; pass < 2 * beds; ++pass, d = opposite(d)) {
+    std::vector<Needle> needles = pass_needles(c, d);
+    if (needles.empty()) continue;
+    std::int32_t& first = start[pass % beds];
+    if (pass < beds) first = needles.front().index;
+    for (const Needle& n : needles)
+      if (std::abs(n.index - first) / pitch_ % 2 == pass / beds) w_.tuck(d, n, carrier);
+  }
+  return d;
+}
+void Emitter::knit_pass(const Course& c, Direction d, const std::string& carrier) {
+  for (const Needle& n : pass_needles(c, d)) w_.knit(d, n, carrier);
+}
+void Emitter::yarn_in(const std::string& carrier) {
+  w_.carriers(p_.hook == YarnHook::inhook ? "inhook" : "in", carrier);
+}
+// A yarn that starts on loops on the bed: its carrier comes in and first moves the profile's
+// way (a miss) to the course's needle furthest that way, so that a hook holding its end
+// blocks none of the course's needles.
+void Emitter::bring_in(const Course& c) {
+  w_.line(fmt::format(";!source: carrier {} comes in for yarn piece {}", carrier_, c.yarn + 1));
+  yarn_in(carrier_);
+  bool plus = p_.first_pass == Direction::plus;
+  Needle edge = {Bed::f, plus ? std::numeric_limits<std::int32_t>::max() : -1};
+  for (std::uint32_t i = c.begin; i < c.end; ++i) {
+    const StitchPlan& sp = plan_[l_.order[i]];
+    if (plus ? sp.needle < edge.index : sp.needle > edge.index) edge = {sp.knit, sp.needle};
+  }
+  w_.miss(p_.first_pass, edge, carrier_);
+}
+// A yarn whose last course leaves its loops to another yarn (a flap's, which a course of the
+// other flap's yarn later joins) goes out after it; its loops wait on their needles.
+void Emitter::leave_loops(const Course& c) {
+  w_.line(fmt::format(";!source: carrier {} goes out: yarn piece {}'s loops wait for another yarn",
+                      carrier_, c.yarn + 1));
+  yarn_out(carrier_);
+}
+void Emitter::release(const std::string& carrier) {
+  if (p_.hook == YarnHook::inhook) w_.carriers("releasehook", carrier);
+}
+void Emitter::yarn_out(const std::string& carrier) {
+  w_.carriers(p_.hook == YarnHook::inhook ? "outhook" : "out", carrier);
+}
+
+void Emitter::cast_on(const Course& c) {
+  Direction next = p_.first_pass;
+  if (p_.waste_rows > 0) {
+    w_.line(fmt::format(";!source: waste section: {} {} of waste yarn (carrier {})", p_.waste_rows,
+                        l_.tube ? "rounds" : "rows", p_.waste_carrier));
+    yarn_in(p_.waste_carrier);
+    Direction d = tuck_border(c, p_.waste_carrier);
+    release(p_.waste_carrier);
+    for (std::uint32_t row = 0; row < p_.waste_rows * (l_.tube ? 2 : 1); ++row, d = opposite(d))
+      knit_pass(c, d, p_.waste_carrier);
+    yarn_out(p_.waste_carrier);
+    if (!p_.draw_carrier.empty()) draw_thread(c);
+    yarn_in(carrier_);
+  } else {
+    w_.line(";!source: cast-on border: alternating tucks");
+    yarn_in(carrier_);
+    next = tuck_border(c, carrier_);
+    release(carrier_);
+  }
+  Direction first = plan_[l_.order[c.begin]].travel;
+  if (first != next) {
+    w_.line(";!source: cast-on border: a pass to bring the yarn to where the first row starts");
+    knit_pass(c, next, carrier_);
+    if (p_.waste_rows > 0) release(carrier_);
+  } else if (p_.waste_rows > 0) {
+    // The main yarn's first pass is the cast-on row itself; the hook lets go after it.
+    knit_course(c);
+    release(carrier_);
+    return;
+  }
+  knit_course(c);
+}
+
+// One row (a round on a tube) of the draw thread over the waste loops: pulling it out later
+// frees the piece from the waste section.
+void Emitter::draw_thread(const Course& c) {
+  w_.line(fmt::format(";!source: draw thread (carrier {})", p_.draw_carrier));
+  yarn_in(p_.draw_carrier);
+  Direction d = p_.first_pass;
+  for (int pass = 0; pass < (l_.tube ? 2 : 1); ++pass, d = opposite(d))
+    knit_pass(c, d, p_.draw_carrier);
+  release(p_.draw_carrier);
+  yarn_out(p_.draw_carrier);
+}
+
+// Chain bind-off: knit a loop, move it onto the next stitch's needle, knit both, and so on;
+// then a tag knit back and forth on the last needle, the yarn out, and the tag dropped. A
+// bind-off of part of the work (the rest knit on after it) drops its last loop instead: the
+// yarn goes on through it to the next course, as a knitter's does, and its needles are free.
+void Emitter::bind_off(const Course& c, bool last_course) {
+  source(c, last_course ? "bind-off" : "bind-off (part of the work; the rest goes on)");
+  for (std::uint32_t i = c.begin; i < c.end; ++i) {
+    track_loops(l_.order[i]);
+    const StitchPlan& sp = plan_[l_.order[i]];
+    Place here{sp.knit, sp.needle};
+    w_.rack(0);
+    w_.knit(sp.travel, at(here), carrier_);
+    if (i + 1 == c.end) break;
+    const StitchPlan& next = plan_[l_.order[i + 1]];
+    Place there{next.knit, next.needle};
+    if (here.bed == there.bed) {
+      w_.xfer(at(here), at(facing(here)));
+      here = facing(here);
+    }
+    move_across_beds(here, there);
+  }
+  const StitchPlan& last = plan_[l_.order[c.end - 1]];
+  Needle tag{last.knit, last.needle};
+  if (!last_course) return w_.drop(tag);
+  if (p_.tag_rows) w_.line(fmt::format(";!source: tag: {} rows on the last loop", p_.tag_rows));
+  Direction d = last.travel;
+  for (std::uint32_t row = 0; row < p_.tag_rows; ++row) {
+    d = opposite(d);
+    w_.knit(d, tag, carrier_);
+  }
+  yarn_out(carrier_);
+  w_.drop(tag);
+}
+
+}  // namespace skein::knitout::emit

@@ -1,0 +1,195 @@
+// The emitter's transfers between two courses: loops home, decrease stacks in lean order,
+// stacks re-spaced within the racking limit, purls to the other bed (emitter.hpp has the state).
+#include <algorithm>
+#include <cstdlib>
+
+#include "knitout/emitter.hpp"
+
+namespace skein::knitout::emit {
+
+void Emitter::emit_moves(std::vector<Move>& moves) {
+  std::stable_sort(moves.begin(), moves.end(),
+                   [](const Move& a, const Move& b) { return rack_of(a) < rack_of(b); });
+  for (const Move& m : moves) w_.xfer(at(m.from), at(m.to));
+  moves.clear();
+}
+
+void Emitter::transition(const Course& c) {
+  source(c, "transfers");
+  std::vector<std::uint8_t> ready(c.end - c.begin, 0);  // already on its knit needle
+  go_home(c, ready, !fits_one_stage(c) || shaped());
+  merge_decreases(c);
+  shift_stacks(c, ready);
+  send_purls(c, ready);
+}
+
+// True when every loop reaches its new needle in one transfer: then a loop already where its
+// next stitch is knit may stay there, as no stack passes through its needle on the way.
+bool Emitter::fits_one_stage(const Course& c) const {
+  for (std::uint32_t i = c.begin; i < c.end; ++i) {
+    Place target{plan_[l_.order[i]].home, plan_[l_.order[i]].needle};
+    for (std::uint32_t loop : taken(l_.order[i]))
+      if (next_stop(live_[loop].home, target, live_[loop].home.bed != target.bed) != target)
+        return false;
+  }
+  return true;
+}
+
+// Loops knit on the other bed (purls, kfb's second loop) go back to their home needle,
+// unless (when not `staged`) the next stitch takes that loop alone right where it is.
+// A waiting loop the room moves, or that the course's turn wraps, goes home too (a kfb's
+// second loop waits on the facing needle until then), so that the wrap lies where it rests.
+void Emitter::go_home(const Course& c, std::vector<std::uint8_t>& ready, bool staged) {
+  std::vector<Move> moves;
+  auto send_home = [&](std::uint32_t loop) {
+    LoopPlace& lp = live_[loop];
+    if (lp.now != lp.home) moves.push_back({lp.now, lp.home});
+    lp.now = lp.home;
+  };
+  for (const RoomMove& r : room_) send_home(r.loop);
+  if (c.wrap != kNoWrap && !c.wrap_back) send_home(c.wrap);
+  for (std::uint32_t i = c.begin; i < c.end; ++i) {
+    StitchId s = l_.order[i];
+    const StitchPlan& sp = plan_[s];
+    bool alone = taken(s).size() == 1 && !staged;
+    for (std::uint32_t loop : taken(s)) {
+      LoopPlace& lp = live_[loop];
+      if (alone && lp.now == Place{sp.knit, sp.needle} && lp.now.needle == lp.home.needle) {
+        ready[i - c.begin] = 1;
+        continue;
+      }
+      if (lp.now == lp.home) continue;
+      moves.push_back({lp.now, lp.home});
+      lp.now = lp.home;
+    }
+  }
+  emit_moves(moves);
+}
+
+// Each decrease's loops land on its bottom loop's needle in stacking order (the lean).
+void Emitter::merge_decreases(const Course& c) {
+  for (std::size_t stage = 1; stage < 3; ++stage) {
+    std::vector<Move> to_transit, landing;
+    for (std::uint32_t i = c.begin; i < c.end; ++i) {
+      StitchId s = l_.order[i];
+      auto order = stacking_order(g_.type[s]);
+      if (stage >= order.size()) continue;
+      Place bottom = live_[taken(s)[order[0]]].now;
+      LoopPlace& lp = live_[taken(s)[order[stage]]];
+      if (lp.now.bed == bottom.bed) {
+        to_transit.push_back({lp.now, facing(lp.now)});
+        landing.push_back({facing(lp.now), bottom});
+      } else if (std::abs(rack_of({lp.now, bottom})) <= p_.max_transfer_stretch) {
+        landing.push_back({lp.now, bottom});
+      } else {
+        move_across_beds(lp.now, bottom);
+      }
+      lp.now = lp.home = bottom;
+    }
+    emit_moves(to_transit);
+    emit_moves(landing);
+  }
+}
+
+// A loop moved straight to the other bed. Between a tube's two left ends (a k2tog across the
+// round's start, the bind-off chain) it may have further to go than one transfer stretches:
+// it then hops from bed to bed, as far as the profile allows each time, over needles strictly
+// between the two ends with the parity of the one further right. Those are empty: on that
+// end's bed they lie beyond its loops, on the other bed they face them and hold none.
+void Emitter::move_across_beds(Place from, Place to) {
+  std::int32_t stretch = p_.max_transfer_stretch, parity = std::max(from.needle, to.needle) & 1;
+  Place now = from;
+  while (now.bed == to.bed || std::abs(to.needle - now.needle) > stretch) {
+    std::int32_t dir = to.needle > now.needle ? 1 : -1;
+    std::int32_t n = now.needle + dir * std::min(stretch, std::abs(to.needle - now.needle));
+    if ((n & 1) != parity) n -= dir;
+    Place next{other(now.bed), n};
+    w_.xfer(at(now), at(next));
+    now = next;
+  }
+  w_.xfer(at(now), at(to));
+}
+
+// A loop's place along the fabric, left to right in the stitches' frames: the needle on a
+// sheet; on a tube, counted from the right fold (front f2R is 0, back b2R+1 is 1), so that
+// the front reads ..., -1, 0 and the back 1, 2, ... and a fold is crossed between 0 and 1.
+std::int32_t Emitter::ring(Place p) const {
+  if (!l_.tube) return p.needle;
+  return p.bed == Bed::f ? p.needle / 2 - fold_ : fold_ - (p.needle - 1) / 2 + 1;
+}
+Place Emitter::place_at(std::int32_t u) const {
+  if (!l_.tube) return {Bed::f, u};
+  return u <= 0 ? Place{Bed::f, 2 * (fold_ + u)} : Place{Bed::b, 2 * (fold_ - u + 1) + 1};
+}
+
+// Re-spaces the stacks onto the course's needles in stages: in each, every stack moves at
+// most the transfer reach toward its needle (along its bed, or along the fabric across a
+// tube's fold). Moving every stack the same clamped way keeps their order, so no two ever
+// meet. Stacks moving along a bed pass through the facing needle; stacks crossing the fold
+// go straight over once the others have left for the facing needles.
+void Emitter::shift_stacks(const Course& c, const std::vector<std::uint8_t>& ready) {
+  struct Stack {
+    StitchId stitch;  // kNoStitch for a waiting loop the room moves
+    Place now, target;
+    std::uint32_t waiting = kNoWrap;
+  };
+  std::vector<Stack> stacks;
+  bool crossing = false;
+  for (std::uint32_t i = c.begin; i < c.end; ++i) {
+    StitchId s = l_.order[i];
+    if (ready[i - c.begin]) continue;
+    stacks.push_back({s, live_[taken(s)[0]].now, {plan_[s].home, plan_[s].needle}});
+    crossing |= stacks.back().now.bed != stacks.back().target.bed;
+  }
+  for (const RoomMove& r : room_) stacks.push_back({kNoStitch, live_[r.loop].now, r.to, r.loop});
+  for (bool moved = true; moved;) {
+    moved = false;
+    std::vector<Move> to_transit, over, landing;
+    for (Stack& st : stacks) {
+      if (st.now == st.target) continue;
+      moved = true;
+      Place stop = next_stop(st.now, st.target, crossing);
+      if (stop.bed == st.now.bed) {
+        to_transit.push_back({st.now, facing(st.now)});
+        landing.push_back({facing(st.now), stop});
+      } else {
+        over.push_back({st.now, stop});
+      }
+      st.now = stop;
+    }
+    emit_moves(to_transit);
+    emit_moves(over);
+    emit_moves(landing);
+  }
+  for (const Stack& st : stacks) {
+    if (st.stitch == kNoStitch) {
+      live_[st.waiting] = {st.target, st.target};
+      continue;
+    }
+    for (std::uint32_t loop : taken(st.stitch)) live_[loop].now = live_[loop].home = st.target;
+  }
+}
+
+// One stage's stop toward `target`: along the bed by at most the reach, or, when some loops
+// cross a tube's fold (which then stays put), along the fabric across the fold.
+Place Emitter::next_stop(Place now, Place target, bool crossing) const {
+  if (now == facing(target)) return target;  // an sr5's stack, gathered on its turn loop
+  if (!crossing)
+    return {now.bed, std::clamp(target.needle, now.needle - reach_, now.needle + reach_)};
+  std::int32_t u = ring(now), step = reach_ / pitch_;
+  return place_at(std::clamp(ring(target), u - step, u + step));
+}
+
+void Emitter::send_purls(const Course& c, const std::vector<std::uint8_t>& ready) {
+  std::vector<Move> moves;
+  for (std::uint32_t i = c.begin; i < c.end; ++i) {
+    StitchId s = l_.order[i];
+    const StitchPlan& sp = plan_[s];
+    if (ready[i - c.begin] || sp.knit == sp.home || taken(s).empty()) continue;
+    moves.push_back({{sp.home, sp.needle}, {sp.knit, sp.needle}});
+    for (std::uint32_t loop : taken(s)) live_[loop].now = {sp.knit, sp.needle};
+  }
+  emit_moves(moves);
+}
+
+}  // namespace skein::knitout::emit

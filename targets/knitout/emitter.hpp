@@ -1,0 +1,201 @@
+// The knitout emitter's state while it knits one yarn piece (emit.hpp says what it writes).
+// Its work is split by job: emit.cpp runs the courses in order and writes the header and the
+// carriers; emit_layout.cpp checks that the piece fits the profile and lays each course out on
+// the needles (with a short row's shaping); emit_transfers.cpp moves the loops between two
+// courses within the racking limit; emit_courses.cpp knits the courses, the cast-on border,
+// waste section and draw thread, the bind-off, and brings the yarns in and out.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "driver/pipeline.hpp"
+#include "knitout/course_layout.hpp"
+#include "knitout/knitout_writer.hpp"
+#include "knitout/machine_profile.hpp"
+#include "knitout/stitch_recipes.hpp"
+
+namespace skein::knitout::emit {
+
+struct Place {
+  Bed bed = Bed::f;
+  std::int32_t needle = 0;
+  friend bool operator==(const Place&, const Place&) = default;
+};
+inline Needle at(Place p) {
+  return {p.bed, p.needle};
+}
+inline Bed other(Bed b) {
+  return b == Bed::f ? Bed::b : Bed::f;
+}
+inline Place facing(Place p) {
+  return {other(p.bed), p.needle};
+}
+
+// Where a stitch is knit in its course.
+struct StitchPlan {
+  Bed home = Bed::f;        // the bed its made loops live on
+  Bed knit = Bed::f;        // home, or the other bed for a purl
+  std::int32_t needle = 0;  // its knit slot's needle: where its taken loops are stacked
+  std::int32_t step = 1;    // needles from one of its made slots to the next, left to right
+  std::uint8_t knit_slot = 0;
+  Direction travel = Direction::plus;
+  Place home_of(std::uint32_t slot) const {
+    return {home, needle + (static_cast<std::int32_t>(slot) - knit_slot) * step};
+  }
+};
+
+struct LoopPlace {
+  Place now, home;  // where the loop is, and where it rests between courses
+};
+
+struct Move {
+  Place from, to;
+};
+inline std::int32_t rack_of(const Move& m) {
+  return m.from.bed == Bed::f ? m.from.needle - m.to.needle : m.to.needle - m.from.needle;
+}
+
+// Needles a course occupies: per stitch max(made, 1), laid out left to right.
+inline std::uint32_t footprint(StitchType t) {
+  return std::max<std::uint32_t>(info(t).loops_out, 1);
+}
+
+class Emitter {
+ public:
+  // Checks that the piece fits the profile (throws Error in the user's words otherwise).
+  // `carriers`: per yarn piece, its carrier.
+  Emitter(const Compilation& c, const MachineProfile& p, const CourseLayout& l, KnitoutWriter& w,
+          const std::vector<std::string>& carriers)
+      : c_(c), g_(c.knit), p_(p), l_(l), w_(w), carriers_(carriers) {
+    pitch_ = l_.tube ? 2 : 1;
+    reach_ = p_.max_transfer_stretch / pitch_ * pitch_;
+    plan_.resize(g_.size());
+    live_.resize(g_.loops.size());
+    index_on_needles_.resize(g_.loops.size());
+    in_course_.resize(g_.loops.size());
+    check_fit();
+  }
+
+  void run();
+
+ private:
+  // ---- fitting the model on the profile (emit_layout.cpp) ----
+  struct Footprint {
+    std::uint32_t total = 0, front = 0,
+                  split = 0;  // split: first stitch (left to right) on the back
+  };
+  // The course's stitches left to right along the fabric, from the one laid out first (at a
+  // tube's front left end): a round that starts elsewhere than the round below it is laid out
+  // from the stitch that takes the round's start, so that its loops need not move round.
+  template <typename F>
+  void each_in_layout_order(const Course& c, F f) const {
+    std::uint32_t n = c.end - c.begin;
+    for (std::uint32_t k = 0; k < n; ++k) {
+      std::uint32_t j = (k + c.layout_start) % n;
+      f(l_.order[c.left_to_right ? c.begin + j : c.end - 1 - j]);
+    }
+  }
+  Footprint measure(const Course& c) const;
+  std::uint32_t needles_needed(const Footprint& f) const;
+  void check_fit();
+  void check_width();
+  void check_side_by_side();
+  void check_needle_loads() const;
+  std::vector<std::uint32_t> held_loops() const;
+  std::vector<std::uint32_t> wraps_per_stitch() const;
+
+  // ---- laying a course out on the needles (emit_layout.cpp) ----
+  bool keep_folds(const Course& c, Footprint& f) const;
+  void aim(StitchId s, StitchPlan& sp, bool on_back) const;
+  bool is_turn_loop(std::uint32_t loop) const;
+  std::uint32_t resting_loop(StitchId s) const;
+  void plan_in_place(const Course& c);
+  void plan_course(const Course& c, bool first);
+  void plan_beside(const Course& c);
+
+  // ---- shaping inside a short row (emit_layout.cpp) ----
+  struct Shaping {
+    std::int32_t top = 0;     // a shaped stitch's highest needle on the bed
+    std::int32_t delta = 0;   // the needles it occupies there after, less before
+    std::int32_t upward = 0;  // the deltas of this stitch and those above it on the bed
+  };
+  struct Occupied {  // a stitch's taken loops per bed (front, back)
+    std::array<std::int32_t, 2> count{0, 0}, top{0, 0};
+  };
+  struct RoomMove {
+    std::uint32_t loop;  // a waiting loop
+    Place to;
+  };
+  static std::size_t bed_index(Bed b) { return b == Bed::f ? 0 : 1; }
+  // Needles a stitch occupies once knit: an sr5's turn loop waits on the facing needle.
+  static std::int32_t needles_after(StitchType t) {
+    return t == StitchType::sr5 ? 1 : static_cast<std::int32_t>(footprint(t));
+  }
+  Bed fabric_bed(std::uint32_t loop) const;
+  Occupied occupied(StitchId s) const;
+  Place after_room(Place p) const;
+  void make_room(const Course& c);
+  void place_in_room(StitchId s, const Occupied& o);
+  void move_waiting_loops(const Course& c);
+  [[noreturn]] void off_the_bed(StitchId s) const;
+  bool shaped() const { return !shaping_[0].empty() || !shaping_[1].empty(); }
+
+  // ---- the transfers between two courses (emit_transfers.cpp) ----
+  void emit_moves(std::vector<Move>& moves);
+  void transition(const Course& c);
+  bool fits_one_stage(const Course& c) const;
+  void go_home(const Course& c, std::vector<std::uint8_t>& ready, bool staged);
+  void merge_decreases(const Course& c);
+  void move_across_beds(Place from, Place to);
+  std::int32_t ring(Place p) const;
+  Place place_at(std::int32_t u) const;
+  void shift_stacks(const Course& c, const std::vector<std::uint8_t>& ready);
+  Place next_stop(Place now, Place target, bool crossing) const;
+  void send_purls(const Course& c, const std::vector<std::uint8_t>& ready);
+
+  // ---- knitting, cast-on and bind-off (emit_courses.cpp) ----
+  void made(StitchId s, std::uint32_t slot, Place now);
+  void track_loops(StitchId s);
+  void knit_stitch(StitchId s);
+  void knit_course(const Course& c);
+  void wrap_turn(const Course& c);
+  std::vector<Needle> pass_needles(const Course& c, Direction d) const;
+  Direction tuck_border(const Course& c, const std::string& carrier);
+  void knit_pass(const Course& c, Direction d, const std::string& carrier);
+  void yarn_in(const std::string& carrier);
+  void bring_in(const Course& c);
+  void leave_loops(const Course& c);
+  void release(const std::string& carrier);
+  void yarn_out(const std::string& carrier);
+  void cast_on(const Course& c);
+  void draw_thread(const Course& c);
+  void bind_off(const Course& c, bool last_course);
+
+  // ---- output helpers ----
+  void source(const Course& c, const char* what);  // emit.cpp
+  std::span<const std::uint32_t> taken(StitchId s) const { return g_.loops_taken_by(s); }
+
+  const Compilation& c_;
+  const KnitGraph& g_;
+  const MachineProfile& p_;
+  const CourseLayout& l_;
+  KnitoutWriter& w_;
+  std::int32_t pitch_ = 1, reach_ = 1;
+  std::int32_t fold_ = 0;  // a tube's right fold: front f2R faces back b2R+1 beside it
+  std::int32_t beside_left_ = 0, beside_right_ = 0;  // needles for the sheets cast on beside
+  std::vector<StitchPlan> plan_;                     // per stitch, for the course being knit
+  std::vector<LoopPlace> live_;                      // per loop of the knit graph
+  std::vector<std::uint32_t> on_needles_, index_on_needles_;  // the loops made, not yet taken
+  std::array<std::vector<Shaping>, 2> shaping_;  // a short row's shaped stitches, per bed
+  std::vector<RoomMove> room_;                   // the waiting loops the shaping moves
+  std::vector<std::uint8_t> in_course_;          // per loop: taken by the course being planned
+  const std::vector<std::string>& carriers_;
+  std::string carrier_;  // the carrier of the course being knit
+};
+
+}  // namespace skein::knitout::emit
