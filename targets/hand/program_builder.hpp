@@ -1,0 +1,323 @@
+// The builder behind build_pattern_from_program (program_pattern.hpp), private to the hand
+// target: it walks the lowering's live-loop program step by step, keeping what each piece has on
+// its needle and where every other live loop waits. Its jobs live in three files:
+// program_pattern.cpp (pieces and sections, cast-ons, three-needle bind-offs), program_gather.cpp
+// (gathering a course's loops from holders, spare needles and chains; picking up along an edge)
+// and program_courses.cpp (courses worked in rows and in the rnd).
+#pragma once
+
+#include <fmt/format.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "common/error.hpp"
+#include "driver/pipeline.hpp"
+#include "hand/loop_places.hpp"
+#include "hand/pattern_model.hpp"
+
+namespace skein::hand::from_program {
+
+using T = StitchType;
+constexpr std::uint32_t kNone = 0xffffffffu;
+
+// What the knitter holds for one piece: its sts, split between the left needle (ahead of the
+// tip) and the right one (behind) on a flat piece; in the rnd, the ring of its sts from the
+// beginning-of-round marker on, the way the rnds go, and where the yarn is.
+struct Needle {
+  std::uint32_t section = 0;  // its latest section
+  std::uint32_t live = 0, ahead = 0, behind = 0;
+  bool in_round = false;
+  bool double_stitch_next = false;  // German short rows: the next row begins with DS
+  std::size_t turn_loops = 0;       // loops of the st the last course turned at (sr4, sr5)
+  bool worked = false;              // a course has worked its sts
+  bool opened = false;              // a rnd bound off in places: only a rnd takes it up again
+  CourseDirection last = CourseDirection::left_to_right;
+  CourseDirection rnds = CourseDirection::left_to_right;  // the way its rnds go
+  std::vector<std::uint32_t> ring;  // its loops: from the marker (in the rnd), as cast on (flat)
+  std::uint32_t gap = 0;            // the yarn is before ring[gap], going the way the rnds go
+};
+
+class ProgramPatternBuilder {
+ public:
+  ProgramPatternBuilder(const Compilation& c, const Program& program, TurnMethod turns,
+                        bool mirror);
+
+  HandPattern run() &&;
+
+ private:
+  [[noreturn]] static void unsupported(const std::string& what) {
+    throw UnsupportedError(fmt::format("hand target: {}", what));
+  }
+
+  // "step 12 (course of yarn 2 at face 40 (k, row 7)) works ...".
+  [[noreturn]] void not_yet(const Step& s, const std::string& what) const;
+
+  std::span<const WorkedStitch> stitches_of(const Step& s) const {
+    return {p_.stitches.data() + s.stitches.begin, s.stitches.size()};
+  }
+  std::span<const std::uint32_t> all_taken_by(std::uint32_t worked) const {
+    return {p_.taken.data() + p_.taken_at[worked], p_.taken_at[worked + 1] - p_.taken_at[worked]};
+  }
+  // The loops a stitch takes off the needle it works: a three-needle bind-off st's second
+  // loop comes from the needle held behind.
+  std::span<const std::uint32_t> taken_by(std::uint32_t worked) const {
+    auto all = all_taken_by(worked);
+    return g_.type[p_.stitches[worked].stitch] == T::tnbo ? all.first(1) : all;
+  }
+  std::span<const PlacedLoop> made_by(std::uint32_t worked) const {
+    return {p_.made.data() + p_.made_at[worked], p_.made_at[worked + 1] - p_.made_at[worked]};
+  }
+
+  // The loop of `loops` (left to right seen from the RS) a course going `d` meets first.
+  template <class Loops>
+  static auto first_met(const Loops& loops, CourseDirection d) {
+    return d == CourseDirection::right_to_left ? loops.back() : loops.front();
+  }
+
+  // The loops a course takes, in the order it meets them.
+  std::vector<std::uint32_t> loops_met(const Step& s) const;
+
+  // --- pieces and sections ------------------------------------------------------------------
+
+  PatternSection& section() { return out_.sections.back(); }
+  const PatternSection& section() const { return out_.sections.back(); }
+  bool working() const { return current_ != kNone; }
+  Needle& needle() { return needles_[current_]; }
+
+  // The section worked now ends: its sts stay on the needle (set aside), wait on a spare
+  // needle for another piece (in the order the pattern counts them: as cast on, or round from
+  // the marker), or are all bound off.
+  void end_section(bool set_aside = false);
+
+  // A new piece, or the yarn of one set aside taken up again (its rows count on).
+  void start_section(std::uint32_t yarn, std::uint32_t needle_index);
+
+  void set_aside(const Step& s);
+
+  void take_up(const Step& s);
+
+  // A cast-on starts a piece; a provisional one (along a split) keeps its chain's loops for
+  // the other side.
+  void cast_on(const Step& s);
+
+  // A yarn binds off the sts of two pieces together, pair by pair: the first loop of each st
+  // from the front needle, the second from the back. A new yarn joins two pieces left on spare
+  // needles (or holders); a piece's own yarn binds off all its sts with another's held behind.
+  void three_needle_bind_off(const Step& s);
+
+  // The piece just worked ends by binding off its sts with another's: its section says so.
+  void bind_off_with_its_yarn(const PatternSection& join, std::uint32_t section);
+
+  // --- gathering a rnd ------------------------------------------------------------------------
+
+  // The needle the course works: the yarn's own, once the loops it meets are on it in order.
+  Needle& needle_for(const Step& s, const std::vector<std::uint32_t>& met);
+
+  // Slips the needle's loops the rnd leaves to holders, joins the yarn to (or carries it on
+  // to) the loops it starts on, places the others: the needle then holds `met` from the
+  // marker, the rnd's way round.
+  void gather(const Step& s, const std::vector<std::uint32_t>& met);
+
+  // A flat piece's next row, all of whose own sts it works, takes others placed among them:
+  // its own sts are those ahead once it turns, in the order it meets them.
+  std::vector<std::uint32_t> row_ahead(const Step& s);
+
+  // After a flat gather the needle holds the row's loops, all ahead of the tip once the work
+  // is turned; `own`: the piece's own were there before.
+  void lay_row_ahead(const Step& s, const std::vector<std::uint32_t>& met, bool own);
+
+  // Part of a piece in the rnd that waits on a spare needle goes elsewhere (a body's front
+  // and back into a yoke, each between the sleeves; a leg's inside to the crotch): before the
+  // piece is left, a block of its last rnd goes to a holder of its own, the block taken or
+  // (where that one goes round past the beginning of the rnd) the rest. Returns where the
+  // block then waits.
+  LoopAt hold_part_of_spare_needle(std::uint32_t section, std::span<const std::uint32_t> block);
+
+  // The loops of `line` marked (in_met_ bit 2) or not, if they lie side by side there; else
+  // none.
+  std::vector<std::uint32_t> one_block(const std::vector<std::uint32_t>& line, bool marked) const;
+
+  // The sts a knitter counts on the needle: the two loops of an sr5 are one (a DS, a wrapped
+  // st).
+  std::uint32_t hand_sts(std::span<const std::uint32_t> loops) const;
+
+  // The needle's loops the rnd does not take go to holders, a block of the rnd each; the rest
+  // stay, from the marker on.
+  std::vector<std::uint32_t> hold_what_it_leaves(const Step& s);
+
+  // The section's latest holder, if the course that takes its loops meets `block` right after
+  // them, one after the other (a tube parting over two rnds: the leg's sts go to one holder);
+  // else 0.
+  std::uint32_t holder_met_before(std::span<const std::uint32_t> block,
+                                  std::uint32_t section) const;
+
+  // Are the loops met by one course, one after the other (either way)?
+  bool met_one_after_another(const std::vector<std::uint32_t>& loops) const;
+
+  // Per loop: the course that takes it and its place in the order that course meets them.
+  void index_loops_met();
+
+  // A yarn that starts on loops another piece left (a holder, a spare needle, a chain) is
+  // joined to them; the yarn of a piece all bound off is carried on to a holder's. Returns the
+  // loops it starts on, in the order the rnd meets them.
+  std::vector<std::uint32_t> join_to_first_source(const Step& s,
+                                                  const std::vector<std::uint32_t>& met,
+                                                  bool round);
+
+  // Each run of the rnd from elsewhere is placed into it where the rnd meets it, after the
+  // sts before it; what stays must then be the rest of the rnd, in order.
+  void place_the_others(const Step& s, const std::vector<std::uint32_t>& met,
+                        const std::vector<std::uint32_t>& host);
+
+  void place(const Step& s, LoopAt source, std::span<const std::uint32_t> block,
+             std::uint32_t after);
+
+  // --- picking up along an edge ----------------------------------------------------------------
+  // A loop made across an expanding perpendicular edge (paper §3.2) waits along the edge of
+  // its maker's piece; a knitter picks it up, one in each row, from the edge st of that row.
+
+  // The first and last st a row worked, and the side facing: which is its edge st.
+  struct RowEnds {
+    StitchId first = kNoStitch, last = kNoStitch;
+    Side side = Side::rs;
+  };
+
+  void note_row_end(StitchId st, const PatternRow& r);
+
+  // The pick-up that gives `loops` in their order: one in each row, rows numbered one after
+  // the other, each from the st at the same edge of its row; none where they are not.
+  std::optional<PatternSection::PickUp> pick_up_of(LoopAt source,
+                                                   std::span<const std::uint32_t> loops) const;
+
+  // A piece that starts on loops picked up along another's edge: the knitter picks them up,
+  // and its first course works them, the last picked up first.
+  std::vector<std::uint32_t> start_from_pick_up(const Step& s,
+                                                const std::vector<std::uint32_t>& host, bool round);
+
+  // Loops picked up along an edge go into the rnd where it meets them, in the order picked up.
+  void pick_up_into_rnd(const Step& s, LoopAt source, std::span<const std::uint32_t> block,
+                        std::uint32_t after);
+
+  // --- courses ------------------------------------------------------------------------------
+
+  void course(const Step& s);
+
+  PatternRow open_row(const Step& s, const Needle& n) const;
+
+  // One stitch of the course: its ops; returns the loops it takes.
+  std::uint32_t work(const Step& s, std::uint32_t i, Needle& n, PatternRow& r);
+
+  // A three-needle bind-off in a row: its st in front, the other piece's held behind the
+  // needle (from a spare needle or holder, all of it, an end at the tip), said before the row
+  // that binds off its first st.
+  std::uint32_t bind_off_with_held_st(std::uint32_t i, Needle& n);
+
+  bool binds_off_together(std::uint32_t worked) const {
+    return g_.type[p_.stitches[worked].stitch] == T::tnbo;
+  }
+
+  // A provisional cast-on in the middle of a row: the st goes on the needle, the loop of its
+  // chain waits for the piece on the other side of the split.
+  std::uint32_t cast_on_in_row(std::uint32_t i, Needle& n);
+
+  void note_course(const Step& s, Needle& n);
+
+  // --- in the rnd ---------------------------------------------------------------------------
+  // A knitter's rnd runs from the beginning-of-round marker round to it, the way the rnds go;
+  // a course that turns is a row in the rnd (a short row), which slips the marker where it
+  // passes it. Courses going on the same way are one row until the work turns or the marker
+  // ends a rnd.
+
+  void ring_course(const Step& s, Needle& n);
+
+  // The work turns right after a rnd ended at the marker: that rnd ends with the turn.
+  void turn_after_last_rnd();
+
+  // German short rows slip the st the work turned at (DS); a wrapped st went back to the left
+  // needle: either way the row after the turn begins past it.
+  void step_over_turn(Needle& n, bool forward);
+
+  // The course meets its loops side by side on the needle, from where the yarn is.
+  void check_met_at_the_yarn(const Step& s, const Needle& n, const std::vector<std::uint32_t>& met,
+                             bool forward) const;
+
+  void open_ring_row(const Step& s, Needle& n, bool forward);
+
+  // Ends the hand row: at a turn, a row in the rnd (a short row); at the marker, a rnd.
+  void close_ring_row(const Step& s, Needle& n, bool turn);
+
+  // The loops the course took, a block of the ring, give way to those it made; the marker
+  // stays before the loops of the st that took the one after it.
+  void replace_in_ring(const Step& s, Needle& n, bool forward, std::uint32_t first,
+                       std::uint32_t count);
+
+  void index_ring(const Needle& n) {
+    for (std::uint32_t i = 0; i < n.ring.size(); ++i) pos_[n.ring[i]] = i;
+  }
+
+  // A flat row turns the work: the sts behind the tip come ahead of it. German short rows
+  // begin the row after a turn with the double stitch.
+  void begin_row(const Step& s, Needle& n);
+
+  // The stitch takes and makes live loops of the run only (no cast-on in a course); a loop made
+  // along an edge waits there to be picked up.
+  void check_worked_here(const Step& s, std::uint32_t worked) const;
+
+  // Loops ahead of and behind the needle tip as the stitch is worked; returns the loops it
+  // takes. A wrapped st goes back to the left needle.
+  std::uint32_t move_loops(StitchId st, Needle& n, const Step& s) const;
+
+  // Sts of a flat piece that another yarn works (a flap of their own) go to a holder before
+  // the row that leaves them: a block of the last row's sts, counted in the order it worked
+  // them.
+  void hold_what_others_work(const Step& s, Needle& n);
+
+  // A flat row meets its loops side by side along the line from where the yarn is.
+  void check_met_along_the_row(const Step& s, const Needle& n) const;
+
+  // The row's loops give way to those it made, in the line's order; the yarn stays at the
+  // end it went to.
+  void replace_in_line(const Step& s, Needle& n);
+
+  // A row that stops with sts left ahead turns there (a short row); German short rows make the
+  // st it turned at a double stitch first in the next row.
+  void end_row(const Step& s, Needle& n, PatternRow& r, std::uint32_t takes);
+
+  // The schedule's mismatch and short-row markers go before the stitch's operations.
+  void note_region_mark(StitchId st, const PatternRow& r);
+
+  const KnitGraph& g_;
+  const Program& p_;
+  HandPattern out_;
+  std::uint32_t pieces_ = 0;
+  std::vector<Needle> needles_;    // per piece, in the order they start
+  std::uint32_t current_ = kNone;  // the needle of the section being written
+  LoopPlaces places_;
+  std::vector<std::uint32_t> needle_of_yarn_;  // per yarn
+  const std::vector<std::uint32_t>& yarn_of_;  // per stitch
+  std::vector<std::uint8_t> in_met_ = std::vector<std::uint8_t>(g_.loops.size(), 0);
+  std::unordered_map<StitchId, MarkerKind> marked_;
+  std::size_t step_ = 0;
+  std::vector<std::uint32_t> pos_ = std::vector<std::uint32_t>(g_.loops.size(), 0);  // in ring
+  // Per stitch worked in a row: the row (into out_.rows) and its number; per row, its ends.
+  std::vector<std::uint32_t> row_of_ = std::vector<std::uint32_t>(g_.size(), kNone);
+  std::vector<std::uint32_t> number_of_ = std::vector<std::uint32_t>(g_.size(), 0);
+  std::vector<RowEnds> row_ends_;
+  std::vector<std::uint32_t> taker_step_ = std::vector<std::uint32_t>(g_.loops.size(), kNone);
+  std::vector<std::uint32_t> met_at_ = std::vector<std::uint32_t>(g_.loops.size(), 0);
+  // The row in the rnd being written, until the work turns or the marker ends it.
+  PatternRow pending_;
+  bool row_open_ = false, row_forward_ = false, ds_next_ = false;
+  bool row_at_marker_after_turn_ = false;
+  CourseDirection row_dir_ = CourseDirection::left_to_right;
+  std::uint32_t pending_takes_ = 0;
+  std::uint32_t held_behind_left_ = 0;  // sts held behind the needle for 3-needle BO
+};
+
+}  // namespace skein::hand::from_program

@@ -1,0 +1,394 @@
+// The hand pattern built on the live-loop program (program_pattern.cpp): each course is worked
+// as a row or in the rnd, with the side facing that its direction gives, its stitches in the
+// course's working order; the needle's loops, the yarn's place and the rows written follow it.
+// The members' why-comments: program_builder.hpp.
+#include <algorithm>
+
+#include "hand/program_builder.hpp"
+#include "hand/stitch_working.hpp"
+
+namespace skein::hand::from_program {
+
+void ProgramPatternBuilder::course(const Step& s) {
+  for (const WorkedStitch& w : stitches_of(s)) check_worked_here(s, p_.worked_at[w.stitch]);
+  Needle& n = needle_for(s, loops_met(s));
+  if (n.in_round) return ring_course(s, n);
+  PatternRow r = open_row(s, n);
+  r.bind_off = std::all_of(stitches_of(s).begin(), stitches_of(s).end(),
+                           [&](const WorkedStitch& w) { return g_.type[w.stitch] == T::bo; });
+  hold_what_others_work(s, n);
+  begin_row(s, n);
+  check_met_along_the_row(s, n);
+  std::uint32_t takes = 0;
+  for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i) takes += work(s, i, n, r);
+  end_row(s, n, r, takes);
+  replace_in_line(s, n);
+  r.end_op = static_cast<std::uint32_t>(out_.ops.size());
+  r.sts_after = n.live;
+  out_.rows.push_back(r);
+  note_course(s, n);
+}
+
+PatternRow ProgramPatternBuilder::open_row(const Step& s, const Needle& n) const {
+  PatternRow r;
+  r.side = s.direction == CourseDirection::right_to_left ? Side::rs : Side::ws;
+  r.number =
+      static_cast<std::uint32_t>(out_.rows.size()) - section().first_row + section().first_number;
+  r.first_op = static_cast<std::uint32_t>(out_.ops.size());
+  r.sts_before = n.live;
+  return r;
+}
+
+std::uint32_t ProgramPatternBuilder::work(const Step& s, std::uint32_t i, Needle& n,
+                                          PatternRow& r) {
+  StitchId st = p_.stitches[i].stitch;
+  note_region_mark(st, r);
+  note_row_end(st, r);
+  if (g_.type[st] == T::sco) return cast_on_in_row(i, n);
+  if (g_.type[st] == T::tnbo) return bind_off_with_held_st(i, n);
+  append_stitch_ops(g_, st, r.side, out_.mirror, out_.turns, out_.ops, r.wraps_again);
+  return move_loops(st, n, s);
+}
+
+std::uint32_t ProgramPatternBuilder::bind_off_with_held_st(std::uint32_t i, Needle& n) {
+  const Step& s = p_.steps[step_];
+  if (held_behind_left_ == 0) {
+    std::vector<std::uint32_t> behind;
+    for (std::uint32_t k = i; k < s.stitches.end; ++k)
+      if (g_.type[p_.stitches[k].stitch] == T::tnbo) behind.push_back(all_taken_by(k)[1]);
+    LoopAt source = places_.at(behind.front());
+    std::optional<Lie> lie = places_.lie(source, behind);
+    if (!lie && source.place == Place::spare) {
+      source = hold_part_of_spare_needle(source.index, behind);
+      lie = places_.lie(source, behind);
+    }
+    bool nameable = source.place == Place::holder || source.place == Place::spare;
+    if (!nameable || !lie || lie->at != 0)
+      not_yet(s,
+              "binds off sts held behind that do not wait on one spare needle or holder, "
+              "from an end");
+    bool holder = source.place == Place::holder;
+    PatternSection::Hold h;
+    h.section = holder ? places_.holder_section(source.index) : source.index;
+    h.count = static_cast<std::uint32_t>(behind.size());
+    h.from_last = lie->from_last;
+    h.first = p_.stitches[i].stitch;
+    h.holder = holder ? source.index : 0;
+    h.before_row = static_cast<std::uint32_t>(out_.rows.size());
+    section().holds.push_back(h);
+    held_behind_left_ = h.count;
+  }
+  --held_behind_left_;
+  out_.ops.push_back(HandOp::tnbo);
+  --n.live;
+  if (!n.in_round) --n.ahead;
+  return 1;
+}
+
+std::uint32_t ProgramPatternBuilder::cast_on_in_row(std::uint32_t i, Needle& n) {
+  out_.ops.push_back(HandOp::provisional_co);
+  PatternSection& sec = section();
+  StitchId st = p_.stitches[i].stitch;
+  if (sec.row_chain++ == 0) sec.row_chain_ends[0] = st;
+  sec.row_chain_ends[1] = st;
+  for (const PlacedLoop& m : made_by(i))
+    if (m.place == LoopPlace::other_side) places_.add(n.section, Place::chain, m.loop);
+  ++n.live;
+  if (!n.in_round) ++n.behind;
+  return 0;
+}
+
+void ProgramPatternBuilder::note_course(const Step& s, Needle& n) {
+  StitchId last = p_.stitches[s.stitches.end - 1].stitch;
+  for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i) {
+    for (std::uint32_t l : all_taken_by(i)) places_.take(l);
+    for (const PlacedLoop& m : made_by(i)) {
+      if (m.place == LoopPlace::in_run) places_.set({&m.loop, 1}, {Place::needle, current_});
+      if (m.place == LoopPlace::along_edge) places_.set({&m.loop, 1}, {Place::edge, n.section});
+    }
+  }
+  n.turn_loops = worked_by_hand(g_, last) == T::sr4 ? made_by(s.stitches.end - 1).size() : 0;
+  n.last = s.direction;
+  n.worked = true;
+  section().stitches += s.stitches.size();
+  section().last_row_ends[0] = p_.stitches[s.stitches.begin].stitch;
+  section().last_row_ends[1] = last;
+}
+
+void ProgramPatternBuilder::ring_course(const Step& s, Needle& n) {
+  if (n.opened && s.shape != RowShape::closed)
+    not_yet(s,
+            "works rows on a rnd bound off in places, which the program's pattern builder "
+            "does not write yet");
+  n.opened = n.opened && s.shape != RowShape::closed;
+  if (s.run_shape != RunShape::ring && s.run_shape != RunShape::line)
+    not_yet(s, "leaves its sts in no known order");
+  if (!n.worked && s.direction != n.rnds) {  // the first rnd goes against the cast-on
+    std::reverse(n.ring.begin() + 1, n.ring.end());
+    n.rnds = s.direction;
+    index_ring(n);
+  }
+  bool turns = n.worked && s.direction != n.last;
+  if (turns) {
+    if (!row_open_) turn_after_last_rnd();
+    close_ring_row(s, n, true);
+    if (n.turn_loops) step_over_turn(n, s.direction == n.rnds);
+  }
+  std::vector<std::uint32_t> met = loops_met(s);
+  bool forward = s.direction == n.rnds;
+  check_met_at_the_yarn(s, n, met, forward);
+  const auto size = static_cast<std::uint32_t>(n.ring.size());
+  std::uint32_t first = forward ? n.gap : (n.gap + size - 1) % size;
+  for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i) {
+    auto taken = taken_by(i);
+    std::uint32_t at = taken.empty() ? kNone : pos_[first_met(taken, s.direction)];
+    bool at_marker = at == (forward ? 0 : size - 1) && row_open_ && pending_takes_ > 0;
+    if (at_marker && i > s.stitches.begin && binds_off_together(i - 1) && binds_off_together(i))
+      not_yet(s, "binds off with a three-needle bind-off across the beginning-of-round marker");
+    if (forward && at == 0 && row_open_ && pending_takes_ > 0) close_ring_row(s, n, false);
+    if (!forward && at == size - 1 && row_open_ && pending_takes_ > 0)
+      out_.ops.push_back(HandOp::sm);
+    if (!row_open_) open_ring_row(s, n, forward);
+    pending_takes_ += work(s, i, n, pending_);
+  }
+  replace_in_ring(s, n, forward, first, static_cast<std::uint32_t>(met.size()));
+  note_course(s, n);
+  if (forward && (n.gap == 0 || n.ring.empty())) close_ring_row(s, n, false);
+  // Bound off in one or two places (underarms), the rest stays on the circular needle in
+  // its order, for a rnd that takes it up again with others (a yoke).
+  if (s.run_shape == RunShape::line && !n.ring.empty()) n.opened = true;
+}
+
+void ProgramPatternBuilder::turn_after_last_rnd() {
+  PatternRow& r = out_.rows.back();
+  if (r.end_op != out_.ops.size() || out_.ops.back() == HandOp::wt) return;
+  out_.ops.push_back(HandOp::turn);
+  ++r.end_op;
+}
+
+void ProgramPatternBuilder::step_over_turn(Needle& n, bool forward) {
+  if (n.ring.empty()) return;
+  auto size = static_cast<std::uint32_t>(n.ring.size());
+  auto by = static_cast<std::uint32_t>(n.turn_loops % size);
+  n.gap = forward ? (n.gap + by) % size : (n.gap + size - by) % size;
+  if (out_.turns == TurnMethod::german) ds_next_ = true;
+}
+
+void ProgramPatternBuilder::check_met_at_the_yarn(const Step& s, const Needle& n,
+                                                  const std::vector<std::uint32_t>& met,
+                                                  bool forward) const {
+  const auto size = static_cast<std::uint32_t>(n.ring.size());
+  if (met.empty() || met.size() > size) not_yet(s, "takes no loop of the rnd, or too many");
+  std::uint32_t first = forward ? n.gap : (n.gap + size - 1) % size;
+  for (std::uint32_t i = 0; i < met.size(); ++i) {
+    std::uint32_t want = forward ? (first + i) % size : (first + size - i) % size;
+    if (pos_[met[i]] != want || n.ring[want] != met[i])
+      not_yet(s, i == 0 ? "begins away from where the yarn is on the needle"
+                        : "does not meet its loops side by side on the needle");
+  }
+}
+
+void ProgramPatternBuilder::open_ring_row(const Step& s, Needle& n, bool forward) {
+  pending_ = open_row(s, n);
+  pending_takes_ = 0;
+  row_open_ = true;
+  row_forward_ = forward;
+  row_at_marker_after_turn_ = forward && n.gap == 0 && n.worked && s.direction != row_dir_;
+  row_dir_ = s.direction;
+  if (ds_next_) out_.ops.push_back(HandOp::ds);
+  ds_next_ = false;
+}
+
+void ProgramPatternBuilder::close_ring_row(const Step& s, Needle& n, bool turn) {
+  if (!row_open_) return;
+  PatternRow& r = pending_;
+  if (!turn && (!row_forward_ || (n.gap != 0 && !n.ring.empty())))
+    not_yet(s, "leaves a row in the rnd that neither turns nor ends at the marker");
+  r.round = !turn;
+  r.short_row = turn;
+  if (turn && out_.ops.back() != HandOp::wt) out_.ops.push_back(HandOp::turn);
+  if (turn && row_at_marker_after_turn_) out_.ops.insert(out_.ops.begin() + r.first_op, HandOp::sm);
+  r.end_op = static_cast<std::uint32_t>(out_.ops.size());
+  r.sts_after = n.live;
+  r.bind_off = n.live == 0 && std::all_of(out_.ops.begin() + r.first_op, out_.ops.end(),
+                                          [](HandOp op) { return op == HandOp::bo; });
+  r.partial = r.short_row || (!r.bind_off && pending_takes_ != r.sts_before);
+  out_.short_rows = out_.short_rows || r.short_row;
+  out_.ws_rounds = out_.ws_rounds || (r.round && r.side == Side::ws);
+  out_.rows.push_back(r);
+  row_open_ = false;
+}
+
+void ProgramPatternBuilder::replace_in_ring(const Step& s, Needle& n, bool forward,
+                                            std::uint32_t first, std::uint32_t count) {
+  const auto size = static_cast<std::uint32_t>(n.ring.size());
+  std::uint32_t begin = forward ? first : (first + size + 1 - count) % size;  // in ring order
+  std::vector<std::uint32_t> made;
+  std::uint32_t bor = n.ring[0], new_bor = kNone;
+  for (std::uint32_t k = 0; k < s.stitches.size(); ++k) {
+    std::uint32_t i = forward ? s.stitches.begin + k : s.stitches.end - 1 - k;
+    auto m = made_by(i);
+    auto taken = taken_by(i);
+    bool takes_bor = std::find(taken.begin(), taken.end(), bor) != taken.end();
+    std::size_t before = made.size();
+    bool reversed = (s.direction == CourseDirection::right_to_left) == forward;
+    for (std::size_t j = 0; j < m.size(); ++j) {
+      const PlacedLoop& pl = m[reversed ? m.size() - 1 - j : j];
+      if (pl.place == LoopPlace::in_run) made.push_back(pl.loop);
+    }
+    if (takes_bor && made.size() > before) new_bor = made[before];
+  }
+  // A rnd (or a row) that begins at the marker leaves all its loops after it.
+  if (forward && first == 0 && !made.empty()) new_bor = made.front();
+  std::vector<std::uint32_t> ring = made;
+  for (std::uint32_t k = count; k < size; ++k) ring.push_back(n.ring[(begin + k) % size]);
+  // `ring` starts at the block; the marker goes before the loop that takes its place.
+  std::uint32_t start = static_cast<std::uint32_t>(made.size());
+  bool block_has_bor = begin == 0 || begin + count > size;
+  if (block_has_bor) {
+    if (new_bor == kNone && !made.empty())
+      not_yet(s, "binds off the st the beginning-of-round marker sits before");
+    start = new_bor == kNone ? 0
+                             : static_cast<std::uint32_t>(
+                                   std::find(ring.begin(), ring.end(), new_bor) - ring.begin());
+  } else {
+    start = static_cast<std::uint32_t>(std::find(ring.begin(), ring.end(), bor) - ring.begin());
+  }
+  if (!ring.empty()) std::rotate(ring.begin(), ring.begin() + start % ring.size(), ring.end());
+  n.ring = std::move(ring);
+  index_ring(n);
+  // The yarn: after the made loops going the rnds' way, before them going back.
+  std::uint32_t edge_loop = made.empty() ? kNone : (forward ? made.back() : made.front());
+  if (n.ring.empty()) {
+    n.gap = 0;
+  } else if (edge_loop == kNone) {
+    n.gap = 0;
+    not_yet(s, "leaves no loop where the yarn is");
+  } else {
+    auto sz = static_cast<std::uint32_t>(n.ring.size());
+    n.gap = forward ? (pos_[edge_loop] + 1) % sz : pos_[edge_loop];
+  }
+}
+
+void ProgramPatternBuilder::begin_row(const Step& s, Needle& n) {
+  if (s.direction == n.last)
+    not_yet(s, "is a row that goes on the way the row before went, without turning");
+  std::swap(n.ahead, n.behind);
+  auto by = static_cast<std::uint32_t>(n.turn_loops);  // past the st it turned at
+  n.gap = s.direction == CourseDirection::left_to_right ? n.gap + by : n.gap - std::min(by, n.gap);
+  if (!n.double_stitch_next) return;
+  out_.ops.push_back(HandOp::ds);
+  n.double_stitch_next = false;
+  --n.ahead;
+  ++n.behind;
+}
+
+void ProgramPatternBuilder::check_worked_here(const Step& s, std::uint32_t worked) const {
+  StitchId st = p_.stitches[worked].stitch;
+  T type = g_.type[st];
+  if (type == T::co)
+    not_yet(s, fmt::format("works {}, a {} in a course, which the program's pattern builder "
+                           "does not write yet",
+                           g_.describe(st), info(type).name));
+}
+
+std::uint32_t ProgramPatternBuilder::move_loops(StitchId st, Needle& n, const Step& s) const {
+  const StitchTypeInfo& t = info(worked_by_hand(g_, st));
+  n.live = n.live + t.loops_out - t.loops_in;
+  if (n.in_round || (t.type == T::sr4 && out_.turns == TurnMethod::wrap_and_turn))
+    return t.loops_in;
+  if (n.ahead < t.loops_in)
+    not_yet(s, fmt::format("works past the end of the needle at {}", g_.describe(st)));
+  n.ahead -= t.loops_in;
+  n.behind += t.loops_out;
+  return t.loops_in;
+}
+
+void ProgramPatternBuilder::hold_what_others_work(const Step& s, Needle& n) {
+  std::vector<std::uint32_t> others;
+  for (std::uint32_t l : n.ring) {
+    StitchId taker = g_.loops[l].taker;
+    if (taker != kNoStitch && yarn_of_[taker] != s.yarn) others.push_back(l);
+  }
+  if (others.empty()) return;
+  if (!n.worked || n.ahead != 0 || out_.rows.size() == section().first_row)
+    not_yet(s, "leaves sts to another yarn that its last row did not work to the end");
+  std::vector<std::uint32_t> order = n.ring;  // as the last row worked them
+  if (n.last == CourseDirection::right_to_left) std::reverse(order.begin(), order.end());
+  auto first = std::find(order.begin(), order.end(), others.front());
+  auto k = static_cast<std::uint32_t>(first - order.begin());
+  for (std::uint32_t i = 0; i < others.size(); ++i)
+    if (k + i >= order.size() || order[k + i] != others[i]) {
+      std::reverse(others.begin(), others.end());
+      break;
+    }
+  k = static_cast<std::uint32_t>(std::find(order.begin(), order.end(), others.front()) -
+                                 order.begin());
+  if (!std::equal(others.begin(), others.end(),
+                  order.begin() + std::min<std::size_t>(k, order.size())))
+    not_yet(s, "leaves sts to another yarn that are not side by side");
+  std::uint32_t holder = places_.hold(others, n.section);
+  PatternSection::Holding h{static_cast<std::uint32_t>(out_.rows.size() - 1), k + 1,
+                            static_cast<std::uint32_t>(others.size()), holder};
+  h.of_row = true;
+  section().holdings.push_back(h);
+  for (std::uint32_t l : others) in_met_[l] = 1;
+  std::uint32_t before_gap = 0;
+  for (std::uint32_t i = 0; i < n.gap; ++i) before_gap += in_met_[n.ring[i]];
+  std::erase_if(n.ring, [&](std::uint32_t l) { return in_met_[l] != 0; });
+  for (std::uint32_t l : others) in_met_[l] = 0;
+  n.gap -= before_gap;
+  n.live -= hand_sts(others);
+  n.behind -= hand_sts(others);
+  index_ring(n);
+}
+
+void ProgramPatternBuilder::check_met_along_the_row(const Step& s, const Needle& n) const {
+  std::vector<std::uint32_t> met = loops_met(s);
+  bool right = s.direction == CourseDirection::left_to_right;
+  if (met.size() > (right ? n.ring.size() - std::min<std::size_t>(n.gap, n.ring.size()) : n.gap))
+    not_yet(s, "works past the end of the needle");
+  for (std::uint32_t i = 0; i < met.size(); ++i)
+    if (n.ring[right ? n.gap + i : n.gap - 1 - i] != met[i])
+      not_yet(s, i == 0 ? "begins away from where the yarn is on the needle"
+                        : "does not meet its loops side by side on the needle");
+}
+
+void ProgramPatternBuilder::replace_in_line(const Step& s, Needle& n) {
+  bool right = s.direction == CourseDirection::left_to_right;
+  std::vector<std::uint32_t> made;
+  std::uint32_t taken = 0;
+  for (std::uint32_t k = 0; k < s.stitches.size(); ++k) {
+    std::uint32_t i = right ? s.stitches.begin + k : s.stitches.end - 1 - k;
+    taken += static_cast<std::uint32_t>(taken_by(i).size());
+    for (const PlacedLoop& m : made_by(i))
+      if (m.place == LoopPlace::in_run) made.push_back(m.loop);
+  }
+  std::uint32_t lo = right ? n.gap : n.gap - taken;
+  n.ring.erase(n.ring.begin() + lo, n.ring.begin() + lo + taken);
+  n.ring.insert(n.ring.begin() + lo, made.begin(), made.end());
+  n.gap = right ? lo + static_cast<std::uint32_t>(made.size()) : lo;
+  index_ring(n);
+}
+
+void ProgramPatternBuilder::end_row(const Step& s, Needle& n, PatternRow& r, std::uint32_t takes) {
+  StitchId last = p_.stitches[s.stitches.end - 1].stitch;
+  r.short_row = !r.round && n.ahead > 0;
+  if (r.short_row && out_.ops.back() != HandOp::wt) out_.ops.push_back(HandOp::turn);
+  n.double_stitch_next = out_.turns == TurnMethod::german && worked_by_hand(g_, last) == T::sr4;
+  if (r.round && takes != r.sts_before)
+    not_yet(s, fmt::format("is a rnd that works {} of the {} live stitches", takes, r.sts_before));
+  r.partial = r.short_row || (!r.bind_off && takes != r.sts_before);
+  out_.short_rows = out_.short_rows || r.short_row;
+  if (!r.round) check_make_one_has_a_strand(g_, last);
+}
+
+void ProgramPatternBuilder::note_region_mark(StitchId st, const PatternRow& r) {
+  auto at = marked_.find(st);
+  if (at == marked_.end()) return;
+  out_.region_marks.push_back({static_cast<std::uint32_t>(out_.rows.size()),
+                               static_cast<std::uint32_t>(out_.ops.size()) - r.first_op,
+                               at->second});
+}
+
+}  // namespace skein::hand::from_program

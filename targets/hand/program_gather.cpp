@@ -1,0 +1,323 @@
+// The hand pattern built on the live-loop program (program_pattern.cpp): a course that takes
+// loops from more than one place gathers them first. It slips what it leaves to holders, joins a
+// yarn to a holder, a spare needle or a provisional cast-on's chain, places the others into the
+// rnd, and picks up loops that wait along another piece's edge (paper section 3.2); then the needle
+// holds its loops in the order the course meets them. The members' why-comments:
+// program_builder.hpp.
+#include <algorithm>
+
+#include "hand/program_builder.hpp"
+
+namespace skein::hand::from_program {
+
+Needle& ProgramPatternBuilder::needle_for(const Step& s, const std::vector<std::uint32_t>& met) {
+  std::uint32_t own = needle_of_yarn_[s.yarn];
+  if (own != kNone && current_ != own) not_yet(s, "works with a yarn set aside or ended");
+  bool on_needle = own != kNone && std::all_of(met.begin(), met.end(), [&](std::uint32_t l) {
+                     return places_.at(l) == LoopAt{Place::needle, own};
+                   });
+  Needle* n = own == kNone ? nullptr : &needles_[own];
+  bool leaves_some = n && n->in_round && s.shape == RowShape::closed && met.size() < n->live;
+  if (!on_needle || leaves_some) gather(s, met);
+  return needle();
+}
+
+void ProgramPatternBuilder::gather(const Step& s, const std::vector<std::uint32_t>& met) {
+  bool round = s.shape == RowShape::closed && s.run_shape == RunShape::ring;
+  bool own = working() && needle().live > 0 && current_ == needle_of_yarn_[s.yarn];
+  if (!round && own && needle().in_round)
+    not_yet(s, "takes sts from elsewhere into a row in the rnd");
+  for (std::uint32_t l : met) in_met_[l] = 1;
+  std::vector<std::uint32_t> host = !own    ? join_to_first_source(s, met, round)
+                                    : round ? hold_what_it_leaves(s)
+                                            : row_ahead(s);
+  place_the_others(s, met, host);
+  for (std::uint32_t l : met) in_met_[l] = 0;
+  if (!round) return lay_row_ahead(s, met, own);
+  Needle& n = needle();
+  n.ring = met;
+  n.gap = 0;
+  n.live = hand_sts(met);
+  n.in_round = true;
+  n.rnds = n.last = s.direction;
+  n.worked = false;
+  index_ring(n);
+  places_.set(met, {Place::needle, current_});
+}
+
+std::vector<std::uint32_t> ProgramPatternBuilder::row_ahead(const Step& s) {
+  Needle& n = needle();
+  if (row_open_ || s.direction == n.last || n.live != hand_sts(n.ring))
+    not_yet(s, "places sts into a row that does not turn from a whole row");
+  for (std::uint32_t l : n.ring)
+    if (!in_met_[l]) not_yet(s, "places sts into a row that leaves some of its own");
+  std::vector<std::uint32_t> own = n.ring;
+  if (s.direction == CourseDirection::right_to_left) std::reverse(own.begin(), own.end());
+  return own;
+}
+
+void ProgramPatternBuilder::lay_row_ahead(const Step& s, const std::vector<std::uint32_t>& met,
+                                          bool own) {
+  Needle& n = needle();
+  n.ring = met;
+  if (s.direction == CourseDirection::right_to_left) std::reverse(n.ring.begin(), n.ring.end());
+  n.gap =
+      s.direction == CourseDirection::right_to_left ? static_cast<std::uint32_t>(met.size()) : 0;
+  n.live = hand_sts(met);
+  n.ahead = 0;
+  n.behind = n.live;
+  n.last = reversed(s.direction);
+  n.worked = own;
+  index_ring(n);
+  places_.set(met, {Place::needle, current_});
+}
+
+LoopAt ProgramPatternBuilder::hold_part_of_spare_needle(std::uint32_t section,
+                                                        std::span<const std::uint32_t> block) {
+  PatternSection& sec = out_.sections[section];
+  const LoopAt spare_needle{Place::spare, section};
+  const std::vector<std::uint32_t>& spare = places_.loops_of(spare_needle);
+  bool rnd = sec.in_round && sec.end_row > sec.first_row && out_.rows[sec.end_row - 1].round;
+  // One block a piece (a second would count its sts in the rnd the first left).
+  bool held_before = std::any_of(sec.holdings.begin(), sec.holdings.end(),
+                                 [&](const auto& h) { return h.after_row + 1 == sec.end_row; });
+  if (!rnd || held_before || block.size() >= spare.size()) return spare_needle;
+  for (std::uint32_t l : block) in_met_[l] += 2;
+  std::vector<std::uint32_t> part = one_block(spare, true);  // the block, in order there
+  bool rest = part.empty();
+  if (rest) part = one_block(spare, false);
+  for (std::uint32_t l : block) in_met_[l] -= 2;
+  if (part.empty()) return spare_needle;
+  auto at = static_cast<std::uint32_t>(std::find(spare.begin(), spare.end(), part.front()) -
+                                       spare.begin());
+  places_.take_off_spare(section, part);
+  std::uint32_t holder = places_.hold(part, section);
+  sec.holdings.push_back(
+      {sec.end_row - 1, at + 1, static_cast<std::uint32_t>(part.size()), holder});
+  sec.live_at_end -= hand_sts(part);
+  return rest ? spare_needle : LoopAt{Place::holder, holder};
+}
+
+std::vector<std::uint32_t> ProgramPatternBuilder::one_block(const std::vector<std::uint32_t>& line,
+                                                            bool marked) const {
+  auto in = [&](std::uint32_t l) { return ((in_met_[l] & 2) != 0) == marked; };
+  auto first = std::find_if(line.begin(), line.end(), in);
+  auto end = std::find_if_not(first, line.end(), in);
+  if (std::find_if(end, line.end(), in) != line.end()) return {};
+  return {first, end};
+}
+
+std::uint32_t ProgramPatternBuilder::hand_sts(std::span<const std::uint32_t> loops) const {
+  std::uint32_t sr5 = 0;
+  for (std::uint32_t l : loops)
+    sr5 += g_.loops[l].maker != kNoStitch && g_.type[g_.loops[l].maker] == T::sr5;
+  return static_cast<std::uint32_t>(loops.size()) - sr5 / 2;
+}
+
+std::vector<std::uint32_t> ProgramPatternBuilder::hold_what_it_leaves(const Step& s) {
+  Needle& n = needle();
+  if (!n.in_round || row_open_ || n.gap != 0)
+    not_yet(s, "gathers sts onto a flat piece, or a tube not at the end of a rnd");
+  PatternSection& sec = section();
+  std::uint32_t after_row = static_cast<std::uint32_t>(out_.rows.size()) - 1;
+  if (out_.rows.empty()) not_yet(s, "gathers sts before any row is worked");
+  std::vector<std::uint32_t> stay;
+  for (std::uint32_t i = 0; i < n.ring.size();) {
+    if (in_met_[n.ring[i]]) {
+      stay.push_back(n.ring[i++]);
+      continue;
+    }
+    std::uint32_t end = i;
+    while (end < n.ring.size() && !in_met_[n.ring[end]]) ++end;
+    std::span<const std::uint32_t> block(n.ring.data() + i, end - i);
+    std::uint32_t holder = holder_met_before(block, n.section), onto = 0;
+    if (holder != 0) {
+      onto = static_cast<std::uint32_t>(places_.loops_of({Place::holder, holder}).size());
+      places_.hold_onto(holder, block);
+    } else {
+      holder = places_.hold(block, n.section);
+    }
+    sec.holdings.push_back({after_row, i + 1, end - i, holder, onto});
+    i = end;
+  }
+  return stay;
+}
+
+std::uint32_t ProgramPatternBuilder::holder_met_before(std::span<const std::uint32_t> block,
+                                                       std::uint32_t section) const {
+  for (std::uint32_t h = places_.holders(); h > 0; --h) {
+    if (places_.holder_section(h) != section) continue;
+    std::vector<std::uint32_t> all = places_.loops_of({Place::holder, h});
+    all.insert(all.end(), block.begin(), block.end());
+    return met_one_after_another(all) ? h : 0;
+  }
+  return 0;
+}
+
+bool ProgramPatternBuilder::met_one_after_another(const std::vector<std::uint32_t>& loops) const {
+  if (loops.size() < 2 || taker_step_[loops[0]] == kNone) return false;
+  int by = static_cast<int>(met_at_[loops[1]]) - static_cast<int>(met_at_[loops[0]]);
+  for (std::size_t k = 1; k < loops.size(); ++k)
+    if (taker_step_[loops[k]] != taker_step_[loops[0]] ||
+        static_cast<int>(met_at_[loops[k]]) - static_cast<int>(met_at_[loops[k - 1]]) != by ||
+        (by != 1 && by != -1) || places_.at(loops[k - 1]).place == Place::none)
+      return false;
+  return true;
+}
+
+void ProgramPatternBuilder::index_loops_met() {
+  for (std::uint32_t i = 0; i < p_.steps.size(); ++i) {
+    const Step& s = p_.steps[i];
+    if (s.kind != StepKind::course && s.kind != StepKind::bind_off &&
+        s.kind != StepKind::three_needle_bind_off)
+      continue;
+    std::vector<std::uint32_t> met = loops_met(s);
+    for (std::uint32_t k = 0; k < met.size(); ++k) {
+      taker_step_[met[k]] = i;
+      met_at_[met[k]] = k;
+    }
+  }
+}
+
+std::vector<std::uint32_t> ProgramPatternBuilder::join_to_first_source(
+    const Step& s, const std::vector<std::uint32_t>& met, bool round) {
+  if (needle_of_yarn_[s.yarn] == kNone) end_section();  // the piece worked before waits
+  LoopAt source = places_.at(met.front());
+  std::vector<std::uint32_t> host;
+  for (std::uint32_t l : met)
+    if (places_.at(l) == source) host.push_back(l);
+  if (source.place == Place::edge) return start_from_pick_up(s, host, round);
+  std::optional<Lie> lie = places_.lie(source, host);
+  if (source.place == Place::none || source.place == Place::needle || !lie)
+    not_yet(s, "begins on sts that wait nowhere the pattern can name, or out of their order");
+  auto count = static_cast<std::uint32_t>(host.size());
+  std::uint32_t own = needle_of_yarn_[s.yarn];
+  if (own != kNone) {  // carried on from a bind-off
+    if (!round || source.place != Place::holder || lie->at != 0 || needle().live != 0)
+      not_yet(s, "carries its yarn on to sts other than a holder's, from their end");
+    section().carries.push_back(
+        {static_cast<std::uint32_t>(out_.rows.size()), source.index, count, lie->from_last});
+    return host;
+  }
+  bool holder = source.place == Place::holder;
+  if ((!holder || !round) && lie->at != 0)
+    not_yet(s, "joins a yarn to a spare needle, or to a row's sts, in the middle of its sts");
+  start_section(s.yarn, kNone);
+  section().in_round = round;
+  section().starts_from =
+      PatternSection::Start{holder ? places_.holder_section(source.index) : source.index,
+                            source.place == Place::chain,
+                            lie->from_last,
+                            count,
+                            holder ? source.index : 0,
+                            lie->at};
+  return host;
+}
+
+void ProgramPatternBuilder::place_the_others(const Step& s, const std::vector<std::uint32_t>& met,
+                                             const std::vector<std::uint32_t>& host) {
+  std::vector<std::uint32_t> rest;
+  LoopAt hosted = places_.at(host.empty() ? met.front() : host.front());
+  for (std::uint32_t i = 0; i < met.size();) {
+    LoopAt source = places_.at(met[i]);
+    if (source == hosted) {
+      rest.push_back(met[i++]);
+      continue;
+    }
+    std::uint32_t end = i;
+    while (end < met.size() && places_.at(met[end]) == source) ++end;
+    place(s, source, std::span<const std::uint32_t>(met.data() + i, end - i), i);
+    i = end;
+  }
+  if (rest != host) not_yet(s, "meets the sts it keeps out of their order on the needle");
+}
+
+void ProgramPatternBuilder::place(const Step& s, LoopAt source,
+                                  std::span<const std::uint32_t> block, std::uint32_t after) {
+  if (source.place == Place::edge) return pick_up_into_rnd(s, source, block, after);
+  std::optional<Lie> lie = places_.lie(source, block);
+  if (!lie && source.place == Place::spare) {
+    source = hold_part_of_spare_needle(source.index, block);
+    lie = places_.lie(source, block);
+  }
+  bool nameable =
+      source.place == Place::holder || source.place == Place::spare || source.place == Place::chain;
+  if (!nameable || !lie || (lie->from_last && lie->at != 0))
+    not_yet(s, fmt::format("takes {} sts it cannot place from where they wait (all of a "
+                           "holder, spare needle or chain, in their order)",
+                           block.size()));
+  bool holder = source.place == Place::holder;
+  PatternSection::Placement p{holder ? places_.holder_section(source.index) : source.index,
+                              static_cast<std::uint32_t>(block.size()), after, lie->from_last};
+  p.chain = source.place == Place::chain;
+  p.before_row = static_cast<std::uint32_t>(out_.rows.size());
+  p.holder = holder ? source.index : 0;
+  p.start = lie->at;
+  section().placements.push_back(p);
+}
+
+void ProgramPatternBuilder::note_row_end(StitchId st, const PatternRow& r) {
+  auto row = static_cast<std::uint32_t>(out_.rows.size());  // the row being written
+  if (row_ends_.size() <= row) row_ends_.resize(row + 1);
+  RowEnds& ends = row_ends_[row];
+  if (ends.first == kNoStitch) ends.first = st;
+  ends.last = st;
+  ends.side = r.side;
+  row_of_[st] = row;
+  number_of_[st] = r.number;
+}
+
+std::optional<PatternSection::PickUp> ProgramPatternBuilder::pick_up_of(
+    LoopAt source, std::span<const std::uint32_t> loops) const {
+  PatternSection::PickUp p;
+  p.section = source.index;
+  for (std::size_t i = 0; i < loops.size(); ++i) {
+    StitchId maker = g_.loops[loops[i]].maker;
+    if (places_.at(loops[i]) != source || maker == kNoStitch || row_of_[maker] == kNone)
+      return std::nullopt;
+    auto made = made_by(p_.worked_at[maker]);
+    bool right = made.size() > 1 && made.back().loop == loops[i];
+    const RowEnds& ends = row_ends_[row_of_[maker]];
+    if (maker != ((ends.side == Side::rs) == right ? ends.first : ends.last)) return std::nullopt;
+    std::uint32_t row = number_of_[maker];
+    if (i == 0) {
+      p.right = right;
+      p.from_row = p.to_row = row;
+      continue;
+    }
+    bool up = row == p.to_row + 1 && (i == 1 || p.from_row < p.to_row);
+    bool down = row + 1 == p.to_row && (i == 1 || p.from_row > p.to_row);
+    if (right != p.right || !(up || down)) return std::nullopt;
+    p.to_row = row;
+  }
+  return p;
+}
+
+std::vector<std::uint32_t> ProgramPatternBuilder::start_from_pick_up(
+    const Step& s, const std::vector<std::uint32_t>& host, bool round) {
+  std::vector<std::uint32_t> picked(host.rbegin(), host.rend());
+  std::optional<PatternSection::PickUp> p = pick_up_of(places_.at(host.front()), picked);
+  if (!p) not_yet(s, "begins on loops along an edge that are not one in each row of an edge");
+  start_section(s.yarn, kNone);
+  section().in_round = round;
+  section().picks_up = *p;
+  section().cast_on = hand_sts(host);
+  return host;
+}
+
+void ProgramPatternBuilder::pick_up_into_rnd(const Step& s, LoopAt source,
+                                             std::span<const std::uint32_t> block,
+                                             std::uint32_t after) {
+  std::optional<PatternSection::PickUp> p = pick_up_of(source, block);
+  if (!p || !section().in_round)
+    not_yet(s, fmt::format("picks up {} loops along an edge into a row, or not one in each "
+                           "row of an edge",
+                           block.size()));
+  PatternSection::Placement placed{p->section, static_cast<std::uint32_t>(block.size()), after,
+                                   false};
+  placed.before_row = static_cast<std::uint32_t>(out_.rows.size());
+  placed.edge = p;
+  section().placements.push_back(placed);
+}
+
+}  // namespace skein::hand::from_program
