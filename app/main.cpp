@@ -3,7 +3,10 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
+#include <cstdlib>
 #include <functional>
 #include <iostream>
 
@@ -38,9 +41,22 @@ void add_force(CLI::App& command, Request& r) {
                    "replace an existing output file (never an input, folder or device)");
 }
 
+// A million-stitch model takes hundreds of MB in a few large arrays; on 4 KB pages much of
+// the time goes to page faults and TLB misses (a 1M-stitch tube through `compile -t hand`:
+// 1.56 s user + 0.80 s system, against 0.60 + 0.46 with huge pages, on an idle 2-core VM).
+// glibc's malloc asks for transparent huge pages only when its tunable is set before the
+// process starts, so skein sets it and starts itself again, once; a tunable the user set
+// wins.
+void restart_with_huge_pages(char** argv) {
+  if (std::getenv("GLIBC_TUNABLES") != nullptr) return;
+  if (setenv("GLIBC_TUNABLES", "glibc.malloc.hugetlb=1", 0) != 0) return;
+  execv("/proc/self/exe", argv);  // returns only on failure: go on as we are
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  restart_with_huge_pages(argv);
   Registry registry;
   register_builtin_targets(registry);
 
