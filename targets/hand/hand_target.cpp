@@ -58,8 +58,8 @@ Rounds rounds_of(const TargetOptions& options) {
 }
 
 // Which builder writes the pattern (`--set builder=`): auto (the default): the one on the
-// lowering's live-loop program, and where it refuses a structure by name (a row in the rnd
-// that takes sts from a spare needle, a three-needle bind-off among the sts of a rnd), the one
+// lowering's live-loop program, and where it refuses a structure by name (rows in the rnd
+// that take a holder's sts one at a time, a yarn that stops in the middle of a rnd), the one
 // that reads the schedule; or either alone. Every pattern is proven before it is written.
 enum class Builder : std::uint8_t { automatic, program, schedule };
 
