@@ -503,11 +503,14 @@ TEST(HandPieces, PlainRndsAfterRowsCountToARowNumber) {
 TEST(HandPieces, TheLetterHIsProvenInEveryFormat) {
   expect_written_and_proven(
       "samples/letter-h/letter-h.yaml",
-      {"- 1 stitch holder (or a length of waste yarn).\n",
-       "Slip sts 1\u20137 of the rnd to holder 1 \u2014 24 sts.\n",
-       "Place the 7 sts of holder 1 on the spare needle of Piece 4 after its st 7 (count round "
-       "the needle from the first st of its last row), the last st slipped first \u2014 42 sts. "
-       "Three-needle bind-off: fold the 42 sts of Piece 4 in half with RS together",
+      {"Take up Piece 4 again with its yarn. Place the 28 sts of Piece 1 on the needle at the "
+       "beginning of the rnd, the first st of its last rnd first. Place the 31 sts of Piece 5 on "
+       "the needle after the first 7 sts of the rnd, st 16 of its last rnd first \u2014 90 sts.\n",
+       "**Row 21 (RS):** Rm, sl1 back, ssk, k5, ssk, turn \u2014 88 sts.\n",
+       "Leave the 42 sts on a spare needle and cut the yarn.\n",
+       "Three-needle bind-off: fold the 42 sts of Piece 4 in half with RS together (count them "
+       "round the needle from the first st of its last row): sts 35 down to 15 in front, sts 36 "
+       "up to 14 behind; with a new yarn bind off all 21 pairs.\n",
        // The measurements of a piece of a cast-on alone, and of one of short rows alone.
        "- Piece 2: Width: 3 cm (1.3 in), 7 sts at the widest. A cast-on only: no rows of its "
        "own.\n",

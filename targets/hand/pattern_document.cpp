@@ -661,7 +661,7 @@ class FrontMatter {
   std::vector<std::string> measurements() const {
     std::vector<std::string> items;
     for (const PatternSection& s : p_.sections) {
-      if (s.joins) continue;
+      if (s.joins || (s.resumed && s.first_row == s.end_row)) continue;  // nothing to measure
       std::uint32_t widest = s.cast_on, rows = 0, short_rows = 0;
       for (std::uint32_t r = s.first_row; r < s.end_row; ++r) {
         widest = std::max(widest, p_.rows[r].sts_after);

@@ -41,6 +41,12 @@ struct Needle {
   CourseDirection rnds = CourseDirection::left_to_right;  // the way its rnds go
   std::vector<std::uint32_t> ring;  // its loops: from the marker (in the rnd), as cast on (flat)
   std::uint32_t gap = 0;            // the yarn is before ring[gap], going the way the rnds go
+  // A row across the gap removed the beginning-of-round marker ("rm, sl1 back"): the next rnd
+  // places a new one where it starts.
+  bool marker_off = false;
+  // The op that slipped the marker in the row in the rnd worked last (kNone: none): a rnd
+  // begun where the yarn is turns it into "rm".
+  std::uint32_t marker_slipped_at = 0xffffffffu;
 };
 
 class ProgramPatternBuilder {
@@ -111,6 +117,16 @@ class ProgramPatternBuilder {
   // needles (or holders); a piece's own yarn binds off all its sts with another's held behind.
   void three_needle_bind_off(const Step& s);
 
+  // The order a knitter counts the sts left on a spare needle in: a flat piece's as its last
+  // row went; in the rnd from the marker, or after a row in the rnd round from its first st,
+  // the way it went.
+  std::vector<std::uint32_t> counted_on_spare_needle(const Needle& n) const;
+
+  // The pairs of one spare needle folded in half (the sts of one holder put back on it first,
+  // where the fold has them): its section in `section`; none where they are not.
+  std::optional<PatternSection::Fold> fold_of(const std::vector<std::uint32_t> (&side)[2],
+                                              std::uint32_t& section) const;
+
   // The piece just worked ends by binding off its sts with another's: its section says so.
   void bind_off_with_its_yarn(const PatternSection& join, std::uint32_t section);
 
@@ -123,6 +139,26 @@ class ProgramPatternBuilder {
   // to) the loops it starts on, places the others: the needle then holds `met` from the
   // marker, the rnd's way round.
   void gather(const Step& s, const std::vector<std::uint32_t>& met);
+
+  // A row in the rnd that takes sts from elsewhere (a gusset's sides, a crotch): all the sts of
+  // each place it takes from go into the rnd beside the st it meets them next to, the ones it
+  // meets first nearest; later rows take the rest from the needle. The beginning-of-round
+  // marker, where the yarn is, goes where the row then begins at the yarn (or one st behind
+  // it, slipped back).
+  void place_into_ring_row(const Step& s, const std::vector<std::uint32_t>& met);
+
+  // All of `source`'s loops in the order the course would meet them, `run` (the ones it takes
+  // now) first when it meets them after the st before, last when before the st after; none
+  // where `run` lies at neither end of them.
+  std::vector<std::uint32_t> whole_source(LoopAt source, std::span<const std::uint32_t> run,
+                                          bool run_first) const;
+
+  // With its marker removed by a row, the rnd starts anew where the yarn is ("pm").
+  void restart_rnd_at_yarn(Needle& n);
+
+  // Does the work go all the way round from here (the courses from this step on going this
+  // way, with this yarn) before it turns?
+  bool goes_round(const Step& s, std::size_t ring) const;
 
   // A flat piece's next row, all of whose own sts it works, takes others placed among them:
   // its own sts are those ahead once it turns, in the order it meets them.
@@ -236,6 +272,9 @@ class ProgramPatternBuilder {
 
   void ring_course(const Step& s, Needle& n);
 
+  // A course going the other way from the last turns the work: the row in the rnd ends.
+  void turn_in_ring(const Step& s, Needle& n);
+
   // The work turns right after a rnd ended at the marker: that rnd ends with the turn.
   void turn_after_last_rnd();
 
@@ -243,11 +282,16 @@ class ProgramPatternBuilder {
   // needle: either way the row after the turn begins past it.
   void step_over_turn(Needle& n, bool forward);
 
-  // The course meets its loops side by side on the needle, from where the yarn is.
-  void check_met_at_the_yarn(const Step& s, const Needle& n, const std::vector<std::uint32_t>& met,
+  // The course meets its loops side by side on the needle, from where the yarn is, or from
+  // the st behind it, slipped back first (a decrease across the gap): returns which.
+  bool check_met_at_the_yarn(const Step& s, const Needle& n, const std::vector<std::uint32_t>& met,
                              bool forward) const;
 
   void open_ring_row(const Step& s, Needle& n, bool forward);
+
+  // "sl1 back": the row begins with the st behind the yarn; where the marker lies between,
+  // it is removed first ("rm") and the next rnd places it anew.
+  void slip_back_across_gap(Needle& n, bool across_marker);
 
   // Ends the hand row: at a turn, a row in the rnd (a short row); at the marker, a rnd.
   void close_ring_row(const Step& s, Needle& n, bool turn);
@@ -315,6 +359,8 @@ class ProgramPatternBuilder {
   PatternRow pending_;
   bool row_open_ = false, row_forward_ = false, ds_next_ = false;
   bool row_at_marker_after_turn_ = false;
+  bool row_from_marker_ = false;  // the row in the rnd began at the marker
+  bool pm_next_ = false;          // the next row places the beginning-of-round marker first
   CourseDirection row_dir_ = CourseDirection::left_to_right;
   std::uint32_t pending_takes_ = 0;
   std::uint32_t held_behind_left_ = 0;  // sts held behind the needle for 3-needle BO

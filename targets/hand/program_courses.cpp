@@ -128,35 +128,63 @@ void ProgramPatternBuilder::ring_course(const Step& s, Needle& n) {
     n.rnds = s.direction;
     index_ring(n);
   }
-  bool turns = n.worked && s.direction != n.last;
-  if (turns) {
-    if (!row_open_) turn_after_last_rnd();
-    close_ring_row(s, n, true);
-    if (n.turn_loops) step_over_turn(n, s.direction == n.rnds);
-  }
+  turn_in_ring(s, n);
   std::vector<std::uint32_t> met = loops_met(s);
   bool forward = s.direction == n.rnds;
-  check_met_at_the_yarn(s, n, met, forward);
+  if (forward && !row_open_ && goes_round(s, n.ring.size())) {
+    // The row before passed the marker: it removes it, and this rnd places it anew here.
+    if (n.gap != 0 && !n.marker_off && n.marker_slipped_at != kNone) {
+      out_.ops[n.marker_slipped_at] = HandOp::rm;
+      n.marker_off = true;
+    }
+    restart_rnd_at_yarn(n);
+  }
+  bool back = check_met_at_the_yarn(s, n, met, forward);
+  if (back && row_open_) not_yet(s, "slips a st back in the middle of a row");
   const auto size = static_cast<std::uint32_t>(n.ring.size());
+  bool back_across_marker = back && n.gap == 0 && !n.marker_off;
+  if (back) n.gap = forward ? (n.gap + size - 1) % size : (n.gap + 1) % size;
   std::uint32_t first = forward ? n.gap : (n.gap + size - 1) % size;
+  std::uint32_t taken_so_far = 0;
   for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i) {
     auto taken = taken_by(i);
     std::uint32_t at = taken.empty() ? kNone : pos_[first_met(taken, s.direction)];
-    bool at_marker = at == (forward ? 0 : size - 1) && row_open_ && pending_takes_ > 0;
+    bool marker = !n.marker_off && row_open_ && pending_takes_ > 0;
+    bool at_marker = marker && at == (forward ? 0 : size - 1);
     if (at_marker && i > s.stitches.begin && binds_off_together(i - 1) && binds_off_together(i))
       not_yet(s, "binds off with a three-needle bind-off across the beginning-of-round marker");
-    if (forward && at == 0 && row_open_ && pending_takes_ > 0) close_ring_row(s, n, false);
-    if (!forward && at == size - 1 && row_open_ && pending_takes_ > 0)
+    // A row going the rnds' way ends a rnd at the marker (or the rest of one, begun where the
+    // yarn was); a row that turns before the marker comes round again slips it.
+    bool rnd_ends = row_from_marker_ || met.size() - taken_so_far >= size;
+    if (at_marker && forward && rnd_ends) close_ring_row(s, n, false);
+    if (at_marker && (!forward || !rnd_ends)) {
+      n.marker_slipped_at = static_cast<std::uint32_t>(out_.ops.size());
       out_.ops.push_back(HandOp::sm);
-    if (!row_open_) open_ring_row(s, n, forward);
+    }
+    if (!row_open_) {
+      row_from_marker_ = forward && (at == 0 || (at == kNone && n.gap == 0));
+      open_ring_row(s, n, forward);
+      if (back) slip_back_across_gap(n, back_across_marker);
+    }
     pending_takes_ += work(s, i, n, pending_);
+    taken_so_far += static_cast<std::uint32_t>(taken.size());
   }
   replace_in_ring(s, n, forward, first, static_cast<std::uint32_t>(met.size()));
   note_course(s, n);
-  if (forward && (n.gap == 0 || n.ring.empty())) close_ring_row(s, n, false);
+  if (forward && !n.marker_off && (n.gap == 0 || n.ring.empty())) close_ring_row(s, n, false);
   // Bound off in one or two places (underarms), the rest stays on the circular needle in
   // its order, for a rnd that takes it up again with others (a yoke).
-  if (s.run_shape == RunShape::line && !n.ring.empty()) n.opened = true;
+  bool binds_off = std::any_of(stitches_of(s).begin(), stitches_of(s).end(),
+                               [&](const WorkedStitch& w) { return g_.type[w.stitch] == T::bo; });
+  if (s.run_shape == RunShape::line && binds_off && !n.ring.empty()) n.opened = true;
+}
+
+void ProgramPatternBuilder::turn_in_ring(const Step& s, Needle& n) {
+  if (!n.worked || s.direction == n.last) return;
+  if (!row_open_) turn_after_last_rnd();
+  close_ring_row(s, n, true);
+  if (n.turn_loops) step_over_turn(n, s.direction == n.rnds);
+  n.last = s.direction;
 }
 
 void ProgramPatternBuilder::turn_after_last_rnd() {
@@ -174,18 +202,30 @@ void ProgramPatternBuilder::step_over_turn(Needle& n, bool forward) {
   if (out_.turns == TurnMethod::german) ds_next_ = true;
 }
 
-void ProgramPatternBuilder::check_met_at_the_yarn(const Step& s, const Needle& n,
+bool ProgramPatternBuilder::check_met_at_the_yarn(const Step& s, const Needle& n,
                                                   const std::vector<std::uint32_t>& met,
                                                   bool forward) const {
   const auto size = static_cast<std::uint32_t>(n.ring.size());
   if (met.empty() || met.size() > size) not_yet(s, "takes no loop of the rnd, or too many");
   std::uint32_t first = forward ? n.gap : (n.gap + size - 1) % size;
+  std::uint32_t behind = forward ? (first + size - 1) % size : (first + 1) % size;
+  bool back = n.ring[first] != met[0] && n.ring[behind] == met[0] && met.size() < size;
+  if (back) first = behind;
   for (std::uint32_t i = 0; i < met.size(); ++i) {
     std::uint32_t want = forward ? (first + i) % size : (first + size - i) % size;
     if (pos_[met[i]] != want || n.ring[want] != met[i])
       not_yet(s, i == 0 ? "begins away from where the yarn is on the needle"
                         : "does not meet its loops side by side on the needle");
   }
+  return back;
+}
+
+void ProgramPatternBuilder::slip_back_across_gap(Needle& n, bool across_marker) {
+  if (across_marker) {
+    out_.ops.push_back(HandOp::rm);
+    n.marker_off = true;
+  }
+  out_.ops.push_back(HandOp::slip_back);
 }
 
 void ProgramPatternBuilder::open_ring_row(const Step& s, Needle& n, bool forward) {
@@ -193,8 +233,11 @@ void ProgramPatternBuilder::open_ring_row(const Step& s, Needle& n, bool forward
   pending_takes_ = 0;
   row_open_ = true;
   row_forward_ = forward;
-  row_at_marker_after_turn_ = forward && n.gap == 0 && n.worked && s.direction != row_dir_;
+  row_at_marker_after_turn_ =
+      forward && n.gap == 0 && !n.marker_off && n.worked && s.direction != row_dir_;
   row_dir_ = s.direction;
+  if (pm_next_) out_.ops.push_back(HandOp::pm);
+  pm_next_ = false;
   if (ds_next_) out_.ops.push_back(HandOp::ds);
   ds_next_ = false;
 }
@@ -202,12 +245,16 @@ void ProgramPatternBuilder::open_ring_row(const Step& s, Needle& n, bool forward
 void ProgramPatternBuilder::close_ring_row(const Step& s, Needle& n, bool turn) {
   if (!row_open_) return;
   PatternRow& r = pending_;
-  if (!turn && (!row_forward_ || (n.gap != 0 && !n.ring.empty())))
+  if (!turn && !row_forward_)
     not_yet(s, "leaves a row in the rnd that neither turns nor ends at the marker");
   r.round = !turn;
   r.short_row = turn;
   if (turn && out_.ops.back() != HandOp::wt) out_.ops.push_back(HandOp::turn);
-  if (turn && row_at_marker_after_turn_) out_.ops.insert(out_.ops.begin() + r.first_op, HandOp::sm);
+  if (turn && row_at_marker_after_turn_) {
+    out_.ops.insert(out_.ops.begin() + r.first_op, HandOp::sm);
+    n.marker_slipped_at = r.first_op;
+  }
+  if (!turn) n.marker_slipped_at = kNone;
   r.end_op = static_cast<std::uint32_t>(out_.ops.size());
   r.sts_after = n.live;
   r.bind_off = n.live == 0 && std::all_of(out_.ops.begin() + r.first_op, out_.ops.end(),

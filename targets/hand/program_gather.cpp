@@ -25,8 +25,11 @@ Needle& ProgramPatternBuilder::needle_for(const Step& s, const std::vector<std::
 void ProgramPatternBuilder::gather(const Step& s, const std::vector<std::uint32_t>& met) {
   bool round = s.shape == RowShape::closed && s.run_shape == RunShape::ring;
   bool own = working() && needle().live > 0 && current_ == needle_of_yarn_[s.yarn];
-  if (!round && own && needle().in_round)
-    not_yet(s, "takes sts from elsewhere into a row in the rnd");
+  if (!round && own && needle().in_round) return place_into_ring_row(s, met);
+  if (round && own && needle().in_round) {
+    turn_in_ring(s, needle());
+    restart_rnd_at_yarn(needle());
+  }
   for (std::uint32_t l : met) in_met_[l] = 1;
   std::vector<std::uint32_t> host = !own    ? join_to_first_source(s, met, round)
                                     : round ? hold_what_it_leaves(s)
@@ -43,6 +46,121 @@ void ProgramPatternBuilder::gather(const Step& s, const std::vector<std::uint32_
   n.worked = false;
   index_ring(n);
   places_.set(met, {Place::needle, current_});
+}
+
+void ProgramPatternBuilder::place_into_ring_row(const Step& s,
+                                                const std::vector<std::uint32_t>& met) {
+  Needle& n = needle();
+  if (row_open_ || n.gap != 0 || n.marker_off)
+    not_yet(s, "takes sts from elsewhere into a row in the rnd, away from the marker");
+  const LoopAt own{Place::needle, current_};
+  bool forward = s.direction == n.rnds;
+  // The ring without its marker; blocks placed where the marker is go after the ring's last
+  // st, and the marker may then sit before any of them.
+  std::vector<std::uint32_t> ring = n.ring;
+  std::vector<std::uint32_t> spots{0};  // where the marker may go: before ring[spot]
+  std::vector<std::pair<LoopAt, std::vector<std::uint32_t>>> blocks;  // in ring order
+  for (std::uint32_t i = 0; i < met.size();) {
+    LoopAt source = places_.at(met[i]);
+    if (source == own) {
+      ++i;
+      continue;
+    }
+    std::uint32_t end = i;
+    while (end < met.size() && places_.at(met[end]) == source) ++end;
+    bool run_first = i > 0;  // met after the st before it; else before the st after it
+    if (!run_first && end == met.size()) not_yet(s, "takes sts from elsewhere only");
+    std::vector<std::uint32_t> block = whole_source(source, {met.data() + i, end - i}, run_first);
+    if (block.empty())
+      not_yet(s, fmt::format("takes {} sts into a row in the rnd that are not all of a holder, "
+                             "spare needle or chain, round from an end",
+                             end - i));
+    // In ring order; placed after the st before it (the course going the rnds' way) or before
+    // the st after it.
+    std::uint32_t beside = run_first ? met[i - 1] : met[end];
+    if (!forward) std::reverse(block.begin(), block.end());
+    bool after = run_first == forward;
+    auto at =
+        static_cast<std::uint32_t>(std::find(ring.begin(), ring.end(), beside) - ring.begin());
+    if (at == ring.size()) not_yet(s, "takes sts from elsewhere beside no st on the needle");
+    std::uint32_t into = after ? at + 1 : at;
+    bool at_marker = into == 0 || into == ring.size();
+    if (into == 0) into = static_cast<std::uint32_t>(ring.size());
+    for (std::uint32_t& k : spots)
+      if (k != 0 && k >= into) k += static_cast<std::uint32_t>(block.size());
+    ring.insert(ring.begin() + into, block.begin(), block.end());
+    if (at_marker) spots.push_back(static_cast<std::uint32_t>(ring.size() - block.size()));
+    blocks.emplace_back(source, std::move(block));
+    i = end;
+  }
+  // The row begins at the yarn, or one st behind it: the marker goes before or after that st.
+  auto first =
+      static_cast<std::uint32_t>(std::find(ring.begin(), ring.end(), met.front()) - ring.begin());
+  auto size = static_cast<std::uint32_t>(ring.size());
+  std::uint32_t at_yarn = forward ? first : (first + 1) % size;
+  std::uint32_t behind = forward ? (first + 1) % size : first;
+  auto is_spot = [&](std::uint32_t k) {
+    return std::find(spots.begin(), spots.end(), k % size) != spots.end();
+  };
+  std::uint32_t marker = is_spot(at_yarn) ? at_yarn : behind;
+  if (!is_spot(marker)) not_yet(s, "takes sts from elsewhere where the yarn cannot reach them");
+  std::rotate(ring.begin(), ring.begin() + marker % size, ring.end());
+  n.ring = std::move(ring);
+  index_ring(n);
+  std::sort(blocks.begin(), blocks.end(),
+            [&](const auto& a, const auto& b) { return pos_[a.second[0]] < pos_[b.second[0]]; });
+  for (auto& [source, block] : blocks) {
+    place(s, source, block, pos_[block[0]]);
+    places_.set(block, {Place::needle, current_});
+  }
+  n.gap = 0;
+  n.live = hand_sts(n.ring);
+}
+
+std::vector<std::uint32_t> ProgramPatternBuilder::whole_source(LoopAt source,
+                                                               std::span<const std::uint32_t> run,
+                                                               bool run_first) const {
+  if (source.place != Place::holder && source.place != Place::spare && source.place != Place::chain)
+    return {};
+  std::vector<std::uint32_t> all = places_.loops_of(source);
+  std::erase_if(all, [&](std::uint32_t l) { return places_.at(l) != source; });
+  // Round from the run (a tube's sts wait in a ring), going on the way the run goes, or (one
+  // st) towards the st taken next.
+  auto at = std::find(all.begin(), all.end(), run_first ? run.front() : run.back());
+  if (at == all.end() || run.size() > all.size()) return {};
+  std::rotate(all.begin(), at, all.end());
+  std::size_t n = all.size();
+  auto taken_sooner = [&](std::uint32_t a, std::uint32_t b) {
+    return taker_step_[a] < taker_step_[b];
+  };
+  bool down = run.size() > 1 ? all[1] != run[run_first ? 1 : run.size() - 2]
+                             : n > 1 && taken_sooner(all[n - 1], all[1]);
+  if (down) std::reverse(all.begin() + 1, all.end());
+  if (!run_first) std::reverse(all.begin(), all.end());
+  auto from = run_first ? all.begin() : all.end() - static_cast<std::ptrdiff_t>(run.size());
+  if (!std::equal(run.begin(), run.end(), from)) return {};
+  return all;
+}
+
+bool ProgramPatternBuilder::goes_round(const Step& s, std::size_t ring) const {
+  std::size_t loops = 0;
+  for (std::size_t k = step_; k < p_.steps.size() && loops < ring; ++k) {
+    const Step& next = p_.steps[k];
+    if (next.kind != StepKind::course || next.yarn != s.yarn || next.direction != s.direction)
+      break;
+    loops += loops_met(next).size();
+  }
+  return loops >= ring;
+}
+
+void ProgramPatternBuilder::restart_rnd_at_yarn(Needle& n) {
+  if (!n.marker_off) return;
+  std::rotate(n.ring.begin(), n.ring.begin() + n.gap % std::max<std::size_t>(n.ring.size(), 1),
+              n.ring.end());
+  n.gap = 0;
+  n.marker_off = false;
+  pm_next_ = true;
+  index_ring(n);
 }
 
 std::vector<std::uint32_t> ProgramPatternBuilder::row_ahead(const Step& s) {

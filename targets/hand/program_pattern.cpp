@@ -94,6 +94,8 @@ std::vector<std::uint32_t> ProgramPatternBuilder::loops_met(const Step& s) const
 void ProgramPatternBuilder::end_section(bool set_aside) {
   if (!working()) return;
   Needle& n = needle();
+  // A row in the rnd that the yarn leaves ends with a turn, as where it turns.
+  if (row_open_) close_ring_row(p_.steps[step_], n, true);
   if (row_open_)
     unsupported(
         fmt::format("yarn {} stops in the middle of a rnd, which the program's pattern "
@@ -104,12 +106,7 @@ void ProgramPatternBuilder::end_section(bool set_aside) {
   sec.set_aside = set_aside;
   sec.left_live = !set_aside && n.live != 0;
   sec.live_at_end = n.live;
-  // On a spare needle a flat piece's sts lie along the way its last row went; loops whose
-  // order there the pattern cannot count wait unnamed.
-  bool counted = !n.in_round || !n.worked || n.gap == 0;
-  std::vector<std::uint32_t> spare = counted ? n.ring : std::vector<std::uint32_t>{};
-  if (!n.in_round && n.last == CourseDirection::right_to_left)
-    std::reverse(spare.begin(), spare.end());
+  std::vector<std::uint32_t> spare = counted_on_spare_needle(n);
   if (sec.left_live) {
     places_.leave(n.section, Place::spare, std::move(spare));
     places_.set(n.ring, {Place::spare, n.section});
@@ -190,6 +187,78 @@ void ProgramPatternBuilder::cast_on(const Step& s) {
   if (!chain.empty()) places_.leave(n.section, Place::chain, std::move(chain));
 }
 
+std::vector<std::uint32_t> ProgramPatternBuilder::counted_on_spare_needle(const Needle& n) const {
+  std::vector<std::uint32_t> ring = n.ring;
+  if (!n.in_round && n.last == CourseDirection::right_to_left)
+    std::reverse(ring.begin(), ring.end());
+  if (!n.in_round || !n.worked || out_.rows.empty() || out_.rows.back().round) return ring;
+  // After a row in the rnd: round from its first st, the way it went.
+  if (n.last != n.rnds) std::reverse(ring.begin(), ring.end());
+  StitchId first = section().last_row_ends[0];
+  auto at = std::find_if(ring.begin(), ring.end(),
+                         [&](std::uint32_t l) { return g_.loops[l].maker == first; });
+  if (at == ring.end()) return {};
+  std::rotate(ring.begin(), at, ring.end());
+  return ring;
+}
+
+std::optional<PatternSection::Fold> ProgramPatternBuilder::fold_of(
+    const std::vector<std::uint32_t> (&side)[2], std::uint32_t& section) const {
+  // Round the needle once folded: the front run, then the back one coming back.
+  std::vector<std::uint32_t> round(side[0]);
+  round.insert(round.end(), side[1].rbegin(), side[1].rend());
+  const auto n = static_cast<std::uint32_t>(round.size());
+  LoopAt spare{}, held{};
+  for (std::uint32_t l : round) {
+    LoopAt at = places_.at(l);
+    LoopAt& slot = at.place == Place::spare ? spare : held;
+    if ((at.place != Place::spare && at.place != Place::holder) ||
+        (slot.place != Place::none && slot != at))
+      return std::nullopt;
+    slot = at;
+  }
+  auto on_one = [&](const std::vector<std::uint32_t>& loops) {
+    return std::all_of(loops.begin(), loops.end(),
+                       [&](std::uint32_t l) { return places_.at(l) == places_.at(loops[0]); });
+  };
+  bool two_needles =
+      on_one(side[0]) && on_one(side[1]) && places_.at(side[0][0]) != places_.at(side[1][0]);
+  if (spare.place == Place::none || two_needles) return std::nullopt;
+  std::vector<std::uint32_t> needle = places_.loops_of(spare);
+  std::erase_if(needle, [&](std::uint32_t l) { return places_.at(l) != spare; });
+  auto p = static_cast<std::uint32_t>(std::find(round.begin(), round.end(), needle.front()) -
+                                      round.begin());
+  bool up = needle.size() == 1 || round[(p + 1) % n] == needle[1];
+  auto along = [&](std::uint32_t k) { return round[up ? (p + k) % n : (p + n - k % n) % n]; };
+  for (std::uint32_t k = 0; k < needle.size(); ++k)
+    if (along(k) != needle[k]) return std::nullopt;
+  PatternSection::Fold fold;
+  fold.sts = n;
+  fold.after = static_cast<std::uint32_t>(needle.size());
+  if (held.place == Place::holder) {
+    std::vector<std::uint32_t> arc, on_holder = places_.loops_of(held);
+    for (std::uint32_t k = fold.after; k < n; ++k) arc.push_back(along(k));
+    fold.held_from_last = on_holder.front() != arc.front();
+    if (fold.held_from_last) std::reverse(on_holder.begin(), on_holder.end());
+    if (on_holder != arc) return std::nullopt;
+    fold.holder = held.index;
+    fold.held = static_cast<std::uint32_t>(arc.size());
+  }
+  std::vector<std::uint32_t> ring;
+  for (std::uint32_t k = 0; k < n; ++k) ring.push_back(along(k));
+  for (int k : {0, 1}) {
+    auto at =
+        static_cast<std::uint32_t>(std::find(ring.begin(), ring.end(), side[k][0]) - ring.begin());
+    fold.tip[k] = at + 1;
+    fold.down[k] = side[k].size() > 1 && ring[(at + n - 1) % n] == side[k][1];
+    for (std::uint32_t i = 0; i < side[k].size(); ++i)
+      if (ring[fold.down[k] ? (at + n - i % n) % n : (at + i) % n] != side[k][i])
+        return std::nullopt;
+  }
+  section = spare.index;
+  return fold;
+}
+
 void ProgramPatternBuilder::three_needle_bind_off(const Step& s) {
   bool all_pairs = std::all_of(stitches_of(s).begin(), stitches_of(s).end(),
                                [&](const WorkedStitch& w) { return g_.type[w.stitch] == T::tnbo; });
@@ -208,7 +277,10 @@ void ProgramPatternBuilder::three_needle_bind_off(const Step& s) {
   join.yarn = s.yarn;
   join.joins = true;
   join.own_yarn = own != kNone;
-  for (int k : {0, 1}) {
+  std::uint32_t folded = 0;
+  if (!join.own_yarn) join.fold = fold_of(side, folded);
+  if (join.fold) join.front = join.back = folded;
+  for (int k = 0; k < 2 && !join.fold; ++k) {
     LoopAt source = places_.at(side[k].front());
     std::optional<Lie> lie = places_.lie(source, side[k]);
     bool nameable = source.place == Place::holder || source.place == Place::spare;
