@@ -458,34 +458,38 @@ TEST(HandPieces, TheThreeBarsAreProvenInEveryFormat) {
       "samples/three-bars/three-bars.yaml",
       {"Slip sts 1\u20139 of the rnd to holder 1, sts 10\u201318 to holder 2 and sts "
        "19\u201327 to holder 3 \u2014 9 sts.\n\nLeave the 9 sts on the needle and set the yarn "
-       "aside (do not "
-       "cut it).\n",
-       "Slip sts 10\u201318 of the rnd to holder 7, sts 19\u201327 to holder 8 and sts "
-       "28\u201336 to holder 9 \u2014 9 sts.\n\nPlace the 9 sts of Piece 3 on the needle after the "
-       "first 9 "
-       "sts of the rnd, the first st cast on first.\n",
+       "aside (do not cut it).\n",
+       // Set aside, a bar's sts that other yarns take wait on holders, one for each.
+       "Slip sts 1\u20139 of the rnd to holder 4 and sts 19\u201327 to holder 5 \u2014 18 sts.\n",
+       "Slip sts 10\u201318 of the rnd to holder 6, sts 19\u201327 to holder 7 and sts "
+       "28\u201336 to holder 8 \u2014 9 sts.\n\nPlace the 9 sts of Piece 3 on the needle after the "
+       "first 9 sts of the rnd, the first st cast on first.\n",
        "Place the 9 sts of holder 2 on the needle after the first 27 sts of the rnd, the first "
        "st of its last rnd first \u2014 36 sts.\n",
-       "Take up Piece 2 again with its yarn. Place the 9 loops of Piece 3's chain on the needle "
-       "at the beginning of the rnd, the last st cast on first.",
+       "Take up Piece 2 again with its yarn. Slip sts 1\u20139 of the rnd to holder 9 \u2014 9 "
+       "sts. Place the 9 loops of Piece 3's chain on the needle at the beginning of the rnd, the "
+       "last st cast on first.",
        "Three-needle bind-off: hold the pieces with RS together: holder 3 in front, the first st "
-       "of its last row at the needle tip; holder 9 behind,"});
+       "of its last row at the needle tip; holder 8 behind,"});
 }
 
 // Two bars knit towards each other: each ends in a flat face that works the other's sts one
-// at a time from a holder put on a spare needle, and the rnds beyond pick up along its edge.
+// at a time, placed on its needle (decreasing across the gap), and the rnds beyond pick up
+// along its edge.
 TEST(HandPieces, TheTwoBarsAreProvenInEveryFormat) {
   expect_written_and_proven(
       "samples/two-bars/two-bars.yaml",
-      {"Slip sts 10\u201318 of the rnd to holder 4, sts 19\u201328 to holder 5 and sts "
-       "29\u201337 to holder 6 \u2014 9 sts.\n\nPut the 10 sts of holder 2 on a spare needle, the "
-       "last st "
-       "of its last rnd at the tip.\n\n**Row 24 (RS):** Sl1 from spare, ssk, k8, turn.\n",
+      {"Slip sts 10\u201328 of the rnd to holder 1 and sts 29\u201337 to holder 2 \u2014 9 "
+       "sts.\n",
+       "Place the 19 sts of holder 1 on the needle after the first 18 sts of the rnd, the first "
+       "st of its last rnd first \u2014 37 sts.\n\n**Row 24 (RS):** Rm, sl1 back, ssk, k8, turn "
+       "\u2014 36 sts.\n",
        "Pick up 10 sts along the left edge of Piece 2, one in each row from Row 33 down to Row "
-       "24, onto the needle after the first 18 sts of the rnd.\n",
+       "24, onto the needle after the first 18 sts of the rnd \u2014 37 sts.\n\n**Rnd 34:** Pm, "
+       "k to end.\n",
        "Place the 9 loops of Piece 3's chain on the needle after the first 9 sts of the rnd, the "
        "last st cast on first.\n",
-       "holder 3 in front, the first st of its last row at the needle tip; holder 6 behind, the "
+       "holder 2 in front, the first st of its last row at the needle tip; holder 4 behind, the "
        "last st"});
 }
 
@@ -537,7 +541,7 @@ TEST(HandPieces, TheLetterHAtAnotherGaugeGoesOnPastTheGapAfterAnOddBand) {
 TEST(HandPieces, TheTwoBarsAtAnotherGaugeGoOnIntoTheRndAfterAnOddFace) {
   Compilation c = testing::sample_at_gauge("two-bars", 28, 26);
   std::string text = emit(c, "hand");
-  EXPECT_EQ(testing::occurrences(text, "**Row 30 (RS):** Sl1 from spare, ssk, k10, do not turn.\n"),
+  EXPECT_EQ(testing::occurrences(text, "**Row 30 (RS):** Sl1 back, ssk, k10, do not turn \u2014 "),
             2u)
       << text;
   EXPECT_EQ(testing::unproven_hand_formats(c), "");

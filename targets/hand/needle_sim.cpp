@@ -240,9 +240,9 @@ class NeedleSimulator {
   }
 
   // Loops picked up along another piece's edge go into the rnd of the piece worked, the first
-  // picked up worked first.
+  // picked up worked first; counted as "Place" counts.
   void pick_up_into_rnd(const Step& s, const std::vector<std::uint32_t>& rows) {
-    if (!active_ || !pc_.joined || pc_.bor == kNone || !s.round)
+    if (!active_ || !pc_.joined || !s.round)
       fail(fmt::format(
           "Pick up along Piece {} onto the needle: only into a piece worked in the rnd", s.number));
     std::vector<std::uint32_t> loops;
@@ -550,7 +550,7 @@ class NeedleSimulator {
   // own (the reader gives the runs of one sentence last first, so the counts stay true).
   void hold(const Step& s) {
     if (s.of_row) return hold_run_of_row(s);
-    if (!active_ || !pc_.joined || pc_.bor == kNone)
+    if (!active_ || !pc_.joined)
       fail(fmt::format("Slip sts to holder {}: only from a piece worked in the rnd", s.number));
     if (s.onto) check_held_before(s);
     if (!s.onto && holders_.contains(s.number))

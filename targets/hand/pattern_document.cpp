@@ -960,7 +960,8 @@ class FrontMatter {
            "A row that begins with \"sl1 back\" slips the st at the tip of the right needle (in "
            "the rnd, the last st before the gap) back to the left needle and works it together "
            "with the row's first st. A row that starts at the beginning of the rnd removes the "
-           "BOR marker first (rm); the next rnd places it anew (pm).";
+           "BOR marker first (rm); the next rnd places it anew (pm), where the yarn is. Until "
+           "then, sts \"of the rnd\" (to slip, place or pick up) count from there.";
   }
 
   // The method the project chose, and how its turns are resolved later.

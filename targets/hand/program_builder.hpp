@@ -106,6 +106,13 @@ class ProgramPatternBuilder {
 
   void set_aside(const Step& s);
 
+  // Does the yarn's next course go back the other way from the row it stops in?
+  bool turns_when_taken_up(std::uint32_t yarn) const;
+
+  // Before a piece in the rnd is set aside, the sts of its needle that other yarns take go to
+  // holders (a block of the rnd each), where those can take them.
+  void hold_what_others_take(const Step& s);
+
   void take_up(const Step& s);
 
   // A cast-on starts a piece; a provisional one (along a split) keeps its chain's loops for
@@ -153,6 +160,11 @@ class ProgramPatternBuilder {
   std::vector<std::uint32_t> whole_source(LoopAt source, std::span<const std::uint32_t> run,
                                           bool run_first) const;
 
+  // A rnd begins where the yarn is, away from the marker: the last row that passed the marker
+  // removes it ("rm"), a row still going this way ends there without turning, and the rnd
+  // places it anew.
+  void begin_rnd_at_yarn(const Step& s, Needle& n);
+
   // With its marker removed by a row, the rnd starts anew where the yarn is ("pm").
   void restart_rnd_at_yarn(Needle& n);
 
@@ -192,6 +204,11 @@ class ProgramPatternBuilder {
   // else 0.
   std::uint32_t holder_met_before(std::span<const std::uint32_t> block,
                                   std::uint32_t section) const;
+
+  // The yarn whose course takes the loop (kNone: none does).
+  std::uint32_t taker_yarn(std::uint32_t loop) const {
+    return taker_step_[loop] == kNone ? kNone : p_.steps[taker_step_[loop]].yarn;
+  }
 
   // Are the loops met by one course, one after the other (either way)?
   bool met_one_after_another(const std::vector<std::uint32_t>& loops) const;

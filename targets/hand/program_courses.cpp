@@ -131,14 +131,7 @@ void ProgramPatternBuilder::ring_course(const Step& s, Needle& n) {
   turn_in_ring(s, n);
   std::vector<std::uint32_t> met = loops_met(s);
   bool forward = s.direction == n.rnds;
-  if (forward && !row_open_ && goes_round(s, n.ring.size())) {
-    // The row before passed the marker: it removes it, and this rnd places it anew here.
-    if (n.gap != 0 && !n.marker_off && n.marker_slipped_at != kNone) {
-      out_.ops[n.marker_slipped_at] = HandOp::rm;
-      n.marker_off = true;
-    }
-    restart_rnd_at_yarn(n);
-  }
+  if (forward && !row_open_ && goes_round(s, n.ring.size())) begin_rnd_at_yarn(s, n);
   bool back = check_met_at_the_yarn(s, n, met, forward);
   if (back && row_open_) not_yet(s, "slips a st back in the middle of a row");
   const auto size = static_cast<std::uint32_t>(n.ring.size());
@@ -188,6 +181,7 @@ void ProgramPatternBuilder::turn_in_ring(const Step& s, Needle& n) {
 }
 
 void ProgramPatternBuilder::turn_after_last_rnd() {
+  if (out_.rows.size() <= section().first_row) return;  // the last rnd was another piece's
   PatternRow& r = out_.rows.back();
   if (r.end_op != out_.ops.size() || out_.ops.back() == HandOp::wt) return;
   out_.ops.push_back(HandOp::turn);
@@ -249,7 +243,8 @@ void ProgramPatternBuilder::close_ring_row(const Step& s, Needle& n, bool turn) 
     not_yet(s, "leaves a row in the rnd that neither turns nor ends at the marker");
   r.round = !turn;
   r.short_row = turn;
-  if (turn && out_.ops.back() != HandOp::wt) out_.ops.push_back(HandOp::turn);
+  if (turn && out_.ops.back() != HandOp::wt && out_.ops.back() != HandOp::no_turn)
+    out_.ops.push_back(HandOp::turn);
   if (turn && row_at_marker_after_turn_) {
     out_.ops.insert(out_.ops.begin() + r.first_op, HandOp::sm);
     n.marker_slipped_at = r.first_op;

@@ -28,7 +28,7 @@ void ProgramPatternBuilder::gather(const Step& s, const std::vector<std::uint32_
   if (!round && own && needle().in_round) return place_into_ring_row(s, met);
   if (round && own && needle().in_round) {
     turn_in_ring(s, needle());
-    restart_rnd_at_yarn(needle());
+    begin_rnd_at_yarn(s, needle());
   }
   for (std::uint32_t l : met) in_met_[l] = 1;
   std::vector<std::uint32_t> host = !own    ? join_to_first_source(s, met, round)
@@ -53,6 +53,7 @@ void ProgramPatternBuilder::place_into_ring_row(const Step& s,
   Needle& n = needle();
   if (row_open_ || n.gap != 0 || n.marker_off)
     not_yet(s, "takes sts from elsewhere into a row in the rnd, away from the marker");
+  hold_what_others_take(s);
   const LoopAt own{Place::needle, current_};
   bool forward = s.direction == n.rnds;
   // The ring without its marker; blocks placed where the marker is go after the ring's last
@@ -153,6 +154,20 @@ bool ProgramPatternBuilder::goes_round(const Step& s, std::size_t ring) const {
   return loops >= ring;
 }
 
+void ProgramPatternBuilder::begin_rnd_at_yarn(const Step& s, Needle& n) {
+  // The row before passed the marker: it removes it, and this rnd places it anew here.
+  if (n.gap != 0 && !n.marker_off && n.marker_slipped_at != kNone) {
+    out_.ops[n.marker_slipped_at] = HandOp::rm;
+    n.marker_off = true;
+  }
+  if (!n.marker_off) return;
+  if (row_open_) {  // the row going this way ends where the rnd begins, without turning
+    out_.ops.push_back(HandOp::no_turn);
+    close_ring_row(s, n, true);
+  }
+  restart_rnd_at_yarn(n);
+}
+
 void ProgramPatternBuilder::restart_rnd_at_yarn(Needle& n) {
   if (!n.marker_off) return;
   std::rotate(n.ring.begin(), n.ring.begin() + n.gap % std::max<std::size_t>(n.ring.size(), 1),
@@ -245,8 +260,9 @@ std::vector<std::uint32_t> ProgramPatternBuilder::hold_what_it_leaves(const Step
       stay.push_back(n.ring[i++]);
       continue;
     }
-    std::uint32_t end = i;
-    while (end < n.ring.size() && !in_met_[n.ring[end]]) ++end;
+    // A block for each yarn that takes them (a gusset's sts, and a join's beside them).
+    std::uint32_t end = i, yarn = taker_yarn(n.ring[i]);
+    while (end < n.ring.size() && !in_met_[n.ring[end]] && taker_yarn(n.ring[end]) == yarn) ++end;
     std::span<const std::uint32_t> block(n.ring.data() + i, end - i);
     std::uint32_t holder = holder_met_before(block, n.section), onto = 0;
     if (holder != 0) {

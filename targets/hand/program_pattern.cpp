@@ -94,8 +94,12 @@ std::vector<std::uint32_t> ProgramPatternBuilder::loops_met(const Step& s) const
 void ProgramPatternBuilder::end_section(bool set_aside) {
   if (!working()) return;
   Needle& n = needle();
-  // A row in the rnd that the yarn leaves ends with a turn, as where it turns.
-  if (row_open_) close_ring_row(p_.steps[step_], n, true);
+  // A row in the rnd that the yarn leaves ends there: the work turns if the yarn comes back
+  // the other way.
+  if (row_open_) {
+    if (!turns_when_taken_up(section().yarn)) out_.ops.push_back(HandOp::no_turn);
+    close_ring_row(p_.steps[step_], n, true);
+  }
   if (row_open_)
     unsupported(
         fmt::format("yarn {} stops in the middle of a rnd, which the program's pattern "
@@ -137,9 +141,37 @@ void ProgramPatternBuilder::start_section(std::uint32_t yarn, std::uint32_t need
   needle().section = static_cast<std::uint32_t>(out_.sections.size() - 1);
 }
 
+bool ProgramPatternBuilder::turns_when_taken_up(std::uint32_t yarn) const {
+  for (std::size_t k = step_ + 1; k < p_.steps.size(); ++k) {
+    const Step& next = p_.steps[k];
+    bool works = next.kind == StepKind::course || next.kind == StepKind::bind_off ||
+                 next.kind == StepKind::three_needle_bind_off;
+    if (works && next.yarn == yarn) return next.direction != row_dir_;
+  }
+  return true;
+}
+
 void ProgramPatternBuilder::set_aside(const Step& s) {
   if (!working() || section().yarn != s.yarn) not_yet(s, "sets aside a yarn not being worked");
+  hold_what_others_take(s);
   end_section(true);
+}
+
+void ProgramPatternBuilder::hold_what_others_take(const Step& s) {
+  Needle& n = needle();
+  auto others_take = [&](std::uint32_t l) {
+    return taker_step_[l] != kNone && p_.steps[taker_step_[l]].yarn != s.yarn;
+  };
+  bool worked_here = out_.rows.size() > section().first_row;
+  if (!n.in_round || row_open_ || n.gap != 0 || !worked_here ||
+      std::none_of(n.ring.begin(), n.ring.end(), others_take))
+    return;
+  for (std::uint32_t l : n.ring) in_met_[l] = !others_take(l);
+  std::vector<std::uint32_t> stay = hold_what_it_leaves(s);
+  for (std::uint32_t l : n.ring) in_met_[l] = 0;
+  n.ring = std::move(stay);
+  n.live = hand_sts(n.ring);
+  index_ring(n);
 }
 
 void ProgramPatternBuilder::take_up(const Step& s) {
