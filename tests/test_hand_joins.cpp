@@ -458,19 +458,18 @@ TEST(HandPieces, TheThreeBarsAreProvenInEveryFormat) {
       "samples/three-bars/three-bars.yaml",
       {"Slip sts 1\u20139 of the rnd to holder 1, sts 10\u201318 to holder 2 and sts "
        "19\u201327 to holder 3 \u2014 9 sts.\n\nLeave the 9 sts on the needle and set the yarn "
-       "aside (do not cut it).\n",
-       // Set aside, a bar's sts that other yarns take wait on holders, one for each.
-       "Slip sts 1\u20139 of the rnd to holder 4 and sts 19\u201327 to holder 5 \u2014 18 sts.\n",
-       "Slip sts 10\u201318 of the rnd to holder 6, sts 19\u201327 to holder 7 and sts "
-       "28\u201336 to holder 8 \u2014 9 sts.\n\nPlace the 9 sts of Piece 3 on the needle after the "
-       "first 9 sts of the rnd, the first st cast on first.\n",
+       "aside (do not "
+       "cut it).\n",
+       "Slip sts 10\u201318 of the rnd to holder 7, sts 19\u201327 to holder 8 and sts "
+       "28\u201336 to holder 9 \u2014 9 sts.\n\nPlace the 9 sts of Piece 3 on the needle after the "
+       "first 9 "
+       "sts of the rnd, the first st cast on first.\n",
        "Place the 9 sts of holder 2 on the needle after the first 27 sts of the rnd, the first "
        "st of its last rnd first \u2014 36 sts.\n",
-       "Take up Piece 2 again with its yarn. Slip sts 1\u20139 of the rnd to holder 9 \u2014 9 "
-       "sts. Place the 9 loops of Piece 3's chain on the needle at the beginning of the rnd, the "
-       "last st cast on first.",
+       "Take up Piece 2 again with its yarn. Place the 9 loops of Piece 3's chain on the needle "
+       "at the beginning of the rnd, the last st cast on first.",
        "Three-needle bind-off: hold the pieces with RS together: holder 3 in front, the first st "
-       "of its last row at the needle tip; holder 8 behind,"});
+       "of its last row at the needle tip; holder 9 behind,"});
 }
 
 // Two bars knit towards each other: each ends in a flat face that works the other's sts one
@@ -481,9 +480,9 @@ TEST(HandPieces, TheTwoBarsAreProvenInEveryFormat) {
       "samples/two-bars/two-bars.yaml",
       {"Slip sts 10\u201328 of the rnd to holder 1 and sts 29\u201337 to holder 2 \u2014 9 "
        "sts.\n",
-       "Place the 19 sts of holder 1 on the needle after the first 18 sts of the rnd, the first "
-       "st of its last rnd first \u2014 37 sts.\n\n**Row 24 (RS):** Rm, sl1 back, ssk, k8, turn "
-       "\u2014 36 sts.\n",
+       "Take up Piece 1 again with its yarn. Place the 19 sts of holder 3 on the needle after the "
+       "first 9 sts of the rnd, the first st of its last rnd first \u2014 28 sts.\n\n**Row 24 "
+       "(RS):** Rm, sl1 back, ssk, k8, turn \u2014 27 sts.\n",
        "Pick up 10 sts along the left edge of Piece 2, one in each row from Row 33 down to Row "
        "24, onto the needle after the first 18 sts of the rnd \u2014 37 sts.\n\n**Rnd 34:** Pm, "
        "k to end.\n",
@@ -507,14 +506,11 @@ TEST(HandPieces, PlainRndsAfterRowsCountToARowNumber) {
 TEST(HandPieces, TheLetterHIsProvenInEveryFormat) {
   expect_written_and_proven(
       "samples/letter-h/letter-h.yaml",
-      {"Take up Piece 4 again with its yarn. Place the 28 sts of Piece 1 on the needle at the "
-       "beginning of the rnd, the first st of its last rnd first. Place the 31 sts of Piece 5 on "
-       "the needle after the first 7 sts of the rnd, st 16 of its last rnd first \u2014 90 sts.\n",
-       "**Row 21 (RS):** Rm, sl1 back, ssk, k5, ssk, turn \u2014 88 sts.\n",
-       "Leave the 42 sts on a spare needle and cut the yarn.\n",
-       "Three-needle bind-off: fold the 42 sts of Piece 4 in half with RS together (count them "
-       "round the needle from the first st of its last row): sts 35 down to 15 in front, sts 36 "
-       "up to 14 behind; with a new yarn bind off all 21 pairs.\n",
+      {"- 1 stitch holder (or a length of waste yarn).\n",
+       "Slip sts 1\u20137 of the rnd to holder 1 \u2014 24 sts.\n",
+       "Place the 7 sts of holder 1 on the spare needle of Piece 4 after its st 7 (count round "
+       "the needle from the first st of its last row), the last st slipped first \u2014 42 sts. "
+       "Three-needle bind-off: fold the 42 sts of Piece 4 in half with RS together",
        // The measurements of a piece of a cast-on alone, and of one of short rows alone.
        "- Piece 2: Width: 3 cm (1.3 in), 7 sts at the widest. A cast-on only: no rows of its "
        "own.\n",

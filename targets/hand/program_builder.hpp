@@ -210,6 +210,14 @@ class ProgramPatternBuilder {
     return taker_step_[loop] == kNone ? kNone : p_.steps[taker_step_[loop]].yarn;
   }
 
+  // Which holder a loop left behind goes to, as a key: one for each yarn that takes them, and
+  // one for each three-needle bind-off (its sts are held behind the needle on their own).
+  std::uint64_t holder_for(std::uint32_t loop) const {
+    StitchId taker = g_.loops[loop].taker;
+    bool joined = taker != kNoStitch && g_.type[taker] == T::tnbo;
+    return joined ? (std::uint64_t{1} << 32) | taker_step_[loop] : taker_yarn(loop);
+  }
+
   // Are the loops met by one course, one after the other (either way)?
   bool met_one_after_another(const std::vector<std::uint32_t>& loops) const;
 

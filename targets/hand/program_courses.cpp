@@ -53,9 +53,14 @@ std::uint32_t ProgramPatternBuilder::work(const Step& s, std::uint32_t i, Needle
 std::uint32_t ProgramPatternBuilder::bind_off_with_held_st(std::uint32_t i, Needle& n) {
   const Step& s = p_.steps[step_];
   if (held_behind_left_ == 0) {
+    // The sts held behind on one needle (or holder); others are held after them.
     std::vector<std::uint32_t> behind;
-    for (std::uint32_t k = i; k < s.stitches.end; ++k)
-      if (g_.type[p_.stitches[k].stitch] == T::tnbo) behind.push_back(all_taken_by(k)[1]);
+    for (std::uint32_t k = i; k < s.stitches.end; ++k) {
+      if (!binds_off_together(k)) continue;
+      std::uint32_t held = all_taken_by(k)[1];
+      if (!behind.empty() && places_.at(held) != places_.at(behind.front())) break;
+      behind.push_back(held);
+    }
     LoopAt source = places_.at(behind.front());
     std::optional<Lie> lie = places_.lie(source, behind);
     if (!lie && source.place == Place::spare) {

@@ -261,8 +261,9 @@ std::vector<std::uint32_t> ProgramPatternBuilder::hold_what_it_leaves(const Step
       continue;
     }
     // A block for each yarn that takes them (a gusset's sts, and a join's beside them).
-    std::uint32_t end = i, yarn = taker_yarn(n.ring[i]);
-    while (end < n.ring.size() && !in_met_[n.ring[end]] && taker_yarn(n.ring[end]) == yarn) ++end;
+    std::uint32_t end = i;
+    std::uint64_t taker = holder_for(n.ring[i]);
+    while (end < n.ring.size() && !in_met_[n.ring[end]] && holder_for(n.ring[end]) == taker) ++end;
     std::span<const std::uint32_t> block(n.ring.data() + i, end - i);
     std::uint32_t holder = holder_met_before(block, n.section), onto = 0;
     if (holder != 0) {
@@ -310,6 +311,14 @@ void ProgramPatternBuilder::index_loops_met() {
       taker_step_[met[k]] = i;
       met_at_[met[k]] = k;
     }
+    // A three-needle bind-off's sts held behind are taken too, pair by pair.
+    auto k = static_cast<std::uint32_t>(met.size());
+    for (std::uint32_t w = s.stitches.begin; w < s.stitches.end; ++w)
+      if (binds_off_together(w)) {
+        std::uint32_t behind = all_taken_by(w)[1];
+        taker_step_[behind] = i;
+        met_at_[behind] = k++;
+      }
   }
 }
 

@@ -258,26 +258,34 @@ std::optional<PatternSection::Fold> ProgramPatternBuilder::fold_of(
   if (spare.place == Place::none || two_needles) return std::nullopt;
   std::vector<std::uint32_t> needle = places_.loops_of(spare);
   std::erase_if(needle, [&](std::uint32_t l) { return places_.at(l) != spare; });
+  // Round the needle from its first st, the way its sts go: the holder's sts one run there.
   auto p = static_cast<std::uint32_t>(std::find(round.begin(), round.end(), needle.front()) -
                                       round.begin());
-  bool up = needle.size() == 1 || round[(p + 1) % n] == needle[1];
-  auto along = [&](std::uint32_t k) { return round[up ? (p + k) % n : (p + n - k % n) % n]; };
-  for (std::uint32_t k = 0; k < needle.size(); ++k)
-    if (along(k) != needle[k]) return std::nullopt;
+  std::vector<std::uint32_t> ring, on_spare;
+  for (bool up : {true, false}) {
+    ring.clear();
+    for (std::uint32_t k = 0; k < n; ++k) ring.push_back(round[up ? (p + k) % n : (p + n - k) % n]);
+    on_spare.clear();
+    std::copy_if(ring.begin(), ring.end(), std::back_inserter(on_spare),
+                 [&](std::uint32_t l) { return places_.at(l) == spare; });
+    if (on_spare == needle) break;
+  }
+  if (on_spare != needle) return std::nullopt;
+  auto is_held = [&](std::uint32_t l) { return places_.at(l) != spare; };
+  auto first_held = std::find_if(ring.begin(), ring.end(), is_held);
+  auto end_held = std::find_if_not(first_held, ring.end(), is_held);
+  if (std::find_if(end_held, ring.end(), is_held) != ring.end()) return std::nullopt;
   PatternSection::Fold fold;
   fold.sts = n;
-  fold.after = static_cast<std::uint32_t>(needle.size());
+  fold.after = static_cast<std::uint32_t>(first_held - ring.begin());
   if (held.place == Place::holder) {
-    std::vector<std::uint32_t> arc, on_holder = places_.loops_of(held);
-    for (std::uint32_t k = fold.after; k < n; ++k) arc.push_back(along(k));
+    std::vector<std::uint32_t> arc(first_held, end_held), on_holder = places_.loops_of(held);
     fold.held_from_last = on_holder.front() != arc.front();
     if (fold.held_from_last) std::reverse(on_holder.begin(), on_holder.end());
     if (on_holder != arc) return std::nullopt;
     fold.holder = held.index;
     fold.held = static_cast<std::uint32_t>(arc.size());
   }
-  std::vector<std::uint32_t> ring;
-  for (std::uint32_t k = 0; k < n; ++k) ring.push_back(along(k));
   for (int k : {0, 1}) {
     auto at =
         static_cast<std::uint32_t>(std::find(ring.begin(), ring.end(), side[k][0]) - ring.begin());
