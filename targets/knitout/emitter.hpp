@@ -175,6 +175,9 @@ class Emitter {
   void cast_on(const Course& c);
   void draw_thread(const Course& c);
   void bind_off(const Course& c, bool last_course);
+  std::vector<std::uint8_t> busy_needles() const;
+  std::size_t needle_slot(Place p) const;
+  void chain_link(Place here, Place there, const std::vector<std::uint8_t>& busy);
 
   // ---- output helpers ----
   void source(const Course& c, const char* what);  // emit.cpp
