@@ -30,8 +30,8 @@ TEST(KnitoutParting, TheFirstLegAndItsBindOffAreCoursesOverPartOfTheLoops) {
 // The first leg's chain runs round it (f500, f502, over the right fold to b503, b501), then
 // drops its last loop: the yarn goes on from b501 to the second leg's loops, which waited on
 // b499, b497, f496, f498. Each link along a bed goes out to the other bed at the racking the
-// last one ended at (b503 out to f502 at rack -1), so each stitch racks once; the chain knits at
-// whatever racking it is at, and the next course racks back to 0.
+// last one ended at (b503 out to f502 at rack -1), so each stitch racks once; the chain, and the
+// course after it (one bed each way), knit at whatever racking they are at.
 TEST(KnitoutParting, AMidWorkBindOffDropsItsLastLoopAndTheYarnGoesOn) {
   std::string text = testing::emit_letters(testing::kPartedTube, "legs.st", "generic").text;
   std::size_t from = text.find(";!source: row 5 bind-off");
@@ -44,7 +44,7 @@ TEST(KnitoutParting, AMidWorkBindOffDropsItsLastLoopAndTheYarnGoesOn) {
             "rack -1\nxfer f502 b503\nknit - b503 1\nxfer b503 f502\nrack 1\n"
             "xfer f502 b501\nknit - b501 1\ndrop b501\n"
             ";!source: row 6 knit: lines 31..34 (left to right)\n"
-            "rack 0\nknit - b499 1\nknit - b497 1\nknit + f496 1\nknit + f498 1\n");
+            "knit - b499 1\nknit - b497 1\nknit + f496 1\nknit + f498 1\n");
 }
 
 // Without the drop the loop would stay on b501 to the end of the file: the proof refuses it.

@@ -75,8 +75,24 @@ void Emitter::knit_stitch(StitchId s) {
 
 void Emitter::knit_course(const Course& c) {
   source(c, c.partial ? "knit (short row)" : "knit");
-  w_.rack(0);
+  if (needs_rack_zero(c)) w_.rack(0);
   for (std::uint32_t i = c.begin; i < c.end; ++i) knit_stitch(l_.order[i]);
+}
+
+// Knitting does not depend on the racking, so a course is knit at the one its transfers left,
+// unless it splits (a kfb moves a loop to the facing needle) or works both beds going one way:
+// racked, the back needles no longer line up with the front ones and the pass would break.
+bool Emitter::needs_rack_zero(const Course& c) const {
+  std::array<std::array<bool, 2>, 2> used{};  // per direction, per bed
+  auto use = [&](Direction d, Bed b) { used[d == Direction::plus ? 0 : 1][bed_index(b)] = true; };
+  for (std::uint32_t i = c.begin; i < c.end; ++i) {
+    StitchType t = g_.type[l_.order[i]];
+    const StitchPlan& sp = plan_[l_.order[i]];
+    if (t == StitchType::kfb) return true;
+    use(sp.travel, sp.knit);
+    if (t == StitchType::sr5) use(opposite(sp.travel), other(sp.knit));  // the turn's tuck
+  }
+  return (used[0][0] && used[0][1]) || (used[1][0] && used[1][1]);
 }
 
 // Before turning beside a waiting loop, the yarn tucks over its needle, going on the way it
