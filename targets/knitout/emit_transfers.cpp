@@ -78,12 +78,14 @@ void Emitter::go_home(const Course& c, std::vector<std::uint8_t>& ready, bool st
 // Each decrease's loops land on its bottom loop's needle in stacking order (the lean).
 void Emitter::merge_decreases(const Course& c) {
   for (std::size_t stage = 1; stage < 3; ++stage) {
+    std::vector<StitchId> stacking;  // the decreases with a loop to land in this stage
+    for (std::uint32_t i = c.begin; i < c.end; ++i)
+      if (stage < stacking_order(g_.type[l_.order[i]]).size()) stacking.push_back(l_.order[i]);
+    if (stacking.empty()) return;
     std::vector<Move> along, to_transit, landing;
     std::vector<std::uint8_t> busy = busy_needles();
-    for (std::uint32_t i = c.begin; i < c.end; ++i) {
-      StitchId s = l_.order[i];
+    for (StitchId s : stacking) {
       auto order = stacking_order(g_.type[s]);
-      if (stage >= order.size()) continue;
       Place bottom = live_[taken(s)[order[0]]].now;
       LoopPlace& lp = live_[taken(s)[order[stage]]];
       if (lp.now.bed == bottom.bed) {
@@ -152,6 +154,7 @@ void Emitter::shift_stacks(const Course& c, const std::vector<std::uint8_t>& rea
     crossing |= stacks.back().now.bed != stacks.back().target.bed;
   }
   for (const RoomMove& r : room_) stacks.push_back({kNoStitch, live_[r.loop].now, r.to, r.loop});
+  if (stacks.empty()) return;
   std::vector<std::uint8_t> busy = busy_needles();
   for (bool moved = true; moved;) {
     moved = false;
