@@ -183,6 +183,12 @@ std::string why_undetectable(const Mutant& m, const std::vector<std::string>& or
     return comes_straight_back(original, m.lines[0])
                ? "a transfer that a later one undoes before the loop is used (a redundant pair)"
                : "a transfer whose loop joins the same stack, in the same order, by a later one";
+  auto in_or_out = [&](std::size_t i) {
+    return op(i) == "in" || op(i) == "out" || op(i) == "inhook" || op(i) == "outhook";
+  };
+  if (m.kind == "swap" && in_or_out(m.lines[0]) && in_or_out(m.lines[1]) &&
+      carrier(m.lines[0]) != carrier(m.lines[1]))
+    return "one carrier going out and another coming in swapped (no stitch between them)";
   if (op(m.lines[0]).starts_with("x-")) return "a machine setting (stitch size, speed)";
   if (m.kind == "rack" || (m.kind == "drop" && op(m.lines[0]) == "rack") ||
       (m.kind == "swap" && (op(m.lines[0]) == "rack" || op(m.lines[1]) == "rack")))

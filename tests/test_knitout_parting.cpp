@@ -29,7 +29,9 @@ TEST(KnitoutParting, TheFirstLegAndItsBindOffAreCoursesOverPartOfTheLoops) {
 
 // The first leg's chain runs round it (f500, f502, over the right fold to b503, b501), then
 // drops its last loop: the yarn goes on from b501 to the second leg's loops, which waited on
-// b499, b497, f496, f498.
+// b499, b497, f496, f498. Each link along a bed goes out to the other bed at the racking the
+// last one ended at (b503 out to f502 at rack -1), so each stitch racks once; the chain, and the
+// course after it (one bed each way), knit at whatever racking they are at.
 TEST(KnitoutParting, AMidWorkBindOffDropsItsLastLoopAndTheYarnGoesOn) {
   std::string text = testing::emit_letters(testing::kPartedTube, "legs.st", "generic").text;
   std::size_t from = text.find(";!source: row 5 bind-off");
@@ -38,9 +40,9 @@ TEST(KnitoutParting, AMidWorkBindOffDropsItsLastLoopAndTheYarnGoesOn) {
   EXPECT_EQ(text.substr(from, to - from),
             ";!source: row 5 bind-off (part of the work; the rest goes on): lines 27..30 (left "
             "to right)\n"
-            "knit + f500 1\nxfer f500 b500\nrack 2\nxfer b500 f502\nrack 0\nknit + f502 1\n"
-            "rack -1\nxfer f502 b503\nrack 0\nknit - b503 1\nxfer b503 f503\nrack 2\n"
-            "xfer f503 b501\nrack 0\nknit - b501 1\ndrop b501\n"
+            "knit + f500 1\nxfer f500 b500\nrack 2\nxfer b500 f502\nknit + f502 1\n"
+            "rack -1\nxfer f502 b503\nknit - b503 1\nxfer b503 f502\nrack 1\n"
+            "xfer f502 b501\nknit - b501 1\ndrop b501\n"
             ";!source: row 6 knit: lines 31..34 (left to right)\n"
             "knit - b499 1\nknit - b497 1\nknit + f496 1\nknit + f498 1\n");
 }
@@ -53,7 +55,7 @@ TEST(KnitoutParting, TheProofWantsTheMidWorkChainsLastLoopDropped) {
   knitout::ProofResult proof = testing::replay_and_prove(text.erase(drop, 10), c, p);
   EXPECT_EQ(proof.summary,
             "NOT proven against legs.st: the bind-off before line 31 (k) leaves its last loop "
-            "(line 62 (knit - b501 1)) on the needle: a bind-off of part of the work drops it");
+            "(line 59 (knit - b501 1)) on the needle: a bind-off of part of the work drops it");
 }
 
 // A sheet parted at a slit into two flaps, knit one after the other by one yarn: the left

@@ -75,8 +75,24 @@ void Emitter::knit_stitch(StitchId s) {
 
 void Emitter::knit_course(const Course& c) {
   source(c, c.partial ? "knit (short row)" : "knit");
-  w_.rack(0);
+  if (needs_rack_zero(c)) w_.rack(0);
   for (std::uint32_t i = c.begin; i < c.end; ++i) knit_stitch(l_.order[i]);
+}
+
+// Knitting does not depend on the racking, so a course is knit at the one its transfers left,
+// unless it splits (a kfb moves a loop to the facing needle) or works both beds going one way:
+// racked, the back needles no longer line up with the front ones and the pass would break.
+bool Emitter::needs_rack_zero(const Course& c) const {
+  std::array<std::array<bool, 2>, 2> used{};  // per direction, per bed
+  auto use = [&](Direction d, Bed b) { used[d == Direction::plus ? 0 : 1][bed_index(b)] = true; };
+  for (std::uint32_t i = c.begin; i < c.end; ++i) {
+    StitchType t = g_.type[l_.order[i]];
+    const StitchPlan& sp = plan_[l_.order[i]];
+    if (t == StitchType::kfb) return true;
+    use(sp.travel, sp.knit);
+    if (t == StitchType::sr5) use(opposite(sp.travel), other(sp.knit));  // the turn's tuck
+  }
+  return (used[0][0] && used[0][1]) || (used[1][0] && used[1][1]);
 }
 
 // Before turning beside a waiting loop, the yarn tucks over its needle, going on the way it
@@ -203,22 +219,19 @@ void Emitter::draw_thread(const Course& c) {
 // then a tag knit back and forth on the last needle, the yarn out, and the tag dropped. A
 // bind-off of part of the work (the rest knit on after it) drops its last loop instead: the
 // yarn goes on through it to the next course, as a knitter's does, and its needles are free.
+// The chain knits at whatever racking its last link left (knitting does not need rack 0).
 void Emitter::bind_off(const Course& c, bool last_course) {
   source(c, last_course ? "bind-off" : "bind-off (part of the work; the rest goes on)");
+  std::vector<std::uint8_t> busy = busy_needles();
   for (std::uint32_t i = c.begin; i < c.end; ++i) {
+    for (std::uint32_t loop : taken(l_.order[i])) busy[needle_slot(live_[loop].now)] = 0;
     track_loops(l_.order[i]);
     const StitchPlan& sp = plan_[l_.order[i]];
     Place here{sp.knit, sp.needle};
-    w_.rack(0);
     w_.knit(sp.travel, at(here), carrier_);
     if (i + 1 == c.end) break;
     const StitchPlan& next = plan_[l_.order[i + 1]];
-    Place there{next.knit, next.needle};
-    if (here.bed == there.bed) {
-      w_.xfer(at(here), at(facing(here)));
-      here = facing(here);
-    }
-    move_across_beds(here, there);
+    chain_link(here, {next.knit, next.needle}, busy);
   }
   const StitchPlan& last = plan_[l_.order[c.end - 1]];
   Needle tag{last.knit, last.needle};
@@ -231,6 +244,45 @@ void Emitter::bind_off(const Course& c, bool last_course) {
   }
   yarn_out(carrier_);
   w_.drop(tag);
+}
+
+// Per needle of both beds (needle_slot), whether a loop made and not yet taken is on it.
+std::vector<std::uint8_t> Emitter::busy_needles() const {
+  std::vector<std::uint8_t> busy(2 * static_cast<std::size_t>(p_.needles), 0);
+  for (std::uint32_t loop : on_needles_) busy[needle_slot(live_[loop].now)] = 1;
+  return busy;
+}
+std::size_t Emitter::needle_slot(Place p) const {
+  return bed_index(p.bed) * p_.needles + static_cast<std::size_t>(p.needle);
+}
+
+// One link of the chain: its loop from `here` onto `there`. Along one bed the loop goes out to
+// a free needle of the other bed and back, at two rackings that differ by the step between
+// the needles. The first is the racking the last link ended at wherever it can be, so that
+// each stitch racks once (the old way, out to the facing needle at rack 0 and over, racked
+// twice); where it cannot (the racking climbed to the limit), the far end of the range, from
+// which the following links climb longest.
+void Emitter::chain_link(Place here, Place there, const std::vector<std::uint8_t>& busy) {
+  if (here.bed != there.bed) return move_across_beds(here, there);
+  bool front = here.bed == Bed::f;
+  std::int32_t step = front ? there.needle - here.needle : here.needle - there.needle;
+  std::int32_t limit = p_.max_transfer_stretch, dir = step > 0 ? 1 : -1;
+  auto out_at = [&](std::int32_t r) {
+    return Place{other(here.bed), front ? here.needle - r : here.needle + r};
+  };
+  auto fits = [&](std::int32_t r) {
+    Place out = out_at(r);
+    return std::abs(r) <= limit && std::abs(r + step) <= limit && out.needle >= 0 &&
+           out.needle < static_cast<std::int32_t>(p_.needles) && !busy[needle_slot(out)];
+  };
+  std::int32_t r = w_.racking();
+  for (std::int32_t far = -dir * limit; !fits(r) && std::abs(far) <= limit; far += dir) r = far;
+  if (!fits(r)) {  // no free needle within reach: to the facing needle, then across in hops
+    w_.xfer(at(here), at(facing(here)));
+    return move_across_beds(facing(here), there);
+  }
+  w_.xfer(at(here), at(out_at(r)));
+  w_.xfer(at(out_at(r)), at(there));
 }
 
 }  // namespace skein::knitout::emit

@@ -2,14 +2,23 @@
 // stacks re-spaced within the racking limit, purls to the other bed (emitter.hpp has the state).
 #include <algorithm>
 #include <cstdlib>
+#include <tuple>
 
 #include "knitout/emitter.hpp"
 
 namespace skein::knitout::emit {
 
+// The moves of one batch are independent of each other: grouped by racking, each racking once,
+// the one the machine is at first (no change), the one nearest 0 last (where most batches
+// after begin).
 void Emitter::emit_moves(std::vector<Move>& moves) {
+  std::int32_t now = w_.racking();
+  auto order = [now](const Move& m) {
+    std::int32_t r = rack_of(m);
+    return std::tuple(r != now, -std::abs(r), r);
+  };
   std::stable_sort(moves.begin(), moves.end(),
-                   [](const Move& a, const Move& b) { return rack_of(a) < rack_of(b); });
+                   [&](const Move& a, const Move& b) { return order(a) < order(b); });
   for (const Move& m : moves) w_.xfer(at(m.from), at(m.to));
   moves.clear();
 }
@@ -69,16 +78,18 @@ void Emitter::go_home(const Course& c, std::vector<std::uint8_t>& ready, bool st
 // Each decrease's loops land on its bottom loop's needle in stacking order (the lean).
 void Emitter::merge_decreases(const Course& c) {
   for (std::size_t stage = 1; stage < 3; ++stage) {
-    std::vector<Move> to_transit, landing;
-    for (std::uint32_t i = c.begin; i < c.end; ++i) {
-      StitchId s = l_.order[i];
+    std::vector<StitchId> stacking;  // the decreases with a loop to land in this stage
+    for (std::uint32_t i = c.begin; i < c.end; ++i)
+      if (stage < stacking_order(g_.type[l_.order[i]]).size()) stacking.push_back(l_.order[i]);
+    if (stacking.empty()) return;
+    std::vector<Move> along, to_transit, landing;
+    std::vector<std::uint8_t> busy = busy_needles();
+    for (StitchId s : stacking) {
       auto order = stacking_order(g_.type[s]);
-      if (stage >= order.size()) continue;
       Place bottom = live_[taken(s)[order[0]]].now;
       LoopPlace& lp = live_[taken(s)[order[stage]]];
       if (lp.now.bed == bottom.bed) {
-        to_transit.push_back({lp.now, facing(lp.now)});
-        landing.push_back({facing(lp.now), bottom});
+        along.push_back({lp.now, bottom});
       } else if (std::abs(rack_of({lp.now, bottom})) <= p_.max_transfer_stretch) {
         landing.push_back({lp.now, bottom});
       } else {
@@ -86,6 +97,7 @@ void Emitter::merge_decreases(const Course& c) {
       }
       lp.now = lp.home = bottom;
     }
+    route_through_other_bed(along, &busy, to_transit, landing);
     emit_moves(to_transit);
     emit_moves(landing);
   }
@@ -142,21 +154,24 @@ void Emitter::shift_stacks(const Course& c, const std::vector<std::uint8_t>& rea
     crossing |= stacks.back().now.bed != stacks.back().target.bed;
   }
   for (const RoomMove& r : room_) stacks.push_back({kNoStitch, live_[r.loop].now, r.to, r.loop});
+  if (stacks.empty()) return;
+  std::vector<std::uint8_t> busy = busy_needles();
   for (bool moved = true; moved;) {
     moved = false;
-    std::vector<Move> to_transit, over, landing;
+    std::vector<Move> along, to_transit, over, landing;
     for (Stack& st : stacks) {
       if (st.now == st.target) continue;
       moved = true;
       Place stop = next_stop(st.now, st.target, crossing);
-      if (stop.bed == st.now.bed) {
-        to_transit.push_back({st.now, facing(st.now)});
-        landing.push_back({facing(st.now), stop});
-      } else {
+      if (stop.bed == st.now.bed)
+        along.push_back({st.now, stop});
+      else
         over.push_back({st.now, stop});
-      }
       st.now = stop;
     }
+    // Stacks going over a fold land on the other bed between the two batches: they keep the
+    // facing needles' way.
+    route_through_other_bed(along, crossing ? nullptr : &busy, to_transit, landing);
     emit_moves(to_transit);
     emit_moves(over);
     emit_moves(landing);
@@ -167,6 +182,30 @@ void Emitter::shift_stacks(const Course& c, const std::vector<std::uint8_t>& rea
       continue;
     }
     for (std::uint32_t loop : taken(st.stitch)) live_[loop].now = live_[loop].home = st.target;
+  }
+}
+
+// Moves along one bed go through the other: out to the facing needle at rack 0 and over at
+// the step's racking, or over first, to the needle facing where they land, and in at rack 0.
+// The second saves a rack change where the machine is racked for one of them already and the
+// needles facing their landings are free (`busy`; none given: the first way); the first
+// otherwise.
+void Emitter::route_through_other_bed(const std::vector<Move>& along,
+                                      const std::vector<std::uint8_t>* busy,
+                                      std::vector<Move>& to_transit,
+                                      std::vector<Move>& landing) const {
+  std::int32_t now = w_.racking();
+  bool over_first = busy && now != 0;
+  bool saves = false;
+  for (const Move& m : along) {
+    saves |= rack_of({m.from, facing(m.to)}) == now;
+    over_first = over_first && !(*busy)[needle_slot(facing(m.to))];
+  }
+  over_first = over_first && saves;
+  for (const Move& m : along) {
+    Place via = over_first ? facing(m.to) : facing(m.from);
+    to_transit.push_back({m.from, via});
+    landing.push_back({via, m.to});
   }
 }
 

@@ -155,6 +155,9 @@ class Emitter {
   std::int32_t ring(Place p) const;
   Place place_at(std::int32_t u) const;
   void shift_stacks(const Course& c, const std::vector<std::uint8_t>& ready);
+  void route_through_other_bed(const std::vector<Move>& along,
+                               const std::vector<std::uint8_t>* busy, std::vector<Move>& to_transit,
+                               std::vector<Move>& landing) const;
   Place next_stop(Place now, Place target, bool crossing) const;
   void send_purls(const Course& c, const std::vector<std::uint8_t>& ready);
 
@@ -163,6 +166,7 @@ class Emitter {
   void track_loops(StitchId s);
   void knit_stitch(StitchId s);
   void knit_course(const Course& c);
+  bool needs_rack_zero(const Course& c) const;
   void wrap_turn(const Course& c);
   std::vector<Needle> pass_needles(const Course& c, Direction d) const;
   Direction tuck_border(const Course& c, const std::string& carrier);
@@ -175,6 +179,9 @@ class Emitter {
   void cast_on(const Course& c);
   void draw_thread(const Course& c);
   void bind_off(const Course& c, bool last_course);
+  std::vector<std::uint8_t> busy_needles() const;
+  std::size_t needle_slot(Place p) const;
+  void chain_link(Place here, Place there, const std::vector<std::uint8_t>& busy);
 
   // ---- output helpers ----
   void source(const Course& c, const char* what);  // emit.cpp

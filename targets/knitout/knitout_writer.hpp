@@ -28,6 +28,7 @@ class KnitoutWriter {
   void carriers(const char* op, std::string_view carrier) {
     append(FMT_COMPILE("{} {}\n"), op, carrier);
   }
+  std::int32_t racking() const { return rack_; }
   void rack(std::int32_t r) {
     if (r == rack_) return;
     rack_ = r;
