@@ -416,6 +416,22 @@ TEST(HandPickUps, RejectsAPickUpThatCannotBeWorkedWithTheReason) {
             "p.md:7: Pick up along Piece 1 onto the needle: only into a piece worked in the rnd");
 }
 
+// A piece worked word for word as one before it is written once: the sweater's second sleeve
+// says "Work as Sleeve 1", and the simulator works Sleeve 1's instructions again for it.
+TEST(HandPieces, IdenticalPiecesAreWrittenOnce) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  Compilation c = compile_model("samples/sweater/sweater.yaml");
+  std::string pattern = emit(c, "hand");
+  EXPECT_NE(pattern.find("### Sleeve 2 (yarn 2)\n\nWork as Sleeve 1.\n"), std::string::npos)
+      << pattern;
+  EXPECT_EQ(testing::occurrences(pattern, "Leave the 58 sts on a spare needle"), 1u);
+  EXPECT_EQ(testing::unproven_hand_formats(c), "");
+  // Only a piece written before can be worked again.
+  std::string later = pattern;
+  later.replace(later.find("Work as Sleeve 1."), 17, "Work as Sleeve 2.");
+  EXPECT_THROW(hand::verify_pattern(later, "p.md", &c), ParseError);
+}
+
 TEST(HandPieces, TheSweaterIsProvenInEveryFormat) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
   Compilation c = compile_model("samples/sweater/sweater.yaml");

@@ -86,10 +86,13 @@ class InstructionWriter {
                         sec.resumed ? taken_up_for(sec) : "",
                         sec.joins ? ": three-needle bind-off" : ""));
       // A join with a new yarn is a piece of its own; with a piece's yarn it ends that piece.
+      std::size_t body = out_.size();
       if (!sec.joins || sec.own_yarn) add(InstructionLine::Kind::setup, "", setup_text(sec));
       write_rows(sec.first_row, sec.end_row);
       if (sec.joins) add(InstructionLine::Kind::finish, "", three_needle_text(sec));
       add(InstructionLine::Kind::finish, "", finish_text(sec));
+      if (p_.sections.size() > 1 && !sec.resumed && !sec.joins)
+        write_once(body, piece_name(p_, sec.piece));
     }
   }
 
@@ -584,11 +587,25 @@ class InstructionWriter {
     out_.push_back({kind, std::move(label), std::move(text), section_});
   }
 
+  // A piece worked word for word as one before it (the second sleeve) says so instead:
+  // "Work as Sleeve 1."
+  void write_once(std::size_t body, const std::string& name) {
+    std::string words;
+    for (std::size_t i = body; i < out_.size(); ++i)
+      words +=
+          fmt::format("{}\n{}\n{}\n", static_cast<int>(out_[i].kind), out_[i].label, out_[i].text);
+    auto [same, first] = worked_before_.try_emplace(std::move(words), name);
+    if (first) return;
+    out_.resize(body);
+    add(InstructionLine::Kind::setup, "", fmt::format("Work as {}.", same->second));
+  }
+
   const HandPattern& p_;
   Dialect dialect_;
   std::vector<InstructionLine>& out_;
   std::vector<std::string> texts_;  // per pattern row, without label and count
   std::uint32_t section_ = 0;
+  std::unordered_map<std::string, std::string> worked_before_;  // a piece's words: its name
 };
 
 // What the front matter needs to know about the whole pattern.

@@ -156,6 +156,7 @@ class SentenceReader {
     if (c.eat("pick") && c.eat("up")) return pick_up(c);
     if (c.eat("three-needle") && c.eat("bind-off")) return three_needle_bind_off(c);
     if (c.eat("hold")) return hold_behind(c);
+    if (c.eat("work") && c.eat("as")) return work_as(c);
     fail(
         "expected a row ('Row 3 (RS): ...', 'Rnd 5: ...'), 'Cast on N sts', 'Pm and join to "
         "work in the rnd', 'Rep Rows 3\u20134 N more times', 'Knit every rnd until N rnds in "
@@ -294,6 +295,25 @@ class SentenceReader {
     need_words(c, {"at", "the", "tip"}, "'at the tip'");
     need(c.done(), c, "the end of the sentence");
     add(step);
+  }
+
+  // "Work as Sleeve 1": the steps of that piece's first section again, for this piece.
+  void work_as(Cursor& c) {
+    std::uint32_t piece = need_piece(c, "'Work as Piece N' (or a piece's name)");
+    auto is_heading = [](const Step& s) { return s.kind == Step::Kind::piece; };
+    auto& steps = script_.steps;
+    auto from = std::find_if(steps.begin(), steps.end(),
+                             [&](const Step& s) { return is_heading(s) && s.number == piece; });
+    if (from == steps.end() || from == steps.end() - 1 ||
+        std::find_if(steps.rbegin(), steps.rend(), is_heading).base() - 1 == from)
+      fail("'Work as' a piece written before this one",
+           piece <= script_.piece_names.size() && !script_.piece_names[piece - 1].empty()
+               ? script_.piece_names[piece - 1]
+               : fmt::format("Piece {}", piece));
+    auto to = std::find_if(from + 1, steps.end(), is_heading);
+    std::vector<Step> again(from + 1, to);
+    for (Step& s : again) s.line = line_no_;
+    steps.insert(steps.end(), again.begin(), again.end());
   }
 
   // "Piece 2", or the name a heading gave the piece ("Thumb", "Leg 2"): its number.
