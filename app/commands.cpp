@@ -274,8 +274,12 @@ void report_yarn_checks(const KnitGraph& graph, const YarnModel& model, std::ost
   constexpr float kAllowed = 0.9f;
   TopologyReport t = check_yarn_topology(graph, model);
   Clearance clear = yarn_clearance(model, kAllowed);
-  report << fmt::format("checks: {} loops, {} not held, {} held wrongly{}{}\n", t.loops, t.not_held,
-                        t.wrongly_held, t.first_problem.empty() ? "" : " (first: ",
+  std::string picked_up =
+      t.picked_up ? fmt::format(" ({} more picked up through a side: not checked)", t.picked_up)
+                  : "";
+  report << fmt::format("checks: {} loops{}, {} not held, {} held wrongly{}{}\n", t.loops,
+                        picked_up, t.not_held, t.wrongly_held,
+                        t.first_problem.empty() ? "" : " (first: ",
                         t.first_problem.empty() ? "" : t.first_problem + ")");
   report << fmt::format(
       "checks: {} segment pairs closer than {} diameters (closest {:.2f} d; {} pairs within one)\n",
