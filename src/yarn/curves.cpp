@@ -18,7 +18,7 @@ constexpr float kBoundTop = 0.55f;  // a bound-off lobe's head stays in its cell
 constexpr float kDepth = 1.2f;      // front-to-back amplitude, in yarn diameters
 // A slip's float passes a diameter behind the loop it holds (a tuck's lies at 0.8 of the depth).
 constexpr float kFloatDepth = 1.9f;     // of the depth amplitude
-constexpr float kStack = 0.5f;          // offset between stacked loops, in yarn diameters
+constexpr float kStack = 1.0f;          // stacked loops lie side by side, a yarn diameter apart
 constexpr float kWiden = 1.25f;         // an increase's old loop is gripped wider than its lobes
 constexpr float kRowsPerStitch = 1.5f;  // rows of this height take yarn sized by the width
 
