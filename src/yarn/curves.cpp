@@ -165,6 +165,7 @@ StitchTemplate stitch_template(StitchType type) {
 std::uint32_t lobe_making(const KnitGraph& graph, std::uint32_t loop) {
   const Loop& made = graph.loops[loop];
   auto loops = graph.loops_made_by(made.maker);
+  if (loops.size() == 1) return 0;  // most stitches: no table look-up
   const bool picks_up = loops.size() > stitch_template(graph.type[made.maker]).lobes;
   auto picked_up = [&](const Loop& l) { return picks_up && l.kind == LoopKind::perpendicular; };
   if (picked_up(made)) return kPickedUp;
