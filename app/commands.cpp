@@ -22,6 +22,7 @@
 #include "mesh/autoknit_st.hpp"
 #include "mesh/obj_format.hpp"
 #include "render/svg.hpp"
+#include "yarn/checks.hpp"
 #include "yarn/export.hpp"
 
 namespace skein::cli {
@@ -265,6 +266,28 @@ Compilation yarn_input(const Registry& registry, const Request& r,
   return compile_knit_graph(std::move(graph), name, progress_printer(r.verbose));
 }
 
+namespace {
+
+// The yarn's checks (docs/yarn.md): loops held by the stitches the knit graph says, and yarns
+// closer than the tests allow (0.9 diameters).
+void report_yarn_checks(const KnitGraph& graph, const YarnModel& model, std::ostream& report) {
+  constexpr float kAllowed = 0.9f;
+  TopologyReport t = check_yarn_topology(graph, model);
+  Clearance clear = yarn_clearance(model, kAllowed);
+  std::string picked_up =
+      t.picked_up ? fmt::format(" ({} more picked up through a side: not checked)", t.picked_up)
+                  : "";
+  report << fmt::format("checks: {} loops{}, {} not held, {} held wrongly{}{}\n", t.loops,
+                        picked_up, t.not_held, t.wrongly_held,
+                        t.first_problem.empty() ? "" : " (first: ",
+                        t.first_problem.empty() ? "" : t.first_problem + ")");
+  report << fmt::format(
+      "checks: {} segment pairs closer than {} diameters (closest {:.2f} d; {} pairs within one)\n",
+      clear.closer, kAllowed, clear.closest, clear.checked);
+}
+
+}  // namespace
+
 // `skein yarn`: the yarn-level model of INPUT, written as OBJ/PLY polylines or tubes and drawn.
 int run_yarn(const Registry& registry, const Request& r) {
   if (r.output.empty() && r.yarn_picture.empty())
@@ -293,6 +316,7 @@ int run_yarn(const Registry& registry, const Request& r) {
         "relaxed: {} steps in {:.2f} s, {} (largest move {:.4f} r, overlap {:.3f} d)\n",
         relaxed.steps, relaxed.seconds, relaxed.converged ? "converged" : "step limit",
         relaxed.max_move, relaxed.overlap);
+  if (r.yarn_check) report_yarn_checks(c.knit, yarn.model, report);
   if (model) {
     bool ply = std::filesystem::path(r.output).extension() == ".ply";
     model->write([&](std::ostream& out) {

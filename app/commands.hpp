@@ -22,12 +22,13 @@ struct Request {
   bool verify = false;
   bool force = false;  // replace an existing output file
   bool verbose = false;
-  bool coarse = false;  // render: the labelled coarse mesh
+  bool coarse = false;   // render: the labelled coarse mesh
   bool program = false;  // check: print and verify the live-loop program
-  std::string shape;    // new: KIND
+  std::string shape;     // new: KIND
   std::string circumference, width, length;
   std::string yarn_picture;  // yarn: --picture PNG
   bool tube = false;         // yarn: a tube mesh instead of polylines
+  bool yarn_check = false;   // yarn: report the topology and clearance checks
   YarnOptions yarn;
   PictureOptions view;
 };

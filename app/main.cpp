@@ -141,6 +141,8 @@ int main(int argc, char** argv) {
   yarn->add_option("-o,--output", r.output, "yarn polylines (.obj or .ply); - for standard output");
   yarn->add_flag("--tube", r.tube, "write a tube mesh instead of polylines (.obj)");
   yarn->add_option("--picture", r.yarn_picture, "draw the yarn into this .png");
+  yarn->add_flag("--check", r.yarn_check,
+                 "report loops not held or held wrongly and yarns closer than 0.9 diameters");
   add_force(*yarn, r);
   yarn->add_option("--steps", r.yarn.relax.max_steps,
                    "relaxation step limit (0: the templates' yarn, unrelaxed)");

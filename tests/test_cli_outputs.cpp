@@ -212,5 +212,17 @@ TEST_F(CliOutputs, YarnOfAKnitoutFileIsTheFabricTheVbedRebuilds) {
   EXPECT_FALSE(fs::exists(dir_ / "hat-md.obj"));
 }
 
+// `skein yarn --check` reports the yarn's checks: loops held by the stitches the knit graph
+// says, and yarns closer than the tests allow.
+TEST_F(CliOutputs, YarnCheckReportsLoopsHeldAndClearance) {
+  CliRun r =
+      skein("yarn samples/rib-swatch/rib-swatch.obj --steps 0 --check -o " + in_dir("r.obj"));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("checks: 340 loops, 0 not held, 0 held wrongly\n"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find(" segment pairs closer than 0.9 diameters (closest "), std::string::npos)
+      << r.out;
+}
+
 }  // namespace
 }  // namespace skein

@@ -91,15 +91,20 @@ TopologyReport check_yarn_topology(const KnitGraph& graph, const YarnModel& mode
   auto note = [&](std::string problem) {
     if (report.first_problem.empty()) report.first_problem = std::move(problem);
   };
-  for (const Loop& loop : graph.loops) {
+  for (std::uint32_t l = 0; l < graph.loops.size(); ++l) {
+    const Loop& loop = graph.loops[l];
     if (loop.maker == kNoStitch || loop.taker == kNoStitch) continue;
     StitchTemplate t = stitch_template(graph.type[loop.maker]);
     if (!pulls_through(graph.type[loop.taker]) || t.kind == LobeKind::slipped ||
         t.kind == LobeKind::tucked || model.stitch_first[loop.maker] == kNoPoint)
       continue;
     // The lobe that made the loop (lobes run along the yarn, slots left to right).
-    std::uint32_t lobe =
-        model.right_to_left[loop.maker] ? t.lobes - 1u - loop.maker_slot : loop.maker_slot;
+    std::uint32_t lobe = lobe_making(graph, l);
+    if (lobe == kPickedUp) {
+      ++report.picked_up;
+      continue;
+    }
+    if (model.right_to_left[loop.maker]) lobe = t.lobes - 1u - lobe;
     Eye eye = eye_of(model, model.stitch_first[loop.maker] + lobe * kLobeSamples);
     ++report.loops;
     if (piercings(eye, model, graph, loop.taker) == 0) {

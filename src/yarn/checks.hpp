@@ -27,7 +27,10 @@ struct TopologyReport {
   std::uint32_t loops = 0;         // loops checked
   std::uint32_t not_held = 0;      // the taker's yarn misses the eye
   std::uint32_t wrongly_held = 0;  // an unrelated stitch's yarn goes through the eye
-  std::string first_problem;       // describes the first one, for messages
+  // Loops picked up through the side of an edge stitch (an expanding perpendicular edge): no
+  // lobe of their own, so no eye to check; counted apart from `loops`.
+  std::uint32_t picked_up = 0;
+  std::string first_problem;  // describes the first one, for messages
 };
 TopologyReport check_yarn_topology(const KnitGraph& graph, const YarnModel& model);
 

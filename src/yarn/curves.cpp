@@ -18,7 +18,7 @@ constexpr float kBoundTop = 0.55f;  // a bound-off lobe's head stays in its cell
 constexpr float kDepth = 1.2f;      // front-to-back amplitude, in yarn diameters
 // A slip's float passes a diameter behind the loop it holds (a tuck's lies at 0.8 of the depth).
 constexpr float kFloatDepth = 1.9f;     // of the depth amplitude
-constexpr float kStack = 0.5f;          // offset between stacked loops, in yarn diameters
+constexpr float kStack = 1.0f;          // stacked loops lie side by side, a yarn diameter apart
 constexpr float kWiden = 1.25f;         // an increase's old loop is gripped wider than its lobes
 constexpr float kRowsPerStitch = 1.5f;  // rows of this height take yarn sized by the width
 
@@ -105,11 +105,11 @@ class Lobe {
         amplitude_(kDepth * diameter),
         j_(j),
         centre_((static_cast<float>(j) + 0.5f) / t_.lobes) {
-    auto made = graph.loops_made_by(s);
     std::uint32_t slot = layout.right_to_left[s] ? t_.lobes - 1 - j : j;
-    const Loop* loop =
-        t_.kind != LobeKind::slipped && slot < made.size() ? &graph.loops[made[slot]] : nullptr;
-    if (loop && loop->taker != kNoStitch) {
+    const Loop* loop = nullptr;
+    for (std::uint32_t l : graph.loops_made_by(s))
+      if (lobe_making(graph, l) == slot) loop = &graph.loops[l];
+    if (loop && t_.kind != LobeKind::slipped && loop->taker != kNoStitch) {
       taker_ = &layout.frame[loop->taker];
       grip_ = grip(graph, layout, loop->taker, loop->taker_slot, diameter);
     }
@@ -160,6 +160,19 @@ StitchTemplate stitch_template(StitchType type) {
   if (i.loops_in == 0) return {LobeKind::cast_on, side, lobes};
   if (i.loops_out == 0) return {LobeKind::bound_off, side, lobes};
   return {LobeKind::pulled_through, side, lobes};
+}
+
+std::uint32_t lobe_making(const KnitGraph& graph, std::uint32_t loop) {
+  const Loop& made = graph.loops[loop];
+  auto loops = graph.loops_made_by(made.maker);
+  if (loops.size() == 1) return 0;  // most stitches: no table look-up
+  const bool picks_up = loops.size() > stitch_template(graph.type[made.maker]).lobes;
+  auto picked_up = [&](const Loop& l) { return picks_up && l.kind == LoopKind::perpendicular; };
+  if (picked_up(made)) return kPickedUp;
+  std::uint32_t lobe = 0;  // the maker's own loops left of this one
+  for (std::uint32_t l : loops)
+    lobe += !picked_up(graph.loops[l]) && graph.loops[l].maker_slot < made.maker_slot;
+  return lobe;
 }
 
 std::vector<StitchId> yarn_order(const KnitGraph& graph, const YarnPieces& pieces) {

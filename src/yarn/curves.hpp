@@ -36,6 +36,13 @@ struct StitchTemplate {
 };
 StitchTemplate stitch_template(StitchType type);
 
+// The lobe (counted in slot order, left to right in the maker's frame) that makes `loop`, or
+// kPickedUp for a loop picked up through the side of its maker: across an expanding
+// perpendicular edge an edge stitch makes a loop besides its own (paper §3.2), and the yarn
+// does not lay it as a lobe of its own.
+inline constexpr std::uint32_t kPickedUp = 0xffffffffu;
+std::uint32_t lobe_making(const KnitGraph& graph, std::uint32_t loop);
+
 struct YarnModel {
   float radius = 0;                        // model units
   std::vector<Point3> point;               // every piece's points, piece after piece
