@@ -154,6 +154,33 @@ class ProgramPatternBuilder {
   // it, slipped back).
   void place_into_ring_row(const Step& s, const std::vector<std::uint32_t>& met);
 
+  // Rows in the rnd that each take sts of holders one at a time, each together with a st of
+  // the needle (a gusset's decreases, a bowl closing at both edges): each holder goes on a
+  // spare needle (two at once at the most) and the row slips its next st from there ("sl1
+  // from spare", or behind the st it is worked with). Is this row one of those?
+  bool takes_from_spare_needles(const Step& s) const;
+
+  // Puts the holders of the row's sts from elsewhere on spare needles, the st it takes first
+  // at the tip.
+  void put_on_spare_needles(const Step& s);
+
+  // Before the stitch is worked, the sts it takes from spare needles go onto the left needle.
+  void slip_from_spare_needles(std::uint32_t worked, Needle& n);
+
+  // The loops of the course on the needle (not those it slips from spare needles).
+  std::vector<std::uint32_t> on_the_needle(std::vector<std::uint32_t> met) const {
+    std::erase_if(met, [&](std::uint32_t l) { return spare_slot(l) != kNone; });
+    return met;
+  }
+
+  // The spare needle (0 or 1) the loop waits on for rows, or kNone.
+  std::uint32_t spare_slot(std::uint32_t loop) const {
+    LoopAt at = places_.at(loop);
+    for (std::uint32_t k : {0u, 1u})
+      if (at.place == Place::holder && spare_rows_[k] == at.index) return k;
+    return kNone;
+  }
+
   // All of `source`'s loops in the order the course would meet them, `run` (the ones it takes
   // now) first when it meets them after the st before, last when before the st after; none
   // where `run` lies at neither end of them.
@@ -384,8 +411,10 @@ class ProgramPatternBuilder {
   PatternRow pending_;
   bool row_open_ = false, row_forward_ = false, ds_next_ = false;
   bool row_at_marker_after_turn_ = false;
-  bool row_from_marker_ = false;  // the row in the rnd began at the marker
-  bool pm_next_ = false;          // the next row places the beginning-of-round marker first
+  bool row_from_marker_ = false;          // the row in the rnd began at the marker
+  bool pm_next_ = false;                  // the next row places the beginning-of-round marker first
+  std::uint32_t spare_rows_[2] = {0, 0};  // the holders on spare needles for rows (0: none)
+  std::vector<std::uint32_t> spare_queue_[2];  // their sts, the one slipped next first
   CourseDirection row_dir_ = CourseDirection::left_to_right;
   std::uint32_t pending_takes_ = 0;
   std::uint32_t held_behind_left_ = 0;  // sts held behind the needle for 3-needle BO

@@ -134,7 +134,7 @@ void ProgramPatternBuilder::ring_course(const Step& s, Needle& n) {
     index_ring(n);
   }
   turn_in_ring(s, n);
-  std::vector<std::uint32_t> met = loops_met(s);
+  std::vector<std::uint32_t> met = on_the_needle(loops_met(s));
   bool forward = s.direction == n.rnds;
   if (forward && !row_open_ && goes_round(s, n.ring.size())) begin_rnd_at_yarn(s, n);
   bool back = check_met_at_the_yarn(s, n, met, forward);
@@ -145,7 +145,7 @@ void ProgramPatternBuilder::ring_course(const Step& s, Needle& n) {
   std::uint32_t first = forward ? n.gap : (n.gap + size - 1) % size;
   std::uint32_t taken_so_far = 0;
   for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i) {
-    auto taken = taken_by(i);
+    std::vector<std::uint32_t> taken = on_the_needle({taken_by(i).begin(), taken_by(i).end()});
     std::uint32_t at = taken.empty() ? kNone : pos_[first_met(taken, s.direction)];
     bool marker = !n.marker_off && row_open_ && pending_takes_ > 0;
     bool at_marker = marker && at == (forward ? 0 : size - 1);
@@ -164,10 +164,13 @@ void ProgramPatternBuilder::ring_course(const Step& s, Needle& n) {
       open_ring_row(s, n, forward);
       if (back) slip_back_across_gap(n, back_across_marker);
     }
+    slip_from_spare_needles(i, n);
     pending_takes_ += work(s, i, n, pending_);
     taken_so_far += static_cast<std::uint32_t>(taken.size());
   }
   replace_in_ring(s, n, forward, first, static_cast<std::uint32_t>(met.size()));
+  for (std::uint32_t k : {0u, 1u})
+    if (spare_queue_[k].empty()) spare_rows_[k] = 0;
   note_course(s, n);
   if (forward && !n.marker_off && (n.gap == 0 || n.ring.empty())) close_ring_row(s, n, false);
   // Bound off in one or two places (underarms), the rest stays on the circular needle in

@@ -25,6 +25,8 @@ Needle& ProgramPatternBuilder::needle_for(const Step& s, const std::vector<std::
 void ProgramPatternBuilder::gather(const Step& s, const std::vector<std::uint32_t>& met) {
   bool round = s.shape == RowShape::closed && s.run_shape == RunShape::ring;
   bool own = working() && needle().live > 0 && current_ == needle_of_yarn_[s.yarn];
+  if (!round && own && needle().in_round && takes_from_spare_needles(s))
+    return put_on_spare_needles(s);
   if (!round && own && needle().in_round) return place_into_ring_row(s, met);
   if (round && own && needle().in_round) {
     turn_in_ring(s, needle());
@@ -46,6 +48,75 @@ void ProgramPatternBuilder::gather(const Step& s, const std::vector<std::uint32_
   n.worked = false;
   index_ring(n);
   places_.set(met, {Place::needle, current_});
+}
+
+bool ProgramPatternBuilder::takes_from_spare_needles(const Step& s) const {
+  const LoopAt own{Place::needle, current_};
+  bool any = false;
+  for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i) {
+    std::size_t held = 0, mine = 0;
+    for (std::uint32_t l : taken_by(i)) {
+      LoopAt at = places_.at(l);
+      mine += at == own;
+      held += at.place == Place::holder;
+      if (at != own && at.place != Place::holder) return false;
+    }
+    if (held > 1 || (held == 1 && mine == 0)) return false;
+    any = any || held == 1;
+  }
+  // Each holder is used up by the rows (a spare needle keeps no sts for a rnd to place).
+  for (std::uint32_t i = s.stitches.begin; i < s.stitches.end && any; ++i)
+    for (std::uint32_t l : taken_by(i)) {
+      if (places_.at(l).place != Place::holder) continue;
+      for (std::uint32_t other : places_.loops_of(places_.at(l))) {
+        const Step* taker = taker_step_[other] == kNone ? nullptr : &p_.steps[taker_step_[other]];
+        if (!taker || taker->yarn != s.yarn || taker->shape == RowShape::closed) return false;
+      }
+    }
+  return any;
+}
+
+void ProgramPatternBuilder::put_on_spare_needles(const Step& s) {
+  hold_what_others_take(s);
+  for (std::uint32_t loop : loops_met(s)) {
+    LoopAt holder = places_.at(loop);
+    if (holder.place != Place::holder || spare_slot(loop) != kNone) continue;
+    turn_in_ring(s, needle());
+    if (row_open_) not_yet(s, "puts sts on a spare needle in the middle of a row");
+    std::uint32_t k = spare_rows_[0] == 0 ? 0 : spare_rows_[1] == 0 ? 1 : kNone;
+    if (k == kNone) not_yet(s, "takes sts from a third spare needle");
+    std::vector<std::uint32_t> loops = places_.loops_of(holder);
+    bool from_last = loops.front() != loop;
+    if (from_last) std::reverse(loops.begin(), loops.end());
+    if (loops.front() != loop) not_yet(s, "takes a holder's sts one at a time, not from an end");
+    PatternSection::Placement p{places_.holder_section(holder.index),
+                                static_cast<std::uint32_t>(loops.size()), 0, from_last};
+    p.before_row = static_cast<std::uint32_t>(out_.rows.size());
+    p.holder = holder.index;
+    p.to_spare = true;
+    p.second_spare = k == 1;
+    section().placements.push_back(p);
+    spare_rows_[k] = holder.index;
+    spare_queue_[k] = std::move(loops);
+  }
+}
+
+void ProgramPatternBuilder::slip_from_spare_needles(std::uint32_t worked, Needle& n) {
+  auto taken = taken_by(worked);
+  bool met_backwards = p_.steps[step_].direction == CourseDirection::right_to_left;
+  for (std::uint32_t j = 0; j < taken.size(); ++j) {
+    std::uint32_t loop = taken[met_backwards ? taken.size() - 1 - j : j];
+    std::uint32_t k = spare_slot(loop);
+    if (k == kNone) continue;
+    if (spare_queue_[k].empty() || spare_queue_[k].front() != loop)
+      not_yet(p_.steps[step_], "takes a spare needle's sts out of their order");
+    spare_queue_[k].erase(spare_queue_[k].begin());
+    bool behind = j > 0;  // worked after the st at the tip of the left needle
+    out_.ops.push_back(
+        k == 0 ? (behind ? HandOp::from_spare_behind : HandOp::from_spare)
+               : (behind ? HandOp::from_second_spare_behind : HandOp::from_second_spare));
+    ++n.live;
+  }
 }
 
 void ProgramPatternBuilder::place_into_ring_row(const Step& s,
