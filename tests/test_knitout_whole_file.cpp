@@ -138,5 +138,34 @@ TEST(KnitoutWholeFile, ABorderEditThatChangesTheFabricIsRefused) {
   EXPECT_NE(proof.summary.find("out of its pass's order"), std::string::npos) << proof.summary;
 }
 
+// A tube 8 round has a border of tuck passes two loops long. Edits there leave passes of one
+// loop, which show no step of their own: the border's other passes say where they go on, and a
+// loop made against the yarn on both sides is wrapped round its needle.
+TEST(KnitoutWholeFile, ATuckPassOfOneLoopOutOfPlaceIsRefusedInANarrowPiece) {
+  testing::EmittedLetters e =
+      testing::emit_letters(testing::kPartedTube, "parted tube", "swg091n2");
+  ASSERT_TRUE(prove_lenient(e.text, e.c, e.p).proven);
+  std::string swapped = e.text;  // b269 after f266: where the pass of b273 would have gone on
+  swapped.replace(swapped.find("tuck - b269 3\ntuck + f266 3"), 27, "tuck + f266 3\ntuck - b269 3");
+  knitout::ProofResult proof = prove_lenient(swapped, e.c, e.p);
+  EXPECT_FALSE(proof.proven);
+  EXPECT_NE(proof.summary.find("the border it is cast on is not whole: the loop of line 14 "
+                               "(carrier 3) is made going left where an earlier pass its way left "
+                               "off, after the yarn went elsewhere"),
+            std::string::npos)
+      << proof.summary;
+  // The middle tuck of a pass three tucks long made going the other way.
+  e = testing::emit_letters(testing::kShapedShortRowTube, "short rows", "swg091n2");
+  ASSERT_TRUE(prove_lenient(e.text, e.c, e.p).proven);
+  std::string flipped = e.text;
+  flipped.replace(flipped.find("tuck + f268 3"), 13, "tuck - f268 3");
+  proof = prove_lenient(flipped, e.c, e.p);
+  EXPECT_FALSE(proof.proven);
+  EXPECT_NE(proof.summary.find("(carrier 3) is made going left, and the yarn comes to it and "
+                               "goes on from it going right: it is wrapped in its own yarn"),
+            std::string::npos)
+      << proof.summary;
+}
+
 }  // namespace
 }  // namespace skein

@@ -10,7 +10,8 @@
 // alike, every loop of a border in the piece's own yarn is a tuck through nothing or a loop
 // through one loop below the piece and holds exactly one loop, and that border's yarn runs in
 // passes (each the same step along, none taking up where an earlier one left off, no loop made
-// against its pass). Every loop of a draw thread holds one cast-on loop.
+// against its pass, none wrapped in its yarn: made going one way while the yarn comes to it and
+// goes on from it going the other). Every loop of a draw thread holds one cast-on loop.
 #pragma once
 
 #include <string_view>
