@@ -307,4 +307,11 @@ ProofResult prove_whole_file(const Replay& replay, std::string_view text, const 
   return proof;
 }
 
+std::vector<bool> own_yarn_border(const Replay& replay, const ProofResult& proof) {
+  std::vector<bool> border = loops_of_the_piece(replay, proof, true);
+  std::vector<bool> piece = loops_of_the_piece(replay, proof, false);
+  for (std::size_t l = 0; l < border.size(); ++l) border[l] = border[l] && !piece[l];
+  return border;
+}
+
 }  // namespace skein::knitout

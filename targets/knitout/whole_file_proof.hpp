@@ -15,6 +15,7 @@
 #pragma once
 
 #include <string_view>
+#include <vector>
 
 #include "driver/pipeline.hpp"
 #include "knitout/fabric_proof.hpp"
@@ -22,5 +23,9 @@
 namespace skein::knitout {
 
 ProofResult prove_whole_file(const Replay& replay, std::string_view text, const Compilation& input);
+
+// Per fabric loop, for a proven file: whether it is a piece's border in the piece's own yarn
+// (what its yarn makes before the piece's first stitch: it comes off the machine with it).
+std::vector<bool> own_yarn_border(const Replay& replay, const ProofResult& proof);
 
 }  // namespace skein::knitout
