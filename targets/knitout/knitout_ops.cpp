@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 
@@ -404,6 +405,40 @@ bool parse_op(std::string_view line, const Header& h, Op& op, std::string& error
   }
   op = Op{};
   return OpParser(t, h, op, error).parse();
+}
+
+bool parse_plain_stitch(std::string_view text, std::size_t pos, const Header& h, Op& op,
+                        std::size_t& next) {
+  constexpr std::size_t kLongest = 32;  // "tuck + f123456789 10\n" and more fit
+  const char* p = text.data() + pos;
+  const char* end = p + std::min(kLongest, text.size() - pos);
+  auto digits = [&](std::int32_t& value) {  // 1 to 9 digits
+    const char* first = p;
+    std::int32_t v = 0;
+    while (p < end && p - first < 9 && is_digit(*p)) v = v * 10 + (*p++ - '0');
+    value = v;
+    return p > first && p < end && !is_digit(*p);
+  };
+  if (end - p < 12 || !h.numbered || p[4] != ' ' || p[6] != ' ' || (p[5] != '+' && p[5] != '-'))
+    return false;
+  OpCode code = std::string_view(p, 4) == "knit"   ? OpCode::knit
+                : std::string_view(p, 4) == "tuck" ? OpCode::tuck
+                                                   : OpCode::pause;
+  if (code == OpCode::pause || (p[7] != 'f' && p[7] != 'b')) return false;
+  Direction dir = p[5] == '+' ? Direction::plus : Direction::minus;
+  Bed bed = p[7] == 'f' ? Bed::f : Bed::b;
+  p += 8;
+  std::int32_t needle = 0, carrier = 0;
+  if (!digits(needle) || *p++ != ' ' || !digits(carrier) || *p != '\n' || carrier < 1 ||
+      static_cast<std::size_t>(carrier) > h.carriers.size())
+    return false;
+  op = Op{};
+  op.code = code;
+  op.dir = dir;
+  op.a = {bed, needle};
+  op.carriers = CarrierMask{1} << (carrier - 1);
+  next = static_cast<std::size_t>(p + 1 - text.data());
+  return true;
 }
 
 std::string carrier_names(const Header& h, CarrierMask mask) {

@@ -99,11 +99,13 @@ Replay VirtualBed::run() {
   for (std::size_t skip = 1; skip < r_.header.first_op_line && pos < text_.size(); ++skip)
     pos = next_line(pos);
   for (line_ = r_.header.first_op_line; pos < text_.size(); ++line_) {
-    std::size_t next = next_line(pos);
+    std::size_t next = 0;
+    bool plain = parse_plain_stitch(text_, pos, r_.header, op, next);  // most lines: one scan
+    if (!plain) next = next_line(pos);
     std::string_view text = current_ = text_.substr(pos, next - pos - 1);
     if (next > text_.size()) text = last_line_ = std::string(text) + '\n';  // see parse_op
     pos = next;
-    if (!parse_op(text, r_.header, op, error)) {
+    if (!plain && !parse_op(text, r_.header, op, error)) {
       if (!error.empty()) fail(error);
       continue;
     }
