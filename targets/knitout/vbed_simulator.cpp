@@ -100,7 +100,7 @@ Replay VirtualBed::run() {
     pos = next_line(pos);
   for (line_ = r_.header.first_op_line; pos < text_.size(); ++line_) {
     std::size_t next = 0;
-    bool plain = parse_plain_stitch(text_, pos, r_.header, op, next);  // most lines: one scan
+    bool plain = parse_plain_op(text_, pos, r_.header, op, next);  // most lines: one scan
     if (!plain) next = next_line(pos);
     std::string_view text = current_ = text_.substr(pos, next - pos - 1);
     if (next > text_.size()) text = last_line_ = std::string(text) + '\n';  // see parse_op
