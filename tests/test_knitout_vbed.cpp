@@ -105,5 +105,47 @@ TEST(VbedRules, ShopSummaryCountsWhatTheFileDoes) {
       << summary;
 }
 
+// The v-bed reads the commonest lines in one scan (parse_plain_op) and every other line
+// with parse_op: where the scan reads a line it gives parse_op's operation, and it leaves
+// every line outside its narrow form to parse_op.
+TEST(VbedRules, ThePlainLineScanReadsItsLinesAsParseOpDoes) {
+  knitout::Header h;
+  h.carriers = {"1", "2", "3", "4", "5", "6", "7", "8", "9", "10"};
+  h.numbered = true;
+  auto same = [](const knitout::Op& a, const knitout::Op& b) {
+    return a.code == b.code && a.dir == b.dir && a.a == b.a && a.b == b.b &&
+           a.carriers == b.carriers && a.rack_quarters == b.rack_quarters;
+  };
+  for (std::string line : {"knit + f0 1", "tuck - b123456789 10", "knit - f007 03", "tuck + b5 2",
+                           "xfer f12 b12", "xfer b3 f0"}) {
+    std::string text = line + "\nknit + f1 1\n";
+    knitout::Op fast, slow;
+    std::size_t next = 0;
+    std::string error;
+    ASSERT_TRUE(knitout::parse_plain_op(text, 0, h, fast, next)) << line;
+    ASSERT_TRUE(knitout::parse_op(text.substr(0, line.size() + 1), h, slow, error)) << line;
+    EXPECT_TRUE(same(fast, slow)) << line;
+    EXPECT_EQ(next, line.size() + 1) << line;
+  }
+  for (std::string line :
+       {"knit + f0 11", "knit + f0 0",     "knit + f1234567890 1", "knit + fs3 1",
+        "knit + f-3 1", "knit  + f3 1",    "knit + f3 1 2",        "knit + f3 1 ; comment",
+        "knit + f3",    "split + f3 b3 1", "knit + f3 1\r",        "miss + f3 1",
+        "tuck x f3 1",  "knit + f3 +1",    "xfer f1 bs1",          "xfer f1 b1 2",
+        "xfer  f1 b1",  "xfer f1",         "xfer f-1 b1",          "rack 1"}) {
+    std::string text = line + "\n";
+    knitout::Op op;
+    std::size_t next = 0;
+    EXPECT_FALSE(knitout::parse_plain_op(text, 0, h, op, next)) << line;
+  }
+  std::string unterminated = "knit + f3 1";  // the last line without its '\n'
+  knitout::Op op;
+  std::size_t next = 0;
+  EXPECT_FALSE(knitout::parse_plain_op(unterminated, 0, h, op, next));
+  h.numbered = false;  // named carriers: looked up by parse_op (a transfer names none)
+  EXPECT_FALSE(knitout::parse_plain_op("knit + f3 1\n", 0, h, op, next));
+  EXPECT_TRUE(knitout::parse_plain_op("xfer f3 b3\n", 0, h, op, next));
+}
+
 }  // namespace
 }  // namespace skein

@@ -72,6 +72,19 @@ std::string without_line(const std::string& text, const std::string& line) {
   return text.substr(0, at) + text.substr(at + line.size() + 1);
 }
 
+// `text` with its first `from` made `to`.
+std::string edited(std::string text, const std::string& from, const std::string& to) {
+  std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return at == std::string::npos ? text : text.replace(at, from.size(), to);
+}
+
+// The proof of an edited file fails, saying `why`.
+void expect_not_proven(const knitout::ProofResult& proof, const std::string& why) {
+  EXPECT_FALSE(proof.proven);
+  EXPECT_NE(proof.summary.find(why), std::string::npos) << proof.summary;
+}
+
 std::string rib_swatch_on(const char* profile, Compilation& c) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
   c = compile_model("samples/rib-swatch/rib-swatch.obj");
@@ -116,26 +129,39 @@ TEST(KnitoutWholeFile, ABorderEditThatChangesTheFabricIsRefused) {
   std::string text = rib_swatch_on("swg091n2", c);
   ASSERT_TRUE(prove_lenient(text, c, p).proven);
   // A tuck made going the other way in the middle of its pass.
-  std::string flipped = text;
-  flipped.replace(flipped.find("tuck - f275 3"), 13, "tuck + f275 3");
-  knitout::ProofResult proof = prove_lenient(flipped, c, p);
-  EXPECT_FALSE(proof.proven);
-  EXPECT_NE(proof.summary.find("the border it is cast on is not whole: the loop of line 14 "
-                               "(carrier 3) is made going right in the middle of a pass going "
-                               "the other way"),
-            std::string::npos)
-      << proof.summary;
+  expect_not_proven(prove_lenient(edited(text, "tuck - f275 3", "tuck + f275 3"), c, p),
+                    "the border it is cast on is not whole: the loop of line 14 (carrier 3) is "
+                    "made going right in the middle of a pass going the other way");
   // One loop of the pass over the tucks left out: the first row hangs on a tuck there.
-  proof = prove_lenient(without_line(text, "knit - f270 3"), c, p);
-  EXPECT_FALSE(proof.proven);
-  EXPECT_NE(proof.summary.find("holding the cast-on is not made as"), std::string::npos)
-      << proof.summary;
+  expect_not_proven(prove_lenient(without_line(text, "knit - f270 3"), c, p),
+                    "holding the cast-on is not made as");
   // Two tucks of one pass swapped.
-  std::string swapped = text;
-  swapped.replace(swapped.find("tuck - f275 3\ntuck - f273 3"), 27, "tuck - f273 3\ntuck - f275 3");
-  proof = prove_lenient(swapped, c, p);
-  EXPECT_FALSE(proof.proven);
-  EXPECT_NE(proof.summary.find("out of its pass's order"), std::string::npos) << proof.summary;
+  expect_not_proven(
+      prove_lenient(edited(text, "tuck - f275 3\ntuck - f273 3", "tuck - f273 3\ntuck - f275 3"), c,
+                    p),
+      "out of its pass's order");
+}
+
+// A tube 8 round has a border of tuck passes two loops long. Edits there leave passes of one
+// loop, which show no step of their own: the border's other passes say where they go on, and a
+// loop made against the yarn on both sides is wrapped round its needle.
+TEST(KnitoutWholeFile, ATuckPassOfOneLoopOutOfPlaceIsRefusedInANarrowPiece) {
+  testing::EmittedLetters e =
+      testing::emit_letters(testing::kPartedTube, "parted tube", "swg091n2");
+  ASSERT_TRUE(prove_lenient(e.text, e.c, e.p).proven);
+  // b269 after f266: where the pass of b273 would have gone on.
+  expect_not_proven(
+      prove_lenient(edited(e.text, "tuck - b269 3\ntuck + f266 3", "tuck + f266 3\ntuck - b269 3"),
+                    e.c, e.p),
+      "the border it is cast on is not whole: the loop of line 14 (carrier 3) is "
+      "made going left where an earlier pass its way left off, after the yarn went "
+      "elsewhere");
+  // The middle tuck of a pass three tucks long made going the other way.
+  e = testing::emit_letters(testing::kShapedShortRowTube, "short rows", "swg091n2");
+  ASSERT_TRUE(prove_lenient(e.text, e.c, e.p).proven);
+  expect_not_proven(prove_lenient(edited(e.text, "tuck + f268 3", "tuck - f268 3"), e.c, e.p),
+                    "(carrier 3) is made going left, and the yarn comes to it and goes on from "
+                    "it going right: it is wrapped in its own yarn");
 }
 
 }  // namespace

@@ -60,8 +60,9 @@ struct StitchGraph {
 
 class GraphBuilder {
  public:
-  explicit GraphBuilder(const Fabric& f)
+  GraphBuilder(const Fabric& f, const std::vector<bool>* proven_border)
       : f_(f),
+        proven_border_(proven_border),
         gone_(unravelling(f)),
         takes_(f.loops.size()),
         stitch_of_(f.loops.size(), kNone),
@@ -102,7 +103,8 @@ class GraphBuilder {
     return previous;
   }
 
-  // The tucks through nothing a yarn piece starts with: its cast-on border.
+  // The tucks through nothing a yarn piece starts with, and the loops a proof found to be its
+  // border: its cast-on border.
   void mark_borders() {
     border_.assign(f_.loops.size(), false);
     std::vector<bool> started;
@@ -110,10 +112,10 @@ class GraphBuilder {
       if (gone_[l]) continue;
       std::uint32_t piece = f_.loops[l].piece;
       if (piece >= started.size()) started.resize(piece + 1, false);
-      if (!started[piece] && takes_[l].empty() && f_.loops[l].made_by == OpCode::tuck)
-        border_[l] = true;
-      else
-        started[piece] = true;
+      bool leading_tuck =
+          !started[piece] && takes_[l].empty() && f_.loops[l].made_by == OpCode::tuck;
+      border_[l] = leading_tuck || (proven_border_ && (*proven_border_)[l]);
+      started[piece] = started[piece] || !border_[l];
       std::erase_if(takes_[l], [&](LoopId p) { return border_[p]; });
     }
   }
@@ -162,6 +164,7 @@ class GraphBuilder {
   }
 
   const Fabric& f_;
+  const std::vector<bool>* proven_border_;
   std::vector<bool> gone_, border_;
   std::vector<std::vector<LoopId>> takes_;
   std::vector<std::uint32_t> stitch_of_;
@@ -250,8 +253,9 @@ std::vector<bool> pass_on_front(const Fabric& f) {
 
 class StWriter {
  public:
-  StWriter(const Fabric& f, StitchGraph graph, std::ostream& out)
+  StWriter(const Fabric& f, StitchGraph graph, std::ostream& out, std::vector<bool>* purls)
       : f_(f),
+        purls_(purls),
         stitches_(std::move(graph.stitches)),
         stitch_of_(std::move(graph.stitch_of)),
         out_(out),
@@ -323,6 +327,7 @@ class StWriter {
     const FabricLoop& l = f_.loops[s.loop];
     bool plus = l.dir == Direction::plus;
     bool round_way = tube_[l.piece] ? plus == pass_front_[s.loop] : plus;
+    if (purls_) purls_->push_back(l.front != (tube_[l.piece] ? pass_front_[s.loop] : true));
     fmt::format_to(std::back_inserter(buffer_), "{} {} {} {} {} {} {} {} {} {}\n", l.piece, type,
                    round_way ? 'a' : 'c', in[0], in[1], outs[0], outs[1], l.needle, height_[s.loop],
                    l.front ? 0 : 1);
@@ -334,6 +339,7 @@ class StWriter {
   }
 
   const Fabric& f_;
+  std::vector<bool>* purls_;  // per line: its loop is made on the other bed than its side's
   std::vector<Stitch> stitches_;
   std::vector<std::uint32_t> stitch_of_;
   std::ostream& out_;
@@ -345,8 +351,9 @@ class StWriter {
 
 }  // namespace
 
-void write_fabric_stitch_graph(const Replay& replay, const std::string& file, std::ostream& out) {
-  StWriter writer(replay.fabric, GraphBuilder(replay.fabric).build(), out);
+void write_fabric_stitch_graph(const Replay& replay, const std::string& file, std::ostream& out,
+                               const std::vector<bool>* border, std::vector<bool>* purls) {
+  StWriter writer(replay.fabric, GraphBuilder(replay.fabric, border).build(), out, purls);
   if (writer.lines() == 0)
     throw Error(
         fmt::format("{}: nothing of the fabric stays (every loop unravels or holds "

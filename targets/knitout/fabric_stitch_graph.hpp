@@ -23,12 +23,21 @@
 #pragma once
 
 #include <iosfwd>
+#include <vector>
 
 #include "knitout/vbed_simulator.hpp"
 
 namespace skein::knitout {
 
+// `border`, when given (per loop), marks loops a proof found to be a piece's cast-on border in
+// its own yarn (tucks, and a pass over them that brings the yarn round to where the first row
+// starts): like the leading tucks, not written; the loops knit through them are the cast-on.
 // Throws Error when nothing of the fabric stays (every loop unravels).
-void write_fabric_stitch_graph(const Replay& replay, const std::string& file, std::ostream& out);
+// `purls`, when given, receives per line whether its loop is a purl seen from the right side
+// (made on the back bed of a sheet; on a tube, on the bed other than that of its half's pass),
+// which the stitch graph's letters do not say.
+void write_fabric_stitch_graph(const Replay& replay, const std::string& file, std::ostream& out,
+                               const std::vector<bool>* border = nullptr,
+                               std::vector<bool>* purls = nullptr);
 
 }  // namespace skein::knitout

@@ -14,11 +14,14 @@
 
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 #include "knitout/vbed_simulator.hpp"
 
 namespace skein::knitout {
 
-void write_fabric_stitch_mesh(const Replay& replay, const std::string& file, std::ostream& out);
+// `border` as for write_fabric_stitch_graph.
+void write_fabric_stitch_mesh(const Replay& replay, const std::string& file, std::ostream& out,
+                              const std::vector<bool>* border = nullptr);
 
 }  // namespace skein::knitout

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 
@@ -404,6 +405,71 @@ bool parse_op(std::string_view line, const Header& h, Op& op, std::string& error
   }
   op = Op{};
   return OpParser(t, h, op, error).parse();
+}
+
+namespace {
+
+// Reads the plain lines parse_plain_op takes, each word in place; every test fails safe (false)
+// at the end of the window it may look in.
+class PlainScan {
+ public:
+  PlainScan(std::string_view text, std::size_t pos)
+      : p_(text.data() + pos), end_(p_ + std::min<std::size_t>(32, text.size() - pos)) {}
+  bool word(std::string_view w) {  // `w` and one space
+    if (static_cast<std::size_t>(end_ - p_) <= w.size() || std::string_view(p_, w.size()) != w ||
+        p_[w.size()] != ' ')
+      return false;
+    p_ += w.size() + 1;
+    return true;
+  }
+  bool number(std::int32_t& value) {  // 1 to 9 digits
+    const char* first = p_;
+    std::int32_t v = 0;
+    while (p_ < end_ && p_ - first < 9 && is_digit(*p_)) v = v * 10 + (*p_++ - '0');
+    value = v;
+    return p_ > first && p_ < end_ && !is_digit(*p_);
+  }
+  bool needle(Needle& n) {  // on f or b, not a slider
+    if (p_ >= end_ || (*p_ != 'f' && *p_ != 'b')) return false;
+    n.bed = *p_++ == 'f' ? Bed::f : Bed::b;
+    return number(n.index);
+  }
+  bool direction(Direction& d) {
+    if (end_ - p_ < 2 || (*p_ != '+' && *p_ != '-') || p_[1] != ' ') return false;
+    d = *p_ == '+' ? Direction::plus : Direction::minus;
+    p_ += 2;
+    return true;
+  }
+  bool then(char c) { return p_ < end_ && *p_++ == c; }
+  const char* at() const { return p_; }
+
+ private:
+  const char* p_;
+  const char* end_;
+};
+
+}  // namespace
+
+bool parse_plain_op(std::string_view text, std::size_t pos, const Header& h, Op& op,
+                    std::size_t& next) {
+  PlainScan scan(text, pos);
+  Op read;
+  if (scan.word("xfer")) {
+    if (!scan.needle(read.a) || !scan.then(' ') || !scan.needle(read.b) || !scan.then('\n'))
+      return false;
+    read.code = OpCode::xfer;
+  } else {
+    read.code = scan.word("knit") ? OpCode::knit : scan.word("tuck") ? OpCode::tuck : OpCode::pause;
+    std::int32_t carrier = 0;
+    if (read.code == OpCode::pause || !h.numbered || !scan.direction(read.dir) ||
+        !scan.needle(read.a) || !scan.then(' ') || !scan.number(carrier) || !scan.then('\n') ||
+        carrier < 1 || static_cast<std::size_t>(carrier) > h.carriers.size())
+      return false;
+    read.carriers = CarrierMask{1} << (carrier - 1);
+  }
+  op = read;
+  next = static_cast<std::size_t>(scan.at() - text.data());
+  return true;
 }
 
 std::string carrier_names(const Header& h, CarrierMask mask) {

@@ -79,6 +79,13 @@ Header parse_header(const std::vector<std::string_view>& lines, const std::strin
 // '\n' in memory (the one that ends it in the file), or end with one.
 bool parse_op(std::string_view line, const Header& header, Op& op, std::string& error);
 
+// The commonest operation lines, "knit D N C" or "tuck D N C" with one carrier of a numbered
+// ;;Carriers: header and "xfer N N2", on needles of f and b, single spaces, no comment, read in
+// one scan from `pos` of `text` that also finds where the line ends (`next`: past its '\n').
+// False, with nothing set, for any other line: parse_op reads it (the same Op for these lines).
+bool parse_plain_op(std::string_view text, std::size_t pos, const Header& header, Op& op,
+                    std::size_t& next);
+
 // The carriers of a mask as they are written ("1 3").
 std::string carrier_names(const Header& header, CarrierMask mask);
 

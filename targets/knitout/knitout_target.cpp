@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <optional>
 #include <sstream>
+#include <vector>
 
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
@@ -41,6 +43,26 @@ std::string findings_text(const knitout::Replay& replay, const knitout::MachineP
   return out;
 }
 
+// Writes the fabric to `path` (a stitch mesh for .obj, else a stitch graph), made whole before
+// the file is touched: a refusal writes none. Of a proven file, the piece's border in its own
+// yarn is left out as its cast-on's border (the model's cast-on is knit through it).
+std::string write_fabric(const knitout::Replay& replay, const std::string& file,
+                         const std::string& path,
+                         const std::optional<knitout::ProofResult>& proof) {
+  std::vector<bool> border;
+  if (proof && proof->proven) border = knitout::own_yarn_border(replay, *proof);
+  const std::vector<bool>* given = border.empty() ? nullptr : &border;
+  bool as_mesh = path.ends_with(".obj");
+  std::ostringstream fabric;
+  if (as_mesh)
+    knitout::write_fabric_stitch_mesh(replay, file, fabric, given);
+  else
+    knitout::write_fabric_stitch_graph(replay, file, fabric, given);
+  write_file_atomically(path, [&](std::ostream& out) { out << fabric.view(); });
+  return fmt::format("\n  the fabric written as a stitch {} in {} (skein check reads it)",
+                     as_mesh ? "mesh" : "graph", path);
+}
+
 class VbedSimulator : public Simulator {
  public:
   std::string name() const override { return "vbed"; }
@@ -70,31 +92,25 @@ class VbedSimulator : public Simulator {
       });
       shop += fmt::format("\n  the fabric drawn in {}", options.picture);
     }
-    if (!options.fabric.empty()) {
-      std::ostringstream fabric;  // made whole before the file is touched: a refusal writes none
-      if (as_mesh)
-        knitout::write_fabric_stitch_mesh(replay, file, fabric);
-      else
-        knitout::write_fabric_stitch_graph(replay, file, fabric);
-      write_file_atomically(options.fabric, [&](std::ostream& out) { out << fabric.view(); });
-      shop += fmt::format("\n  the fabric written as a stitch {} in {} (skein check reads it)",
-                          as_mesh ? "mesh" : "graph", options.fabric);
+    std::optional<knitout::ProofResult> proof;
+    if (against) {
+      if (!against->knittability.knittable)
+        throw Error(
+            fmt::format("{} is not knittable, so no knitout of it can be proven", against->input));
+      proof = knitout::prove_whole_file(replay, text, *against);
     }
+    if (!options.fabric.empty()) shop += write_fabric(replay, file, options.fabric, proof);
     std::string valid =
         fmt::format("{}: every operation is valid on {}{}", file, profile.name, chosen.how);
     VerifyReport report;
-    if (!against) {
+    if (!proof) {
       report.summary = fmt::format("{}\n{}{}\n  give --against INPUT to prove the fabric", valid,
                                    findings_text(replay, profile), shop);
       return report;
     }
-    if (!against->knittability.knittable)
-      throw Error(
-          fmt::format("{} is not knittable, so no knitout of it can be proven", against->input));
-    knitout::ProofResult proof = knitout::prove_whole_file(replay, text, *against);
-    report.proven = proof.proven;
+    report.proven = proof->proven;
     report.summary =
-        fmt::format("{}; {}\n{}{}", valid, proof.summary, findings_text(replay, profile), shop);
+        fmt::format("{}; {}\n{}{}", valid, proof->summary, findings_text(replay, profile), shop);
     return report;
   }
 

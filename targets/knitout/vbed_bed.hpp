@@ -12,6 +12,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "common/error.hpp"
@@ -27,6 +28,28 @@ constexpr std::uint32_t kMaxStack = 15;  // the most loops a profile may allow o
 struct Stack {
   std::uint8_t size = 0;
   std::array<LoopId, kMaxStack> loop;
+};
+
+// Every needle's stack of one bed, all empty at first, in memory the system hands out zeroed a
+// page at a time as it is first touched: the v-bed keeps room for thousands of needles a file
+// may use (five beds' widths when the back end places the design), a file uses a few hundred,
+// and zeroing them all was a tenth of a replay (page faults in a virtual machine).
+class Needles {
+ public:
+  Needles() = default;
+  explicit Needles(std::size_t count);
+  Needles(const Needles&) = delete;
+  Needles& operator=(const Needles&) = delete;
+  Needles(Needles&& other) noexcept { *this = std::move(other); }
+  Needles& operator=(Needles&& other) noexcept;
+  ~Needles() { release(); }
+  Stack& operator[](std::size_t i) { return stacks_[i]; }
+  const Stack& operator[](std::size_t i) const { return stacks_[i]; }
+
+ private:
+  void release();
+  Stack* stacks_ = nullptr;
+  std::size_t count_ = 0;
 };
 
 enum class CarrierState : std::uint8_t { out, pending, in };
@@ -147,7 +170,7 @@ class VirtualBed {
   std::string_view current_, last_op_;  // the line being replayed, the last operation's
   std::string last_line_;               // the last line with a '\n', if the file has none
   Replay r_;
-  std::array<std::vector<Stack>, 4> beds_;
+  std::array<Needles, 4> beds_;
   std::vector<Carrier> carriers_;
   CarrierMask hook_ = 0;
   CarrierMask carriers_in_ = 0;            // the carriers in state `in` (which have made a stitch)

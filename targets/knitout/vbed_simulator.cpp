@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <limits>
+#include <new>
+#include <utility>
 
 #ifdef __linux__
 #include <sys/mman.h>
@@ -35,6 +37,36 @@ void advise_huge_pages(std::vector<T>& v) {
 
 }  // namespace
 
+// Linux maps anonymous memory as zero pages, given out on first touch; elsewhere calloc zeroes.
+Needles::Needles(std::size_t count) : count_(count) {
+  std::size_t bytes = count * sizeof(Stack);
+#ifdef __linux__
+  void* p = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (p == MAP_FAILED) throw std::bad_alloc();
+#else
+  void* p = std::calloc(count, sizeof(Stack));
+  if (!p) throw std::bad_alloc();
+#endif
+  stacks_ = static_cast<Stack*>(p);
+}
+
+Needles& Needles::operator=(Needles&& other) noexcept {
+  release();
+  stacks_ = std::exchange(other.stacks_, nullptr);
+  count_ = std::exchange(other.count_, 0);
+  return *this;
+}
+
+void Needles::release() {
+  if (!stacks_) return;
+#ifdef __linux__
+  munmap(stacks_, count_ * sizeof(Stack));
+#else
+  std::free(stacks_);
+#endif
+  stacks_ = nullptr;
+}
+
 std::size_t VirtualBed::next_line(std::size_t pos) const {
   const void* end = std::memchr(text_.data() + pos, '\n', text_.size() - pos);
   return end ? static_cast<std::size_t>(static_cast<const char*>(end) - text_.data()) + 1
@@ -50,7 +82,7 @@ Replay VirtualBed::run() {
   bool exact = keep_ && severity(Rule::needle_off_bed) == Severity::error;
   lo_ = exact ? 0 : -2 * n_;
   hi_ = exact ? n_ : 3 * n_;
-  for (auto& bed : beds_) bed.assign(static_cast<std::size_t>(hi_ - lo_), Stack{});
+  for (auto& bed : beds_) bed = Needles(static_cast<std::size_t>(hi_ - lo_));
   carriers_.assign(r_.header.carriers.size(), Carrier{});
   r_.fabric.by_carrier.assign(r_.header.carriers.size(), {});
   r_.fabric.loops.reserve(line_count_);  // at most one loop a line: no regrowth
@@ -67,11 +99,13 @@ Replay VirtualBed::run() {
   for (std::size_t skip = 1; skip < r_.header.first_op_line && pos < text_.size(); ++skip)
     pos = next_line(pos);
   for (line_ = r_.header.first_op_line; pos < text_.size(); ++line_) {
-    std::size_t next = next_line(pos);
+    std::size_t next = 0;
+    bool plain = parse_plain_op(text_, pos, r_.header, op, next);  // most lines: one scan
+    if (!plain) next = next_line(pos);
     std::string_view text = current_ = text_.substr(pos, next - pos - 1);
     if (next > text_.size()) text = last_line_ = std::string(text) + '\n';  // see parse_op
     pos = next;
-    if (!parse_op(text, r_.header, op, error)) {
+    if (!plain && !parse_op(text, r_.header, op, error)) {
       if (!error.empty()) fail(error);
       continue;
     }
@@ -351,10 +385,11 @@ void VirtualBed::finish() {
       });
   for (const Finding& f : found_)
     if (f.count) r_.findings.push_back(f);
-  for (const auto& bed : beds_)
-    for (const Stack& s : bed) r_.stats.loops_left += s.size;
   ShopStats& s = r_.stats;
   if (s.max_needle < s.min_needle) s.min_needle = s.max_needle = 0;
+  for (const auto& bed : beds_)  // only the needles used hold loops (untouched pages stay so)
+    for (std::int32_t n = s.min_needle; n <= s.max_needle; ++n)
+      s.loops_left += bed[static_cast<std::size_t>(n - lo_)].size;
   s.seconds = static_cast<double>(s.stitch_passes + s.transfer_passes) * p_.seconds_per_pass +
               static_cast<double>(s.needles_crossed) * p_.seconds_per_needle +
               static_cast<double>(s.racks) * p_.seconds_per_rack;

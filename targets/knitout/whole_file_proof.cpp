@@ -50,10 +50,19 @@ std::string passes_broken(const Replay& r, const std::vector<LoopId>& yarn, std:
     return fmt::format("{} is made going {} {}", describe(r, yarn[i]),
                        loop(i).dir == Direction::plus ? "right" : "left", how);
   };
-  // Per bed and direction: where the last pass that way ended, and its step (0: one loop).
-  std::array<std::pair<std::size_t, std::int32_t>, 4> ended;
-  ended.fill({kNoEnd, 0});
-  auto key = [&](std::size_t i) { return loop(i).front * 2 + (loop(i).dir == Direction::plus); };
+  // Per bed, direction and kind of loop (tucks, knits): the steps of its passes longer than one
+  // loop, and where the last pass that way ended. (A pass of one loop shows no step: the
+  // border's others of its kind on its bed and way say how far on it would have gone on.)
+  auto key = [&](std::size_t i) {
+    const FabricLoop& l = loop(i);
+    return (l.made_by == OpCode::tuck) * 4 + l.front * 2 + (l.dir == Direction::plus);
+  };
+  std::array<std::vector<std::int32_t>, 8> steps;
+  for (std::size_t i = first + 1; i <= last; ++i)
+    if (std::int32_t step = gap(i - 1, i, loop(i).dir); same_pass(i - 1, i) && step > 0)
+      steps[key(i)].push_back(step);
+  std::array<std::size_t, 8> ended;
+  ended.fill(kNoEnd);
   for (std::size_t i = first; i <= last; ++i) {
     Direction d = loop(i).dir;
     bool begins = i == first || !same_pass(i - 1, i), ends = i == last || !same_pass(i, i + 1);
@@ -69,18 +78,52 @@ std::string passes_broken(const Replay& r, const std::vector<LoopId>& yarn, std:
       if (s > 0 && gap(i - 1, i, other) == s && gap(i, i + 1, other) == s)
         return broken(i, "in the middle of a pass going the other way");
     }
-    auto [end, end_step] = ended[key(i)];
-    if (begins && end != kNoEnd && end_step > 0 && gap(end, i, d) == end_step)
+    const std::vector<std::int32_t>& its_steps = steps[key(i)];
+    if (std::size_t end = ended[key(i)];
+        begins && end != kNoEnd &&
+        std::find(its_steps.begin(), its_steps.end(), gap(end, i, d)) != its_steps.end())
       return broken(i, "where an earlier pass its way left off, after the yarn went elsewhere");
-    if (ends) {
-      std::size_t start = i;
-      while (start > first && same_pass(start - 1, i)) --start;
-      ended[key(i)] = {i, start < i ? gap(i - 1, i, d) : 0};
-    }
+    if (ends) ended[key(i)] = i;
   }
   if (last > first && !same_pass(first, first + 1) && gap(first, first + 1, loop(first).dir) <= 0)
     return fmt::format("{} begins the yarn going {}, away from its pass", describe(r, yarn[first]),
                        loop(first).dir == Direction::plus ? "right" : "left");
+  return "";
+}
+
+// Which way the yarn goes from loop a to loop b along the bed (none: across to the same needle
+// of the other bed, which either way reaches).
+Direction travel(const FabricLoop& a, const FabricLoop& b) {
+  return b.needle > a.needle   ? Direction::plus
+         : b.needle < a.needle ? Direction::minus
+                               : Direction::none;
+}
+bool goes(Direction travel, Direction made) {
+  return travel == Direction::none || travel == made;
+}
+
+// A loop of `yarn` between `first` and `last` made going one way while the yarn comes to it
+// along its bed and goes on along its bed going the other: the carriage took the yarn past its
+// needle, turned, made the loop and turned again, so the yarn wraps round the needle (a twisted
+// loop, which a border laid in passes never makes: a pass's loops go its way, and a turn's loop
+// has the next pass's yarn going on its way). Yarn to and from the other bed crosses the gap
+// between the beds instead (a narrow tube's border tucks one loop on a bed at a time). Else "".
+// (passes_broken sees loops out of order in a pass; this, a loop made the wrong way in a pass
+// too short to show its step.)
+std::string yarn_wraps_a_needle(const Replay& r, const std::vector<LoopId>& yarn, std::size_t first,
+                                std::size_t last) {
+  auto loop = [&](std::size_t i) -> const FabricLoop& { return r.fabric.loops[yarn[i]]; };
+  for (std::size_t i = first + 1; i < last; ++i) {
+    const FabricLoop& l = loop(i);
+    Direction from = travel(loop(i - 1), l), on = travel(l, loop(i + 1));
+    bool along_its_bed = loop(i - 1).front == l.front && loop(i + 1).front == l.front;
+    if (along_its_bed && !goes(from, l.dir) && !goes(on, l.dir))
+      return fmt::format(
+          "{} is made going {}, and the yarn comes to it and goes on from it going {}: it is "
+          "wrapped in its own yarn",
+          describe(r, yarn[i]), l.dir == Direction::plus ? "right" : "left",
+          on == Direction::plus ? "right" : "left");
+  }
   return "";
 }
 
@@ -173,7 +216,8 @@ class BorderCheck {
         return fmt::format("{} of the border holds {} loops, not one", describe(r_, yarn[i]),
                            l.children);
     }
-    return passes_broken(r_, yarn, first, run.start);
+    if (std::string why = passes_broken(r_, yarn, first, run.start); !why.empty()) return why;
+    return yarn_wraps_a_needle(r_, yarn, first, run.start);
   }
 
   std::string draw_thread_broken(const std::vector<LoopId>& holders) const {
@@ -261,6 +305,13 @@ ProofResult prove_whole_file(const Replay& replay, std::string_view text, const 
                                      "free: {}",
                                      c.input, held);
   return proof;
+}
+
+std::vector<bool> own_yarn_border(const Replay& replay, const ProofResult& proof) {
+  std::vector<bool> border = loops_of_the_piece(replay, proof, true);
+  std::vector<bool> piece = loops_of_the_piece(replay, proof, false);
+  for (std::size_t l = 0; l < border.size(); ++l) border[l] = border[l] && !piece[l];
+  return border;
 }
 
 }  // namespace skein::knitout

@@ -10,10 +10,12 @@
 // alike, every loop of a border in the piece's own yarn is a tuck through nothing or a loop
 // through one loop below the piece and holds exactly one loop, and that border's yarn runs in
 // passes (each the same step along, none taking up where an earlier one left off, no loop made
-// against its pass). Every loop of a draw thread holds one cast-on loop.
+// against its pass, none wrapped in its yarn: made going one way while the yarn comes to it and
+// goes on from it going the other). Every loop of a draw thread holds one cast-on loop.
 #pragma once
 
 #include <string_view>
+#include <vector>
 
 #include "driver/pipeline.hpp"
 #include "knitout/fabric_proof.hpp"
@@ -21,5 +23,9 @@
 namespace skein::knitout {
 
 ProofResult prove_whole_file(const Replay& replay, std::string_view text, const Compilation& input);
+
+// Per fabric loop, for a proven file: whether it is a piece's border in the piece's own yarn
+// (what its yarn makes before the piece's first stitch: it comes off the machine with it).
+std::vector<bool> own_yarn_border(const Replay& replay, const ProofResult& proof);
 
 }  // namespace skein::knitout
