@@ -10,9 +10,9 @@ namespace skein::cli {
 namespace {
 
 constexpr const char* kExitCodes =
-    "Exit codes: 0 done (knittable, written, proven); 1 not knittable or not proven; 2 bad input\n"
-    "or usage; 3 valid input that the target cannot do (yet, or on this machine); 4 internal\n"
-    "error.\n";
+    "Exit codes: 0 done (knittable, written, proven; verify without --against: replays as\n"
+    "written); 1 not knittable or not proven; 2 bad input or usage; 3 valid input that the\n"
+    "target cannot do (yet, or on this machine); 4 internal error.\n";
 
 // Each command's examples; the overview shows the first of a few.
 const std::map<std::string, std::string>& examples() {

@@ -252,9 +252,10 @@ TEST_F(Cli, EachCommandsHelpHasItsOwnExamplesNotTheTargetList) {
 TEST_F(Cli, HelpListsTargetsAndSimulatorsFromTheRegistry) {
   CliRun r = skein("--help");
   EXPECT_EQ(r.exit_code, 0);
-  EXPECT_NE(r.out.find("Exit codes: 0 done (knittable, written, proven); 1 not knittable or not "
-                       "proven; 2 bad input\nor usage; 3 valid input that the target cannot do "
-                       "(yet, or on this machine); 4 internal\nerror.\n"),
+  EXPECT_NE(r.out.find("Exit codes: 0 done (knittable, written, proven; verify without --against: "
+                       "replays as\nwritten); 1 not knittable or not proven; 2 bad input or "
+                       "usage; 3 valid input that the\ntarget cannot do (yet, or on this "
+                       "machine); 4 internal error.\n"),
             std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("schedule "), std::string::npos) << r.out;

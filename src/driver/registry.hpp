@@ -52,6 +52,8 @@ class Target {
 struct VerifyReport {
   bool proven = false;
   std::string summary;  // what was replayed and checked, or the first failure
+  // Without a model: every step replayed as written (all that can be checked then).
+  bool valid = false;
 };
 
 class Simulator {

@@ -196,9 +196,11 @@ VerifyReport verify_pattern(std::string_view text, const std::string& file,
   Replay r = replay(read_pattern(text, file), file);
   if (!r.ok) return {false, r.failure};
   if (!against)
-    return {false, fmt::format("{}: {}, {} stitches knitted; give --against INPUT to compare "
-                               "them with the model",
-                               file, work_done(r), r.fabric.size())};
+    return {false,
+            fmt::format("{}: {}, {} stitches knitted; give --against INPUT to compare "
+                        "them with the model",
+                        file, work_done(r), r.fabric.size()),
+            true};
   std::optional<Difference> straight = first_difference(r.fabric, *against, false);
   if (!straight) return proven(r, file, *against, false);
   // Only rounds are written mirrored (when the model's run left to right): a flat pattern that

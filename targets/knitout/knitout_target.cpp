@@ -106,6 +106,7 @@ class VbedSimulator : public Simulator {
     if (!proof) {
       report.summary = fmt::format("{}\n{}{}\n  give --against INPUT to prove the fabric", valid,
                                    findings_text(replay, profile), shop);
+      report.valid = true;
       return report;
     }
     report.proven = proof->proven;

