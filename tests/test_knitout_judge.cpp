@@ -32,5 +32,25 @@ TEST(KnitoutJudge, AWrongProgramMakesAFileTheProofRejects) {
   }
 }
 
+// In a tube the half a st belongs to comes from its bed (a purl's is the other one): a knit of
+// the front half made on the back bed instead (moved there, knit, moved back) is a purl seen
+// from the right side, which the proof finds where the round's halves break.
+TEST(KnitoutJudge, AKnitMadeOnTheOtherBedOfATubeIsRefused) {
+  std::filesystem::current_path(SKEIN_SOURCE_DIR);
+  Compilation c = compile_model("samples/auto-shift-path/tube.obj");
+  knitout::MachineProfile p = testing::shipped_profile("generic");
+  std::string text = testing::emit_knitout_text(c, p);
+  ASSERT_TRUE(testing::replay_and_prove(text, c, p).proven);
+  std::size_t at = text.find("knit + f502 1\n");
+  for (int round = 0; round < 4; ++round) at = text.find("knit + f502 1\n", at + 1);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 14, "xfer f502 b502\nknit - b502 1\nxfer b502 f502\n");
+  knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
+  EXPECT_FALSE(proof.proven);
+  EXPECT_NE(proof.summary.find("made on the other bed (a purl seen from the right side)"),
+            std::string::npos)
+      << proof.summary;
+}
+
 }  // namespace
 }  // namespace skein

@@ -57,6 +57,7 @@ class Matcher {
   void begin_piece(const std::vector<StitchId>& order) {
     order_ = &order;
     tube_ = piece_is_tube(g_, order);
+    half_row_ = kNoRow;
   }
   bool tube() const { return tube_; }
   const std::vector<LoopId>& wraps() const { return wraps_; }
@@ -67,6 +68,7 @@ class Matcher {
   bool match(std::size_t carrier, std::size_t start, std::string& why, std::size_t& reached,
              std::size_t& end) {
     ++try_;
+    half_row_ = kNoRow;
     wraps_.clear();
     turners_.clear();
     last_guess_ = kNoLoop;
@@ -95,6 +97,7 @@ class Matcher {
       if (previous_bo != kNoLoop && t != StitchType::bo && !chain_let_go(s, previous_bo, why))
         return false;
       if (!stitch_matches(s, t, &yarn[pos], previous_bo, why)) return false;
+      if (!stays_on_its_half(s, t, yarn[pos], why)) return false;
       for (std::uint32_t i = 0; i < n; ++i) stamp_[yarn[pos + i]] = try_;
       previous_bo = t == StitchType::bo ? yarn[pos] : kNoLoop;
       pos += n;
@@ -330,6 +333,28 @@ class Matcher {
     return true;
   }
 
+  // A round of a tube goes once along each half: its plain sts are on one half, then on the
+  // other (then back on the first, where it began partway along it). A knit made on the other
+  // bed (a purl seen from the right side, and the reverse) would break in with a third change.
+  bool stays_on_its_half(StitchId s, StitchType t, LoopId first, std::string& why) {
+    if (!tube_ || (t != StitchType::k && t != StitchType::p)) return true;
+    std::uint32_t row = g_.row[s];
+    bool back = back_half(t, first);
+    if (row != half_row_) {
+      half_row_ = row;
+      half_changes_ = 0;
+    } else if (back != half_back_ && g_.row_shape[row] == RowShape::closed && ++half_changes_ > 2) {
+      why = fmt::format(
+          "{} is a {} on the {} half of its round, between sts of the {} half: {} is "
+          "made on the other bed (a {} seen from the right side)",
+          g_.describe(s), info(t).name, back ? "back" : "front", back ? "front" : "back",
+          where(first), t == StitchType::k ? "purl" : "knit");
+      return false;
+    }
+    half_back_ = back;
+    return true;
+  }
+
   // Whether the st's half of a tube is the back: the bed it is made on, the other for a purl.
   bool back_half(StitchType t, LoopId first) const {
     return tube_ && f_.loops[first].front == is_purl(t);
@@ -417,6 +442,10 @@ class Matcher {
   const KnitGraph& g_;
   const std::vector<StitchId>* order_ = nullptr;  // the piece's sts in yarn order
   bool tube_ = false;
+  static constexpr std::uint32_t kNoRow = 0xffffffffu;
+  std::uint32_t half_row_ = kNoRow;  // the row of the last plain st, its half, and the changes
+  bool half_back_ = false;           // of half along that row so far
+  std::uint32_t half_changes_ = 0;
   std::vector<LoopId> loop_of_;  // per knit graph loop: its fabric loop
   static constexpr std::uint32_t kNoKept = 0xffffffffu;
   std::vector<std::uint32_t> kept_;        // per knit graph loop: the loop a tuck kept under it
