@@ -99,6 +99,19 @@ TEST_F(HandWebPage, NamesEachStitchByItsRowAndPlaceThere) {
   EXPECT_EQ(text.substr(begin[first], end[first] - begin[first]), "K to 2 sts before m");
 }
 
+// A piece the pattern writes "Work as Sleeve 1." shows each of its rows as that piece's row
+// it works again, and says which line told it so.
+TEST_F(HandWebPage, APieceWorkedAsAnotherShowsThatPiecesRows) {
+  Compilation sweater = compile_model(SKEIN_SOURCE_DIR "/samples/sweater/sweater.yaml");
+  std::string page = emit(registry_, "hand-web", sweater);
+  std::string rnd_5 =
+      "\"l\":\"Rnd 5\",\"t\":\"Rnd 5: [K2, p2] 3 times, [k3, p2, k2, p2, k2, p2] 3 "
+      "times, k1.\"";
+  EXPECT_NE(page.find("{\"h\":\"Sleeve 1 (yarn 3)\"," + rnd_5 + ",\"s\":\"\""), std::string::npos);
+  EXPECT_NE(page.find("{\"h\":\"Sleeve 2 (yarn 2)\"," + rnd_5 + ",\"s\":\"Work as Sleeve 1.\""),
+            std::string::npos);
+}
+
 TEST_F(HandWebPage, EmbedsTheProvenHandPatternAndItsSimulatorProvesIt) {
   std::optional<std::string> pattern = hand_web::embedded_pattern(*page_);
   ASSERT_TRUE(pattern.has_value());

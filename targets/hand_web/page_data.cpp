@@ -199,9 +199,27 @@ class Builder {
         row.text = out_.rows[written_at.at({w.piece, w.repeat_of})].text;
       } else {
         written_at[{w.piece, w.number}] = r;
+        worked_as_before(row, w.number, written_at);
       }
+      piece_named_[row.heading.substr(0, row.heading.find(" ("))] = w.piece;
       out_.rows.push_back(std::move(row));
     }
+  }
+
+  // A piece written "Work as Sleeve 1." shows, row by row, the row of that piece it works
+  // again.
+  void worked_as_before(
+      PageRow& row, std::uint32_t number,
+      const std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t>& written_at) const {
+    constexpr std::string_view kWorkAs = "Work as ";
+    if (!row.text.starts_with(kWorkAs) || !row.text.ends_with(".")) return;
+    auto piece =
+        piece_named_.find(row.text.substr(kWorkAs.size(), row.text.size() - kWorkAs.size() - 1));
+    if (piece == piece_named_.end()) return;
+    auto same = written_at.find({piece->second, number});
+    if (same == written_at.end()) return;
+    row.said_by = row.text;
+    row.text = out_.rows[same->second].text;
   }
 
   // Per worked row, its tokens: the written rows follow the worked ones in order (a cast-on is
@@ -334,7 +352,8 @@ class Builder {
   const Compilation& c_;
   const hand::HandPattern& written_;
   std::vector<std::string> lines_;
-  std::vector<RowText> spans_;              // per page row
+  std::map<std::string, std::uint32_t> piece_named_;  // a heading's name: its piece
+  std::vector<RowText> spans_;                        // per page row
   std::vector<std::uint32_t> written_row_;  // per page row: into written_.rows (kNone: none)
   PageData out_;
 };
