@@ -151,6 +151,9 @@ class VirtualBed {
   void check_hook_clear(const Op& op);
   void bring_in(const Op& op);
   void check_has_hook(const char* instead);
+  // inhook / outhook: `instead` names the op a hookless machine's back end uses, `busy` says
+  // what finds the hook still holding a carrier.
+  void take_hook(const char* instead, const char* busy);
   void release_hook(const Op& op);
   void take_out(const Op& op);
 

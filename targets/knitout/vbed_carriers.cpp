@@ -77,12 +77,7 @@ void VirtualBed::check_hook_clear(const Op& op) {
 
 void VirtualBed::bring_in(const Op& op) {
   bool hook = op.code == OpCode::inhook;
-  if (hook) check_has_hook("in");
-  if (hook && hook_)
-    breaks(Rule::hook_busy, [&] {
-      return fmt::format("the yarn-inserting hook still holds carrier {}: releasehook it first",
-                         names(hook_));
-    });
+  if (hook) take_hook("in", "the yarn-inserting hook");
   each(op.carriers, [&](Carrier& c, std::size_t i) {
     if (c.state != CarrierState::out)
       breaks(Rule::carrier_already_in,
@@ -91,6 +86,15 @@ void VirtualBed::bring_in(const Op& op) {
     ++r_.stats.yarn_pieces;
   });
   if (hook) hook_ = op.carriers;
+}
+
+// inhook and outhook use the hook: the machine must have one, and it must have been released.
+void VirtualBed::take_hook(const char* instead, const char* busy) {
+  check_has_hook(instead);
+  if (hook_)
+    breaks(Rule::hook_busy, [&] {
+      return fmt::format("{} still holds carrier {}: releasehook it first", busy, names(hook_));
+    });
 }
 
 // An inhook, releasehook or outhook on a machine without a hook: its back end uses in / out.
@@ -129,12 +133,7 @@ void VirtualBed::release_hook(const Op& op) {
 
 void VirtualBed::take_out(const Op& op) {
   bool hook = op.code == OpCode::outhook;
-  if (hook) check_has_hook("out");
-  if (hook && hook_)
-    breaks(Rule::hook_busy, [&] {
-      return fmt::format("outhook while the hook still holds carrier {}: releasehook it first",
-                         names(hook_));
-    });
+  if (hook) take_hook("out", "outhook while the hook");
   each(op.carriers, [&](Carrier& c, std::size_t i) {
     const std::string& name = r_.header.carriers[i];
     if (c.state == CarrierState::out)
