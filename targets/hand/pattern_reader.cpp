@@ -304,8 +304,8 @@ class SentenceReader {
     auto& steps = script_.steps;
     auto from = std::find_if(steps.begin(), steps.end(),
                              [&](const Step& s) { return is_heading(s) && s.number == piece; });
-    if (from == steps.end() || from == steps.end() - 1 ||
-        std::find_if(steps.rbegin(), steps.rend(), is_heading).base() - 1 == from)
+    auto current = std::find_if(steps.rbegin(), steps.rend(), is_heading);  // this piece's
+    if (from == steps.end() || current == steps.rend() || from >= current.base() - 1)
       fail("'Work as' a piece written before this one",
            piece <= script_.piece_names.size() && !script_.piece_names[piece - 1].empty()
                ? script_.piece_names[piece - 1]

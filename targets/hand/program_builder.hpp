@@ -80,12 +80,6 @@ class ProgramPatternBuilder {
     return {p_.made.data() + p_.made_at[worked], p_.made_at[worked + 1] - p_.made_at[worked]};
   }
 
-  // The loop of `loops` (left to right seen from the RS) a course going `d` meets first.
-  template <class Loops>
-  static auto first_met(const Loops& loops, CourseDirection d) {
-    return d == CourseDirection::right_to_left ? loops.back() : loops.front();
-  }
-
   // The loops a course takes, in the order it meets them.
   std::vector<std::uint32_t> loops_met(const Step& s) const;
 
@@ -167,6 +161,15 @@ class ProgramPatternBuilder {
   // Before the stitch is worked, the sts it takes from spare needles go onto the left needle.
   void slip_from_spare_needles(std::uint32_t worked, Needle& n);
 
+  // Calls `f` with each of a stitch's loops in the order the course going `d` meets them.
+  template <class F>
+  static void for_each_met(std::span<const std::uint32_t> taken, CourseDirection d, F&& f) {
+    if (d == CourseDirection::right_to_left)
+      std::for_each(taken.rbegin(), taken.rend(), f);
+    else
+      std::for_each(taken.begin(), taken.end(), f);
+  }
+
   // The loops of the course on the needle (not those it slips from spare needles).
   std::vector<std::uint32_t> on_the_needle(std::vector<std::uint32_t> met) const {
     std::erase_if(met, [&](std::uint32_t l) { return spare_slot(l) != kNone; });
@@ -191,9 +194,6 @@ class ProgramPatternBuilder {
   // removes it ("rm"), a row still going this way ends there without turning, and the rnd
   // places it anew.
   void begin_rnd_at_yarn(const Step& s, Needle& n);
-
-  // With its marker removed by a row, the rnd starts anew where the yarn is ("pm").
-  void restart_rnd_at_yarn(Needle& n);
 
   // Does the work go all the way round from here (the courses from this step on going this
   // way, with this yarn) before it turns?

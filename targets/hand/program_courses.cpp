@@ -145,8 +145,12 @@ void ProgramPatternBuilder::ring_course(const Step& s, Needle& n) {
   std::uint32_t first = forward ? n.gap : (n.gap + size - 1) % size;
   std::uint32_t taken_so_far = 0;
   for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i) {
-    std::vector<std::uint32_t> taken = on_the_needle({taken_by(i).begin(), taken_by(i).end()});
-    std::uint32_t at = taken.empty() ? kNone : pos_[first_met(taken, s.direction)];
+    std::uint32_t on_needle = 0, first_loop = kNone;
+    for_each_met(taken_by(i), s.direction, [&](std::uint32_t l) {
+      if (spare_slot(l) != kNone) return;
+      if (on_needle++ == 0) first_loop = l;
+    });
+    std::uint32_t at = first_loop == kNone ? kNone : pos_[first_loop];
     bool marker = !n.marker_off && row_open_ && pending_takes_ > 0;
     bool at_marker = marker && at == (forward ? 0 : size - 1);
     if (at_marker && i > s.stitches.begin && binds_off_together(i - 1) && binds_off_together(i))
@@ -166,7 +170,7 @@ void ProgramPatternBuilder::ring_course(const Step& s, Needle& n) {
     }
     slip_from_spare_needles(i, n);
     pending_takes_ += work(s, i, n, pending_);
-    taken_so_far += static_cast<std::uint32_t>(taken.size());
+    taken_so_far += on_needle;
   }
   replace_in_ring(s, n, forward, first, static_cast<std::uint32_t>(met.size()));
   for (std::uint32_t k : {0u, 1u})
@@ -175,9 +179,10 @@ void ProgramPatternBuilder::ring_course(const Step& s, Needle& n) {
   if (forward && !n.marker_off && (n.gap == 0 || n.ring.empty())) close_ring_row(s, n, false);
   // Bound off in one or two places (underarms), the rest stays on the circular needle in
   // its order, for a rnd that takes it up again with others (a yoke).
-  bool binds_off = std::any_of(stitches_of(s).begin(), stitches_of(s).end(),
-                               [&](const WorkedStitch& w) { return g_.type[w.stitch] == T::bo; });
-  if (s.run_shape == RunShape::line && binds_off && !n.ring.empty()) n.opened = true;
+  auto binds_off = [&](const WorkedStitch& w) { return g_.type[w.stitch] == T::bo; };
+  if (s.run_shape == RunShape::line && !n.ring.empty() &&
+      std::any_of(stitches_of(s).begin(), stitches_of(s).end(), binds_off))
+    n.opened = true;
 }
 
 void ProgramPatternBuilder::turn_in_ring(const Step& s, Needle& n) {

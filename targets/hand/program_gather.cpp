@@ -25,10 +25,9 @@ Needle& ProgramPatternBuilder::needle_for(const Step& s, const std::vector<std::
 void ProgramPatternBuilder::gather(const Step& s, const std::vector<std::uint32_t>& met) {
   bool round = s.shape == RowShape::closed && s.run_shape == RunShape::ring;
   bool own = working() && needle().live > 0 && current_ == needle_of_yarn_[s.yarn];
-  if (!round && own && needle().in_round && takes_from_spare_needles(s))
-    return put_on_spare_needles(s);
-  if (!round && own && needle().in_round) return place_into_ring_row(s, met);
-  if (round && own && needle().in_round) {
+  if (own && needle().in_round) {
+    if (!round)
+      return takes_from_spare_needles(s) ? put_on_spare_needles(s) : place_into_ring_row(s, met);
     turn_in_ring(s, needle());
     begin_rnd_at_yarn(s, needle());
   }
@@ -67,7 +66,7 @@ bool ProgramPatternBuilder::takes_from_spare_needles(const Step& s) const {
   // Each holder is used up by the rows (a spare needle keeps no sts for a rnd to place).
   for (std::uint32_t i = s.stitches.begin; i < s.stitches.end && any; ++i)
     for (std::uint32_t l : taken_by(i)) {
-      if (places_.at(l).place != Place::holder) continue;
+      if (places_.at(l).place != Place::holder || spare_slot(l) != kNone) continue;  // checked
       for (std::uint32_t other : places_.loops_of(places_.at(l))) {
         const Step* taker = taker_step_[other] == kNone ? nullptr : &p_.steps[taker_step_[other]];
         if (!taker || taker->yarn != s.yarn || taker->shape == RowShape::closed) return false;
@@ -102,21 +101,19 @@ void ProgramPatternBuilder::put_on_spare_needles(const Step& s) {
 }
 
 void ProgramPatternBuilder::slip_from_spare_needles(std::uint32_t worked, Needle& n) {
-  auto taken = taken_by(worked);
-  bool met_backwards = p_.steps[step_].direction == CourseDirection::right_to_left;
-  for (std::uint32_t j = 0; j < taken.size(); ++j) {
-    std::uint32_t loop = taken[met_backwards ? taken.size() - 1 - j : j];
+  std::uint32_t j = 0;  // the loop's place among the stitch's, as met
+  for_each_met(taken_by(worked), p_.steps[step_].direction, [&](std::uint32_t loop) {
+    bool behind = j++ > 0;  // worked after the st at the tip of the left needle
     std::uint32_t k = spare_slot(loop);
-    if (k == kNone) continue;
+    if (k == kNone) return;
     if (spare_queue_[k].empty() || spare_queue_[k].front() != loop)
       not_yet(p_.steps[step_], "takes a spare needle's sts out of their order");
     spare_queue_[k].erase(spare_queue_[k].begin());
-    bool behind = j > 0;  // worked after the st at the tip of the left needle
     out_.ops.push_back(
         k == 0 ? (behind ? HandOp::from_spare_behind : HandOp::from_spare)
                : (behind ? HandOp::from_second_spare_behind : HandOp::from_second_spare));
     ++n.live;
-  }
+  });
 }
 
 void ProgramPatternBuilder::place_into_ring_row(const Step& s,
@@ -220,7 +217,8 @@ bool ProgramPatternBuilder::goes_round(const Step& s, std::size_t ring) const {
     const Step& next = p_.steps[k];
     if (next.kind != StepKind::course || next.yarn != s.yarn || next.direction != s.direction)
       break;
-    loops += loops_met(next).size();
+    for (std::uint32_t i = next.stitches.begin; i < next.stitches.end; ++i)
+      loops += taken_by(i).size();
   }
   return loops >= ring;
 }
@@ -236,13 +234,8 @@ void ProgramPatternBuilder::begin_rnd_at_yarn(const Step& s, Needle& n) {
     out_.ops.push_back(HandOp::no_turn);
     close_ring_row(s, n, true);
   }
-  restart_rnd_at_yarn(n);
-}
-
-void ProgramPatternBuilder::restart_rnd_at_yarn(Needle& n) {
-  if (!n.marker_off) return;
-  std::rotate(n.ring.begin(), n.ring.begin() + n.gap % std::max<std::size_t>(n.ring.size(), 1),
-              n.ring.end());
+  if (!n.ring.empty())
+    std::rotate(n.ring.begin(), n.ring.begin() + n.gap % n.ring.size(), n.ring.end());
   n.gap = 0;
   n.marker_off = false;
   pm_next_ = true;

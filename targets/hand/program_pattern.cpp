@@ -81,13 +81,8 @@ void ProgramPatternBuilder::not_yet(const Step& s, const std::string& what) cons
 
 std::vector<std::uint32_t> ProgramPatternBuilder::loops_met(const Step& s) const {
   std::vector<std::uint32_t> met;
-  for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i) {
-    auto taken = taken_by(i);
-    if (s.direction == CourseDirection::right_to_left)
-      met.insert(met.end(), taken.rbegin(), taken.rend());
-    else
-      met.insert(met.end(), taken.begin(), taken.end());
-  }
+  for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i)
+    for_each_met(taken_by(i), s.direction, [&](std::uint32_t l) { met.push_back(l); });
   return met;
 }
 
@@ -100,11 +95,6 @@ void ProgramPatternBuilder::end_section(bool set_aside) {
     if (!turns_when_taken_up(section().yarn)) out_.ops.push_back(HandOp::no_turn);
     close_ring_row(p_.steps[step_], n, true);
   }
-  if (row_open_)
-    unsupported(
-        fmt::format("yarn {} stops in the middle of a rnd, which the program's pattern "
-                    "builder does not write yet",
-                    section().yarn + 1));
   PatternSection& sec = section();
   sec.end_row = static_cast<std::uint32_t>(out_.rows.size());
   sec.set_aside = set_aside;
