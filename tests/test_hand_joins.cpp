@@ -849,5 +849,27 @@ TEST(HandPieces, TheTeapotIsProvenInEveryFormat) {
        "tip"});
 }
 
+// A piece that is only a cast-on, parted between the pieces that take it (a glove's fingers):
+// "Slip sts A–B of the cast-on to holder H" counts the sts as cast on, before any is slipped.
+TEST(HandHolders, APieceOnlyCastOnIsPartedCountedAsCastOn) {
+  const std::string cast_on = "## Piece 1\nCast on 6 sts.\n";
+  const std::string rest =
+      "Leave the 2 sts on a spare needle and cut the yarn.\n"
+      "## Piece 2\nJoin a new yarn to the 2 sts of holder 1, the first st slipped to it at the "
+      "tip.\nRow 1 (RS): BO all sts.\nFasten off.\n"
+      "## Piece 3\nJoin a new yarn to the 2 sts of holder 2, the first st slipped to it at the "
+      "tip.\nRow 1 (RS): BO all sts.\nFasten off.\n"
+      "## Piece 4\nJoin a new yarn to the 2 sts of Piece 1, the first st cast on at the tip.\n"
+      "Row 1 (RS): BO all sts.\nFasten off.\n";
+  const std::string parted =
+      "Slip sts 1\u20132 of the cast-on to holder 1 and sts 3\u20134 to holder 2";
+  EXPECT_EQ(failure_of(cast_on + parted + " \u2014 2 sts.\n" + rest), "");
+  EXPECT_EQ(failure_of(cast_on + parted + " \u2014 3 sts.\n" + rest),
+            "p.md:3: Slip sts to holders: the pattern says 3 sts, but 2 sts are on the needle");
+  EXPECT_EQ(failure_of(cast_on + "Slip sts 5\u20137 of the cast-on to holder 1.\n" + rest),
+            "p.md:3: Slip sts 5\u20137 of the cast-on to holder 1: the cast-on left 6 sts on the "
+            "needle");
+}
+
 }  // namespace
 }  // namespace skein

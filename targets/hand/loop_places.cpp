@@ -25,6 +25,8 @@ void LoopPlaces::leave(std::uint32_t section, Place place, std::vector<std::uint
   auto& lists = place == Place::chain ? chains_ : spares_;
   if (lists.size() <= section) lists.resize(section + 1);
   set(loops, {place, section});
+  if (place == Place::spare)
+    for (std::uint32_t i = 0; i < loops.size(); ++i) counted_at_[loops[i]] = i + 1;
   lists[section] = std::move(loops);
 }
 
@@ -33,6 +35,7 @@ void LoopPlaces::add(std::uint32_t section, Place place, std::uint32_t loop) {
   if (lists.size() <= section) lists.resize(section + 1);
   lists[section].push_back(loop);
   at_[loop] = {place, section};
+  if (place == Place::spare) counted_at_[loop] = static_cast<std::uint32_t>(lists[section].size());
 }
 
 void LoopPlaces::take_off_spare(std::uint32_t section, std::span<const std::uint32_t> loops) {

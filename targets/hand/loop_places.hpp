@@ -32,7 +32,7 @@ struct Lie {
 
 class LoopPlaces {
  public:
-  explicit LoopPlaces(std::size_t loops) : at_(loops) {}
+  explicit LoopPlaces(std::size_t loops) : at_(loops), counted_at_(loops, 0) {}
 
   LoopAt at(std::uint32_t loop) const { return at_[loop]; }
   void set(std::span<const std::uint32_t> loops, LoopAt where);
@@ -51,6 +51,9 @@ class LoopPlaces {
   void take_off_spare(std::uint32_t section, std::span<const std::uint32_t> loops);
   // One more loop at the end of a section's spare needle (or chain).
   void add(std::uint32_t section, Place place, std::uint32_t loop);
+  // A loop's place (1-based) on the spare needle it was left on, counted as the pattern counts
+  // them when it was left: it keeps its number when others are taken off before it.
+  std::uint32_t counted_at(std::uint32_t loop) const { return counted_at_[loop]; }
   // The loops on a holder, spare needle or chain, in order.
   const std::vector<std::uint32_t>& loops_of(LoopAt source) const;
 
@@ -59,6 +62,7 @@ class LoopPlaces {
 
  private:
   std::vector<LoopAt> at_;
+  std::vector<std::uint32_t> counted_at_;
   std::vector<std::vector<std::uint32_t>> holders_;
   std::vector<std::uint32_t> holder_section_;
   std::vector<std::vector<std::uint32_t>> spares_, chains_;  // per section

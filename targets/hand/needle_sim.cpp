@@ -549,7 +549,7 @@ class NeedleSimulator {
   // Sts A–B of the rnd, counted from the beginning-of-round marker, go to a holder of their
   // own (the reader gives the runs of one sentence last first, so the counts stay true).
   void hold(const Step& s) {
-    if (s.of_row) return hold_run_of_row(s);
+    if (s.of_row || s.of_cast_on) return hold_run_of_row(s);
     if (!active_ || !pc_.joined)
       fail(fmt::format("Slip sts to holder {}: only from a piece worked in the rnd", s.number));
     if (s.onto) check_held_before(s);
@@ -569,10 +569,11 @@ class NeedleSimulator {
 
   // "Slip sts 1–8 of Row 57 to holder 7": a run of the sts the last row left on the needle,
   // counted in the order it worked them (the reader gives the runs last first, so the counts
-  // stay true); the others stay.
+  // stay true); the others stay. "Of the cast-on": of a piece only cast on, as cast on.
   void hold_run_of_row(const Step& s) {
-    std::string what = fmt::format("Slip sts {}\u2013{} of Row {} to holder {}", s.from_row,
-                                   s.to_row, s.of_row, s.number);
+    std::string what =
+        fmt::format("Slip sts {}\u2013{} of {} to holder {}", s.from_row, s.to_row,
+                    s.of_cast_on ? "the cast-on" : fmt::format("Row {}", s.of_row), s.number);
     if (!active_) fail(what + ": no piece is on the needle");
     if (holders_.contains(s.number)) fail(what + ": it already holds sts");
     if (s.of_row >= pc_.next_number)
@@ -584,7 +585,7 @@ class NeedleSimulator {
       std::copy_if(needle->begin(), needle->end(), std::back_inserter(row),
                    [&](std::uint32_t entry) { return made_by_row(entry, s.of_row); });
     if (s.from_row == 0 || s.to_row > row.size())
-      fail(fmt::format("{}: the row left {} on the needle", what,
+      fail(fmt::format("{}: the {} left {} on the needle", what, s.of_cast_on ? "cast-on" : "row",
                        sts(static_cast<std::uint32_t>(row.size()))));
     std::vector<std::uint32_t> run(row.begin() + (s.from_row - 1), row.begin() + s.to_row);
     for (std::vector<std::uint32_t>* needle : {&pc_.right, &pc_.left})

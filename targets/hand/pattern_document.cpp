@@ -143,9 +143,10 @@ class InstructionWriter {
     if (sec.resumed) return take_up_text(sec);
     if (sec.starts_from) return join_spare_text(*sec.starts_from) + join_round_text(sec);
     if (sec.picks_up) return pick_up_text(*sec.picks_up, sec.cast_on);
+    std::string held = holdings_text(sec.first_row - 1, sec.cast_on);  // parts of the cast-on
     return fmt::format("Cast on {}{}.", sts(sec.cast_on),
                        sec.provisional ? " with a provisional cast-on" : "") +
-           join_round_text(sec);
+           join_round_text(sec) + (held.empty() ? "" : " " + held);
   }
 
   // " Pm and join to work in the rnd, being careful not to twist." after the cast-on (or the
@@ -269,7 +270,7 @@ class InstructionWriter {
           "at the tip.",
           p.count, p.holder, p.second_spare ? "second " : "", p.from_last ? "last" : "first",
           spare.in_round && !holds_a_flat_row(p.holder) ? "rnd" : "row");
-    bool cast_on = p.holder == 0 && (p.chain || spare.first_row == spare.end_row);
+    bool cast_on = p.chain || spare.first_row == spare.end_row;
     std::string which = cast_on                                         ? "cast on"
                         : spare.in_round && !holds_a_flat_row(p.holder) ? "of its last rnd"
                                                                         : "of its last row";
@@ -279,8 +280,8 @@ class InstructionWriter {
     std::string first = p.start != 0
                             ? fmt::format("st {} {}", p.start, which)
                             : fmt::format("the {} st {}", p.from_last ? "last" : "first", which);
-    return fmt::format("Place the {} {} of {} on the needle {}, {} first.", p.count,
-                       p.chain ? "loops" : "sts", from, where, first);
+    return fmt::format("Place the {} {}{} of {} on the needle {}, {} first.", p.count,
+                       p.chain ? "loop" : "st", p.count == 1 ? "" : "s", from, where, first);
   }
 
   // "Slip sts 10–18 of the rnd to holder 1, sts 19–27 to holder 2 and sts 28–36 to holder 3."
@@ -299,8 +300,9 @@ class InstructionWriter {
       if (h.after_row != row) continue;
       held += h.count;
       std::string of =
-          h.of_row ? fmt::format(" of Row {}", h.of_number ? h.of_number : p_.rows[row].number)
-                   : " of the rnd";
+          h.of_cast_on ? " of the cast-on"
+          : h.of_row   ? fmt::format(" of Row {}", h.of_number ? h.of_number : p_.rows[row].number)
+                       : " of the rnd";
       runs.push_back(fmt::format("{}{} to holder {}{}", held_sts_text(h), runs.empty() ? of : "",
                                  h.holder, onto_text(h)));
     }

@@ -96,6 +96,9 @@ struct PatternSection {
     // of_row: the row's number when it is not the last the piece worked (a set-aside piece's
     // needle), else 0.
     std::uint32_t of_number = 0;
+    // `of_cast_on`: the sts of a piece that is only a cast-on, counted as cast on ("sts 1–11
+    // of the cast-on"); `after_row` is then the row before its first.
+    bool of_cast_on = false;
   };
   std::vector<Holding> holdings;
   // After binding off every st, the yarn goes on to the sts of a holder (a tube's second leg,

@@ -494,8 +494,9 @@ class SentenceReader {
       if (!one) need(c.eat(kEnDash) || c.eat("-"), c, "'–' between the first and the last st");
       step.to_row = one ? step.from_row : need_number(c, "the last st to hold");
       if (step.to_row < step.from_row) fail("expected the sts in increasing order", c.rest());
-      if (runs.empty()) step.of_row = of_the_rnd_or_row(c);
+      if (runs.empty()) of_the_rnd_row_or_cast_on(c, step);
       step.of_row = runs.empty() ? step.of_row : runs.front().of_row;
+      step.of_cast_on = runs.empty() ? step.of_cast_on : runs.front().of_cast_on;
       need_words(c, {"to", "holder"}, "'to holder N'");
       step.number = need_number(c, "a holder number");
       if (c.eat_char('(')) onto_held_sts(c, step);
@@ -505,12 +506,17 @@ class SentenceReader {
     for (auto run = runs.rbegin(); run != runs.rend(); ++run) add(*run);
   }
 
-  // "of the rnd" (0), or "of Row 57": the row's number.
-  std::uint32_t of_the_rnd_or_row(Cursor& c) {
-    need(c.eat("of"), c, "'of the rnd' or 'of Row N'");
-    if (c.eat("row")) return need_number(c, "a row number");
-    need_words(c, {"the", "rnd"}, "'of the rnd' or 'of Row N'");
-    return 0;
+  // "of the rnd", "of Row 57" (the row's number) or "of the cast-on".
+  void of_the_rnd_row_or_cast_on(Cursor& c, Step& step) {
+    const char* expected = "'of the rnd', 'of Row N' or 'of the cast-on'";
+    need(c.eat("of"), c, expected);
+    if (c.eat("row")) {
+      step.of_row = need_number(c, "a row number");
+      return;
+    }
+    need(c.eat("the"), c, expected);
+    step.of_cast_on = c.eat("cast-on");
+    need(step.of_cast_on || c.eat("rnd"), c, expected);
   }
 
   // "(after the 1 st on it)": the sts go on a holder after those it holds.

@@ -61,8 +61,8 @@ struct Step {
     pick_up,                // "Pick up <count> sts along the right edge of Piece <number>, ..."
     three_needle_bind_off,  // Piece <number> in front, Piece <last> behind, <count> pairs;
                             // from_last: which ends are at the tips (front, back)
-    hold,                   // "Slip sts <from_row>–<to_row> of the rnd (of Row <of_row>) to
-                            // holder <number>"
+    hold,                   // "Slip sts <from_row>–<to_row> of the rnd (of Row <of_row>, of
+                            // the cast-on) to holder <number>"
     hold_all,               // "Slip the <count> sts of Row <from_row> to holder <number>"
     to_spare,               // "Put the <count> sts of holder <number> on a spare needle, ..."
                             // (last 1: "on a second spare needle")
@@ -96,6 +96,7 @@ struct Step {
   bool onto = false;
   // hold: "sts 1–8 of Row 57", counted in the order that row worked them (0: of the rnd).
   std::uint32_t of_row = 0;
+  bool of_cast_on = false;  // hold: "sts 1–11 of the cast-on", counted as cast on
   // three_needle_bind_off of one needle folded in half (Piece <number>, <last> sts): each
   // needle's run from its tip to its end, counted round the needle; from_last: going down.
   bool fold = false;

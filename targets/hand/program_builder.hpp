@@ -207,16 +207,25 @@ class ProgramPatternBuilder {
   // is turned; `own`: the piece's own were there before.
   void lay_row_ahead(const Step& s, const std::vector<std::uint32_t>& met, bool own);
 
-  // Part of a piece in the rnd that waits on a spare needle goes elsewhere (a body's front
-  // and back into a yoke, each between the sleeves; a leg's inside to the crotch): before the
-  // piece is left, a block of its last rnd goes to a holder of its own, the block taken or
-  // (where that one goes round past the beginning of the rnd) the rest. Returns where the
-  // block then waits.
-  LoopAt hold_part_of_spare_needle(std::uint32_t section, std::span<const std::uint32_t> block);
+  // Parts of a piece that waits on a spare needle go different ways (a body's front and back
+  // into a yoke, each between the sleeves; a leg's inside to the crotch; a glove's fingers,
+  // each taking part of one cast-on): before the piece is left, its last rnd, last row or
+  // cast-on is parted, a run of sts for each course that takes them, each to a holder of its own
+  // but the one that goes round past the end of the needle (or else the last). Returns where
+  // `loop` then waits.
+  LoopAt hold_parts_of_spare_needle(std::uint32_t section, std::uint32_t loop);
 
-  // The loops of `line` marked (in_met_ bit 2) or not, if they lie side by side there; else
-  // none.
-  std::vector<std::uint32_t> one_block(const std::vector<std::uint32_t>& line, bool marked) const;
+  // Are all `loops` taken by rows (not rnds) of one yarn? Those slip them one at a time from
+  // the spare needle ("sl1 from spare") rather than from holders.
+  bool used_up_by_rows(const std::vector<std::uint32_t>& loops) const;
+
+  // Are loops `a` and `b` taken side by side by one course (or both by none)?
+  bool taken_together(std::uint32_t a, std::uint32_t b) const;
+
+  // How the sts a piece left on a spare needle are counted to slip a part of them to a holder:
+  // of its last rnd, of its last row (in the order it worked them) or of its cast-on; none
+  // where the pattern cannot name them so (after a row in the rnd).
+  std::optional<PatternSection::Holding> counting_of_spare_needle(const PatternSection& sec) const;
 
   // The sts a knitter counts on the needle: the two loops of an sr5 are one (a DS, a wrapped
   // st).

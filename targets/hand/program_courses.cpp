@@ -64,7 +64,7 @@ std::uint32_t ProgramPatternBuilder::bind_off_with_held_st(std::uint32_t i, Need
     LoopAt source = places_.at(behind.front());
     std::optional<Lie> lie = places_.lie(source, behind);
     if (!lie && source.place == Place::spare) {
-      source = hold_part_of_spare_needle(source.index, behind);
+      source = hold_parts_of_spare_needle(source.index, behind.front());
       lie = places_.lie(source, behind);
     }
     bool nameable = source.place == Place::holder || source.place == Place::spare;

@@ -269,39 +269,71 @@ void ProgramPatternBuilder::lay_row_ahead(const Step& s, const std::vector<std::
   places_.set(met, {Place::needle, current_});
 }
 
-LoopAt ProgramPatternBuilder::hold_part_of_spare_needle(std::uint32_t section,
-                                                        std::span<const std::uint32_t> block) {
+LoopAt ProgramPatternBuilder::hold_parts_of_spare_needle(std::uint32_t section,
+                                                         std::uint32_t loop) {
   PatternSection& sec = out_.sections[section];
   const LoopAt spare_needle{Place::spare, section};
-  const std::vector<std::uint32_t>& spare = places_.loops_of(spare_needle);
-  bool rnd = sec.in_round && sec.end_row > sec.first_row && out_.rows[sec.end_row - 1].round;
-  // One block a piece (a second would count its sts in the rnd the first left).
-  bool held_before = std::any_of(sec.holdings.begin(), sec.holdings.end(),
-                                 [&](const auto& h) { return h.after_row + 1 == sec.end_row; });
-  if (!rnd || held_before || block.size() >= spare.size()) return spare_needle;
-  for (std::uint32_t l : block) in_met_[l] += 2;
-  std::vector<std::uint32_t> part = one_block(spare, true);  // the block, in order there
-  bool rest = part.empty();
-  if (rest) part = one_block(spare, false);
-  for (std::uint32_t l : block) in_met_[l] -= 2;
-  if (part.empty()) return spare_needle;
-  auto at = static_cast<std::uint32_t>(std::find(spare.begin(), spare.end(), part.front()) -
-                                       spare.begin());
-  places_.take_off_spare(section, part);
-  std::uint32_t holder = places_.hold(part, section);
-  sec.holdings.push_back(
-      {sec.end_row - 1, at + 1, static_cast<std::uint32_t>(part.size()), holder});
-  sec.live_at_end -= hand_sts(part);
-  return rest ? spare_needle : LoopAt{Place::holder, holder};
+  std::vector<std::uint32_t> spare = places_.loops_of(spare_needle);
+  std::optional<PatternSection::Holding> counted = counting_of_spare_needle(sec);
+  if (!counted || used_up_by_rows(spare)) return spare_needle;
+  // The sts keep the numbers they had when the piece was left, so each part is a run of
+  // those numbers, and all parts go to holders in one sentence, in order. The part that goes
+  // round past the end (or else the last) stays on the spare needle.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> parts;  // [begin, end) in `spare`
+  for (std::uint32_t i = 0, end = 0; i < spare.size(); i = end) {
+    for (end = i + 1; end < spare.size() && taken_together(spare[end - 1], spare[end]) &&
+                      places_.counted_at(spare[end]) == places_.counted_at(spare[end - 1]) + 1;
+         ++end) {
+    }
+    parts.emplace_back(i, end);
+  }
+  bool round_the_end = parts.size() > 1 && taken_together(spare.back(), spare.front());
+  for (std::size_t k = round_the_end ? 1 : 0; k + 1 < parts.size(); ++k) {
+    std::span<const std::uint32_t> part(spare.data() + parts[k].first,
+                                        parts[k].second - parts[k].first);
+    PatternSection::Holding h = *counted;
+    h.first = places_.counted_at(part.front());
+    h.count = static_cast<std::uint32_t>(part.size());
+    places_.take_off_spare(section, part);
+    h.holder = places_.hold(part, section);
+    auto later = std::find_if(sec.holdings.begin(), sec.holdings.end(), [&](const auto& o) {
+      return o.after_row == h.after_row && o.first > h.first;
+    });
+    sec.holdings.insert(later, h);
+    sec.live_at_end -= hand_sts(part);
+  }
+  return places_.at(loop);
 }
 
-std::vector<std::uint32_t> ProgramPatternBuilder::one_block(const std::vector<std::uint32_t>& line,
-                                                            bool marked) const {
-  auto in = [&](std::uint32_t l) { return ((in_met_[l] & 2) != 0) == marked; };
-  auto first = std::find_if(line.begin(), line.end(), in);
-  auto end = std::find_if_not(first, line.end(), in);
-  if (std::find_if(end, line.end(), in) != line.end()) return {};
-  return {first, end};
+bool ProgramPatternBuilder::used_up_by_rows(const std::vector<std::uint32_t>& loops) const {
+  auto row_of_yarn = [&](std::uint32_t loop, std::uint32_t yarn) {
+    const Step* taker = taker_step_[loop] == kNone ? nullptr : &p_.steps[taker_step_[loop]];
+    return taker && taker->yarn == yarn && taker->shape != RowShape::closed;
+  };
+  return !loops.empty() && std::all_of(loops.begin(), loops.end(), [&](std::uint32_t l) {
+    return row_of_yarn(l, taker_yarn(loops.front()));
+  });
+}
+
+bool ProgramPatternBuilder::taken_together(std::uint32_t a, std::uint32_t b) const {
+  if (taker_step_[a] != taker_step_[b]) return false;
+  return taker_step_[a] == kNone || met_at_[a] + 1 == met_at_[b] || met_at_[b] + 1 == met_at_[a];
+}
+
+std::optional<PatternSection::Holding> ProgramPatternBuilder::counting_of_spare_needle(
+    const PatternSection& sec) const {
+  PatternSection::Holding h{};
+  if (sec.first_row == sec.end_row) {  // its cast-on only
+    if (sec.resumed || sec.starts_from || sec.picks_up || sec.in_round) return std::nullopt;
+    h.after_row = sec.first_row - 1;
+    h.of_cast_on = true;
+    return h;
+  }
+  h.after_row = sec.end_row - 1;
+  const PatternRow& last = out_.rows[h.after_row];
+  if (sec.in_round != last.round) return std::nullopt;  // a row in the rnd counts round from it
+  h.of_row = !last.round;
+  return h;
 }
 
 std::uint32_t ProgramPatternBuilder::hand_sts(std::span<const std::uint32_t> loops) const {
@@ -444,7 +476,7 @@ void ProgramPatternBuilder::place(const Step& s, LoopAt source,
   if (source.place == Place::edge) return pick_up_into_rnd(s, source, block, after);
   std::optional<Lie> lie = places_.lie(source, block);
   if (!lie && source.place == Place::spare) {
-    source = hold_part_of_spare_needle(source.index, block);
+    source = hold_parts_of_spare_needle(source.index, block.front());
     lie = places_.lie(source, block);
   }
   bool nameable =
