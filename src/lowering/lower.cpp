@@ -193,6 +193,8 @@ class Lowering {
     segments.insert(segments.end(), needles.begin(), needles.end());
     step.reads = add_segments(segments);
     std::vector<std::uint32_t> in_run, other_side;
+    std::vector<Segment> splits;  // a round bound off in more than two places: the lines after
+                                  // its third block on, the last first, cut off the second's
     std::vector<std::uint32_t> left_per_stitch;  // in run order: in_run loops it leaves, or
     in_run_order(stitches, step.direction, [&](std::uint32_t i) {  // kBindsOff
       std::size_t before = in_run.size();
@@ -212,23 +214,25 @@ class Lowering {
       for (const Segment& needle : needles) keep_tail(step, take_second(needle, step.yarn), first);
       step.run = segments.front().run;
       RowShape shape = step.shape;
-      std::uint32_t second_line = kNone;
+      std::vector<std::uint32_t> lines;  // where each line after a block starts, in in_run
       if (segments.front().count == live_.size(step.run) &&
           live_.shape(step.run) == RunShape::ring) {
-        auto [at, second] = opening(left_per_stitch, first);
-        if (at != kNone) {  // the ring opens where the course bound off
-          std::rotate(in_run.begin(), in_run.begin() + at, in_run.end());
+        lines = opening(left_per_stitch);
+        if (!lines.empty()) {  // the ring opens where the course bound off
+          auto size = static_cast<std::uint32_t>(in_run.size()), from = lines.front();
+          std::rotate(in_run.begin(), in_run.begin() + from, in_run.end());
+          for (std::uint32_t& at : lines) at = (at + size - from) % size;
           shape = RowShape::open;
         }
-        if (second != kNone) second_line = second;
       }
       keep_tail(step, take(segments.front(), in_run, shape, step.yarn), first);
-      if (second_line != kNone) {          // bound off in two places: the loops after the second
-        RunId other = new_run(step.yarn);  // block are a line of their own
-        live_.cut({step.run, in_run[second_line],
-                   static_cast<std::uint32_t>(in_run.size()) - second_line, Walk::forward},
-                  other, RunId());
+      if (lines.size() > 1) {  // bound off in two places: the loops after the second block
+        RunId other = new_run(step.yarn);  // are a line of their own, and so on
+        auto size = static_cast<std::uint32_t>(in_run.size());
+        live_.cut({step.run, in_run[lines[1]], size - lines[1], Walk::forward}, other, RunId());
         keep_tail(step, other, first);
+        for (std::size_t k = lines.size() - 1; k > 1; size = lines[k--])
+          splits.push_back({other, in_run[lines[k]], size - lines[k], Walk::forward});
       }
       out_.runs[step.run.index()].yarn = step.yarn;
     }
@@ -240,32 +244,24 @@ class Lowering {
     step.run_shape = live_.shape(step.run);
     step.run_ends = live_.size(step.run) == 0;
     add_step(step);
+    for (const Segment& line : splits) split_off({line});  // a line after each further block
   }
 
-  // Where a course over a whole ring that binds off some of its sts (an underarm) opens it: the
-  // index of the first loop it leaves after them (kNone when it binds off none); bound off in
-  // two places (both underarms), also the index, from there, of the first loop after the
-  // second block (the line that goes on from there is a run of its own).
-  static std::pair<std::uint32_t, std::uint32_t> opening(const std::vector<std::uint32_t>& left,
-                                                         StitchId at) {
+  // Where a course over a whole ring that binds off some of its sts (an underarm, a bag's
+  // handle openings) opens it: per block bound off, the index of the first loop it leaves
+  // after it, the block the program keeps first (its line runs on round to the first block);
+  // none when it binds off none.
+  static std::vector<std::uint32_t> opening(const std::vector<std::uint32_t>& left) {
     std::size_t n = left.size();
-    std::vector<std::size_t> after;  // the first st after each block
+    std::vector<std::uint32_t> lines;
+    std::uint32_t loops = 0;  // made by the sts before st i
     for (std::size_t i = 0; i < n; ++i) {
       bool here = left[i] == kBindsOff, before = left[(i + n - 1) % n] == kBindsOff;
-      if (before && !here) after.push_back(i);
+      if (before && !here) lines.push_back(loops);
+      if (!here) loops += left[i];
     }
-    if (after.empty()) return {kNone, kNone};
-    if (after.size() > 2) throw Stop{at, "the round binds off its sts in more than two places"};
-    auto loops_before = [&](std::size_t from, std::size_t to) {  // made by sts [from, to)
-      std::uint32_t count = 0;
-      for (std::size_t i = from; i != to; i = (i + 1) % n)
-        if (left[i] != kBindsOff) count += left[i];
-      return count;
-    };
-    std::size_t first_after = after.back();  // the line the program keeps starts here
-    std::uint32_t index = loops_before(0, first_after);
-    if (after.size() == 1) return {index, kNone};
-    return {index, loops_before(first_after, after.front())};
+    if (lines.size() > 1) std::rotate(lines.begin(), lines.end() - 1, lines.end());
+    return lines;
   }
 
   // A course may leave one line cut in its middle (its tail a run of its own, `other`).

@@ -102,7 +102,8 @@ struct Step {
   RunId other;  // a cast-on across a split: the other side's run; a split of a line in its
                 // middle: the run its tail becomes; a round over a ring that binds off in
                 // two places (both underarms): the line after the second block (`run` is
-                // the line after the first)
+                // the line after the first); in more places (a bag's handle openings), split
+                // steps right after it cut the lines after the third block on off this one
   std::uint32_t picked_up = 0;     // loops taken along an edge (not from a run)
   StitchId waits_for = kNoStitch;  // hold: the stitch it waits for
 };
