@@ -350,7 +350,7 @@ Shape set_in_sweater(const ShapeSize& s, const std::string& name) {
        neck = d.ring(body + armhole + shoulder + 2, r * 0.7);
   d.band(top, shoulders, {0, 0, 0}, kUp, "yoke");
   d.band(shoulders, neck, {0, 0, 0}, kUp, "neck");
-  std::uint32_t cuffs[2];
+
   for (int side = 0; side < 2; ++side) {
     Vec3 axis{side == 0 ? 1.0f : -1.0f, 0, 0};
     Vec3 centre = d.centre(holes[side]);
@@ -365,17 +365,19 @@ Shape set_in_sweater(const ShapeSize& s, const std::string& name) {
       l.groups.push_back("sleeve");
     }
     l.straight(l.end(), 5, 5, cuff_r, "cuff");
-    cuffs[side] = d.limb(holes[side], axis, l.distances, l.radii, l.groups)[0];
+    d.limb(holes[side], axis, l.distances, l.radii, l.groups);
   }
   return {d.finish(name + ".obj"),
           project_text(name,
                        fmt::format("a sweater {} cm round, body {} cm, sleeves {} cm set in at the "
                                    "armholes",
                                    c, body, sleeve),
-                       fmt::format("start:                 # the hem, then both cuffs\n"
-                                   "  - vertex: {}\n  - vertex: {}\n  - vertex: {}\n"
+                       fmt::format("start:                 # the hem\n"
+                                   "  - vertex: {}\n"
+                                   "mismatches: [[{}, {}], [{}, {}], [{}, {}], [{}, {}]]\n"
                                    "patterns: {{hem: k2p2, cuff: k2p2, neck: k2p2}}\n",
-                                   bottom[2] + 1, cuffs[0] + 1, cuffs[1] + 1))};
+                                   bottom[2] + 1, below[0] + 1, top[0] + 1, below[1] + 1, top[1] + 1,
+                                   below[4] + 1, top[4] + 1, below[5] + 1, top[5] + 1))};
 }
 
 // A bag knit in the round from the bottom edge up to the rim, with two handles: straps that
