@@ -1,6 +1,7 @@
 // Labeling (paper §3.4) and stitch-mesh generation at a gauge: every face gets its directions,
 // every failure names the faces left over and why, and generated stitch meshes are valid and
 // knittable (randomized grids and cylinders of varying radius, compiled and scheduled).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <array>
@@ -477,6 +478,41 @@ TEST(Generation, ForkedGarmentsAreKnittableAtSeveralSizes) {
       Shape s = make_shape(kind, {round, 0, size}, "shape");
       expect_generated_knittable(s.mesh, parse_project(s.project, "shape.yaml"), 3);
     }
+}
+
+// The set-in sweater at random sizes and gauges: knittable at every one. Its sleeves are
+// picked up round the armholes and knit down to the cuffs, so no sleeve row meets the body's
+// rows head-on: the rows picked up along each armhole's two sides are expanding perpendicular
+// mismatches, the cast-on across its top a split (one extra yarn each), and nothing joins.
+TEST(Generation, SetInSweaterIsKnittableAtRandomSizesAndGauges) {
+  std::mt19937_64 rng(5);
+  for (int trial = 0; trial < 30; ++trial) {
+    ShapeSize size{20 + static_cast<double>(rng() % 180), 0, 4 + static_cast<double>(rng() % 116)};
+    Shape s = make_shape("set-in-sweater", size, "sweater");
+    Project p = parse_project(s.project, "sweater.yaml");
+    double stitches = 8 + static_cast<double>(rng() % 33),
+           rows = 10 + static_cast<double>(rng() % 41);
+    p.stitches_per_10cm = stitches;
+    p.rows_per_10cm = rows;
+    SCOPED_TRACE(fmt::format("{} cm round, {} cm long, {} sts and {} rows per 10 cm",
+                             size.circumference, size.length, stitches, rows));
+    Labeling labeling = label_coarse_mesh(s.mesh, p);
+    GeneratedStitchMesh g = generate_stitch_mesh(s.mesh, labeling, p);
+    Compilation c = compile_stitch_mesh(std::move(g.mesh), "sweater.obj");
+    std::string report = check_report(c);
+    ASSERT_TRUE(c.knittability.knittable) << report;
+    EXPECT_EQ(c.yarns.size(), 5u) << report;  // body, back, yoke, and the two armholes' cast-ons
+    auto count = [&](const std::string& what) {
+      std::size_t n = 0;
+      for (std::size_t at = report.find(what); at != std::string::npos;
+           at = report.find(what, at + 1))
+        ++n;
+      return n;
+    };
+    EXPECT_EQ(count(": expanding perpendicular,"), 4u) << report;
+    EXPECT_EQ(count(": splitting,"), 2u) << report;
+    EXPECT_EQ(count(": joining,"), 0u) << report;
+  }
 }
 
 TEST(Generation, EveryShapeOfSkeinNewGeneratesAValidStitchMesh) {

@@ -324,11 +324,14 @@ Shape glove(const ShapeSize& s, const std::string& name) {
               "patterns: {cuff: k2p2}\n")};
 }
 
-// A sweater with set-in sleeves: the body knit in the round from the hem to the neck, with a
-// hole at each side for the armhole (two of its faces at ±x left open for a band of rows), and
-// each sleeve knit from the cuff in, tapering out to the armhole's ring, which it ends on: the
-// sleeve joins the body all round the armhole (its loops taken into the rows above, bound off
-// with the body's below, and perpendicular at the sides).
+// A sweater with set-in sleeves, knit as by hand from the hem up: the body in the round to the
+// armholes (a hole at each side, two of its faces at ±x left open for a band of rows), where it
+// divides into front and back, worked flat up to the top of the armholes and joined again in
+// the round by a cast-on across each armhole's top. Each sleeve is then picked up round its
+// armhole (the body's live sts below it, sts picked up along its sides, the cast-on's other
+// side above it) and knit down to the cuff. The armhole's sides are marked as mismatches, so
+// the body's rows stop there rather than walk on into the sleeve: every sleeve stitch waits
+// only for body stitches, never the other way, and no rows wait for each other both ways.
 Shape set_in_sweater(const ShapeSize& s, const std::string& name) {
   double c = s.circumference > 0 ? s.circumference : 90, body = s.length > 0 ? s.length : 36;
   double r = radius_for(c), armhole = std::max(4.0, c * 0.12), shoulder = std::max(3.0, c * 0.06);
@@ -350,7 +353,10 @@ Shape set_in_sweater(const ShapeSize& s, const std::string& name) {
        neck = d.ring(body + armhole + shoulder + 2, r * 0.7);
   d.band(top, shoulders, {0, 0, 0}, kUp, "yoke");
   d.band(shoulders, neck, {0, 0, 0}, kUp, "neck");
-  std::uint32_t cuffs[2];
+  std::string armhole_sides;  // each hole's sides: from below[j] up to top[j]
+  for (const Ring& hole : holes)
+    armhole_sides += fmt::format("{}[{}, {}], [{}, {}]", armhole_sides.empty() ? "" : ", ",
+                                 hole[0] + 1, hole[3] + 1, hole[1] + 1, hole[2] + 1);
   for (int side = 0; side < 2; ++side) {
     Vec3 axis{side == 0 ? 1.0f : -1.0f, 0, 0};
     Vec3 centre = d.centre(holes[side]);
@@ -365,17 +371,20 @@ Shape set_in_sweater(const ShapeSize& s, const std::string& name) {
       l.groups.push_back("sleeve");
     }
     l.straight(l.end(), 5, 5, cuff_r, "cuff");
-    cuffs[side] = d.limb(holes[side], axis, l.distances, l.radii, l.groups)[0];
+    d.limb(holes[side], axis, l.distances, l.radii, l.groups);
   }
   return {d.finish(name + ".obj"),
           project_text(name,
                        fmt::format("a sweater {} cm round, body {} cm, sleeves {} cm set in at the "
                                    "armholes",
                                    c, body, sleeve),
-                       fmt::format("start:                 # the hem, then both cuffs\n"
-                                   "  - vertex: {}\n  - vertex: {}\n  - vertex: {}\n"
+                       fmt::format("start:                 # the hem: the sleeves are picked "
+                                   "up round the armholes\n"
+                                   "  - vertex: {}\n"
+                                   "mismatches: [{}]   # the armholes' sides: the body's rows "
+                                   "stop there\n"
                                    "patterns: {{hem: k2p2, cuff: k2p2, neck: k2p2}}\n",
-                                   bottom[2] + 1, cuffs[0] + 1, cuffs[1] + 1))};
+                                   bottom[2] + 1, armhole_sides))};
 }
 
 // A bag knit in the round from the bottom edge up to the rim, with two handles: straps that
