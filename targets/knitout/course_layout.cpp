@@ -34,6 +34,7 @@ bool has_machine_recipe(StitchType t) {
     case StitchType::sr5:
     case StitchType::tuck:
     case StitchType::sl:
+    case StitchType::sco:
       return true;
     default:
       return false;
@@ -48,7 +49,10 @@ void check_stitches(const KnitGraph& g) {
   }
   for (const Loop& l : g.loops) {
     StitchId at = l.taker != kNoStitch ? l.taker : l.maker;
-    if (l.kind != LoopKind::wale) unsupported(g, "mismatched edges (a loop across a mismatch)", at);
+    bool crotch = l.kind == LoopKind::split && l.maker != kNoStitch &&
+                  g.type[l.maker] == StitchType::sco;  // a cast-on along a split's
+    if (l.kind != LoopKind::wale && !crotch)
+      unsupported(g, "mismatched edges (a loop across a mismatch)", at);
     if (l.maker == kNoStitch || l.taker == kNoStitch) unsupported(g, "a loop with an open end", at);
   }
 }
@@ -156,10 +160,17 @@ class ProgramLayouts {
         join_place_(c.program.runs.size(), kNoWrap) {
     for (std::uint32_t r = 0; r < joined_to_.size(); ++r) joined_to_[r] = r;
     for (const Step& step : p_.steps) {
+      // A split's parts and a cast-on along a split's two sides stay in the layout of the tube
+      // they part (the branches are knit where their loops wait).
+      if (step.kind == StepKind::split || (step.kind == StepKind::cast_on && step.other.valid())) {
+        RunId from = step.kind == StepKind::split ? p_.segments[step.reads.begin].run : step.run;
+        for (RunId part : {step.run, step.other})
+          if (part.valid() && part != from) unite(part.index(), from.index());
+      }
       if (step.kind != StepKind::join) continue;
       for (std::uint32_t i = step.reads.begin; i < step.reads.end; ++i) {
         std::uint32_t run = p_.segments[i].run.index();
-        joined_to_[root(run)] = root(step.run.index());
+        unite(run, step.run.index());
         if (join_place_[run] == kNoWrap) join_place_[run] = i - step.reads.begin;
       }
     }
@@ -187,6 +198,10 @@ class ProgramLayouts {
     std::uint32_t on_bed = 0;             // live loops on the bed (every run of the layout)
     // The places in their join of the runs cast on so far (the leftmost and rightmost).
     std::uint32_t leftmost = kNoWrap, rightmost = 0;
+    // The last cast-on along a split's second side: its loop where the crotch's sts change
+    // beds. When the first branch takes the round's start with it (it is the left one), the
+    // second's rounds start there: its loop at the front's left end.
+    std::uint32_t second_start = kNoWrap;
   };
 
   // The run a run is joined into at last (runs that a join takes share a layout).
@@ -194,6 +209,7 @@ class ProgramLayouts {
     while (joined_to_[run] != run) run = joined_to_[run] = joined_to_[joined_to_[run]];
     return run;
   }
+  void unite(std::uint32_t run, std::uint32_t into) { joined_to_[root(run)] = root(into); }
 
   // A sheet cast on while loops wait on the bed goes left of them when the join takes it before
   // every run cast on so far, right of them when after; between them there is no room.
@@ -214,6 +230,7 @@ class ProgramLayouts {
   // Runs taken up by one course become one (flaps into a sheet): the program's join, on the
   // lowering's list of live loops. The course after it knits across the pieces.
   void join(const Step& step) {
+    note_arc_ends(step);
     for (std::uint32_t i = step.reads.begin; i < step.reads.end; ++i) {
       const Segment& seg = p_.segments[i];
       if (runs_.shape(seg.run) == RunShape::ring)
@@ -224,10 +241,30 @@ class ProgramLayouts {
     }
   }
 
+  // A join that takes the first side of a cast-on along a split closes the first branch's ring
+  // with it: the branch's loops before and after it are where the crotch is cast on.
+  void note_arc_ends(const Step& step) {
+    std::uint32_t n = step.reads.size();
+    for (std::uint32_t i = 0; i < n; ++i) {
+      auto crotch = crotch_course_.find(p_.segments[step.reads.begin + i].run.index());
+      if (crotch == crotch_course_.end()) continue;
+      const Segment& before = p_.segments[step.reads.begin + (i + n - 1) % n];
+      const Segment& after = p_.segments[step.reads.begin + (i + 1) % n];
+      Course& c = layouts_[crotch->second.first].courses[crotch->second.second];
+      c.arc_end = runs_.walk_end(before);
+      c.arc_start = after.first;
+      crotch_course_.erase(crotch);
+    }
+  }
+
   void take_step(const Step& step) {
     switch (step.kind) {
       case StepKind::cast_on:
         return add_course(step);
+      case StepKind::split:  // the branches are knit where their loops wait, in one layout
+        return runs_.cut(p_.segments[step.reads.begin], step.run, step.other);
+      case StepKind::reverse:
+        return runs_.reverse(step.run);
       case StepKind::course:
       case StepKind::bind_off:
         // A course that binds off in two places parts its run into two lines (`other`): two
@@ -239,8 +276,6 @@ class ProgramLayouts {
       case StepKind::join:
         return join(step);
       case StepKind::three_needle_bind_off:
-      case StepKind::split:
-      case StepKind::reverse:
         unsupported(g_,
                     fmt::format("a {} step of the live-loop program (several runs on the bed)",
                                 step_kind_name(step.kind)),
@@ -257,12 +292,13 @@ class ProgramLayouts {
     return g_.loops[seg.first].taker;
   }
 
-  // The loops a course leaves in its run, in run order (left to right).
-  std::vector<std::uint32_t> left_in_run(Range stitches, bool left_to_right) const {
+  // The loops a course leaves in its run (or on the other side of a split), in run order.
+  std::vector<std::uint32_t> left_in_run(Range stitches, bool left_to_right,
+                                         LoopPlace place = LoopPlace::in_run) const {
     std::vector<std::uint32_t> loops;
     auto add = [&](std::uint32_t i) {
       for (std::uint32_t k = p_.made_at[i]; k < p_.made_at[i + 1]; ++k)
-        if (p_.made[k].place == LoopPlace::in_run) loops.push_back(p_.made[k].loop);
+        if (p_.made[k].place == place) loops.push_back(p_.made[k].loop);
     };
     if (left_to_right)
       for (std::uint32_t i = stitches.begin; i < stitches.end; ++i) add(i);
@@ -279,8 +315,10 @@ class ProgramLayouts {
     bool cast_on = step.kind == StepKind::cast_on;
     std::uint32_t& mine = layout_of_[step.yarn];
     if (cast_on) {
-      if (mine != kNoWrap) unsupported(g_, "a second cast-on in one yarn piece", at);
       std::uint32_t& group = layout_of_group_[root(step.run.index())];
+      bool along_split = step.other.valid() && group != 0;  // in the tube it parts
+      if (mine != kNoWrap && !(along_split && mine == group - 1))
+        unsupported(g_, "a second cast-on in one yarn piece", at);
       if (group == 0) {
         layouts_.emplace_back();
         pieces_.emplace_back();
@@ -310,6 +348,8 @@ class ProgramLayouts {
     CourseLayout& l = layouts_[index];
     Piece& piece = pieces_[index];
     bool left_to_right = step.direction != CourseDirection::right_to_left;
+    if (cast_on && step.other.valid() && !l.courses.empty())
+      return add_along_split(step, l, piece, left_to_right);
     if (cast_on) {
       std::vector<std::uint32_t> left = left_in_run(step.stitches, left_to_right);
       Beside beside = Beside::none;
@@ -334,6 +374,24 @@ class ProgramLayouts {
       add_block(l, piece, {begin, end}, left_to_right, step.shape);
       begin = end;
     }
+  }
+
+  // A cast-on along a split: its two sides are runs of their own, the first taken by the join
+  // that closes the first branch (which says where its arc ends), the other by the second's.
+  void add_along_split(const Step& step, CourseLayout& l, Piece& piece, bool left_to_right) {
+    if (!l.tube) unsupported(g_, "a cast-on along a split of a sheet", first_stitch(step));
+    std::vector<std::uint32_t> first = left_in_run(step.stitches, left_to_right, LoopPlace::in_run),
+                               second =
+                                   left_in_run(step.stitches, left_to_right, LoopPlace::other_side);
+    runs_.start(step.run, first, RunShape::line);
+    runs_.start(step.other, second, RunShape::line);
+    piece.on_bed += static_cast<std::uint32_t>(first.size() + second.size());
+    piece.second_start =
+        second[crotch_sts_on_end_bed(static_cast<std::uint32_t>(second.size())) - 1];
+    Course& course = l.courses.emplace_back(append(l, step.stitches, left_to_right));
+    course.along_split = true;
+    crotch_course_[step.run.index()] = {index_of(l),
+                                        static_cast<std::uint32_t>(l.courses.size() - 1)};
   }
 
   Course append(CourseLayout& l, Range stitches, bool left_to_right) const {
@@ -364,7 +422,13 @@ class ProgramLayouts {
     bool whole = seg.count == runs_.size(seg.run);
     bool others_wait = piece.on_bed > runs_.size(seg.run);  // another piece's loops
     piece.on_bed = piece.on_bed + static_cast<std::uint32_t>(left.size()) - seg.count;
-    bool takes_start = whole;
+    // A branch's round (others wait) takes the round's start only where it holds that loop.
+    bool takes_start = whole && !others_wait;
+    if (l.tube && piece.round_start == kNoWrap && takes_start)
+      piece.round_start =
+          piece.second_start != kNoWrap && runs_.run_of(piece.second_start) == seg.run
+              ? piece.second_start
+              : seg.first;
     for (std::uint32_t loop = seg.first, n = 0; n < seg.count; ++n, loop = runs_.next(loop))
       takes_start |= loop == piece.round_start;
     RunId tail = runs_.leaves_tail(seg) && left.empty() ? tail_run() : RunId();
@@ -375,7 +439,7 @@ class ProgramLayouts {
     }
     Course& course = l.courses.emplace_back(append(l, stitches, left_to_right));
     course.partial = !whole || others_wait;
-    course.rotated = l.tube && whole && seg.first != piece.round_start;
+    course.rotated = l.tube && whole && !others_wait && seg.first != piece.round_start;
     if (course.rotated)
       course.layout_start = taker_of_round_start(g_, l, course, piece.round_start);
     std::uint32_t before = whole ? kNoWrap : runs_.prev(seg.first);
@@ -416,6 +480,7 @@ class ProgramLayouts {
     CourseLayout& l = layouts_[index];
     for (const Course& course : l.courses) {
       RowShape shape = g_.row_shape[course.row];
+      if (course.along_split) continue;  // a line of sts between two branches of the tube
       if (shape != RowShape::short_row && (shape == RowShape::closed) != l.tube)
         unsupported(g_, "a mix of open rows and closed rounds", l.order[course.begin]);
     }
@@ -481,6 +546,8 @@ class ProgramLayouts {
   std::vector<std::uint32_t> joined_to_;   // per run of the program: a run it is joined into
   std::vector<std::uint32_t> join_place_;  // per run: its place in the first join taking it
   std::unordered_map<std::uint32_t, std::uint32_t> layout_of_group_;  // root run -> layout + 1
+  // Per first side of a cast-on along a split not yet joined: its layout and course.
+  std::unordered_map<std::uint32_t, std::pair<std::uint32_t, std::uint32_t>> crotch_course_;
   std::uint32_t tails_ = 0;
 };
 
