@@ -132,7 +132,7 @@ void Emitter::cast_on_along_split(const Course& c) {
       std::uint8_t slot = made_slot_along_yarn(StitchType::sco, ltr, i, 2);
       Place home = places[slot], made_at{Bed::f, home.needle};
       w_.tuck(d, at(made_at), carrier_);
-      live_[made[slot]] = {made_at, home};
+      live_[made[slot]] = {home, home};  // moved there next
       if (home != made_at) to_back.push_back({made_at, home});
     }
   }
