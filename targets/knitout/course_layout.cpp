@@ -269,7 +269,7 @@ class ProgramLayouts {
       case StepKind::bind_off:
         // A course that binds off in two places parts its run into two lines (`other`): two
         // runs on the bed.
-        if (step.other.valid())
+        if (step.other.valid() && !casts_on_along_split(step))
           unsupported(g_, "a course that binds off its run in two places (several runs on the bed)",
                       first_stitch(step));
         return add_course(step);
@@ -350,6 +350,7 @@ class ProgramLayouts {
     bool left_to_right = step.direction != CourseDirection::right_to_left;
     if (cast_on && step.other.valid() && !l.courses.empty())
       return add_along_split(step, l, piece, left_to_right);
+    if (!cast_on && step.other.valid()) return add_round_along_split(step, l, piece, left_to_right);
     if (cast_on) {
       std::vector<std::uint32_t> left = left_in_run(step.stitches, left_to_right);
       Beside beside = Beside::none;
@@ -392,6 +393,71 @@ class ProgramLayouts {
     course.along_split = true;
     crotch_course_[step.run.index()] = {index_of(l),
                                         static_cast<std::uint32_t>(l.courses.size() - 1)};
+  }
+
+  bool is_sco(std::uint32_t worked) const {
+    return g_.type[p_.stitches[worked].stitch] == StitchType::sco;
+  }
+  bool casts_on_along_split(const Step& step) const {
+    for (std::uint32_t i = step.stitches.begin; i < step.stitches.end; ++i)
+      if (is_sco(i)) return true;
+    return false;
+  }
+
+  // A round of a branch worked with the yarn of the round (own yarn) that casts on along the
+  // split as it goes: its sts over the branch's arc are knit where their loops wait, its sco
+  // sts cast on as a course of their own between the branches. The arc's ends are the loops
+  // beside them in the branch's ring (a loop made after them by the loop it is knit from).
+  void add_round_along_split(const Step& step, CourseLayout& l, Piece& piece, bool left_to_right) {
+    if (!l.tube) unsupported(g_, "a cast-on along a split of a sheet", first_stitch(step));
+    Segment seg = segment_of(step.stitches, left_to_right);
+    std::vector<std::uint32_t> left = left_in_run(step.stitches, left_to_right, LoopPlace::in_run),
+                               second =
+                                   left_in_run(step.stitches, left_to_right, LoopPlace::other_side);
+    for (std::uint32_t loop = seg.first, n = 0; n < seg.count; ++n, loop = runs_.next(loop))
+      if (loop == piece.round_start) piece.round_start = kNoWrap;  // the branch takes it along
+    piece.on_bed += static_cast<std::uint32_t>(left.size() + second.size()) - seg.count;
+    runs_.replace(seg, left, step.shape);
+    runs_.start(step.other, second, RunShape::line);
+    piece.second_start =
+        second[crotch_sts_on_end_bed(static_cast<std::uint32_t>(second.size())) - 1];
+    std::uint32_t crotch = kNoWrap;
+    Range sco;
+    for (std::uint32_t begin = step.stitches.begin; begin < step.stitches.end;) {
+      std::uint32_t end = begin + 1;
+      while (end < step.stitches.end && is_sco(end) == is_sco(begin)) ++end;
+      Course& course = l.courses.emplace_back(append(l, {begin, end}, left_to_right));
+      course.partial = true;
+      course.along_split = is_sco(begin);
+      if (course.along_split) {
+        if (crotch != kNoWrap)
+          unsupported(g_, "a round that casts on along a split twice", first_stitch(step));
+        crotch = static_cast<std::uint32_t>(l.courses.size() - 1);
+        sco = {begin, end};
+      }
+      begin = end;
+    }
+    note_arc_ends_in_round(l.courses[crotch], sco, left);
+  }
+  void note_arc_ends_in_round(Course& c, Range sco, const std::vector<std::uint32_t>& ring) const {
+    auto n = static_cast<std::uint32_t>(ring.size());
+    std::uint32_t first = 0, last = 0;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      StitchId maker = g_.loops[ring[i]].maker;
+      if (g_.type[maker] != StitchType::sco) continue;
+      if (g_.type[g_.loops[ring[(i + n - 1) % n]].maker] != StitchType::sco) first = i;
+      if (g_.type[g_.loops[ring[(i + 1) % n]].maker] != StitchType::sco) last = i;
+    }
+    c.arc_end = where_it_waits(ring[(first + n - 1) % n], sco);
+    c.arc_start = where_it_waits(ring[(last + 1) % n], sco);
+  }
+  // A loop the round makes after its sco sts is not on the bed when they are cast on: the loop
+  // it is knit from waits where it will be.
+  std::uint32_t where_it_waits(std::uint32_t loop, Range crotch) const {
+    StitchId maker = g_.loops[loop].maker;
+    if (p_.worked_at[maker] < crotch.end) return loop;
+    auto taken = g_.loops_taken_by(maker);
+    return taken.empty() ? loop : taken[stacking_order(g_.type[maker])[0]];
   }
 
   Course append(CourseLayout& l, Range stitches, bool left_to_right) const {
