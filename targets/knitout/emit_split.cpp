@@ -53,10 +53,7 @@ Emitter::Crotch Emitter::plan_crotch(const Course& c) {
   for (Bed b : {Bed::f, Bed::b}) {
     std::size_t i = bed_index(b);
     k.gap[i] = 2 * static_cast<std::int32_t>(count[i]);
-    std::int32_t cut = (end.bed == b ? end : start).needle + (k.first_right ? 0 : 1);
-    k.top[i] = cut - 1;
-    if ((k.top[i] & 1) != static_cast<std::int32_t>(i)) --k.top[i];  // front even, back odd
-    k.cut[i] = cut;
+    k.cut[i] = (end.bed == b ? end : start).needle + (k.first_right ? 0 : 1);
   }
   k.on_end_bed = count[bed_index(end.bed)];
   k.end_bed = end.bed;
@@ -64,24 +61,36 @@ Emitter::Crotch Emitter::plan_crotch(const Course& c) {
   return k;
 }
 
-// The loops left of the cut on each bed (every piece's) move left by the gap.
-void Emitter::make_crotch_room(const Course& c, const Crotch& k) {
-  room_.clear();
-  for (std::uint32_t loop : on_needles_) {
-    Place p = fabric_place(loop);
-    std::size_t i = bed_index(p.bed);
-    if (p.needle >= k.cut[i] || k.gap[i] == 0) continue;
-    std::int32_t to = live_[loop].home.needle - k.gap[i] * pitch_;
-    if (to < 0)
-      throw UnsupportedError(fmt::format(
-          "{}: the cast-on along a split at {} needs {} more needles left of the tube ({} has "
-          "needles 0..{})",
-          c_.input, g_.describe(l_.order[c.begin]), -to, p_.name, p_.needles - 1));
-    room_.push_back({loop, {live_[loop].home.bed, to}});
+// The loops on one side of the cut on each bed (every piece's) move away by the gap: left
+// where the bed has room for them, else right.
+void Emitter::make_crotch_room(const Course& c, Crotch& k) {
+  auto needles = static_cast<std::int32_t>(p_.needles);
+  for (bool right : {false, true}) {
+    room_.clear();
+    bool fits = true;
+    for (std::uint32_t loop : on_needles_) {
+      std::size_t i = bed_index(fabric_place(loop).bed);
+      if (k.gap[i] == 0 || (fabric_place(loop).needle >= k.cut[i]) != right) continue;
+      std::int32_t to = live_[loop].home.needle + (right ? 1 : -1) * k.gap[i] * pitch_;
+      fits = fits && to >= 0 && to < needles;
+      room_.push_back({loop, {live_[loop].home.bed, to}});
+    }
+    if (!fits) continue;
+    for (std::size_t i = 0; i < 2; ++i) {  // the tube's loops: front on even needles, back odd
+      auto parity = static_cast<std::int32_t>(i);
+      std::int32_t first_right = k.cut[i] + ((k.cut[i] & 1) != parity ? 1 : 0);
+      k.bottom[i] = right ? first_right : first_right - k.gap[i] * pitch_;
+    }
+    std::sort(room_.begin(), room_.end(), [](const RoomMove& a, const RoomMove& b) {
+      return std::pair(a.to.bed, a.to.needle) < std::pair(b.to.bed, b.to.needle);
+    });
+    return;
   }
-  std::sort(room_.begin(), room_.end(), [](const RoomMove& a, const RoomMove& b) {
-    return std::pair(a.to.bed, a.to.needle) < std::pair(b.to.bed, b.to.needle);
-  });
+  throw UnsupportedError(fmt::format(
+      "{}: the cast-on along a split at {} needs {} more needles on either side of the tube ({} "
+      "has needles 0..{})",
+      c_.input, g_.describe(l_.order[c.begin]), std::max(k.gap[0], k.gap[1]) * pitch_, p_.name,
+      needles - 1));
 }
 
 // The needles of a crotch st's loops: {first branch's, second's}.
@@ -92,7 +101,7 @@ std::array<Place, 2> Emitter::crotch_places(const Crotch& k, std::uint32_t i,
   std::size_t bi = bed_index(b);
   auto d = static_cast<std::int32_t>(near_end ? i : sts - 1 - i);  // from the arc it closes
   std::int32_t g = k.gap[bi];
-  auto needle = [&](std::int32_t slot) { return Place{b, k.top[bi] - (g - 1 - slot) * pitch_}; };
+  auto needle = [&](std::int32_t slot) { return Place{b, k.bottom[bi] + slot * pitch_}; };
   Place left = needle(d), right = needle(g - 1 - d);
   return k.first_right ? std::array{right, left} : std::array{left, right};
 }

@@ -189,15 +189,15 @@ class Emitter {
     bool first_right = false;      // the first branch lies right of the cuts
     Bed end_bed = Bed::f;          // the bed where the first branch's arc ends
     std::uint32_t on_end_bed = 0;  // the sts whose loops lie on that bed (the first ones)
-    // Per bed (front, back): the first needle right of the cut, the gap's top needle, and the
-    // gap's width in loops.
-    std::array<std::int32_t, 2> cut{0, 0}, top{0, 0}, gap{0, 0};
+    // Per bed (front, back): the first needle right of the cut, the gap's lowest needle once
+    // the room is made, and the gap's width in loops.
+    std::array<std::int32_t, 2> cut{0, 0}, bottom{0, 0}, gap{0, 0};
   };
   [[noreturn]] void unsupported_split(const Course& c, const std::string& what) const;
   Place fabric_place(std::uint32_t loop) const;
   bool on_the_bed(std::uint32_t loop) const;
   Crotch plan_crotch(const Course& c);
-  void make_crotch_room(const Course& c, const Crotch& k);
+  void make_crotch_room(const Course& c, Crotch& k);
   std::array<Place, 2> crotch_places(const Crotch& k, std::uint32_t i, std::uint32_t sts) const;
   void cast_on_along_split(const Course& c);
 
