@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <unordered_map>
 
 #include "common/error.hpp"
@@ -198,10 +199,12 @@ class ProgramLayouts {
     std::uint32_t on_bed = 0;             // live loops on the bed (every run of the layout)
     // The places in their join of the runs cast on so far (the leftmost and rightmost).
     std::uint32_t leftmost = kNoWrap, rightmost = 0;
-    // The last cast-on along a split's second side: its loop where the crotch's sts change
-    // beds. When the first branch takes the round's start with it (it is the left one), the
-    // second's rounds start there: its loop at the front's left end.
-    std::uint32_t second_start = kNoWrap;
+    // The last cast-on along a split: the loop at the front's left end of the branch right of
+    // the crotch, which the emitter lays out where the crotch's sts change beds (the first
+    // side's loop just after that place when the first side is right, the other side's just
+    // before it when the first side is left). When the branch knit first takes the round's
+    // start with it (it is the left one), the other's rounds start there.
+    std::array<std::uint32_t, 2> right_branch_start{kNoWrap, kNoWrap};
   };
 
   // The run a run is joined into at last (runs that a join takes share a layout).
@@ -387,12 +390,17 @@ class ProgramLayouts {
     runs_.start(step.run, first, RunShape::line);
     runs_.start(step.other, second, RunShape::line);
     piece.on_bed += static_cast<std::uint32_t>(first.size() + second.size());
-    piece.second_start =
-        second[crotch_sts_on_end_bed(static_cast<std::uint32_t>(second.size())) - 1];
+    note_right_branch_starts(piece, first, second);
     Course& course = l.courses.emplace_back(append(l, step.stitches, left_to_right));
     course.along_split = true;
     crotch_course_[step.run.index()] = {index_of(l),
                                         static_cast<std::uint32_t>(l.courses.size() - 1)};
+  }
+
+  static void note_right_branch_starts(Piece& piece, const std::vector<std::uint32_t>& first,
+                                       const std::vector<std::uint32_t>& second) {
+    auto k = crotch_sts_on_end_bed(static_cast<std::uint32_t>(first.size()));
+    piece.right_branch_start = {k < first.size() ? first[k] : kNoWrap, second[k - 1]};
   }
 
   bool is_sco(std::uint32_t worked) const {
@@ -419,8 +427,10 @@ class ProgramLayouts {
     piece.on_bed += static_cast<std::uint32_t>(left.size() + second.size()) - seg.count;
     runs_.replace(seg, left, step.shape);
     runs_.start(step.other, second, RunShape::line);
-    piece.second_start =
-        second[crotch_sts_on_end_bed(static_cast<std::uint32_t>(second.size())) - 1];
+    std::vector<std::uint32_t> first;  // the sco sts' loops on the first side
+    for (std::uint32_t loop : left)
+      if (g_.type[g_.loops[loop].maker] == StitchType::sco) first.push_back(loop);
+    note_right_branch_starts(piece, first, second);
     std::uint32_t crotch = kNoWrap;
     Range sco;
     for (std::uint32_t begin = step.stitches.begin; begin < step.stitches.end;) {
@@ -490,11 +500,11 @@ class ProgramLayouts {
     piece.on_bed = piece.on_bed + static_cast<std::uint32_t>(left.size()) - seg.count;
     // A branch's round (others wait) takes the round's start only where it holds that loop.
     bool takes_start = whole && !others_wait;
-    if (l.tube && piece.round_start == kNoWrap && takes_start)
-      piece.round_start =
-          piece.second_start != kNoWrap && runs_.run_of(piece.second_start) == seg.run
-              ? piece.second_start
-              : seg.first;
+    if (l.tube && piece.round_start == kNoWrap && takes_start) {
+      piece.round_start = seg.first;
+      for (std::uint32_t loop : piece.right_branch_start)
+        if (loop != kNoWrap && runs_.run_of(loop) == seg.run) piece.round_start = loop;
+    }
     for (std::uint32_t loop = seg.first, n = 0; n < seg.count; ++n, loop = runs_.next(loop))
       takes_start |= loop == piece.round_start;
     RunId tail = runs_.leaves_tail(seg) && left.empty() ? tail_run() : RunId();
