@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <limits>
 
 #include "common/error.hpp"
 #include "knitout/emitter.hpp"
@@ -65,17 +66,19 @@ Emitter::Crotch Emitter::plan_crotch(const Course& c) {
 // where the bed has room for them, else right.
 void Emitter::make_crotch_room(const Course& c, Crotch& k) {
   auto needles = static_cast<std::int32_t>(p_.needles);
+  std::int32_t short_by = std::numeric_limits<std::int32_t>::max();  // on the better side
   for (bool right : {false, true}) {
     room_.clear();
-    bool fits = true;
+    std::int32_t over = 0;
     for (std::uint32_t loop : on_needles_) {
       std::size_t i = bed_index(fabric_place(loop).bed);
       if (k.gap[i] == 0 || (fabric_place(loop).needle >= k.cut[i]) != right) continue;
       std::int32_t to = live_[loop].home.needle + (right ? 1 : -1) * k.gap[i] * pitch_;
-      fits = fits && to >= 0 && to < needles;
+      over = std::max(over, right ? to - (needles - 1) : -to);
       room_.push_back({loop, {live_[loop].home.bed, to}});
     }
-    if (!fits) continue;
+    short_by = std::min(short_by, over);
+    if (over > 0) continue;
     for (std::size_t i = 0; i < 2; ++i) {  // the tube's loops: front on even needles, back odd
       auto parity = static_cast<std::int32_t>(i);
       std::int32_t first_right = k.cut[i] + ((k.cut[i] & 1) != parity ? 1 : 0);
@@ -87,10 +90,9 @@ void Emitter::make_crotch_room(const Course& c, Crotch& k) {
     return;
   }
   throw UnsupportedError(fmt::format(
-      "{}: the cast-on along a split at {} needs {} more needles on either side of the tube ({} "
-      "has needles 0..{})",
-      c_.input, g_.describe(l_.order[c.begin]), std::max(k.gap[0], k.gap[1]) * pitch_, p_.name,
-      needles - 1));
+      "{}: the cast-on along a split at {} needs {} more needles on one side of the tube, for "
+      "the crotch's loops between the branches ({} has needles 0..{})",
+      c_.input, g_.describe(l_.order[c.begin]), short_by, p_.name, needles - 1));
 }
 
 // The needles of a crotch st's loops: {first branch's, second's}.
@@ -109,6 +111,7 @@ std::array<Place, 2> Emitter::crotch_places(const Crotch& k, std::uint32_t i,
 void Emitter::cast_on_along_split(const Course& c) {
   source(c, "transfers (room for a cast-on along a split)");
   Crotch k = plan_crotch(c);
+  crotch_ = true;
   std::vector<std::uint8_t> ready(c.end - c.begin, 1);  // its sts take no loops
   go_home(c, ready, true);
   shift_stacks(c, ready);

@@ -1,5 +1,7 @@
 // The emitter's transfers between two courses: loops home, decrease stacks in lean order,
 // stacks re-spaced within the racking limit, purls to the other bed (emitter.hpp has the state).
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <tuple>
@@ -88,6 +90,9 @@ void Emitter::merge_decreases(const Course& c) {
       auto order = stacking_order(g_.type[s]);
       Place bottom = live_[taken(s)[order[0]]].now;
       LoopPlace& lp = live_[taken(s)[order[stage]]];
+      if (lp.now.bed != bottom.bed && crotch_ && c.partial)
+        unsupported_split(c, fmt::format("a decrease across a branch's fold beside a crotch ({})",
+                                         g_.describe(s)));
       if (lp.now.bed == bottom.bed) {
         along.push_back({lp.now, bottom});
       } else if (std::abs(rack_of({lp.now, bottom})) <= p_.max_transfer_stretch) {
