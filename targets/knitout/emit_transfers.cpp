@@ -91,8 +91,9 @@ void Emitter::merge_decreases(const Course& c) {
       Place bottom = live_[taken(s)[order[0]]].now;
       LoopPlace& lp = live_[taken(s)[order[stage]]];
       if (lp.now.bed != bottom.bed && crotch_ && c.partial)
-        unsupported_split(c, fmt::format("a decrease across a branch's fold beside a crotch ({})",
-                                         g_.describe(s)));
+        unsupported_split(
+            c, fmt::format("a decrease across a fold of a branch parted off at a crotch ({})",
+                           g_.describe(s)));
       if (lp.now.bed == bottom.bed) {
         along.push_back({lp.now, bottom});
       } else if (std::abs(rack_of({lp.now, bottom})) <= p_.max_transfer_stretch) {
