@@ -27,23 +27,26 @@ namespace {
 
 using T = StitchType;
 
-enum class KnitoutCase { hat_tube, ribbed_sheet, shaped_tube, short_row_sheet, sock };
+enum class KnitoutCase { hat_tube, ribbed_sheet, shaped_tube, short_row_sheet, sock, shorts };
 
 // About a million stitches each, about 1000 a row (the short-row sheet: pairs of short rows
 // turning at random stitches, about one row in three; the sock: a tube of 704 stitches round
-// with a short-row heel and a shaped toe).
+// with a short-row heel and a shaped toe; the shorts: a body of 1232 round parting into two legs).
 const Compilation& model(KnitoutCase c) {
   static std::map<KnitoutCase, std::unique_ptr<Compilation>> cache;
   auto& slot = cache[c];
   if (slot) return *slot;
   RandomShaping shaping{
       .purl = 0.3, .increase = 0.03, .decrease = 0.03, .min_width = 900, .max_width = 1100};
-  if (c == KnitoutCase::sock) {  // `skein new sock`, 330 cm round: 1.18M stitches
+  if (c == KnitoutCase::sock || c == KnitoutCase::shorts) {
+    // `skein new sock`, 330 cm round: 1.18M stitches; `skein new shorts`, 560 cm round, legs
+    // 110 cm: 1.16M stitches, its legs parting at a crotch of 406 sts (cast on along a split).
+    bool sock = c == KnitoutCase::sock;
     ShapeSize size;
-    size.circumference = 330;
-    size.length = 200;
-    std::string name = "skein-bench-sock";
-    std::string project = write_shape(make_shape("sock", size, name),
+    size.circumference = sock ? 330 : 560;
+    size.length = sock ? 200 : 110;
+    std::string name = sock ? "skein-bench-sock" : "skein-bench-shorts";
+    std::string project = write_shape(make_shape(sock ? "sock" : "shorts", size, name),
                                       (std::filesystem::temp_directory_path() / name).string());
     slot = std::make_unique<Compilation>(compile_model(project));
     return *slot;
@@ -134,7 +137,7 @@ void BM_KnitoutFabricReport(benchmark::State& state) {
 }
 
 #define KNITOUT_CASES \
-  ->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Arg(4)->Unit(benchmark::kMillisecond)->Iterations(3)
+  ->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Arg(4)->Arg(5)->Unit(benchmark::kMillisecond)->Iterations(3)
 BENCHMARK(BM_KnitoutEmit) KNITOUT_CASES;
 BENCHMARK(BM_KnitoutReplay) KNITOUT_CASES;
 BENCHMARK(BM_KnitoutVerify) KNITOUT_CASES;

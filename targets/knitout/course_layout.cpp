@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <unordered_map>
 
 #include "common/error.hpp"
@@ -34,6 +35,7 @@ bool has_machine_recipe(StitchType t) {
     case StitchType::sr5:
     case StitchType::tuck:
     case StitchType::sl:
+    case StitchType::sco:
       return true;
     default:
       return false;
@@ -48,7 +50,10 @@ void check_stitches(const KnitGraph& g) {
   }
   for (const Loop& l : g.loops) {
     StitchId at = l.taker != kNoStitch ? l.taker : l.maker;
-    if (l.kind != LoopKind::wale) unsupported(g, "mismatched edges (a loop across a mismatch)", at);
+    bool crotch = l.kind == LoopKind::split && l.maker != kNoStitch &&
+                  g.type[l.maker] == StitchType::sco;  // a cast-on along a split's
+    if (l.kind != LoopKind::wale && !crotch)
+      unsupported(g, "mismatched edges (a loop across a mismatch)", at);
     if (l.maker == kNoStitch || l.taker == kNoStitch) unsupported(g, "a loop with an open end", at);
   }
 }
@@ -156,10 +161,17 @@ class ProgramLayouts {
         join_place_(c.program.runs.size(), kNoWrap) {
     for (std::uint32_t r = 0; r < joined_to_.size(); ++r) joined_to_[r] = r;
     for (const Step& step : p_.steps) {
+      // A split's parts and a cast-on along a split's two sides stay in the layout of the tube
+      // they part (the branches are knit where their loops wait).
+      if (step.kind == StepKind::split || (step.kind == StepKind::cast_on && step.other.valid())) {
+        RunId from = step.kind == StepKind::split ? p_.segments[step.reads.begin].run : step.run;
+        for (RunId part : {step.run, step.other})
+          if (part.valid() && part != from) unite(part.index(), from.index());
+      }
       if (step.kind != StepKind::join) continue;
       for (std::uint32_t i = step.reads.begin; i < step.reads.end; ++i) {
         std::uint32_t run = p_.segments[i].run.index();
-        joined_to_[root(run)] = root(step.run.index());
+        unite(run, step.run.index());
         if (join_place_[run] == kNoWrap) join_place_[run] = i - step.reads.begin;
       }
     }
@@ -187,6 +199,12 @@ class ProgramLayouts {
     std::uint32_t on_bed = 0;             // live loops on the bed (every run of the layout)
     // The places in their join of the runs cast on so far (the leftmost and rightmost).
     std::uint32_t leftmost = kNoWrap, rightmost = 0;
+    // The last cast-on along a split: the loop at the front's left end of the branch right of
+    // the crotch, which the emitter lays out where the crotch's sts change beds (the first
+    // side's loop just after that place when the first side is right, the other side's just
+    // before it when the first side is left). When the branch knit first takes the round's
+    // start with it (it is the left one), the other's rounds start there.
+    std::array<std::uint32_t, 2> right_branch_start{kNoWrap, kNoWrap};
   };
 
   // The run a run is joined into at last (runs that a join takes share a layout).
@@ -194,6 +212,7 @@ class ProgramLayouts {
     while (joined_to_[run] != run) run = joined_to_[run] = joined_to_[joined_to_[run]];
     return run;
   }
+  void unite(std::uint32_t run, std::uint32_t into) { joined_to_[root(run)] = root(into); }
 
   // A sheet cast on while loops wait on the bed goes left of them when the join takes it before
   // every run cast on so far, right of them when after; between them there is no room.
@@ -214,6 +233,7 @@ class ProgramLayouts {
   // Runs taken up by one course become one (flaps into a sheet): the program's join, on the
   // lowering's list of live loops. The course after it knits across the pieces.
   void join(const Step& step) {
+    note_arc_ends(step);
     for (std::uint32_t i = step.reads.begin; i < step.reads.end; ++i) {
       const Segment& seg = p_.segments[i];
       if (runs_.shape(seg.run) == RunShape::ring)
@@ -224,23 +244,41 @@ class ProgramLayouts {
     }
   }
 
+  // A join that takes the first side of a cast-on along a split closes the first branch's ring
+  // with it: the branch's loops before and after it are where the crotch is cast on.
+  void note_arc_ends(const Step& step) {
+    std::uint32_t n = step.reads.size();
+    for (std::uint32_t i = 0; i < n; ++i) {
+      auto crotch = crotch_course_.find(p_.segments[step.reads.begin + i].run.index());
+      if (crotch == crotch_course_.end()) continue;
+      const Segment& before = p_.segments[step.reads.begin + (i + n - 1) % n];
+      const Segment& after = p_.segments[step.reads.begin + (i + 1) % n];
+      Course& c = layouts_[crotch->second.first].courses[crotch->second.second];
+      c.arc_end = runs_.walk_end(before);
+      c.arc_start = after.first;
+      crotch_course_.erase(crotch);
+    }
+  }
+
   void take_step(const Step& step) {
     switch (step.kind) {
       case StepKind::cast_on:
         return add_course(step);
+      case StepKind::split:  // the branches are knit where their loops wait, in one layout
+        return runs_.cut(p_.segments[step.reads.begin], step.run, step.other);
+      case StepKind::reverse:
+        return runs_.reverse(step.run);
       case StepKind::course:
       case StepKind::bind_off:
         // A course that binds off in two places parts its run into two lines (`other`): two
         // runs on the bed.
-        if (step.other.valid())
+        if (step.other.valid() && !casts_on_along_split(step))
           unsupported(g_, "a course that binds off its run in two places (several runs on the bed)",
                       first_stitch(step));
         return add_course(step);
       case StepKind::join:
         return join(step);
       case StepKind::three_needle_bind_off:
-      case StepKind::split:
-      case StepKind::reverse:
         unsupported(g_,
                     fmt::format("a {} step of the live-loop program (several runs on the bed)",
                                 step_kind_name(step.kind)),
@@ -257,12 +295,13 @@ class ProgramLayouts {
     return g_.loops[seg.first].taker;
   }
 
-  // The loops a course leaves in its run, in run order (left to right).
-  std::vector<std::uint32_t> left_in_run(Range stitches, bool left_to_right) const {
+  // The loops a course leaves in its run (or on the other side of a split), in run order.
+  std::vector<std::uint32_t> left_in_run(Range stitches, bool left_to_right,
+                                         LoopPlace place = LoopPlace::in_run) const {
     std::vector<std::uint32_t> loops;
     auto add = [&](std::uint32_t i) {
       for (std::uint32_t k = p_.made_at[i]; k < p_.made_at[i + 1]; ++k)
-        if (p_.made[k].place == LoopPlace::in_run) loops.push_back(p_.made[k].loop);
+        if (p_.made[k].place == place) loops.push_back(p_.made[k].loop);
     };
     if (left_to_right)
       for (std::uint32_t i = stitches.begin; i < stitches.end; ++i) add(i);
@@ -279,8 +318,10 @@ class ProgramLayouts {
     bool cast_on = step.kind == StepKind::cast_on;
     std::uint32_t& mine = layout_of_[step.yarn];
     if (cast_on) {
-      if (mine != kNoWrap) unsupported(g_, "a second cast-on in one yarn piece", at);
       std::uint32_t& group = layout_of_group_[root(step.run.index())];
+      bool along_split = step.other.valid() && group != 0;  // in the tube it parts
+      if (mine != kNoWrap && !(along_split && mine == group - 1))
+        unsupported(g_, "a second cast-on in one yarn piece", at);
       if (group == 0) {
         layouts_.emplace_back();
         pieces_.emplace_back();
@@ -310,6 +351,9 @@ class ProgramLayouts {
     CourseLayout& l = layouts_[index];
     Piece& piece = pieces_[index];
     bool left_to_right = step.direction != CourseDirection::right_to_left;
+    if (cast_on && step.other.valid() && !l.courses.empty())
+      return add_along_split(step, l, piece, left_to_right);
+    if (!cast_on && step.other.valid()) return add_round_along_split(step, l, piece, left_to_right);
     if (cast_on) {
       std::vector<std::uint32_t> left = left_in_run(step.stitches, left_to_right);
       Beside beside = Beside::none;
@@ -334,6 +378,96 @@ class ProgramLayouts {
       add_block(l, piece, {begin, end}, left_to_right, step.shape);
       begin = end;
     }
+  }
+
+  // A cast-on along a split: its two sides are runs of their own, the first taken by the join
+  // that closes the first branch (which says where its arc ends), the other by the second's.
+  void add_along_split(const Step& step, CourseLayout& l, Piece& piece, bool left_to_right) {
+    if (!l.tube) unsupported(g_, "a cast-on along a split of a sheet", first_stitch(step));
+    std::vector<std::uint32_t> first = left_in_run(step.stitches, left_to_right, LoopPlace::in_run),
+                               second =
+                                   left_in_run(step.stitches, left_to_right, LoopPlace::other_side);
+    runs_.start(step.run, first, RunShape::line);
+    runs_.start(step.other, second, RunShape::line);
+    piece.on_bed += static_cast<std::uint32_t>(first.size() + second.size());
+    note_right_branch_starts(piece, first, second);
+    Course& course = l.courses.emplace_back(append(l, step.stitches, left_to_right));
+    course.along_split = true;
+    crotch_course_[step.run.index()] = {index_of(l),
+                                        static_cast<std::uint32_t>(l.courses.size() - 1)};
+  }
+
+  static void note_right_branch_starts(Piece& piece, const std::vector<std::uint32_t>& first,
+                                       const std::vector<std::uint32_t>& second) {
+    auto k = crotch_sts_on_end_bed(static_cast<std::uint32_t>(first.size()));
+    piece.right_branch_start = {k < first.size() ? first[k] : kNoWrap, second[k - 1]};
+  }
+
+  bool is_sco(std::uint32_t worked) const {
+    return g_.type[p_.stitches[worked].stitch] == StitchType::sco;
+  }
+  bool casts_on_along_split(const Step& step) const {
+    for (std::uint32_t i = step.stitches.begin; i < step.stitches.end; ++i)
+      if (is_sco(i)) return true;
+    return false;
+  }
+
+  // A round of a branch worked with the yarn of the round (own yarn) that casts on along the
+  // split as it goes: its sts over the branch's arc are knit where their loops wait, its sco
+  // sts cast on as a course of their own between the branches. The arc's ends are the loops
+  // beside them in the branch's ring (a loop made after them by the loop it is knit from).
+  void add_round_along_split(const Step& step, CourseLayout& l, Piece& piece, bool left_to_right) {
+    if (!l.tube) unsupported(g_, "a cast-on along a split of a sheet", first_stitch(step));
+    Segment seg = segment_of(step.stitches, left_to_right);
+    std::vector<std::uint32_t> left = left_in_run(step.stitches, left_to_right, LoopPlace::in_run),
+                               second =
+                                   left_in_run(step.stitches, left_to_right, LoopPlace::other_side);
+    for (std::uint32_t loop = seg.first, n = 0; n < seg.count; ++n, loop = runs_.next(loop))
+      if (loop == piece.round_start) piece.round_start = kNoWrap;  // the branch takes it along
+    piece.on_bed += static_cast<std::uint32_t>(left.size() + second.size()) - seg.count;
+    runs_.replace(seg, left, step.shape);
+    runs_.start(step.other, second, RunShape::line);
+    std::vector<std::uint32_t> first;  // the sco sts' loops on the first side
+    for (std::uint32_t loop : left)
+      if (g_.type[g_.loops[loop].maker] == StitchType::sco) first.push_back(loop);
+    note_right_branch_starts(piece, first, second);
+    std::uint32_t crotch = kNoWrap;
+    Range sco;
+    for (std::uint32_t begin = step.stitches.begin; begin < step.stitches.end;) {
+      std::uint32_t end = begin + 1;
+      while (end < step.stitches.end && is_sco(end) == is_sco(begin)) ++end;
+      Course& course = l.courses.emplace_back(append(l, {begin, end}, left_to_right));
+      course.partial = true;
+      course.along_split = is_sco(begin);
+      if (course.along_split) {
+        if (crotch != kNoWrap)
+          unsupported(g_, "a round that casts on along a split twice", first_stitch(step));
+        crotch = static_cast<std::uint32_t>(l.courses.size() - 1);
+        sco = {begin, end};
+      }
+      begin = end;
+    }
+    note_arc_ends_in_round(l.courses[crotch], sco, left);
+  }
+  void note_arc_ends_in_round(Course& c, Range sco, const std::vector<std::uint32_t>& ring) const {
+    auto n = static_cast<std::uint32_t>(ring.size());
+    std::uint32_t first = 0, last = 0;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      StitchId maker = g_.loops[ring[i]].maker;
+      if (g_.type[maker] != StitchType::sco) continue;
+      if (g_.type[g_.loops[ring[(i + n - 1) % n]].maker] != StitchType::sco) first = i;
+      if (g_.type[g_.loops[ring[(i + 1) % n]].maker] != StitchType::sco) last = i;
+    }
+    c.arc_end = where_it_waits(ring[(first + n - 1) % n], sco);
+    c.arc_start = where_it_waits(ring[(last + 1) % n], sco);
+  }
+  // A loop the round makes after its sco sts is not on the bed when they are cast on: the loop
+  // it is knit from waits where it will be.
+  std::uint32_t where_it_waits(std::uint32_t loop, Range crotch) const {
+    StitchId maker = g_.loops[loop].maker;
+    if (p_.worked_at[maker] < crotch.end) return loop;
+    auto taken = g_.loops_taken_by(maker);
+    return taken.empty() ? loop : taken[stacking_order(g_.type[maker])[0]];
   }
 
   Course append(CourseLayout& l, Range stitches, bool left_to_right) const {
@@ -364,7 +498,13 @@ class ProgramLayouts {
     bool whole = seg.count == runs_.size(seg.run);
     bool others_wait = piece.on_bed > runs_.size(seg.run);  // another piece's loops
     piece.on_bed = piece.on_bed + static_cast<std::uint32_t>(left.size()) - seg.count;
-    bool takes_start = whole;
+    // A branch's round (others wait) takes the round's start only where it holds that loop.
+    bool takes_start = whole && !others_wait;
+    if (l.tube && piece.round_start == kNoWrap && takes_start) {
+      piece.round_start = seg.first;
+      for (std::uint32_t loop : piece.right_branch_start)
+        if (loop != kNoWrap && runs_.run_of(loop) == seg.run) piece.round_start = loop;
+    }
     for (std::uint32_t loop = seg.first, n = 0; n < seg.count; ++n, loop = runs_.next(loop))
       takes_start |= loop == piece.round_start;
     RunId tail = runs_.leaves_tail(seg) && left.empty() ? tail_run() : RunId();
@@ -375,7 +515,7 @@ class ProgramLayouts {
     }
     Course& course = l.courses.emplace_back(append(l, stitches, left_to_right));
     course.partial = !whole || others_wait;
-    course.rotated = l.tube && whole && seg.first != piece.round_start;
+    course.rotated = l.tube && whole && !others_wait && seg.first != piece.round_start;
     if (course.rotated)
       course.layout_start = taker_of_round_start(g_, l, course, piece.round_start);
     std::uint32_t before = whole ? kNoWrap : runs_.prev(seg.first);
@@ -416,6 +556,7 @@ class ProgramLayouts {
     CourseLayout& l = layouts_[index];
     for (const Course& course : l.courses) {
       RowShape shape = g_.row_shape[course.row];
+      if (course.along_split) continue;  // a line of sts between two branches of the tube
       if (shape != RowShape::short_row && (shape == RowShape::closed) != l.tube)
         unsupported(g_, "a mix of open rows and closed rounds", l.order[course.begin]);
     }
@@ -481,6 +622,8 @@ class ProgramLayouts {
   std::vector<std::uint32_t> joined_to_;   // per run of the program: a run it is joined into
   std::vector<std::uint32_t> join_place_;  // per run: its place in the first join taking it
   std::unordered_map<std::uint32_t, std::uint32_t> layout_of_group_;  // root run -> layout + 1
+  // Per first side of a cast-on along a split not yet joined: its layout and course.
+  std::unordered_map<std::uint32_t, std::pair<std::uint32_t, std::uint32_t>> crotch_course_;
   std::uint32_t tails_ = 0;
 };
 

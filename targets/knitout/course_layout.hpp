@@ -36,7 +36,18 @@ struct Course {
   // another turn wrapped it already, the turning stitch's own loop instead (wrap_back).
   std::uint32_t wrap = kNoWrap;
   bool wrap_back = false;  // the wrap is over the turning stitch's own loop, made going back
+  // A cast-on along a split (sco sts, a crotch): a tube parts into two branches and each st
+  // makes a loop for each, cast on between them where they part. The loops of the first
+  // branch's ring (the one that takes the sts' first loops) just before and just after its sts.
+  bool along_split = false;
+  std::uint32_t arc_end = kNoWrap, arc_start = kNoWrap;
 };
+
+// A cast-on along a split lays the loops of its first sts (in the first branch's order) on the
+// bed where the first branch's arc ends, the others on the other bed: the first ones half.
+inline std::uint32_t crotch_sts_on_end_bed(std::uint32_t sts) {
+  return (sts + 1) / 2;
+}
 
 struct CourseLayout {
   bool tube = false;            // closed rounds (a helix) rather than open rows

@@ -21,6 +21,10 @@ void Emitter::run() {
   for (std::size_t i = 1; i < l_.courses.size(); ++i) {
     const Course& course = l_.courses[i];
     carrier_ = carriers_[course.yarn];
+    if (course.along_split) {  // the crotch between two branches of the tube
+      cast_on_along_split(course);
+      continue;
+    }
     if (course.cast_on) {  // a sheet beside the loops on the bed, its yarn and border its own
       plan_beside(course);
       cast_on(course);

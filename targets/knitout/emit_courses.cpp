@@ -263,7 +263,7 @@ std::size_t Emitter::needle_slot(Place p) const {
 // twice); where it cannot (the racking climbed to the limit), the far end of the range, from
 // which the following links climb longest.
 void Emitter::chain_link(Place here, Place there, const std::vector<std::uint8_t>& busy) {
-  if (here.bed != there.bed) return move_across_beds(here, there);
+  if (here.bed != there.bed) return move_across_beds(here, there, &busy);
   bool front = here.bed == Bed::f;
   std::int32_t step = front ? there.needle - here.needle : here.needle - there.needle;
   std::int32_t limit = p_.max_transfer_stretch, dir = step > 0 ? 1 : -1;

@@ -1,5 +1,7 @@
 // The emitter's transfers between two courses: loops home, decrease stacks in lean order,
 // stacks re-spaced within the racking limit, purls to the other bed (emitter.hpp has the state).
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <tuple>
@@ -88,6 +90,10 @@ void Emitter::merge_decreases(const Course& c) {
       auto order = stacking_order(g_.type[s]);
       Place bottom = live_[taken(s)[order[0]]].now;
       LoopPlace& lp = live_[taken(s)[order[stage]]];
+      if (lp.now.bed != bottom.bed && crotch_ && c.partial)
+        unsupported_split(
+            c, fmt::format("a decrease across a fold of a branch parted off at a crotch ({})",
+                           g_.describe(s)));
       if (lp.now.bed == bottom.bed) {
         along.push_back({lp.now, bottom});
       } else if (std::abs(rack_of({lp.now, bottom})) <= p_.max_transfer_stretch) {
@@ -107,19 +113,34 @@ void Emitter::merge_decreases(const Course& c) {
 // round's start, the bind-off chain) it may have further to go than one transfer stretches:
 // it then hops from bed to bed, as far as the profile allows each time, over needles strictly
 // between the two ends with the parity of the one further right. Those are empty: on that
-// end's bed they lie beyond its loops, on the other bed they face them and hold none.
-void Emitter::move_across_beds(Place from, Place to) {
+// end's bed they lie beyond its loops, on the other bed they face them and hold none. Where a
+// fold is slanted (a branch's crotch, its ends far apart), loops lie between the two ends: with
+// `busy` given, the hops then land on the needles a tube leaves empty (odd in front, even at
+// the back), which face its loops.
+void Emitter::move_across_beds(Place from, Place to, const std::vector<std::uint8_t>* busy) {
+  std::vector<Place> hops = hops_across(from, to, false);
+  if (busy && std::any_of(hops.begin(), hops.end() - 1,
+                          [&](Place p) { return (*busy)[needle_slot(p)] != 0; }))
+    hops = hops_across(from, to, true);
+  for (Place hop : hops) {
+    w_.xfer(at(from), at(hop));
+    from = hop;
+  }
+}
+std::vector<Place> Emitter::hops_across(Place from, Place to, bool tube_free) const {
   std::int32_t stretch = p_.max_transfer_stretch, parity = std::max(from.needle, to.needle) & 1;
+  std::vector<Place> hops;
   Place now = from;
   while (now.bed == to.bed || std::abs(to.needle - now.needle) > stretch) {
     std::int32_t dir = to.needle > now.needle ? 1 : -1;
     std::int32_t n = now.needle + dir * std::min(stretch, std::abs(to.needle - now.needle));
-    if ((n & 1) != parity) n -= dir;
-    Place next{other(now.bed), n};
-    w_.xfer(at(now), at(next));
-    now = next;
+    Bed bed = other(now.bed);
+    if ((n & 1) != (tube_free ? (bed == Bed::f ? 1 : 0) : parity)) n -= dir;
+    now = {bed, n};
+    hops.push_back(now);
   }
-  w_.xfer(at(now), at(to));
+  hops.push_back(to);
+  return hops;
 }
 
 // A loop's place along the fabric, left to right in the stitches' frames: the needle on a

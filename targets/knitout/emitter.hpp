@@ -151,7 +151,8 @@ class Emitter {
   bool fits_one_stage(const Course& c) const;
   void go_home(const Course& c, std::vector<std::uint8_t>& ready, bool staged);
   void merge_decreases(const Course& c);
-  void move_across_beds(Place from, Place to);
+  void move_across_beds(Place from, Place to, const std::vector<std::uint8_t>* busy = nullptr);
+  std::vector<Place> hops_across(Place from, Place to, bool tube_free) const;
   std::int32_t ring(Place p) const;
   Place place_at(std::int32_t u) const;
   void shift_stacks(const Course& c, const std::vector<std::uint8_t>& ready);
@@ -183,6 +184,23 @@ class Emitter {
   std::size_t needle_slot(Place p) const;
   void chain_link(Place here, Place there, const std::vector<std::uint8_t>& busy);
 
+  // ---- a cast-on along a split (emit_split.cpp) ----
+  struct Crotch {
+    bool first_right = false;      // the first branch lies right of the cuts
+    Bed end_bed = Bed::f;          // the bed where the first branch's arc ends
+    std::uint32_t on_end_bed = 0;  // the sts whose loops lie on that bed (the first ones)
+    // Per bed (front, back): the first needle right of the cut, the gap's lowest needle once
+    // the room is made, and the gap's width in loops.
+    std::array<std::int32_t, 2> cut{0, 0}, bottom{0, 0}, gap{0, 0};
+  };
+  [[noreturn]] void unsupported_split(const Course& c, const std::string& what) const;
+  Place fabric_place(std::uint32_t loop) const;
+  bool on_the_bed(std::uint32_t loop) const;
+  Crotch plan_crotch(const Course& c);
+  void make_crotch_room(const Course& c, Crotch& k);
+  std::array<Place, 2> crotch_places(const Crotch& k, std::uint32_t i, std::uint32_t sts) const;
+  void cast_on_along_split(const Course& c);
+
   // ---- output helpers ----
   void source(const Course& c, const char* what);  // emit.cpp
   std::span<const std::uint32_t> taken(StitchId s) const { return g_.loops_taken_by(s); }
@@ -203,6 +221,7 @@ class Emitter {
   std::vector<std::uint8_t> in_course_;          // per loop: taken by the course being planned
   const std::vector<std::string>& carriers_;
   std::string carrier_;  // the carrier of the course being knit
+  bool crotch_ = false;  // a cast-on along a split has parted the tube into branches
 };
 
 }  // namespace skein::knitout::emit
