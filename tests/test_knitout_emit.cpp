@@ -350,6 +350,8 @@ TEST(KnitoutRandomized, ShapedSheetsAndTubesCompileAndProveOnEveryProfileTheyFit
       try {
         knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
         EXPECT_TRUE(proof.proven) << "trial " << trial << " on " << name << ": " << proof.summary;
+        if (!proof.proven && std::getenv("SKEIN_DUMP_FAILURES"))
+          std::ofstream(fmt::format("/tmp/knitout-trial{}-{}.k", trial, name)) << text;
         proven += proof.proven;
       } catch (const ParseError& e) {
         if (std::getenv("SKEIN_DUMP_FAILURES"))

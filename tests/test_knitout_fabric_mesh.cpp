@@ -63,8 +63,7 @@ bool whole_rows_of_one_yarn(const Compilation& c) {
 
 // Every sample on generic and swg091n2 whose knitout is proven: its fabric, written as
 // `skein verify F --against M --fabric x.obj` writes it (the piece's border in its own yarn left
-// out: on swg091n2 the tucks and a pass over them that brings the yarn round to where the first
-// row starts, a course of its own), reads back as a knittable stitch mesh with the model's
+// out: its tucks), reads back as a knittable stitch mesh with the model's
 // stitches, type by type; where the model itself has what whole rows of one yarn cannot say
 // (short rows, several yarn pieces, part of the work bound off), it is refused by name.
 TEST(KnitoutFabricMesh, EverySampleRoundTripsOnEachProfileOrIsRefusedForWhatItsModelHas) {
@@ -115,8 +114,7 @@ TEST(KnitoutFabricMesh, EverySampleRoundTripsOnEachProfileOrIsRefusedForWhatItsM
 class KnitoutFabricMeshCli : public testing::SkeinCliTest {};
 
 // What a user types: compile, verify --fabric x.obj, check x.obj. With --against the proof
-// says which loops are the border (on swg091n2 a pass over the back's tucks brings the yarn
-// round to where the first round starts): `verify` proves the file and the fabric written is
+// says which loops are the border (its tucks): `verify` proves the file and the fabric written is
 // the model's 2,048 stitches.
 TEST_F(KnitoutFabricMeshCli, TheHatRoundTrips) {
   for (std::string profile : {"generic", "swg091n2"}) {

@@ -12,6 +12,7 @@
 
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "knitout/fabric_report.hpp"
 #include "knitout/vbed_simulator.hpp"
 #include "test_knitout_util.hpp"
 
@@ -20,8 +21,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// "profile: error line N: message" or "profile: warning rule-a, note rule-b" (in rule order).
-std::string verdict_of(const fs::path& path, const std::string& machine = "") {
+// "profile: error line N: message" or "profile: warning rule-a, note rule-b" (in rule order);
+// with `fabric`, the fabric report's lines after it.
+std::string verdict_of(const fs::path& path, const std::string& machine = "", bool fabric = false) {
   std::string text = read_file(path.string());
   std::string name = path.filename().string();
   knitout::ProfileChoice chosen = knitout::choose_profile(
@@ -37,6 +39,10 @@ std::string verdict_of(const fs::path& path, const std::string& machine = "") {
       sep = ", ";
     }
     if (replay.findings.empty()) verdict += " clean";
+    if (fabric) {
+      verdict += '\n';
+      verdict += knitout::fabric_summary(knitout::fabric_report(replay), chosen.profile);
+    }
   } catch (const ParseError& e) {
     verdict += fmt::format(" error line {}: {}", e.line(), e.expected());
   }
@@ -149,6 +155,79 @@ TEST(KnitoutForeign, TheExamplesOnTheShimaProfile) {
     if (want == differs.end()) expect.replace(0, expect.find(':'), "swg091n2");
     EXPECT_EQ(verdict_of(entry.path(), "swg091n2"), expect) << key;
   }
+}
+
+// Files written for skein's tests by hand, never seen by the v-bed before they were written
+// (tests/data/knitout-unseen/ORIGIN.md), in the styles of knitout-frontend-js's examples: each
+// with the verdict it deserves and the fabric it makes, counted by hand from the file:
+// - all-needle-quarter-rack: tucks on every needle of both beds at rack 0.25, six all-needle
+//   rows (120 loops a bed), the last row dropped (40 unravel). knitout-to-dat allows rack 0.25.
+// - decrease-split-racking: 10 tucks; rows of 10, 10, 9 (f5 moved onto f4 at rack -1: one
+//   decrease), 8 knits and a split (its old loop moved on to f5 at rack 1), 10 and 10.
+// - eyelet-without-rack: `xfer b3 f2` at rack 0, where b3 faces f3: the spec's error.
+// - kniterate-tuck-slip: a knit cast-on of waste yarn (20 loops through nothing, six rows), a
+//   draw thread row, ten rows of the main yarn: tucks on odd needles in rows 2, 6 and 10 (the
+//   last 10 hold nothing and are dropped with the 20 loops on the needles), rows 4 and 8 slip
+//   (miss) the even needles. 120 + 20 + 150 knits, 30 tucks; a tuck knitted off with its
+//   needle's loop is no decrease.
+// - stripes-lettered-carriers: carriers A and B (names, not numbers), 12 tucks, 16 rows of 12
+//   in stripes of four, comments after operations, x- extensions, a miss parking B, a pause.
+// - tube-left-on-needles: five rounds of 6 + 6 knit on empty needles first, left on the
+//   needles, its carrier never taken out: a warning the file deserves.
+TEST(KnitoutForeign, FilesWrittenByHandForTheseTestsGiveTheirVerdictAndFabric) {
+  const std::map<std::string, std::string> expected{
+      {"all-needle-quarter-rack.k",
+       "swg091n2: clean\n"
+       "  fabric: 1 piece; 120 knit on the front bed, 120 on the back, 40 tuck, 0 split (0 "
+       "decreases)\n"
+       "  loops dropped that unravel: 40, loops left on the needles: 0\n"
+       "  stitches pulled through nothing: 0, floats longer than 10 needles: 0, tucks that hold "
+       "nothing: 0"},
+      {"decrease-split-racking.k",
+       "swg091n2: clean\n"
+       "  fabric: 1 piece; 57 knit on the front bed, 0 on the back, 10 tuck, 1 split (1 "
+       "decreases)\n"
+       "  loops dropped that unravel: 10, loops left on the needles: 0\n"
+       "  stitches pulled through nothing: 0, floats longer than 10 needles: 0, tucks that hold "
+       "nothing: 0"},
+      {"eyelet-without-rack.k",
+       "generic: error line 21: b3 and f2 are not aligned at rack 0 (b3 faces f3)"},
+      {"kniterate-tuck-slip.k",
+       "kniterate: note knit-empty-needle\n"
+       "  fabric: 1 piece; 290 knit on the front bed, 0 on the back, 30 tuck, 0 split (0 "
+       "decreases)\n"
+       "  loops dropped that unravel: 30, loops left on the needles: 0\n"
+       "  stitches pulled through nothing: 20, floats longer than 6 needles: 0, tucks that hold "
+       "nothing: 10"},
+      {"stripes-lettered-carriers.k",
+       "generic: clean\n"
+       "  fabric: 1 piece; 192 knit on the front bed, 0 on the back, 12 tuck, 0 split (0 "
+       "decreases)\n"
+       "  loops dropped that unravel: 12, loops left on the needles: 0\n"
+       "  stitches pulled through nothing: 0, floats longer than 10 needles: 0, tucks that hold "
+       "nothing: 0"},
+      {"tube-left-on-needles.k",
+       "generic: note knit-empty-needle, warning carrier-left-in\n"
+       "  fabric: 1 piece; 30 knit on the front bed, 30 on the back, 0 tuck, 0 split (0 "
+       "decreases)\n"
+       "  loops dropped that unravel: 0, loops left on the needles: 12\n"
+       "  stitches pulled through nothing: 12, floats longer than 10 needles: 0, tucks that hold "
+       "nothing: 0"},
+  };
+  std::size_t files = 0;
+  fs::path dir = testing::source_path("tests/data/knitout-unseen");
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    if (entry.path().extension() != ".k") continue;
+    ++files;
+    std::string name = entry.path().filename().string();
+    auto want = expected.find(name);
+    std::string got = verdict_of(entry.path(), "", true);
+    if (want == expected.end())
+      ADD_FAILURE() << "no expected verdict for " << name << ": " << got;
+    else
+      EXPECT_EQ(got, want->second) << name;
+  }
+  EXPECT_EQ(files, expected.size());
 }
 
 }  // namespace

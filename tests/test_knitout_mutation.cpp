@@ -130,6 +130,31 @@ bool comes_straight_back(const std::vector<std::string>& lines, std::size_t i) {
   return false;
 }
 
+// The needle number of a stitch line ("tuck + f272 3": 272).
+int needle_number(const std::string& line) {
+  std::string n = needles_of(line).front();
+  return std::stoi(n.substr(n.find_first_of("-0123456789")));
+}
+bool makes_a_loop(const std::string& line) {
+  std::string op = words(line).front();
+  return op == "knit" || op == "tuck";
+}
+// The loop of line i is one the yarn turns at: the loops made before and after it (by its
+// carrier) lie on one side of its needle.
+bool yarn_turns_at(const std::vector<std::string>& lines, std::size_t i) {
+  std::string carrier = words(lines[i]).back();
+  auto neighbour = [&](int step) -> std::optional<int> {
+    for (auto j = static_cast<std::ptrdiff_t>(i) + step;
+         j >= 0 && j < static_cast<std::ptrdiff_t>(lines.size()); j += step)
+      if (is_op(lines[j]) && makes_a_loop(lines[j]) && words(lines[j]).back() == carrier)
+        return needle_number(lines[j]);
+    return std::nullopt;
+  };
+  std::optional<int> before = neighbour(-1), after = neighbour(1);
+  int here = needle_number(lines[i]);
+  return before && after && (*before - here) * (*after - here) > 0;
+}
+
 // Why an accepted edit cannot change the fabric, or "" when there is no such reason.
 std::string why_undetectable(const Mutant& m, const std::vector<std::string>& original,
                              const knitout::ProofResult& proof, const knitout::MachineProfile& p) {
@@ -146,9 +171,13 @@ std::string why_undetectable(const Mutant& m, const std::vector<std::string>& or
   auto border = [&](std::size_t i) {
     return i + 1 < proof.first_line && (carrier(i) == p.yarn_carrier || op(i) == "releasehook");
   };
-  if (m.kind == "swap" && all(border) &&
+  auto border_or_first = [&](std::size_t i) { return border(i) || i + 1 == proof.first_line; };
+  if (m.kind == "swap" && all(border_or_first) &&
       (op(m.lines[0]) == "releasehook" || op(m.lines[1]) == "releasehook"))
     return "the hook lets go of the yarn's end a stitch earlier or later (the same loops)";
+  if (m.kind == "direction" && all(border) && yarn_turns_at(original, m.lines[0]))
+    return "a border loop the yarn turns at (it comes and goes on one side) made going the "
+           "other way: the same turn";
   if (all([&](std::size_t i) { return i + 1 > proof.last_line; }))
     return "in the tag after the bind-off, which is dropped and unravels to the piece's last loop";
   // A short row's wrap is no st of the model: dropped, moved onto another waiting loop or made

@@ -120,19 +120,40 @@ std::vector<Needle> Emitter::pass_needles(const Course& c, Direction d) const {
   return needles;
 }
 
-// Alternating tucks over the cast-on needles (two passes per bed), starting in the profile's
+// Alternating tucks over the cast-on needles, each needle tucked once, starting in the profile's
 // first direction; returns the direction of the next pass. Each bed's first pass tucks the
 // first needle it meets, so a yarn-inserting hook beside the first stitch is beyond them all.
-Direction Emitter::tuck_border(const Course& c, const std::string& carrier) {
+// Two passes a bed (every other needle) end where a pass the first way starts; where the next
+// pass must go the other way (`then`), the first way's bed is tucked in one pass more than the
+// other's (three passes of every third needle; on a narrow piece one pass over a sheet of three
+// or fewer, or two passes of the first way's two needles and one over the other bed's), so that
+// the border ends where that pass starts: no loop of the piece's yarn that the model does not
+// have is knitted to take the yarn there. (Only a tube with one needle the first way cannot:
+// see cast_on.)
+Direction Emitter::tuck_border(const Course& c, const std::string& carrier, Direction then) {
   Direction d = p_.first_pass;
   std::int32_t beds = l_.tube ? 2 : 1, start[2] = {0, 0};
-  for (std::int32_t pass = 0; pass < 2 * beds; ++pass, d = opposite(d)) {
+  std::int32_t stride[2] = {2, 2};
+  if (then == opposite(p_.first_pass)) {
+    // (A sheet of three would tuck its middle needle alone going against the yarn, which comes
+    // to it and goes on from it the other way: wrapped round the needle.)
+    std::size_t firsts = pass_needles(c, d).size();
+    if (firsts >= (l_.tube ? 3u : 4u))
+      stride[0] = 3;
+    else if (!l_.tube)
+      stride[0] = 1;
+    else if (firsts == 2)
+      stride[1] = 1;
+  }
+  std::int32_t passes = stride[0] + (l_.tube ? stride[1] : 0);
+  for (std::int32_t pass = 0; pass < passes; ++pass, d = opposite(d)) {
     std::vector<Needle> needles = pass_needles(c, d);
     if (needles.empty()) continue;
-    std::int32_t& first = start[pass % beds];
+    std::int32_t bed = pass % beds, round = pass / beds;
+    std::int32_t& first = start[bed];
     if (pass < beds) first = needles.front().index;
     for (const Needle& n : needles)
-      if (std::abs(n.index - first) / pitch_ % 2 == pass / beds) w_.tuck(d, n, carrier);
+      if (std::abs(n.index - first) / pitch_ % stride[bed] == round) w_.tuck(d, n, carrier);
   }
   return d;
 }
@@ -170,35 +191,36 @@ void Emitter::yarn_out(const std::string& carrier) {
   w_.carriers(p_.hook == YarnHook::inhook ? "outhook" : "out", carrier);
 }
 
+// The main yarn's first course is the model's cast-on row. Over a waste section it is knitted
+// through the draw thread's loops, its carrier brought in with a miss where the row starts
+// against the profile's first way; without one, a tuck border in the main yarn ends where the
+// row starts. Either way no loop of the piece's yarn is made before it but the border's tucks.
 void Emitter::cast_on(const Course& c) {
-  Direction next = p_.first_pass;
+  Direction first = plan_[l_.order[c.begin]].travel;
   if (p_.waste_rows > 0) {
     w_.line(fmt::format(";!source: waste section: {} {} of waste yarn (carrier {})", p_.waste_rows,
                         l_.tube ? "rounds" : "rows", p_.waste_carrier));
     yarn_in(p_.waste_carrier);
-    Direction d = tuck_border(c, p_.waste_carrier);
+    Direction d = tuck_border(c, p_.waste_carrier, Direction::none);
     release(p_.waste_carrier);
     for (std::uint32_t row = 0; row < p_.waste_rows * (l_.tube ? 2 : 1); ++row, d = opposite(d))
       knit_pass(c, d, p_.waste_carrier);
     yarn_out(p_.waste_carrier);
     if (!p_.draw_carrier.empty()) draw_thread(c);
-    yarn_in(carrier_);
-  } else {
-    w_.line(";!source: cast-on border: alternating tucks");
-    yarn_in(carrier_);
-    next = tuck_border(c, carrier_);
-    release(carrier_);
+    if (first == p_.first_pass)
+      yarn_in(carrier_);
+    else
+      bring_in(c);
+    knit_course(c);
+    return release(carrier_);  // the hook lets go once the yarn has made its first course
   }
-  Direction first = plan_[l_.order[c.begin]].travel;
-  if (first != next) {
+  w_.line(";!source: cast-on border: alternating tucks");
+  yarn_in(carrier_);
+  Direction next = tuck_border(c, carrier_, first);
+  release(carrier_);
+  if (next != first) {  // a tube with one needle the first way: one loop more (the proof says so)
     w_.line(";!source: cast-on border: a pass to bring the yarn to where the first row starts");
     knit_pass(c, next, carrier_);
-    if (p_.waste_rows > 0) release(carrier_);
-  } else if (p_.waste_rows > 0) {
-    // The main yarn's first pass is the cast-on row itself; the hook lets go after it.
-    knit_course(c);
-    release(carrier_);
-    return;
   }
   knit_course(c);
 }

@@ -170,7 +170,7 @@ class Emitter {
   bool needs_rack_zero(const Course& c) const;
   void wrap_turn(const Course& c);
   std::vector<Needle> pass_needles(const Course& c, Direction d) const;
-  Direction tuck_border(const Course& c, const std::string& carrier);
+  Direction tuck_border(const Course& c, const std::string& carrier, Direction then);
   void knit_pass(const Course& c, Direction d, const std::string& carrier);
   void yarn_in(const std::string& carrier);
   void bring_in(const Course& c);

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <bit>
 #include <memory>
 #include <numeric>
 #include <vector>
@@ -9,7 +10,9 @@
 namespace skein::knitout {
 namespace {
 
-// Pieces are the connected parts of the fabric: union-find over the loops.
+// Pieces are the connected parts of the fabric: union-find over the loops, in the order they
+// were made. Every join links the larger root under the smaller, so a loop is a root exactly
+// when nothing was linked over it: counting the pieces needs no search.
 class Pieces {
  public:
   // Not value-initialised: iota writes each entry once (zeroing them first cost a pass over
@@ -22,9 +25,9 @@ class Pieces {
     b = root(b);
     if (a != b) parent_[std::max(a, b)] = std::min(a, b);
   }
-  std::uint64_t count() {
+  std::uint64_t count() const {
     std::uint64_t n = 0;
-    for (LoopId l = 0; l < size_; ++l) n += root(l) == l;
+    for (LoopId l = 0; l < size_; ++l) n += parent_[l] == l;
     return n;
   }
 
@@ -37,15 +40,31 @@ class Pieces {
   std::size_t size_;
 };
 
+// A decrease gathers the loops of two stitches or more; a tuck knitted off together with the
+// loop it sits on (a tuck stitch) is one stitch's.
+bool is_decrease(const Fabric& f, LoopId l) {
+  if (f.loops[l].parent_count < 2) return false;
+  int stitches = 0;
+  for (LoopId p : f.parents_of(l)) stitches += f.loops[p].made_by != OpCode::tuck;
+  return stitches >= 2;
+}
+
 }  // namespace
 
 FabricReport fabric_report(const Replay& replay) {
   const Fabric& f = replay.fabric;
   FabricReport r;
   Pieces pieces(f.loops.size());
+  // Per carrier, its last loop so far: the yarn joins consecutive loops of one yarn piece.
+  std::vector<LoopId> last(f.by_carrier.size(), kNoLoop);
   for (LoopId l = 0; l < f.loops.size(); ++l) {
     const FabricLoop& loop = f.loops[l];
     for (LoopId parent : f.parents_of(l)) pieces.join(l, parent);
+    for (CarrierMask yarn = loop.yarn; yarn; yarn &= yarn - 1) {
+      LoopId& before = last[static_cast<std::size_t>(std::countr_zero(yarn))];
+      if (before != kNoLoop && f.loops[before].piece == loop.piece) pieces.join(before, l);
+      before = l;
+    }
     switch (loop.made_by) {
       case OpCode::tuck:
         ++r.tucks;
@@ -59,14 +78,9 @@ FabricReport fabric_report(const Replay& replay) {
         break;
     }
     if (loop.made_by != OpCode::tuck && loop.parent_count == 0) ++r.through_nothing;
-    if (loop.parent_count >= 2) ++r.decreases;
+    r.decreases += is_decrease(f, l);
     r.unravelling += loop.dropped;
   }
-  // The yarn joins consecutive loops of one yarn piece.
-  for (const std::vector<LoopId>& along : f.by_carrier)
-    for (std::size_t i = 1; i < along.size(); ++i)
-      if (f.loops[along[i]].piece == f.loops[along[i - 1]].piece)
-        pieces.join(along[i - 1], along[i]);
   r.pieces = pieces.count();
   r.left_on_needles = replay.stats.loops_left;
   r.long_floats = replay.stats.long_floats;

@@ -30,8 +30,9 @@
 namespace skein::knitout {
 
 // `border`, when given (per loop), marks loops a proof found to be a piece's cast-on border in
-// its own yarn (tucks, and a pass over them that brings the yarn round to where the first row
-// starts): like the leading tucks, not written; the loops knit through them are the cast-on.
+// its own yarn (its tucks; on a tube with one needle the way its first pass goes, also the loop
+// knit over them to bring the yarn round, which the proof counts): like the leading tucks, not
+// written; the loops knit through them are the cast-on.
 // Throws Error when nothing of the fabric stays (every loop unravels).
 // `purls`, when given, receives per line whether its loop is a purl seen from the right side
 // (made on the back bed of a sheet; on a tube, on the bed other than that of its half's pass),

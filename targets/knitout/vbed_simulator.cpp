@@ -236,7 +236,8 @@ LoopId VirtualBed::new_loop(OpCode by, Direction dir, Needle n, CarrierMask yarn
                             std::span<const LoopId> through) {
   LoopId id = static_cast<LoopId>(r_.fabric.loops.size());
   FabricLoop l;
-  l.first_parent = static_cast<std::uint32_t>(r_.fabric.parents.size());
+  l.first_parent =
+      through.size() == 1 ? through[0] : static_cast<std::uint32_t>(r_.fabric.parents.size());
   l.parent_count = static_cast<std::uint8_t>(through.size());
   l.made_by = by;
   l.front = is_front(n.bed);
@@ -246,8 +247,9 @@ LoopId VirtualBed::new_loop(OpCode by, Direction dir, Needle n, CarrierMask yarn
   l.needle = n.index;
   std::size_t lowest = static_cast<std::size_t>(std::countr_zero(yarn));
   l.piece = carriers_[lowest].piece;
+  if (through.size() > 1)
+    r_.fabric.parents.insert(r_.fabric.parents.end(), through.begin(), through.end());
   for (LoopId parent : through) {
-    r_.fabric.parents.push_back(parent);
     auto& children = r_.fabric.loops[parent].children;
     if (children < 255) ++children;
   }

@@ -21,25 +21,32 @@ using LoopId = std::uint32_t;
 inline constexpr LoopId kNoLoop = 0xffffffffu;
 
 struct FabricLoop {
-  std::uint32_t first_parent = 0;   // into Fabric::parents
-  std::uint8_t parent_count = 0;    // loops it was pulled through (knit, split); 0 for tuck
-  std::uint8_t children = 0;        // loops later pulled through it (saturates at 255)
-  OpCode made_by = OpCode::knit;    // knit, tuck or split
-  bool dropped = false;             // released by a drop while nothing was pulled through it
-  bool front = true;                // made on the front bed (seen from the front: a knit)
-  Direction dir = Direction::plus;  // the direction of the pass that made it
-  CarrierMask yarn = 0;             // the carriers that made it
-  std::uint32_t piece = 0;          // yarn piece (one per in/inhook of its carrier)
-  std::uint32_t line = 0;           // the knitout line that made it
-  std::int32_t needle = 0;          // the needle it was made on
+  // With one parent (most loops), the parent itself; else where its parents start in
+  // Fabric::parents (a million loops' parents are not written twice).
+  std::uint32_t first_parent = 0;
+  std::uint8_t parent_count = 0;  // loops it was pulled through (knit, split); 0 for tuck
+  std::uint8_t children = 0;      // loops later pulled through it (saturates at 255)
+  OpCode made_by = OpCode::knit;  // knit, tuck or split
+  // Three flags in one byte: a loop is 24 bytes, and a million of them are written once each.
+  bool dropped : 1 = false;             // released by a drop while nothing was pulled through it
+  bool front : 1 = true;                // made on the front bed (seen from the front: a knit)
+  Direction dir : 2 = Direction::plus;  // the direction of the pass that made it
+  CarrierMask yarn = 0;                 // the carriers that made it
+  std::uint32_t piece = 0;              // yarn piece (one per in/inhook of its carrier)
+  std::uint32_t line = 0;               // the knitout line that made it
+  std::int32_t needle = 0;              // the needle it was made on
 };
+
+static_assert(sizeof(FabricLoop) == 24);
 
 struct Fabric {
   std::vector<FabricLoop> loops;
-  std::vector<LoopId> parents;
+  std::vector<LoopId> parents;                  // of the loops pulled through two or more
   std::vector<std::vector<LoopId>> by_carrier;  // per carrier: its loops in yarn order
   std::span<const LoopId> parents_of(LoopId l) const {
-    return {parents.data() + loops[l].first_parent, loops[l].parent_count};
+    const FabricLoop& loop = loops[l];
+    if (loop.parent_count == 1) return {&loop.first_parent, 1};
+    return {parents.data() + loop.first_parent, loop.parent_count};
   }
 };
 

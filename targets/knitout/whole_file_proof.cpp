@@ -134,11 +134,10 @@ class BorderCheck {
   // "" when the border holds the piece's cast-on as it should; else what is wrong. Each cast-on
   // loop (a loop of the piece pulled through loops, none of them the piece's) hangs on a border
   // loop of its own, that holds nothing else, and there are as many as the input's cast-ons.
-  // The border's yarn runs in passes; one in the piece's own yarn before it is a fabric of its
-  // own, of tucks through nothing and loops each through one loop below the piece (of it or of
-  // a draw thread), every loop held by
-  // exactly one; a border of another yarn (a draw thread) is one course of it, every loop of it
-  // holding one cast-on loop.
+  // The border's yarn runs in passes; one in the piece's own yarn before it stays on the piece:
+  // tucks through nothing and loops each through one loop below the piece (fabric the model
+  // does not have: counted in `knitted`), every loop held by exactly one; a border of another
+  // yarn (a draw thread) is one course of it, every loop of it holding one cast-on loop.
   std::string check(const ProofResult& proof, std::size_t cast_ons) {
     std::size_t found = 0;
     for (const ProofResult::Run& run : proof.pieces) {
@@ -199,7 +198,7 @@ class BorderCheck {
     return "";
   }
 
-  std::string own_yarn_border_broken(const ProofResult::Run& run) const {
+  std::string own_yarn_border_broken(const ProofResult::Run& run) {
     const std::vector<LoopId>& yarn = f_.by_carrier[run.carrier];
     std::size_t first = run.start;
     while (first > 0 && piece_of(run, first - 1) == piece_of(run, run.start)) --first;
@@ -212,6 +211,7 @@ class BorderCheck {
             "{} of the border is pulled through {} loops, not a tuck through none or a loop "
             "through one loop below the piece",
             describe(r_, yarn[i]), parents.size());
+      knitted += !tuck;
       if (l.children != 1)
         return fmt::format("{} of the border holds {} loops, not one", describe(r_, yarn[i]),
                            l.children);
@@ -236,6 +236,9 @@ class BorderCheck {
   const Replay& r_;
   const Fabric& f_;
   const std::vector<bool>& mine_;
+
+ public:
+  std::size_t knitted = 0;  // loops of the piece's yarn knitted in its border
 };
 
 // "" when the piece comes free; else the first loop that holds it.
@@ -290,9 +293,15 @@ ProofResult prove_whole_file(const Replay& replay, std::string_view text, const 
   auto cast_ons =
       static_cast<std::size_t>(std::count(c.knit.type.begin(), c.knit.type.end(), StitchType::co));
   std::string held = what_holds_the_piece(replay, proof, loops_of_the_piece(replay, proof, true));
-  std::string border = held.empty() ? BorderCheck(replay, mine).check(proof, cast_ons) : "";
+  BorderCheck check(replay, mine);
+  std::string border = held.empty() ? check.check(proof, cast_ons) : "";
   if (held.empty() && border.empty()) {
     proof.summary += "; it comes free of everything else in the file, off a whole border";
+    if (check.knitted)
+      proof.summary += fmt::format(
+          " (with {} loop{} of the piece's yarn knitted in it, which stay{} on the piece: fabric "
+          "the model does not have)",
+          check.knitted, check.knitted == 1 ? "" : "s", check.knitted == 1 ? "s" : "");
     return proof;
   }
   proof.proven = false;
