@@ -254,6 +254,11 @@ class ProgramPatternBuilder {
     return joined ? (std::uint64_t{1} << 32) | taker_step_[loop] : taker_yarn(loop);
   }
 
+  // Do loops `a` and `b`, left side by side, go to one holder? Those one yarn takes, but a
+  // yarn's first course starts on a holder of its own (it is joined to all of that holder's
+  // sts): a set-in sweater's back, beside an underarm its sleeve takes later.
+  bool held_together(std::uint32_t a, std::uint32_t b) const;
+
   // Are the loops met by one course, one after the other (either way)?
   bool met_one_after_another(const std::vector<std::uint32_t>& loops) const;
 
@@ -415,6 +420,7 @@ class ProgramPatternBuilder {
   std::vector<std::uint32_t> number_of_ = std::vector<std::uint32_t>(g_.size(), 0);
   std::vector<RowEnds> row_ends_;
   std::vector<std::uint32_t> taker_step_ = std::vector<std::uint32_t>(g_.loops.size(), kNone);
+  std::vector<std::uint32_t> first_course_of_yarn_;  // per yarn: its first course's step
   std::vector<std::uint32_t> met_at_ = std::vector<std::uint32_t>(g_.loops.size(), 0);
   // The row in the rnd being written, until the work turns or the marker ends it.
   PatternRow pending_;

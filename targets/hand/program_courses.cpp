@@ -123,7 +123,7 @@ void ProgramPatternBuilder::note_course(const Step& s, Needle& n) {
 void ProgramPatternBuilder::ring_course(const Step& s, Needle& n) {
   // Rows on one line of a rnd bound off in places (a bag's flaps between its handles): the
   // lines other yarns work go to holders first.
-  if (n.opened && s.shape != RowShape::closed) hold_what_others_take(s);
+  if (s.shape != RowShape::closed) hold_what_others_take(s);
   n.opened = n.opened && s.shape != RowShape::closed;
   if (s.run_shape != RunShape::ring && s.run_shape != RunShape::line)
     not_yet(s, "leaves its sts in no known order");

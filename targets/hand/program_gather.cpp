@@ -357,9 +357,10 @@ std::vector<std::uint32_t> ProgramPatternBuilder::hold_what_it_leaves(const Step
       continue;
     }
     // A block for each yarn that takes them (a gusset's sts, and a join's beside them).
-    std::uint32_t end = i;
-    std::uint64_t taker = holder_for(n.ring[i]);
-    while (end < n.ring.size() && !in_met_[n.ring[end]] && holder_for(n.ring[end]) == taker) ++end;
+    std::uint32_t end = i + 1;
+    while (end < n.ring.size() && !in_met_[n.ring[end]] &&
+           held_together(n.ring[end - 1], n.ring[end]))
+      ++end;
     std::span<const std::uint32_t> block(n.ring.data() + i, end - i);
     std::uint32_t holder = holder_met_before(block, n.section), onto = 0;
     if (holder != 0) {
@@ -396,12 +397,22 @@ bool ProgramPatternBuilder::met_one_after_another(const std::vector<std::uint32_
   return true;
 }
 
+bool ProgramPatternBuilder::held_together(std::uint32_t a, std::uint32_t b) const {
+  if (holder_for(a) != holder_for(b)) return false;
+  std::uint32_t at = taker_step_[a], bt = taker_step_[b];
+  auto starts_its_yarn = [&](std::uint32_t step) {
+    return step != kNone && first_course_of_yarn_[p_.steps[step].yarn] == step;
+  };
+  return at == bt || (!starts_its_yarn(at) && !starts_its_yarn(bt));
+}
+
 void ProgramPatternBuilder::index_loops_met() {
   for (std::uint32_t i = 0; i < p_.steps.size(); ++i) {
     const Step& s = p_.steps[i];
     if (s.kind != StepKind::course && s.kind != StepKind::bind_off &&
         s.kind != StepKind::three_needle_bind_off)
       continue;
+    if (first_course_of_yarn_[s.yarn] == kNone) first_course_of_yarn_[s.yarn] = i;
     std::vector<std::uint32_t> met = loops_met(s);
     for (std::uint32_t k = 0; k < met.size(); ++k) {
       taker_step_[met[k]] = i;

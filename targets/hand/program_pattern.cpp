@@ -28,7 +28,8 @@ ProgramPatternBuilder::ProgramPatternBuilder(const Compilation& c, const Program
       p_(program),
       places_(c.knit.loops.size()),
       needle_of_yarn_(c.yarns.size(), kNone),
-      yarn_of_(c.yarns.piece_of) {
+      yarn_of_(c.yarns.piece_of),
+      first_course_of_yarn_(c.yarns.size(), kNone) {
   out_.source = c.input;
   out_.turns = turns;
   out_.mirror = mirror;
