@@ -614,7 +614,7 @@ class NeedleSimulator {
     if (holders_.contains(s.number)) fail(what + ": it already holds sts");
     if (s.from_row + 1 != pc_.next_number)
       fail(fmt::format("{}: the last row worked is Row {}", what, pc_.next_number - 1));
-    std::vector<std::uint32_t> held = sts_of_last_row_off_the_needle();
+    std::vector<std::uint32_t> held = sts_of_row_off_the_needle(s.from_row);
     if (held.size() != s.count)
       fail(fmt::format("{}: the pattern says {}, but the row left {} on the needle", what,
                        sts(s.count), sts(static_cast<std::uint32_t>(held.size()))));
@@ -623,10 +623,11 @@ class NeedleSimulator {
     check_printed_count(s, "Slip the sts to holder");
   }
 
-  // The loops the last row made that are on the needles, in the order it made them; taken off.
-  std::vector<std::uint32_t> sts_of_last_row_off_the_needle() {
+  // The loops the piece's row `number` (its last) made that are on the needles, in the order
+  // it made them; taken off. (Another piece's rows may have come since: a piece taken up.)
+  std::vector<std::uint32_t> sts_of_row_off_the_needle(std::uint32_t number) {
     std::vector<std::uint32_t> off;
-    auto of_last_row = [&](std::uint32_t entry) { return made_by_last_row(entry); };
+    auto of_last_row = [&](std::uint32_t entry) { return made_by_row(entry, number); };
     for (std::vector<std::uint32_t>* needle : {&pc_.right, &pc_.left}) {
       std::copy_if(needle->begin(), needle->end(), std::back_inserter(off), of_last_row);
       std::erase_if(*needle, of_last_row);

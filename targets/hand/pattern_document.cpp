@@ -65,6 +65,10 @@ const std::string& piece_name(const HandPattern& p, std::uint32_t number) {
   return p.piece_names[number - 1];
 }
 
+constexpr const char* kJoinInTheRnd =
+    "Pm and join to work in the rnd: the sts picked up and placed below go on the needle after "
+    "the marker, in order.";
+
 // Writes the rows of each section, finding blocks of rows that repeat.
 class InstructionWriter {
  public:
@@ -229,6 +233,7 @@ class InstructionWriter {
     if (sec.first_row > 0)  // the sts of its flap another piece works, slipped as it is taken up
       if (std::string held = holdings_text(sec.first_row - 1, set_aside_with(sec)); !held.empty())
         text.append(" ").append(held);
+    if (sec.joined_in_rnd_at == sec.first_row) text.append(" ").append(kJoinInTheRnd);
     for (const std::string& placed : placement_texts_before(sec.first_row))
       text.append(" ").append(placed);
     return with_count_after_placements(text, sec.first_row);
@@ -298,6 +303,9 @@ class InstructionWriter {
     std::uint32_t held = 0;
     for (const PatternSection::Holding& h : p_.sections[section_].holdings) {
       if (h.after_row != row) continue;
+      if (h.flat_row)  // a piece taken up again to be joined in the rnd
+        return fmt::format("Slip the {} of Row {} to holder {}.", sts(h.count), h.of_number,
+                           h.holder);
       held += h.count;
       std::string of =
           h.of_cast_on ? " of the cast-on"
@@ -332,9 +340,7 @@ class InstructionWriter {
   // Before the first rnd of a flat piece joined in the rnd, its last row then on a holder.
   void write_join_in_the_rnd_before(std::uint32_t row) {
     if (p_.sections[section_].joined_in_rnd_at != row) return;
-    add(InstructionLine::Kind::setup, "",
-        "Pm and join to work in the rnd: the sts picked up and placed below go on the needle "
-        "after the marker, in order.");
+    add(InstructionLine::Kind::setup, "", kJoinInTheRnd);
   }
 
   // "sts 10–18", or "st 26".

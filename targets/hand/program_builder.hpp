@@ -199,6 +199,12 @@ class ProgramPatternBuilder {
   // way, with this yarn) before it turns?
   bool goes_round(const Step& s, std::size_t ring) const;
 
+  // A flat piece whose yarn goes on to work in the rnd on sts from elsewhere only (a set-in
+  // sweater's back, whose yarn goes on to the sleeve; the teapot's strip going on as a tube):
+  // the sts of its last row go to a holder ("Slip the 75 sts of Row 30 to holder 4"), and the
+  // rnd is made of sts placed and picked up onto the empty needle, from a new marker.
+  void join_flat_piece_in_the_rnd(const Step& s, const std::vector<std::uint32_t>& met);
+
   // A flat piece's next row, all of whose own sts it works, takes others placed among them:
   // its own sts are those ahead once it turns, in the order it meets them.
   std::vector<std::uint32_t> row_ahead(const Step& s);

@@ -239,8 +239,10 @@ void ProgramPatternBuilder::open_ring_row(const Step& s, Needle& n, bool forward
   pending_takes_ = 0;
   row_open_ = true;
   row_forward_ = forward;
+  // The row before ended slipping the marker, then turned: the marker is first now.
+  bool slipped_last = n.marker_slipped_at != kNone && n.marker_slipped_at + 2 == out_.ops.size();
   row_at_marker_after_turn_ =
-      forward && n.gap == 0 && !n.marker_off && n.worked && s.direction != row_dir_;
+      forward && n.gap == 0 && !n.marker_off && n.worked && s.direction != row_dir_ && slipped_last;
   row_dir_ = s.direction;
   if (pm_next_) out_.ops.push_back(HandOp::pm);
   pm_next_ = false;

@@ -25,6 +25,8 @@ Needle& ProgramPatternBuilder::needle_for(const Step& s, const std::vector<std::
 void ProgramPatternBuilder::gather(const Step& s, const std::vector<std::uint32_t>& met) {
   bool round = s.shape == RowShape::closed && s.run_shape == RunShape::ring;
   bool own = working() && needle().live > 0 && current_ == needle_of_yarn_[s.yarn];
+  bool joined_here = own && round && !needle().in_round;
+  if (joined_here) join_flat_piece_in_the_rnd(s, met);
   if (own && needle().in_round) {
     if (!round)
       return takes_from_spare_needles(s) ? put_on_spare_needles(s) : place_into_ring_row(s, met);
@@ -32,9 +34,10 @@ void ProgramPatternBuilder::gather(const Step& s, const std::vector<std::uint32_
     begin_rnd_at_yarn(s, needle());
   }
   for (std::uint32_t l : met) in_met_[l] = 1;
-  std::vector<std::uint32_t> host = !own    ? join_to_first_source(s, met, round)
-                                    : round ? hold_what_it_leaves(s)
-                                            : row_ahead(s);
+  std::vector<std::uint32_t> host = joined_here ? std::vector<std::uint32_t>{}
+                                    : !own      ? join_to_first_source(s, met, round)
+                                    : round     ? hold_what_it_leaves(s)
+                                                : row_ahead(s);
   place_the_others(s, met, host);
   for (std::uint32_t l : met) in_met_[l] = 0;
   if (!round) return lay_row_ahead(s, met, own);
@@ -240,6 +243,41 @@ void ProgramPatternBuilder::begin_rnd_at_yarn(const Step& s, Needle& n) {
   n.marker_off = false;
   pm_next_ = true;
   index_ring(n);
+}
+
+void ProgramPatternBuilder::join_flat_piece_in_the_rnd(const Step& s,
+                                                       const std::vector<std::uint32_t>& met) {
+  Needle& n = needle();
+  PatternSection& sec = section();
+  auto row_of = [&](std::uint32_t l) {
+    StitchId maker = g_.loops[l].maker;
+    return maker == kNoStitch ? kNone : row_of_[maker];
+  };
+  std::uint32_t last_row = row_of(n.ring.front());
+  bool worked_since = last_row < sec.first_row && out_.rows.size() > sec.first_row;
+  if (row_open_ || last_row == kNone || worked_since || sec.joined_in_rnd_at)
+    not_yet(s, "joins a flat piece in the rnd after rows of its own that are not its last");
+  for (std::uint32_t l : met) in_met_[l] = 1;
+  bool keeps_some = false, older = false;
+  for (std::uint32_t l : n.ring) {
+    keeps_some = keeps_some || in_met_[l];
+    older = older || row_of(l) != last_row;
+  }
+  for (std::uint32_t l : met) in_met_[l] = 0;
+  if (keeps_some || older)
+    not_yet(s, "joins a flat piece in the rnd with sts of its own, or of rows before its last");
+  std::vector<std::uint32_t> row = counted_on_spare_needle(n);  // as the last row worked them
+  // Taken up again: the sts are slipped as it is taken up, naming the row.
+  bool taken_up = last_row < sec.first_row;
+  PatternSection::Holding h{taken_up ? sec.first_row - 1 : last_row, 1, hand_sts(row),
+                            places_.hold(row, n.section)};
+  h.flat_row = true;
+  h.of_number = taken_up ? out_.rows[last_row].number : 0;
+  sec.holdings.push_back(h);
+  sec.in_round = true;
+  sec.joined_in_rnd_at = static_cast<std::uint32_t>(out_.rows.size());
+  n.ring.clear();
+  n.live = n.ahead = n.behind = 0;
 }
 
 std::vector<std::uint32_t> ProgramPatternBuilder::row_ahead(const Step& s) {
@@ -467,7 +505,10 @@ std::vector<std::uint32_t> ProgramPatternBuilder::join_to_first_source(
 void ProgramPatternBuilder::place_the_others(const Step& s, const std::vector<std::uint32_t>& met,
                                              const std::vector<std::uint32_t>& host) {
   std::vector<std::uint32_t> rest;
-  LoopAt hosted = places_.at(host.empty() ? met.front() : host.front());
+  // A flat piece joined in the rnd here keeps none of its sts: every run is placed.
+  LoopAt hosted = host.empty() && !section().joined_in_rnd_at ? places_.at(met.front())
+                  : host.empty()                              ? LoopAt{}
+                                                              : places_.at(host.front());
   for (std::uint32_t i = 0; i < met.size();) {
     LoopAt source = places_.at(met[i]);
     if (source == hosted) {
