@@ -1,5 +1,7 @@
 #include "yarn/mesh_relax.hpp"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 
@@ -148,6 +150,22 @@ std::vector<Point3> relax_stitch_mesh(const StitchMesh& mesh, const Gauge& gauge
     bends[mesh.tail(h).index()] = bends[mesh.head(h).index()] = 0;
   }
   return relax_springs(start, springs_of(mesh, gauge), options, bends);
+}
+
+std::uint32_t folded_faces(const StitchMesh& mesh, std::span<const Point3> positions) {
+  std::vector<Point3> normal(mesh.num_faces(), Point3::Zero());
+  for (Face f : mesh.faces())
+    for (Halfedge h : mesh.halfedges(f))
+      normal[f.index()] += positions[mesh.tail(h).index()].cross(positions[mesh.head(h).index()]);
+  std::uint32_t folded = 0;
+  for (Face f : mesh.faces())
+    for (Halfedge h : mesh.halfedges(f)) {
+      Halfedge twin = mesh.twin(h);
+      if (!twin.valid() || normal[f.index()].dot(normal[mesh.face(twin).index()]) >= 0) continue;
+      ++folded;
+      break;
+    }
+  return folded;
 }
 
 }  // namespace skein

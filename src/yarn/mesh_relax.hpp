@@ -53,4 +53,8 @@ Gauge stitch_mesh_gauge(const StitchMesh& mesh);
 std::vector<Point3> relax_stitch_mesh(const StitchMesh& mesh, const Gauge& gauge,
                                       const MeshRelaxOptions& options = {});
 
+// Faces of `mesh` at `positions` turned over a neighbour across an edge (their normals, by
+// Newell's formula, point apart): where the surface folds back on itself.
+std::uint32_t folded_faces(const StitchMesh& mesh, std::span<const Point3> positions);
+
 }  // namespace skein
