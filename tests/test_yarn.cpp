@@ -106,8 +106,8 @@ TEST(YarnModel, KnitLengthPerStitchMatchesTheGauge) {
 
 // Every sample's yarn as laid: its loops held as the knit graph says, with at most the loops
 // each still misses (not held) or lets an unrelated neighbour's yarn through (held wrongly)
-// today: letter-h's k2togs at row 130's three-needle bind-off and beside a contracting
-// perpendicular edge, short-row turns (the teapot), and the sweater's armpits (its sleeves'
+// today: letter-h's loops at the three-needle bind-off of row 130, letter-r's at its 3nbo of
+// row 73, the teapot's in row 10 and at its joins, and the sweater's armpits (its sleeves'
 // last bands fold back over the band before in the input itself).
 // An edge stitch that makes a loop besides its own across an expanding perpendicular edge
 // lays no lobe for it: the teapot has 52 such loops (letter-r 16, two-bars 20), picked up
@@ -150,7 +150,7 @@ TEST(YarnModel, RelaxedStitchMeshDoesNotFold) {
       {"beanie", 0},    {"short-row-wedge", 0}, {"sock", 0},
       {"letter-i", 0},  {"letter-h", 28},       {"letter-r", 0},
       {"two-bars", 36}, {"three-bars", 72},     {"three-bars-own", 0},
-      {"teapot", 4},    {"sweater", 1000}};
+      {"teapot", 4},    {"sweater", 998}};
   for (const auto& [sample, ceiling] : samples) {
     std::string yaml = std::string(SKEIN_SOURCE_DIR) + "/samples/" + sample + "/" + sample;
     Compilation c =
