@@ -116,20 +116,27 @@ std::vector<Point3> relax_springs(const std::vector<Point3>& start, std::span<co
   // the umbrella of the umbrella (the discrete bi-Laplacian): a fold or an accordion of rows
   // is smoothed out, while a tube's even curvature, whose umbrella is the same everywhere, is
   // left alone (a plain umbrella step would shrink it).
+  const bool bend = options.bend > 0;
   for (int it = 0; it < options.iterations; ++it) {
     std::fill(delta.begin(), delta.end(), Point3::Zero());
+    if (bend) std::fill(lap.begin(), lap.end(), Point3::Zero());
     for (const Spring& s : springs) {
       Point3 d = x[s.b] - x[s.a];
+      if (bend) lap[s.a] += d, lap[s.b] -= d;  // the umbrella of x, in the same pass
       float length = d.norm();
       if (length < 1e-12f) continue;
       Point3 c = d * ((length - s.rest) / length / 2);
       delta[s.a] += c;
       delta[s.b] -= c;
     }
-    if (options.bend > 0) umbrella(x, lap), umbrella(lap, bilap);
+    if (bend) {
+      for (std::uint32_t v = 0; v < n; ++v)
+        if (valence[v] > 0) lap[v] /= valence[v];
+      umbrella(lap, bilap);
+    }
     for (std::uint32_t v = 0; v < n; ++v) {
       if (valence[v] > 0) x[v] += delta[v] / valence[v];
-      if (options.bend > 0 && (bends.empty() || bends[v])) x[v] -= options.bend * bilap[v];
+      if (bend && (bends.empty() || bends[v])) x[v] -= options.bend * bilap[v];
       x[v] += options.anchor * (start[v] - x[v]);
     }
   }
