@@ -146,7 +146,9 @@ std::vector<Point3> evenly_spaced_rows(const KnitGraph& graph, const std::vector
     if (beside(graph, s)) springs.push_back({s, graph.yarn_next[s], stitch_width});
   // No bending: these springs join stitches, not a surface's vertices (with it test-A's yarn
   // no longer relaxed to tolerance).
-  return relax_springs(centre, springs, MeshRelaxOptions{.bend = 0});
+  MeshRelaxOptions options;
+  options.bend = 0;
+  return relax_springs(centre, springs, options);
 }
 
 Gauge gauge_of(const std::vector<NeighbourAxes>& axes) {
