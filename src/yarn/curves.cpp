@@ -17,8 +17,12 @@ constexpr float kHeadTop = 1.2f;    // and its head into the row above
 constexpr float kBoundTop = 0.55f;  // a bound-off lobe's head stays in its cell
 constexpr float kDepth = 1.2f;      // front-to-back amplitude, in yarn diameters
 // A slip's float passes a diameter behind the loop it holds (a tuck's lies at 0.8 of the depth).
-constexpr float kFloatDepth = 1.9f;     // of the depth amplitude
-constexpr float kStack = 1.0f;          // stacked loops lie side by side, a yarn diameter apart
+constexpr float kFloatDepth = 1.9f;  // of the depth amplitude
+constexpr float kStack = 1.0f;       // stacked loops lie side by side, a yarn diameter apart
+// A loop that comes in across a perpendicular edge lies on its side in the taker's cell, so its
+// eye already spans the depth a stack needs: at a full diameter apart the taker's yarn passed
+// outside it (letter-h's k2togs, 25 loops not held as laid; 7 at half).
+constexpr float kSideStack = 0.5f;
 constexpr float kWiden = 1.25f;         // an increase's old loop is gripped wider than its lobes
 constexpr float kRowsPerStitch = 1.5f;  // rows of this height take yarn sized by the width
 
@@ -70,6 +74,12 @@ float smoothstep(float a, float b, float v) {
   return t * t * (3 - 2 * t);
 }
 
+bool takes_across_perpendicular_edge(const KnitGraph& graph, StitchId taker) {
+  for (std::uint32_t l : graph.loops_taken_by(taker))
+    if (graph.loops[l].kind == LoopKind::perpendicular) return true;
+  return false;
+}
+
 // Where a stitch grips the old loop in its input slot: the centre and width (in its cell's
 // x) the loop's head takes there, how far up the cell it reaches, its offset in depth, and
 // the side it pulls its loop to (the old loop's head lies on the other).
@@ -89,6 +99,7 @@ Grip grip(const KnitGraph& graph, const StitchLayout& layout, StitchId taker, st
   if (inputs > t.lobes) {  // a decrease: the old loops stack on one lobe
     float lobe = std::floor(static_cast<float>(at * t.lobes) / static_cast<float>(inputs));
     float stack = (static_cast<float>(at) - static_cast<float>(inputs - 1) / 2) * kStack;
+    if (takes_across_perpendicular_edge(graph, taker)) stack *= kSideStack;
     return {(lobe + 0.5f) / lobes, 1 / lobes, 0, stack * diameter, t.side};
   }
   float share = 1.0f / static_cast<float>(inputs);  // an increase: one old loop, many lobes

@@ -11,8 +11,12 @@
 //     five edges (srn)
 //   the wale edges of a face beside a join or split          h x 1.5 when an extra yarn works
 //                                                            it, h x 0.5 with a side's own
-// plus a shear spring across each quad's diagonals, and a weak spring to where each vertex
-// started that keeps the global shape (instead of sliding on a subdivision surface).
+// plus a shear spring across each quad's diagonals, a weak spring to where each vertex
+// started that keeps the global shape (instead of sliding on a subdivision surface), and
+// bending (a bi-Laplacian step) that unfolds what springs alone fold: where the input gives a
+// band less room than its rows need, springs longer than the room buckle it like an accordion
+// (the sweater's armpits, the letters' and the teapot's joins: 936 faces of the teapot turned
+// over their neighbours).
 #pragma once
 
 #include <span>
@@ -26,6 +30,7 @@ namespace skein {
 struct MeshRelaxOptions {
   int iterations = 60;
   float anchor = 0.05f;  // pull back towards the input position per iteration
+  float bend = 0.1f;     // bi-Laplacian smoothing per iteration: unfolds creases and accordions
 };
 
 // A spring between points a and b.
@@ -35,9 +40,11 @@ struct Spring {
 };
 
 // Jacobi iterations of `springs` from `start`, each point pulled back towards its start by
-// `options.anchor` per iteration. Linear in points and springs per iteration.
+// `options.anchor` per iteration and smoothed by `options.bend` where `bends` (one per point;
+// empty: every point) says so. Linear in points and springs per iteration.
 std::vector<Point3> relax_springs(const std::vector<Point3>& start, std::span<const Spring> springs,
-                                  const MeshRelaxOptions& options);
+                                  const MeshRelaxOptions& options,
+                                  std::span<const std::uint8_t> bends = {});
 
 // The input's gauge: median course and wale edge lengths (the mesh was generated at it).
 Gauge stitch_mesh_gauge(const StitchMesh& mesh);
@@ -45,5 +52,9 @@ Gauge stitch_mesh_gauge(const StitchMesh& mesh);
 // The relaxed vertex positions. Linear in the mesh's size per iteration.
 std::vector<Point3> relax_stitch_mesh(const StitchMesh& mesh, const Gauge& gauge,
                                       const MeshRelaxOptions& options = {});
+
+// Faces of `mesh` at `positions` turned over a neighbour across an edge (their normals, by
+// Newell's formula, point apart): where the surface folds back on itself.
+std::uint32_t folded_faces(const StitchMesh& mesh, std::span<const Point3> positions);
 
 }  // namespace skein
