@@ -266,6 +266,15 @@ void ProgramPatternBuilder::join_flat_piece_in_the_rnd(const Step& s,
   for (std::uint32_t l : met) in_met_[l] = 0;
   if (keeps_some || older)
     not_yet(s, "joins a flat piece in the rnd with sts of its own, or of rows before its last");
+  // The rnd goes on the way the last row went: that row ends without turning.
+  PatternRow& last = out_.rows[last_row];
+  Side rnd_side = s.direction == CourseDirection::right_to_left ? Side::rs : Side::ws;
+  if (last.side == rnd_side) {
+    if (last.end_op != out_.ops.size())
+      not_yet(s, "joins a flat piece in the rnd the way its last row went, after other work");
+    out_.ops.push_back(HandOp::no_turn);
+    last.end_op = static_cast<std::uint32_t>(out_.ops.size());
+  }
   std::vector<std::uint32_t> row = counted_on_spare_needle(n);  // as the last row worked them
   // Taken up again: the sts are slipped as it is taken up, naming the row.
   bool taken_up = last_row < sec.first_row;
@@ -383,8 +392,15 @@ std::uint32_t ProgramPatternBuilder::hand_sts(std::span<const std::uint32_t> loo
 
 std::vector<std::uint32_t> ProgramPatternBuilder::hold_what_it_leaves(const Step& s) {
   Needle& n = needle();
-  if (!n.in_round || row_open_ || n.gap != 0)
+  // After rows that ended away from the marker (a set-in sweater's front, whose yarn goes on
+  // to a sleeve) the yarn is at the marker once the sts between them are slipped.
+  auto kept = [&](std::uint32_t l) { return in_met_[l] != 0; };
+  auto gap = static_cast<std::ptrdiff_t>(n.gap);
+  bool at_marker = std::none_of(n.ring.begin(), n.ring.begin() + gap, kept) ||
+                   std::none_of(n.ring.begin() + gap, n.ring.end(), kept);
+  if (!n.in_round || row_open_ || !at_marker)
     not_yet(s, "gathers sts onto a flat piece, or a tube not at the end of a rnd");
+  n.gap = 0;
   PatternSection& sec = section();
   std::uint32_t after_row = static_cast<std::uint32_t>(out_.rows.size()) - 1;
   if (out_.rows.empty()) not_yet(s, "gathers sts before any row is worked");
