@@ -63,8 +63,8 @@ struct RoundTrip {
 // `.st` has no short-row letter: a short row's end (sr4) is a knit, in the knit class. Where the
 // counts differ, and why:
 // - kniterate knits 8 waste rows and a draw thread's row before the piece: 9 rows of it;
-// - a short row turning beside a waiting loop wraps it: each wrap is a tuck (the sock's 14
-//   turns; letter I's 12 and the wedge's 9 turn at an edge of the work 2 and 1 times, unwrapped);
+// - a short row's turn the file wraps: each wrap is a tuck (all 14 of the sock's turns, 10 of
+//   letter I's 12, 8 of the wedge's 9);
 // - test-B's first leg drops its bind-off chain's last loop (the yarn goes on to the second
 //   leg): dropped with nothing through it, it is left out as every such loop is, and the loop
 //   it was knit through ends its wale as a bind-off (one knit fewer).
