@@ -220,9 +220,17 @@ TEST(AutoknitStErrors, BlankLines) {
 }
 
 TEST(AutoknitStErrors, UnknownTypeLetter) {
-  expect_parse_error(tiny_with(3, "0 p c 0 -1 6 -1 0 1 0"), 4,
-                     "expected a stitch type s, e, k, t, m, i or d, found 'p'");
+  expect_parse_error(tiny_with(3, "0 x c 0 -1 6 -1 0 1 0"), 4,
+                     "expected a stitch type s, e, k, p, t, m, i or d, found 'x'");
   expect_parse_error(tiny_with(3, "0 kk c 0 -1 6 -1 0 1 0"), 4, "found 'kk'");
+}
+
+// `p` is skein's letter for a purl (AutoKnit has none): a stitch like `k`, one loop in and out.
+TEST(AutoknitSt, SkeinsPurlLetterReadsAsAPurl) {
+  KnitGraph graph = parse_autoknit_st(tiny_with(4, "0 p c 1 -1 7 -1 1 1 0"), "purl.st");
+  EXPECT_EQ(graph.type[3], StitchType::k);
+  EXPECT_EQ(graph.type[4], StitchType::p);
+  EXPECT_EQ(graph.loops_taken_by(4).size(), 1u);
 }
 
 TEST(AutoknitStErrors, BadDirection) {

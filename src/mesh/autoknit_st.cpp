@@ -23,16 +23,18 @@ constexpr std::size_t kFieldCount = 10;
 constexpr std::string_view kFieldNames = "yarn type dir in0 in1 out0 out1 x y z";
 constexpr std::int32_t kNone = -1;  // an unused in/out slot
 
-// AutoKnit's letters. Its loop counts (0 in 1 out for a start, 2 in 1 out for a decrease, ...)
+// AutoKnit's letters, and skein's `p`: AutoKnit knits no purls, so its format has no letter for
+// one; skein writes a purl as `p` (the fabric `skein verify --fabric x.st` writes) rather than
+// lose it as a `k`. The loop counts (0 in 1 out for a start, 2 in 1 out for a decrease, ...)
 // are the catalogue's loops_in/loops_out of the type each letter becomes.
 struct Letter {
   char letter;
   StitchType type;
 };
 constexpr std::array kLetters{
-    Letter{'s', StitchType::co},    Letter{'e', StitchType::bo}, Letter{'k', StitchType::k},
-    Letter{'t', StitchType::tuck},  Letter{'m', StitchType::sl}, Letter{'i', StitchType::kfb},
-    Letter{'d', StitchType::k2tog},
+    Letter{'s', StitchType::co},  Letter{'e', StitchType::bo},    Letter{'k', StitchType::k},
+    Letter{'p', StitchType::p},   Letter{'t', StitchType::tuck},  Letter{'m', StitchType::sl},
+    Letter{'i', StitchType::kfb}, Letter{'d', StitchType::k2tog},
 };
 
 using Slots = std::array<std::int32_t, 2>;  // stitch indices or kNone, in file order
@@ -176,7 +178,7 @@ class StParser {
       for (const Letter& letter : kLetters)
         if (letter.letter == field[0]) return letter.type;
     }
-    fail(s, fmt::format("expected a stitch type s, e, k, t, m, i or d, found '{}'", field));
+    fail(s, fmt::format("expected a stitch type s, e, k, p, t, m, i or d, found '{}'", field));
   }
 
   // The direction tells a turn (it flips) from a shift (it stays): see infer_rows.

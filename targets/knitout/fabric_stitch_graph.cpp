@@ -253,9 +253,8 @@ std::vector<bool> pass_on_front(const Fabric& f) {
 
 class StWriter {
  public:
-  StWriter(const Fabric& f, StitchGraph graph, std::ostream& out, std::vector<bool>* purls)
+  StWriter(const Fabric& f, StitchGraph graph, std::ostream& out)
       : f_(f),
-        purls_(purls),
         stitches_(std::move(graph.stitches)),
         stitch_of_(std::move(graph.stitch_of)),
         out_(out),
@@ -319,7 +318,15 @@ class StWriter {
     if (s.takes.empty()) return 's';
     if (s.second != kNone) return 'i';
     if (s.takes.size() >= 2) return 'd';
-    return f_.loops[s.loop].made_by == OpCode::tuck ? 't' : 'k';
+    if (f_.loops[s.loop].made_by == OpCode::tuck) return 't';
+    return is_purl(s.loop) ? 'p' : 'k';
+  }
+
+  // A loop made on the other bed than its side's: a sheet's back bed; on a tube, the bed other
+  // than that of its half's pass.
+  bool is_purl(LoopId l) const {
+    const FabricLoop& loop = f_.loops[l];
+    return loop.front != (tube_[loop.piece] ? pass_front_[l] : true);
   }
 
   void line(const Stitch& s, char type, std::array<std::int64_t, 2> in,
@@ -327,7 +334,6 @@ class StWriter {
     const FabricLoop& l = f_.loops[s.loop];
     bool plus = l.dir == Direction::plus;
     bool round_way = tube_[l.piece] ? plus == pass_front_[s.loop] : plus;
-    if (purls_) purls_->push_back(l.front != (tube_[l.piece] ? pass_front_[s.loop] : true));
     fmt::format_to(std::back_inserter(buffer_), "{} {} {} {} {} {} {} {} {} {}\n", l.piece, type,
                    round_way ? 'a' : 'c', in[0], in[1], outs[0], outs[1], l.needle, height_[s.loop],
                    l.front ? 0 : 1);
@@ -339,7 +345,6 @@ class StWriter {
   }
 
   const Fabric& f_;
-  std::vector<bool>* purls_;  // per line: its loop is made on the other bed than its side's
   std::vector<Stitch> stitches_;
   std::vector<std::uint32_t> stitch_of_;
   std::ostream& out_;
@@ -352,8 +357,8 @@ class StWriter {
 }  // namespace
 
 void write_fabric_stitch_graph(const Replay& replay, const std::string& file, std::ostream& out,
-                               const std::vector<bool>* border, std::vector<bool>* purls) {
-  StWriter writer(replay.fabric, GraphBuilder(replay.fabric, border).build(), out, purls);
+                               const std::vector<bool>* border) {
+  StWriter writer(replay.fabric, GraphBuilder(replay.fabric, border).build(), out);
   if (writer.lines() == 0)
     throw Error(
         fmt::format("{}: nothing of the fabric stays (every loop unravels or holds "

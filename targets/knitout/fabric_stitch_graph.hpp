@@ -1,8 +1,10 @@
 // The fabric a knitout file makes, written as an AutoKnit stitch graph (`.st`, which
 // `skein check` and `skein compile` read), so that a user can check what a foreign file knits.
 // A walk over the v-bed's fabric, linear in its loops:
-// - a loop pulled through loops is a stitch taking them: `k` (one), `d` (two; more become a
-//   chain of `d`s, as `.st` has no wider decrease), `s` (none: a cast-on);
+// - a loop pulled through loops is a stitch taking them: `k` (one; `p`, skein's own letter,
+//   when it is a purl seen from the right side: made on a sheet's back bed, or on a tube's bed
+//   other than that of its half's pass), `d` (two; more become a chain of `d`s, as `.st` has no
+//   wider decrease), `s` (none: a cast-on);
 // - a tuck lies over the loop under it on its needle: a `t` taking that loop, which the stitch
 //   knit through both then takes (a tuck on an empty needle is a loop through nothing);
 // - the tucks a yarn piece starts with on empty needles are its cast-on's border: not written,
@@ -34,11 +36,7 @@ namespace skein::knitout {
 // knit over them to bring the yarn round, which the proof counts): like the leading tucks, not
 // written; the loops knit through them are the cast-on.
 // Throws Error when nothing of the fabric stays (every loop unravels).
-// `purls`, when given, receives per line whether its loop is a purl seen from the right side
-// (made on the back bed of a sheet; on a tube, on the bed other than that of its half's pass),
-// which the stitch graph's letters do not say.
 void write_fabric_stitch_graph(const Replay& replay, const std::string& file, std::ostream& out,
-                               const std::vector<bool>* border = nullptr,
-                               std::vector<bool>* purls = nullptr);
+                               const std::vector<bool>* border = nullptr);
 
 }  // namespace skein::knitout

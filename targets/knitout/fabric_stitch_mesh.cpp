@@ -28,12 +28,8 @@ struct Row {
 class MeshOfFabric {
  public:
   MeshOfFabric(const KnitGraph& g, const std::vector<std::array<double, 3>>& positions,
-               const std::vector<bool>& purls, const std::string& file)
-      : g_(g),
-        positions_(positions),
-        purls_(purls),
-        file_(file),
-        position_below_(g.loops.size(), kNotBelow) {}
+               const std::string& file)
+      : g_(g), positions_(positions), file_(file), position_below_(g.loops.size(), kNotBelow) {}
 
   StitchMesh build() {
     split_rows();
@@ -97,8 +93,8 @@ class MeshOfFabric {
   }
 
   // The stitch mesh's types: a cast-on only in the first row, a bind-off only in the last (a
-  // loop through nothing or a wale ending anywhere else has no face); a loop made on the other
-  // bed than its side's (a sheet's back bed; a tube's other bed in its half's pass) is a purl.
+  // loop through nothing or a wale ending anywhere else has no face); the rest are the stitch
+  // graph's (its `p` a purl).
   void name_types(std::size_t r) {
     for (StitchId s : rows_[r].chart) {
       StitchType t = g_.type[s];
@@ -108,7 +104,6 @@ class MeshOfFabric {
       if ((t == StitchType::bo) != (r + 1 == rows_.size()))
         refuse(t == StitchType::bo ? fmt::format("its {} ends a wale inside the fabric", where(s))
                                    : fmt::format("its {} is left on a needle", where(s)));
-      if (t == StitchType::k && purls_[s]) t = StitchType::p;
       rows_[r].types.push_back(t);
     }
   }
@@ -182,7 +177,6 @@ class MeshOfFabric {
 
   const KnitGraph& g_;
   const std::vector<std::array<double, 3>>& positions_;
-  const std::vector<bool>& purls_;  // per stitch (a line of the stitch graph)
   const std::string& file_;
   bool tube_ = false;
   std::vector<Row> rows_;
@@ -195,11 +189,10 @@ class MeshOfFabric {
 void write_fabric_stitch_mesh(const Replay& replay, const std::string& file, std::ostream& out,
                               const std::vector<bool>* border) {
   std::ostringstream st;
-  std::vector<bool> purls;
-  write_fabric_stitch_graph(replay, file, st, border, &purls);
+  write_fabric_stitch_graph(replay, file, st, border);
   std::vector<std::array<double, 3>> positions;
   KnitGraph graph = parse_autoknit_st(st.str(), file + " (its fabric)", &positions);
-  write_stitch_mesh(MeshOfFabric(graph, positions, purls, file).build(), out);
+  write_stitch_mesh(MeshOfFabric(graph, positions, file).build(), out);
 }
 
 }  // namespace skein::knitout
