@@ -36,6 +36,7 @@ bool has_machine_recipe(StitchType t) {
     case StitchType::tuck:
     case StitchType::sl:
     case StitchType::sco:
+    case StitchType::tnbo:
       return true;
     default:
       return false;
@@ -52,14 +53,16 @@ void check_stitches(const KnitGraph& g) {
     StitchId at = l.taker != kNoStitch ? l.taker : l.maker;
     bool crotch = l.kind == LoopKind::split && l.maker != kNoStitch &&
                   g.type[l.maker] == StitchType::sco;  // a cast-on along a split's
-    if (l.kind != LoopKind::wale && !crotch)
+    bool joined = l.kind == LoopKind::joined && l.taker != kNoStitch &&
+                  g.type[l.taker] == StitchType::tnbo;  // a three-needle bind-off's
+    if (l.kind != LoopKind::wale && !crotch && !joined)
       unsupported(g, "mismatched edges (a loop across a mismatch)", at);
     if (l.maker == kNoStitch || l.taker == kNoStitch) unsupported(g, "a loop with an open end", at);
   }
 }
 
 bool is_bind_off(const KnitGraph& g, StitchId s) {
-  return g.type[s] == StitchType::bo;
+  return chained_off(g.type[s]);
 }
 
 // Its loops are all taken by another yarn (which knits on from them).
@@ -279,10 +282,7 @@ class ProgramLayouts {
       case StepKind::join:
         return join(step);
       case StepKind::three_needle_bind_off:
-        unsupported(g_,
-                    fmt::format("a {} step of the live-loop program (several runs on the bed)",
-                                step_kind_name(step.kind)),
-                    first_stitch(step));
+        return add_three_needle_bind_off(step);
       case StepKind::hold:
       case StepKind::resume:
         return;  // pieces apart are knit one after another
@@ -378,6 +378,48 @@ class ProgramLayouts {
       add_block(l, piece, {begin, end}, left_to_right, step.shape);
       begin = end;
     }
+  }
+
+  // A three-needle bind-off: a chain whose sts each take a loop of the run worked and one of
+  // the second needle's run (the emitter lands that one on the first's needle). Both runs
+  // must wait on the bed in this layout (a tube's two halves folded together, a piece and
+  // the yarn knit on from its sts); each second loop lies where the course meets it.
+  void add_three_needle_bind_off(const Step& step) {
+    StitchId first = first_stitch(step);
+    std::uint32_t index = layout_of(step, first);
+    CourseLayout& l = layouts_[index];
+    for (std::uint32_t i = step.stitches.begin; i < step.stitches.end; ++i)
+      if (g_.type[p_.stitches[i].stitch] != StitchType::tnbo)
+        unsupported(g_,
+                    "a row that binds off only some of its sts with a second needle's (a "
+                    "three-needle bind-off in the middle of a row)",
+                    p_.stitches[i].stitch);
+    for (std::uint32_t i = step.reads.begin; i < step.reads.end; ++i) {
+      const Segment& seg = p_.segments[i];
+      StitchId maker = g_.loops[seg.first].maker;
+      if (layout_of_[yarns_.piece_of[maker]] != index)
+        unsupported(g_,
+                    fmt::format("a three-needle bind-off of two pieces knit apart (the loops of {} "
+                                "are not on the bed with those of {})",
+                                g_.describe(maker),
+                                g_.describe(g_.loops[p_.segments[step.reads.begin].first].maker)),
+                    first);
+    }
+    Piece& piece = pieces_[index];
+    for (std::uint32_t i = step.reads.begin; i < step.reads.end; ++i) {
+      Segment seg = p_.segments[i];
+      if (seg.walk == Walk::backward) seg.first = runs_.walk_end(seg);
+      seg.walk = Walk::forward;
+      piece.on_bed -= seg.count;
+      runs_.replace(seg, {}, RowShape::short_row, runs_.leaves_tail(seg) ? tail_run() : RunId());
+    }
+    bool left_to_right = step.direction != CourseDirection::right_to_left;
+    if (continues_chain(l, step.stitches)) {
+      l.courses.back().end = append(l, step.stitches, left_to_right).end;
+      return;
+    }
+    Course& course = l.courses.emplace_back(append(l, step.stitches, left_to_right));
+    course.partial = piece.on_bed > 0;
   }
 
   // A cast-on along a split: its two sides are runs of their own, the first taken by the join
@@ -557,6 +599,8 @@ class ProgramLayouts {
     for (const Course& course : l.courses) {
       RowShape shape = g_.row_shape[course.row];
       if (course.along_split) continue;  // a line of sts between two branches of the tube
+      // A tube folded flat and bound off across its halves: one line of sts.
+      if (g_.type[l.order[course.begin]] == StitchType::tnbo) continue;
       if (shape != RowShape::short_row && (shape == RowShape::closed) != l.tube)
         unsupported(g_, "a mix of open rows and closed rounds", l.order[course.begin]);
     }

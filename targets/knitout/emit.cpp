@@ -35,13 +35,13 @@ void Emitter::run() {
     // A yarn that starts on loops on the bed comes in for its first course: the hook (if
     // any) lets go once that course holds it.
     if (course.first_of_yarn) bring_in(course);
-    if (g_.type[l_.order[course.begin]] == StitchType::bo) {
-      bind_off(course, course.last_of_yarn);
-    } else {
-      knit_course(course);
-      wrap_turn(course);
-      if (course.last_of_yarn) leave_loops(course);
+    if (chained_off(g_.type[l_.order[course.begin]])) {
+      bind_off(course, course.last_of_yarn);  // lets the hook go after its first st
+      continue;
     }
+    knit_course(course);
+    wrap_turn(course);
+    if (course.last_of_yarn) leave_loops(course);
     if (course.first_of_yarn) release(carrier_);
   }
 }

@@ -251,6 +251,9 @@ void Emitter::bind_off(const Course& c, bool last_course) {
     const StitchPlan& sp = plan_[l_.order[i]];
     Place here{sp.knit, sp.needle};
     w_.knit(sp.travel, at(here), carrier_);
+    // A yarn that starts with the chain (a three-needle bind-off's new yarn) is held once its
+    // first st is knit: the hook lets go before the chain's link moves past it.
+    if (i == c.begin && c.first_of_yarn) release(carrier_);
     if (i + 1 == c.end) break;
     const StitchPlan& next = plan_[l_.order[i + 1]];
     chain_link(here, {next.knit, next.needle}, busy);

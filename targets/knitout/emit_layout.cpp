@@ -78,7 +78,7 @@ void Emitter::check_needle_loads() const {
   for (StitchId s : l_.order) {
     // A bind-off's needle also receives the chain's loop.
     std::uint32_t in = info(g_.type[s]).loops_in,
-                  gathered = wraps[s] + (g_.type[s] == StitchType::bo ? 1 : 0);
+                  gathered = wraps[s] + (chained_off(g_.type[s]) ? 1 : 0);
     for (std::uint32_t loop : taken(s)) gathered += held[loop];
     if (gathered > p_.max_loops_per_needle && gathered > in)
       throw UnsupportedError(fmt::format(
@@ -169,7 +169,8 @@ void Emitter::plan_in_place(const Course& c) {
     sp.knit_slot = knit_slot(g_.type[s], l_.left_to_right[s]);
     aim(s, sp, l_.tube && h.bed == Bed::b);
   }
-  if (c.partial) make_room(c);
+  // A bind-off leaves one loop where each st's loops were: the chain's, taken at once.
+  if (c.partial && !chained_off(g_.type[l_.order[c.begin]])) make_room(c);
 }
 
 // ---- shaping inside a short row ----
@@ -276,7 +277,7 @@ void Emitter::plan_course(const Course& c, bool first) {
   room_.clear();
   for (auto& bed : shaping_) bed.clear();
   // A bind-off, like a short row, is knit where its loops wait (wherever its round starts).
-  if (c.partial || g_.type[l_.order[c.begin]] == StitchType::bo) return plan_in_place(c);
+  if (c.partial || chained_off(g_.type[l_.order[c.begin]])) return plan_in_place(c);
   Footprint f = measure(c);
   // A tube whose halves keep their folds moves no loop between the beds: its right fold may
   // then follow the loops; while loops cross a fold it stays where it is.

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <tuple>
 
+#include "common/error.hpp"
 #include "knitout/emitter.hpp"
 
 namespace skein::knitout::emit {
@@ -94,12 +95,21 @@ void Emitter::merge_decreases(const Course& c) {
         unsupported_split(
             c, fmt::format("a decrease across a fold of a branch parted off at a crotch ({})",
                            g_.describe(s)));
-      if (lp.now.bed == bottom.bed) {
+      bool along_bed = lp.now.bed == bottom.bed;
+      bool near = std::abs(along_bed ? lp.now.needle - bottom.needle : rack_of({lp.now, bottom})) <=
+                  p_.max_transfer_stretch;
+      if (along_bed && !near && !l_.tube)  // a sheet's needles between hold its loops
+        throw UnsupportedError(fmt::format(
+            "not yet supported by the knitout target: a {} whose loops are {} needles apart, "
+            "further than {} transfers a loop ({}), at {}",
+            info(g_.type[s]).name, std::abs(lp.now.needle - bottom.needle), p_.name,
+            p_.max_transfer_stretch, g_.describe(s)));
+      if (along_bed && near) {
         along.push_back({lp.now, bottom});
-      } else if (std::abs(rack_of({lp.now, bottom})) <= p_.max_transfer_stretch) {
+      } else if (near) {
         landing.push_back({lp.now, bottom});
-      } else {
-        move_across_beds(lp.now, bottom);
+      } else {  // from bed to bed over a tube's empty needles
+        move_across_beds(lp.now, bottom, along_bed ? &busy : nullptr);
       }
       lp.now = lp.home = bottom;
     }

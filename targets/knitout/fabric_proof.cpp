@@ -94,12 +94,12 @@ class Matcher {
           return false;
         }
       }
-      if (previous_bo != kNoLoop && t != StitchType::bo && !chain_let_go(s, previous_bo, why))
+      if (previous_bo != kNoLoop && !chained_off(t) && !chain_let_go(s, previous_bo, why))
         return false;
       if (!stitch_matches(s, t, &yarn[pos], previous_bo, why)) return false;
       if (!stays_on_its_half(s, t, yarn[pos], why)) return false;
       for (std::uint32_t i = 0; i < n; ++i) stamp_[yarn[pos + i]] = try_;
-      previous_bo = t == StitchType::bo ? yarn[pos] : kNoLoop;
+      previous_bo = chained_off(t) ? yarn[pos] : kNoLoop;
       pos += n;
       if (pos < yarn.size() && takes_wrap(s, yarn[pos])) {
         stamp_[yarn[pos]] = wrap_stamp_[yarn[pos]] = try_;
@@ -177,7 +177,7 @@ class Matcher {
   bool yarn_ends_with_piece(std::size_t carrier, std::size_t end, std::string& why) const {
     const std::vector<LoopId>& yarn = f_.by_carrier[carrier];
     StitchId last = order_->back();
-    if (g_.type[last] == StitchType::bo || end == 0) return true;  // a tag follows a bind-off
+    if (chained_off(g_.type[last]) || end == 0) return true;  // a tag follows a bind-off
     std::uint32_t piece = f_.loops[yarn[end - 1]].piece;
     for (std::size_t i = end; i < yarn.size() && f_.loops[yarn[i]].piece == piece; ++i)
       for (LoopId parent : f_.parents_of(yarn[i]))
@@ -303,7 +303,7 @@ class Matcher {
                             g_.describe(s), where(loops[0]));
           return false;
         }
-    } else if (t == StitchType::bo) {
+    } else if (chained_off(t)) {
       if (previous_bo != kNoLoop) through.push_back(previous_bo);
       return parents_are(loops[0], through, s, why) && travels_along_course(s, t, loops, 1, why);
     } else if (made.size() == 2) {

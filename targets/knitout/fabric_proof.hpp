@@ -9,12 +9,14 @@
 // stitch takes (a decrease with the right loop on top); an increase as two loops in the
 // order the yarn makes them (both pulled through for kfb, the new one through nothing for yo,
 // m1l, m1r); a bind-off as one loop pulled through its stitch's loop and the previous
-// bind-off's loop; an sr5 as its knit loop and a turn loop made going back. Each loop runs the
-// way the input's course runs (seen from the right side: a tube's back half from behind). A
-// short row's turn may be followed by a tuck (its wrap) that one st pulls through with its
-// loops. Every loop of the input is pulled through exactly as often as it should be, and, on a
-// sheet, every knit is made on the front bed and every purl on the back. The proof reads the
-// knit graph and the replayed fabric only: none of the emitter's or the lowering's code.
+// bind-off's loop (a three-needle bind-off likewise, through its two loops: each link of the
+// chain takes the one before, whichever bind-off made it); an sr5 as its knit loop and a turn loop
+// made going back. Each loop runs the way the input's course runs (seen from the right side: a
+// tube's back half from behind). A short row's turn may be followed by a tuck (its wrap) that one
+// st pulls through with its loops. Every loop of the input is pulled through exactly as often as it
+// should be, and, on a sheet, every knit is made on the front bed and every purl on the back. The
+// proof reads the knit graph and the replayed fabric only: none of the emitter's or the lowering's
+// code.
 #pragma once
 
 #include <string>
