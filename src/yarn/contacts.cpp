@@ -208,9 +208,9 @@ std::vector<SegmentPair> close_segments(std::span<const Point3> point,
   for (const auto& part : repeated) multi.insert(multi.end(), part.begin(), part.end());
   auto key = [](const SegmentPair& p) { return std::pair{p.a, p.b}; };
   std::sort(multi.begin(), multi.end(), [&](auto& x, auto& y) { return key(x) < key(y); });
-  multi.erase(std::unique(multi.begin(), multi.end(),
-                          [&](auto& x, auto& y) { return key(x) == key(y); }),
-              multi.end());
+  multi.erase(
+      std::unique(multi.begin(), multi.end(), [&](auto& x, auto& y) { return key(x) == key(y); }),
+      multi.end());
   pairs.insert(pairs.end(), multi.begin(), multi.end());
   return pairs;
 }
