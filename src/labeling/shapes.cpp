@@ -176,8 +176,8 @@ Shape sweater(const ShapeSize& s, const std::string& name) {
   // back); the innermost ring shares the body's front and back vertices next to the armpit.
   // The sleeve's last ring stands a sleeve radius out from the body's side (the cuff stays
   // `sleeve` out), so the band from it to the armhole runs inwards all round (from x = r, the
-  // armhole's underside at 1.1 r lay beyond it: the band folded back over the one before, and yarn
-  // laid there crossed).
+  // armhole's underside at 1.1 r lay beyond it: the band folded back over the one before,
+  // and yarn laid there crossed).
   auto add_sleeve = [&](int sign, std::uint32_t front, std::uint32_t back,
                         std::uint32_t& top_vertex, std::uint32_t& cuff_vertex) {
     Vec3 axis_point{0, static_cast<float>(body + dip), 0};
