@@ -314,9 +314,10 @@ int run_yarn(const Registry& registry, const Request& r) {
                         yarn.model.point.size(), yarn.model.radius);
   if (relaxed.steps > 0)
     report << fmt::format(
-        "relaxed: {} steps in {:.2f} s, {} (largest move {:.4f} r, overlap {:.3f} d)\n",
+        "relaxed: {} steps in {:.2f} s, {} (largest move {:.4f} r, overlap {:.3f} d; contact "
+        "pairs found {} times)\n",
         relaxed.steps, relaxed.seconds, relaxed.converged ? "converged" : "step limit",
-        relaxed.max_move, relaxed.overlap);
+        relaxed.max_move, relaxed.overlap, relaxed.pair_builds);
   if (r.yarn_check) report_yarn_checks(c.knit, yarn.model, report);
   if (model) {
     bool ply = std::filesystem::path(r.output).extension() == ".ply";

@@ -424,7 +424,7 @@ TEST(HandPieces, IdenticalPiecesAreWrittenOnce) {
   std::string pattern = emit(c, "hand");
   EXPECT_NE(pattern.find("### Sleeve 2 (yarn 2)\n\nWork as Sleeve 1.\n"), std::string::npos)
       << pattern;
-  EXPECT_EQ(testing::occurrences(pattern, "Leave the 58 sts on a spare needle"), 1u);
+  EXPECT_EQ(testing::occurrences(pattern, "Leave the 60 sts on a spare needle"), 1u);
   EXPECT_EQ(testing::unproven_hand_formats(c), "");
   // Only a piece written before can be worked again.
   std::string later = pattern;
@@ -437,16 +437,16 @@ TEST(HandPieces, TheSweaterIsProvenInEveryFormat) {
   Compilation c = compile_model("samples/sweater/sweater.yaml");
   std::string pattern = emit(c, "hand");
   for (const char* line :
-       {"**Rnd 107:** *BO 48 sts, k48; rep from * to end \u2014 96 sts.\n",
-        "Leave the 96 sts on the needle and set the yarn aside (do not cut it).\n",
-        "Leave the 58 sts on a spare needle and cut the yarn.\n",
+       {"**Rnd 107:** *BO 50 sts, k50; rep from * to end \u2014 100 sts.\n",
+        "Leave the 100 sts on the needle and set the yarn aside (do not cut it).\n",
+        "Leave the 60 sts on a spare needle and cut the yarn.\n",
         "### Body (yarn 1), taken up again for the yoke\n",
-        "Take up Body again with its yarn. Place the 58 sts of Sleeve 1 on the needle at the "
-        "beginning of the rnd, the first st of its last rnd first. Place the 58 sts of Sleeve 2 on "
-        "the needle after the first 106 sts of the rnd, the first st of its last rnd first \u2014 "
-        "212 "
+        "Take up Body again with its yarn. Place the 60 sts of Sleeve 1 on the needle at the "
+        "beginning of the rnd, the first st of its last rnd first. Place the 60 sts of Sleeve 2 on "
+        "the needle after the first 110 sts of the rnd, the first st of its last rnd first \u2014 "
+        "220 "
         "sts.\n",
-        "**Rnd 108:** K106, pm, k to end.\n"})
+        "**Rnd 108:** K110, pm, k to end.\n"})
     EXPECT_NE(pattern.find(line), std::string::npos) << line;
   // The body is taken up once, for the yoke: the program takes its yarn up and sets it aside
   // again between the sleeves, which the pattern does not write.

@@ -104,11 +104,11 @@ TEST_F(HandWebPage, NamesEachStitchByItsRowAndPlaceThere) {
 TEST_F(HandWebPage, APieceWorkedAsAnotherShowsThatPiecesRows) {
   Compilation sweater = compile_model(SKEIN_SOURCE_DIR "/samples/sweater/sweater.yaml");
   std::string page = emit(registry_, "hand-web", sweater);
-  std::string rnd_5 =
-      "\"l\":\"Rnd 5\",\"t\":\"Rnd 5: [K2, p2] 3 times, [k3, p2, k2, p2, k2, p2] 3 "
-      "times, k1.\"";
-  EXPECT_NE(page.find("{\"h\":\"Sleeve 1 (yarn 3)\"," + rnd_5 + ",\"s\":\"\""), std::string::npos);
-  EXPECT_NE(page.find("{\"h\":\"Sleeve 2 (yarn 2)\"," + rnd_5 + ",\"s\":\"Work as Sleeve 1.\""),
+  std::string rnd_6 =
+      "\"l\":\"Rnd 6\",\"t\":\"Rnd 6: [K2, p2] 3 times, k3, [p2, k2] 3 times, [p3, k2, p2, "
+      "k2, p2, k2] 2 times, p2, k1.\"";
+  EXPECT_NE(page.find("{\"h\":\"Sleeve 1 (yarn 3)\"," + rnd_6 + ",\"s\":\"\""), std::string::npos);
+  EXPECT_NE(page.find("{\"h\":\"Sleeve 2 (yarn 2)\"," + rnd_6 + ",\"s\":\"Work as Sleeve 1.\""),
             std::string::npos);
 }
 

@@ -126,7 +126,7 @@ TEST(KnitoutFit, WhatIsNotSupportedYetIsNamedWithItsStitch) {
   // The round that binds off both underarms parts the body's run into two lines.
   EXPECT_EQ(emit_error(compile_model("samples/sweater/sweater.yaml"), "generic"),
             "not yet supported by the knitout target: a course that binds off its run in two "
-            "places (several runs on the bed), at face 20425 (bo, row 108)");
+            "places (several runs on the bed), at face 21276 (bo, row 108)");
   // Its three-needle bind-off has a machine recipe; the loops across its other mismatches not.
   EXPECT_EQ(emit_error(compile_model("samples/two-bars/two-bars.yaml"), "generic"),
             "not yet supported by the knitout target: mismatched edges (a loop across a "

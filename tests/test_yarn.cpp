@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <iostream>
 #include <random>
 
 #include "common/atomic_file.hpp"
@@ -115,7 +116,8 @@ TEST(YarnModel, KnitLengthPerStitchMatchesTheGauge) {
 // wrong taker: the teapot's loops were 79 not held and 37 held wrongly, letter-r's 26 and 16,
 // two-bars' 15 and 10. Before the relaxed mesh bent (and a loop across a perpendicular edge
 // stacked half as deep): letter-h 25 / 7, letter-r 4 / 11, teapot 18 / 11, letter-i 0 / 5,
-// three-bars 1 / 0, three-bars-own 0 / 1, sweater 162 / 316.
+// three-bars 1 / 0, three-bars-own 0 / 1, sweater 162 / 316; before its sleeves' last rings
+// stood a sleeve radius out from the body, the sweater's were 152 / 242.
 TEST(YarnModel, EverySampleAsLaidHoldsItsLoops) {
   struct Expected {
     std::string sample;
@@ -126,12 +128,14 @@ TEST(YarnModel, EverySampleAsLaidHoldsItsLoops) {
       {"beanie", 0, 0, 0},    {"short-row-wedge", 0, 0, 0}, {"sock", 0, 0, 0},
       {"letter-i", 0, 0, 0},  {"letter-h", 0, 7, 0},        {"letter-r", 16, 0, 1},
       {"two-bars", 20, 0, 0}, {"three-bars", 0, 0, 0},      {"three-bars-own", 0, 0, 0},
-      {"teapot", 52, 4, 5},   {"sweater", 0, 152, 242}};
+      {"teapot", 52, 4, 5},   {"sweater", 0, 72, 86}};
   for (const Expected& e : samples) {
     std::string yaml = std::string(SKEIN_SOURCE_DIR) + "/samples/" + e.sample + "/" + e.sample;
     Compilation c =
         compile_model(std::filesystem::exists(yaml + ".yaml") ? yaml + ".yaml" : yaml + ".obj");
     TopologyReport t = check_yarn_topology(c.knit, yarn_of(c, 0).model);
+    std::cout << e.sample << ": " << t.loops << " loops, " << t.not_held << " not held, "
+              << t.wrongly_held << " held wrongly\n";
     EXPECT_GT(t.loops, 0u) << e.sample;
     EXPECT_EQ(t.picked_up, e.picked_up) << e.sample;
     EXPECT_LE(t.not_held, e.not_held) << e.sample << ": " << t.first_problem;
@@ -142,22 +146,25 @@ TEST(YarnModel, EverySampleAsLaidHoldsItsLoops) {
 // The relaxed stitch mesh the yarn is laid on does not fold back on itself: springs alone
 // buckled every band the input gives less room than its rows need (the teapot had 936 faces
 // turned over a neighbour, letter-h 477, three-bars 642, the sock's heel 78); bending unfolds
-// them. What is left stands at join edges, which do not bend, and in the sweater, whose input
-// folds its sleeves' last bands back over the band before (the armpits).
+// them. What is left stands at join edges, which do not bend, and in the sweater's armpits
+// (998 faces before its sleeves' last rings stood a sleeve radius out from the body: the
+// input folded those bands back over the band before).
 TEST(YarnModel, RelaxedStitchMeshDoesNotFold) {
   const std::vector<std::pair<std::string, std::uint32_t>> samples = {
       {"hat", 0},       {"rib-swatch", 0},      {"swatch", 0},
       {"beanie", 0},    {"short-row-wedge", 0}, {"sock", 0},
       {"letter-i", 0},  {"letter-h", 28},       {"letter-r", 0},
       {"two-bars", 36}, {"three-bars", 72},     {"three-bars-own", 0},
-      {"teapot", 4},    {"sweater", 998}};
+      {"teapot", 4},    {"sweater", 384}};
   for (const auto& [sample, ceiling] : samples) {
     std::string yaml = std::string(SKEIN_SOURCE_DIR) + "/samples/" + sample + "/" + sample;
     Compilation c =
         compile_model(std::filesystem::exists(yaml + ".yaml") ? yaml + ".yaml" : yaml + ".obj");
     ASSERT_TRUE(c.mesh.has_value()) << sample;
     std::vector<Point3> relaxed = relax_stitch_mesh(*c.mesh, stitch_mesh_gauge(*c.mesh));
-    EXPECT_LE(folded_faces(*c.mesh, relaxed), ceiling) << sample;
+    std::uint32_t folded = folded_faces(*c.mesh, relaxed);
+    std::cout << sample << ": " << folded << " faces turned over a neighbour\n";
+    EXPECT_LE(folded, ceiling) << sample;
   }
 }
 
@@ -186,6 +193,31 @@ TEST(YarnModel, RandomShapesHoldEveryLoopAndStayClear) {
     expect_held(c, relaxed.model, "relaxed", 0.02);
     expect_clear(c, relaxed.model);
   }
+  std::filesystem::remove_all(dir);
+}
+
+// A small sweater (`skein new sweater`, 20 cm round, body 6 cm, at half the default gauge:
+// 1,660 stitches, three pieces joined at the yoke) relaxes in a bounded number of steps with
+// no yarn through another and every loop held by its taker; 22 of 1,636 loops are pierced by
+// a neighbour's yarn as well as laid (1.3%), 5 after 800 steps (0.3%). Before the sleeves' last
+// rings stood out from the body, the armholes folded back and yarn crossed yarn there.
+TEST(YarnModel, SmallSweaterRelaxesClearWithEveryLoopHeld) {
+  auto dir = std::filesystem::temp_directory_path() /
+             ("skein-yarn-sweater-" + std::to_string(static_cast<long>(::getpid())));
+  std::filesystem::create_directories(dir);
+  ShapeSize size;
+  size.circumference = 20;
+  size.length = 6;
+  Shape shape = make_shape("sweater", size, "sweater");
+  const std::string gauge = "gauge: {stitches: 22, rows: 30}";
+  ASSERT_NE(shape.project.find(gauge), std::string::npos) << shape.project;
+  shape.project.replace(shape.project.find(gauge), gauge.size(), "gauge: {stitches: 11, rows: 15}");
+  Compilation c = compile_model(write_shape(shape, (dir / "sweater").string()));
+  EXPECT_EQ(c.knit.size(), 1660u);
+  expect_held(c, yarn_of(c, 0).model, "as laid", 0.015);
+  YarnBuild relaxed = yarn_of(c, 1200);
+  expect_held(c, relaxed.model, "relaxed", 0.005);
+  expect_clear(c, relaxed.model);
   std::filesystem::remove_all(dir);
 }
 

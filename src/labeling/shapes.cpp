@@ -174,13 +174,17 @@ Shape sweater(const ShapeSize& s, const std::string& name) {
   }
   // Sleeves along +x and -x, knit from the cuff inwards: rings of 4 (top, front, bottom,
   // back); the innermost ring shares the body's front and back vertices next to the armpit.
+  // The sleeve's last ring stands a sleeve radius out from the body's side (the cuff stays
+  // `sleeve` out), so the band from it to the armhole runs inwards all round (from x = r, the
+  // armhole's underside at 1.1 r lay beyond it: the band folded back over the one before,
+  // and yarn laid there crossed).
   auto add_sleeve = [&](int sign, std::uint32_t front, std::uint32_t back,
                         std::uint32_t& top_vertex, std::uint32_t& cuff_vertex) {
     Vec3 axis_point{0, static_cast<float>(body + dip), 0};
     Vec3 axis{1, 0, 0};
     std::vector<std::vector<std::uint32_t>> rings;
     for (int k = 0; k <= 4; ++k) {
-      double x = sign * (r + sleeve * (1 - k / 4.0));
+      double x = sign * (r + sleeve_r + (sleeve - sleeve_r) * (1 - k / 4.0));
       double rr = k == 0 ? sleeve_r * 0.8 : sleeve_r;
       rings.push_back({d.vertex(x, body + dip + rr, 0), d.vertex(x, body + dip, -rr),
                        d.vertex(x, body + dip - rr, 0), d.vertex(x, body + dip, rr)});

@@ -1,7 +1,9 @@
 #include "yarn/contacts.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <utility>
 
 #include "yarn/parallel.hpp"
 
@@ -19,13 +21,23 @@ std::uint64_t bucket_of(const Cell& c, std::uint64_t mask) {
   return (h ^ (h >> 17)) & mask;
 }
 
-// Segments counting-sorted by the bucket of the cell their midpoint lies in.
+// A piece of a segment in the hash: a segment longer than the grid's piece length (a bridge
+// across a turn, a stretched float) goes in as several pieces, so one long segment does not
+// make every cell as wide as itself.
+struct Entry {
+  std::uint32_t segment;
+  Point3 centre;
+  float radius;  // bounding sphere of the piece, grown by half the reach
+};
+
+// Entries counting-sorted by the bucket of the cell their centre lies in.
 struct Grid {
   float cell = 1;
   std::uint64_t mask = 0;
-  std::vector<std::uint32_t> first;  // per bucket, CSR into segment
-  std::vector<std::uint32_t> segment;
-  std::vector<Cell> cell_of;  // per point (meaningful where a segment starts)
+  std::vector<std::uint32_t> first;  // per bucket, CSR into order
+  std::vector<std::uint32_t> order;  // entry indices
+  std::vector<Entry> entry;
+  std::vector<Cell> cell_of;  // per entry
 
   Cell cell_at(const Point3& p) const {
     return {static_cast<std::int32_t>(std::floor(p.x() / cell)),
@@ -34,27 +46,42 @@ struct Grid {
   }
 };
 
-Grid build_grid(std::span<const Point3> point, std::span<const std::uint8_t> starts, float cell) {
+std::uint32_t piece_count(float length, float piece) {
+  return static_cast<std::uint32_t>(std::max(1.0f, std::ceil(length / piece)));
+}
+
+// Pieces at most `piece` long; cells piece + reach wide, so two pieces whose segments come
+// within the reach have their centres in neighbouring cells.
+Grid build_grid(std::span<const Point3> point, std::span<const std::uint8_t> starts, float piece,
+                float reach) {
   Grid g;
-  g.cell = cell;
-  std::size_t segments = std::count(starts.begin(), starts.end(), 1);
+  g.cell = piece + reach;
+  for (std::size_t i = 0; i + 1 < point.size(); ++i) {
+    if (!starts[i]) continue;
+    const Point3 along = point[i + 1] - point[i];
+    const float length = along.norm();
+    const std::uint32_t parts = piece_count(length, piece);
+    for (std::uint32_t k = 0; k < parts; ++k)
+      g.entry.push_back({static_cast<std::uint32_t>(i),
+                         point[i] + along * ((static_cast<float>(k) + 0.5f) / parts),
+                         length / (2.0f * parts) + reach / 2});
+  }
   std::uint64_t size = 1;
-  while (size < 2 * segments) size *= 2;
+  while (size < 2 * g.entry.size()) size *= 2;
   g.mask = size - 1;
   g.first.assign(size + 1, 0);
-  g.cell_of.resize(point.size());
-  std::vector<std::uint32_t> bucket(point.size());
-  for (std::size_t i = 0; i < point.size(); ++i) {
-    if (!starts[i]) continue;
-    g.cell_of[i] = g.cell_at((point[i] + point[i + 1]) / 2);
-    bucket[i] = static_cast<std::uint32_t>(bucket_of(g.cell_of[i], g.mask));
-    ++g.first[bucket[i] + 1];
+  g.cell_of.resize(g.entry.size());
+  std::vector<std::uint32_t> bucket(g.entry.size());
+  for (std::size_t e = 0; e < g.entry.size(); ++e) {
+    g.cell_of[e] = g.cell_at(g.entry[e].centre);
+    bucket[e] = static_cast<std::uint32_t>(bucket_of(g.cell_of[e], g.mask));
+    ++g.first[bucket[e] + 1];
   }
   for (std::uint64_t b = 0; b < size; ++b) g.first[b + 1] += g.first[b];
-  g.segment.resize(segments);
+  g.order.resize(g.entry.size());
   std::vector<std::uint32_t> fill(g.first.begin(), g.first.end() - 1);
-  for (std::size_t i = 0; i < point.size(); ++i)
-    if (starts[i]) g.segment[fill[bucket[i]]++] = static_cast<std::uint32_t>(i);
+  for (std::size_t e = 0; e < g.entry.size(); ++e)
+    g.order[fill[bucket[e]]++] = static_cast<std::uint32_t>(e);
   return g;
 }
 
@@ -123,19 +150,14 @@ std::vector<SegmentPair> close_segments(std::span<const Point3> point,
                                         std::span<const std::uint32_t> piece_first, float reach,
                                         float along, unsigned threads) {
   std::vector<std::uint8_t> starts = segment_starts(point.size(), piece_first);
-  float longest = 0;
+  std::vector<float> lengths;
   for (std::size_t i = 0; i + 1 < point.size(); ++i)
-    if (starts[i]) longest = std::max(longest, (point[i + 1] - point[i]).norm());
-  const Grid grid = build_grid(point, starts, longest + reach);
-  // Bounding spheres of the segments, for a one-multiply rejection of most candidates.
-  struct Sphere {
-    Point3 centre;
-    float radius;
-  };
-  std::vector<Sphere> sphere(point.size());
-  for (std::size_t i = 0; i + 1 < point.size(); ++i)
-    sphere[i] = {(point[i] + point[i + 1]) / 2, (point[i + 1] - point[i]).norm() / 2 + reach / 2};
-  // Each pair once: from a cell to itself (the later segment) and to the 13 cells after it.
+    if (starts[i]) lengths.push_back((point[i + 1] - point[i]).norm());
+  // Twice the median: nearly every segment is one piece, and cells stay a few segments wide.
+  const float piece = 2 * median(lengths, reach);
+  const Grid grid = build_grid(point, starts, piece, reach);
+  // Each pair of entries once: from a cell to itself (the later entry) and to the 13 cells
+  // after it.
   static constexpr std::array<std::array<int, 3>, 14> kHalfShell{{{0, 0, 0},
                                                                   {1, 0, 0},
                                                                   {-1, 1, 0},
@@ -150,34 +172,46 @@ std::vector<SegmentPair> close_segments(std::span<const Point3> point,
                                                                   {-1, 1, 1},
                                                                   {0, 1, 1},
                                                                   {1, 1, 1}}};
-  std::vector<std::vector<SegmentPair>> found(std::max(1u, threads));
-  parallel_for(point.size(), threads, [&](std::size_t begin, std::size_t end, unsigned part) {
-    std::vector<SegmentPair>& out = found[part];
-    for (std::size_t i = begin; i < end; ++i) {
-      if (!starts[i]) continue;
-      const Cell c = grid.cell_of[i];
+  auto pieces_of = [&](std::uint32_t i) {
+    return piece_count((point[i + 1] - point[i]).norm(), piece) > 1;
+  };
+  // Pairs of segments with more than one piece may be found once per pair of pieces: kept
+  // apart and made unique.
+  std::vector<std::vector<SegmentPair>> found(std::max(1u, threads)), repeated(found.size());
+  parallel_for(grid.entry.size(), threads, [&](std::size_t begin, std::size_t end, unsigned part) {
+    for (std::size_t e = begin; e < end; ++e) {
+      const Entry& me = grid.entry[e];
+      const Cell c = grid.cell_of[e];
       for (const auto& d : kHalfShell) {
         const Cell n{c.x + d[0], c.y + d[1], c.z + d[2]};
         const bool own = d == kHalfShell[0];
         std::uint64_t b = bucket_of(n, grid.mask);
         for (std::uint32_t k = grid.first[b]; k < grid.first[b + 1]; ++k) {
-          std::uint32_t j = grid.segment[k];
-          const Cell& cj = grid.cell_of[j];
-          if (cj.x != n.x || cj.y != n.y || cj.z != n.z || (own && j <= i)) continue;
-          std::uint32_t lo = std::min<std::uint32_t>(static_cast<std::uint32_t>(i), j);
-          std::uint32_t hi = std::max<std::uint32_t>(static_cast<std::uint32_t>(i), j);
+          std::uint32_t f = grid.order[k];
+          const Cell& cf = grid.cell_of[f];
+          if (cf.x != n.x || cf.y != n.y || cf.z != n.z || (own && f <= e)) continue;
+          const Entry& other = grid.entry[f];
+          std::uint32_t lo = std::min(me.segment, other.segment);
+          std::uint32_t hi = std::max(me.segment, other.segment);
           if (hi <= lo + kNeighbourSegments) continue;
-          float r = sphere[i].radius + sphere[j].radius;
-          if ((sphere[i].centre - sphere[j].centre).squaredNorm() >= r * r) continue;
+          float r = me.radius + other.radius;
+          if ((me.centre - other.centre).squaredNorm() >= r * r) continue;
           if (closest_points(point[lo], point[lo + 1], point[hi], point[hi + 1]).distance < reach &&
               !close_along_yarn(point, starts, lo, hi, along))
-            out.push_back({lo, hi});
+            (pieces_of(lo) || pieces_of(hi) ? repeated : found)[part].push_back({lo, hi});
         }
       }
     }
   });
-  std::vector<SegmentPair> pairs;
+  std::vector<SegmentPair> pairs, multi;
   for (const auto& part : found) pairs.insert(pairs.end(), part.begin(), part.end());
+  for (const auto& part : repeated) multi.insert(multi.end(), part.begin(), part.end());
+  auto key = [](const SegmentPair& p) { return std::pair{p.a, p.b}; };
+  std::sort(multi.begin(), multi.end(), [&](auto& x, auto& y) { return key(x) < key(y); });
+  multi.erase(
+      std::unique(multi.begin(), multi.end(), [&](auto& x, auto& y) { return key(x) == key(y); }),
+      multi.end());
+  pairs.insert(pairs.end(), multi.begin(), multi.end());
   return pairs;
 }
 

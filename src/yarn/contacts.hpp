@@ -1,6 +1,7 @@
 // Yarn-yarn proximity: which segments of the yarn polylines come close to each other. A
-// spatial hash on segment midpoints (cells one segment plus the reach wide, counting-sorted
-// into a table twice the number of segments), so a query is linear in yarn length.
+// spatial hash on segment pieces (none longer than twice the median segment, so a few long
+// bridges do not widen every cell; cells a piece plus the reach wide, counting-sorted into a
+// table twice the number of pieces), so a query is linear in yarn length.
 #pragma once
 
 #include <cstdint>

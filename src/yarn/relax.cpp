@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include "yarn/contacts.hpp"
 #include "yarn/parallel.hpp"
@@ -10,7 +11,7 @@ namespace skein {
 namespace {
 
 constexpr float kClamp = 0.25f;   // largest move per step, in radii
-constexpr float kSkin = 0.5f;     // Verlet skin, in radii
+constexpr float kSkin = 1.5f;     // Verlet skin, in radii
 constexpr float kFeed = 0.5f;     // share of a stretch the yarn gives in a step
 constexpr float kMaxFeed = 1.5f;  // the most a segment grows, of its template length
 
@@ -40,14 +41,15 @@ class Relaxation {
       if (drift >= kSkin / 2) {
         pairs_ = close_segments(m_.point, m_.piece_first, diameter_ + kSkin * m_.radius, diameter_,
                                 threads_);
-        drift = 0;
+        built_ = m_.point;
+        ++report.pair_builds;
       }
       report.overlap = push_apart();
       move();
       feed_yarn();
       project_lengths();
       report.max_move = clamp_moves();
-      drift += report.max_move;
+      drift = farthest_from_build();
       ++report.steps;
       if (o_.progress && report.steps % o_.progress_every == 0)
         o_.progress({report.steps, report.max_move, report.overlap});
@@ -173,12 +175,25 @@ class Relaxation {
     return *std::max_element(largest.begin(), largest.end()) / m_.radius;
   }
 
+  // The farthest any point lies from where it was when the pair list was built, in radii:
+  // no pair closer than the reach can have come from outside the list while no point has
+  // moved half the skin (summing each step's largest move instead rebuilt the list nearly
+  // every step, as different points moved most).
+  float farthest_from_build() const {
+    std::vector<float> farthest(threads_, 0);
+    parallel_for(built_.size(), threads_, [&](std::size_t begin, std::size_t end, unsigned t) {
+      for (std::size_t i = begin; i < end; ++i)
+        farthest[t] = std::max(farthest[t], (m_.point[i] - built_[i]).squaredNorm());
+    });
+    return std::sqrt(*std::max_element(farthest.begin(), farthest.end())) / m_.radius;
+  }
+
   YarnModel& m_;
   const RelaxOptions& o_;
   unsigned threads_;
   float diameter_;
   std::vector<std::uint8_t> starts_;
-  std::vector<Point3> anchor_, next_;
+  std::vector<Point3> anchor_, next_, built_;
   std::vector<float> rest_, template_;
   std::vector<std::vector<Point3>> push_;
   std::vector<std::vector<std::uint16_t>> touches_;

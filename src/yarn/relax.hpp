@@ -34,8 +34,9 @@ struct RelaxOptions {
 struct RelaxReport {
   int steps = 0;
   bool converged = false;
-  float max_move = 0;  // in radii, the last step
-  float overlap = 0;   // in diameters, the last step
+  float max_move = 0;   // in radii, the last step
+  float overlap = 0;    // in diameters, the last step
+  int pair_builds = 0;  // how often the list of close segment pairs was built
   double seconds = 0;
 };
 
