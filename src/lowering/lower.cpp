@@ -231,8 +231,10 @@ class Lowering {
         auto size = static_cast<std::uint32_t>(in_run.size());
         live_.cut({step.run, in_run[lines[1]], size - lines[1], Walk::forward}, other, RunId());
         keep_tail(step, other, first);
-        for (std::size_t k = lines.size() - 1; k > 1; size = lines[k--])
+        for (std::size_t k = lines.size() - 1; k > 1; --k) {  // each ends where the next starts
           splits.push_back({other, in_run[lines[k]], size - lines[k], Walk::forward});
+          size = lines[k];
+        }
       }
       out_.runs[step.run.index()].yarn = step.yarn;
     }

@@ -304,8 +304,7 @@ class InstructionWriter {
     for (const PatternSection::Holding& h : p_.sections[section_].holdings) {
       if (h.after_row != row) continue;
       if (h.flat_row)  // a piece taken up again to be joined in the rnd
-        return fmt::format("Slip the {} of Row {} to holder {}.", sts(h.count), h.of_number,
-                           h.holder);
+        return flat_row_held_text(h, h.of_number, on_needle - std::min(on_needle, h.count));
       held += h.count;
       std::string of =
           h.of_cast_on ? " of the cast-on"
@@ -322,19 +321,23 @@ class InstructionWriter {
     return fmt::format("{} {} {}.", text, kDash, sts(on_needle - held));
   }
 
-  // "Slip the 35 sts of Row 33 to holder 3 — 7 sts.": a flat piece's last row, before the piece
-  // is joined in the rnd (the count: the sts that stay on the needle, if any).
+  // A flat piece's last row, before the piece is joined in the rnd.
   bool write_flat_row_held_after(std::uint32_t row) {
     for (const PatternSection::Holding& h : p_.sections[section_].holdings)
       if (h.after_row == row && h.flat_row) {
-        std::uint32_t left = p_.rows[row].sts_after - h.count;
         add(InstructionLine::Kind::setup, "",
-            fmt::format("Slip the {} of {} {} to holder {}{}.", sts(h.count),
-                        rows_word(false, false), p_.rows[row].number, h.holder,
-                        left ? fmt::format(" {} {}", kDash, sts(left)) : ""));
+            flat_row_held_text(h, p_.rows[row].number, p_.rows[row].sts_after - h.count));
         return true;
       }
     return false;
+  }
+
+  // "Slip the 35 sts of Row 33 to holder 3 — 7 sts." (`left`: the sts that stay on the needle).
+  std::string flat_row_held_text(const PatternSection::Holding& h, std::uint32_t number,
+                                 std::uint32_t left) const {
+    return fmt::format("Slip the {} of {} {} to holder {}{}.", sts(h.count),
+                       rows_word(false, false), number, h.holder,
+                       left ? fmt::format(" {} {}", kDash, sts(left)) : "");
   }
 
   // Before the first rnd of a flat piece joined in the rnd, its last row then on a holder.

@@ -203,7 +203,8 @@ class ProgramPatternBuilder {
   // sweater's back, whose yarn goes on to the sleeve; the teapot's strip going on as a tube):
   // the sts of its last row go to a holder ("Slip the 75 sts of Row 30 to holder 4"), and the
   // rnd is made of sts placed and picked up onto the empty needle, from a new marker.
-  void join_flat_piece_in_the_rnd(const Step& s, const std::vector<std::uint32_t>& met);
+  // The course's loops are marked in in_met_.
+  void join_flat_piece_in_the_rnd(const Step& s);
 
   // A flat piece's next row, all of whose own sts it works, takes others placed among them:
   // its own sts are those ahead once it turns, in the order it meets them.

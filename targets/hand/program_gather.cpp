@@ -25,8 +25,6 @@ Needle& ProgramPatternBuilder::needle_for(const Step& s, const std::vector<std::
 void ProgramPatternBuilder::gather(const Step& s, const std::vector<std::uint32_t>& met) {
   bool round = s.shape == RowShape::closed && s.run_shape == RunShape::ring;
   bool own = working() && needle().live > 0 && current_ == needle_of_yarn_[s.yarn];
-  bool joined_here = own && round && !needle().in_round;
-  if (joined_here) join_flat_piece_in_the_rnd(s, met);
   if (own && needle().in_round) {
     if (!round)
       return takes_from_spare_needles(s) ? put_on_spare_needles(s) : place_into_ring_row(s, met);
@@ -34,6 +32,8 @@ void ProgramPatternBuilder::gather(const Step& s, const std::vector<std::uint32_
     begin_rnd_at_yarn(s, needle());
   }
   for (std::uint32_t l : met) in_met_[l] = 1;
+  bool joined_here = own && round && !needle().in_round;
+  if (joined_here) join_flat_piece_in_the_rnd(s);
   std::vector<std::uint32_t> host = joined_here ? std::vector<std::uint32_t>{}
                                     : !own      ? join_to_first_source(s, met, round)
                                     : round     ? hold_what_it_leaves(s)
@@ -245,8 +245,7 @@ void ProgramPatternBuilder::begin_rnd_at_yarn(const Step& s, Needle& n) {
   index_ring(n);
 }
 
-void ProgramPatternBuilder::join_flat_piece_in_the_rnd(const Step& s,
-                                                       const std::vector<std::uint32_t>& met) {
+void ProgramPatternBuilder::join_flat_piece_in_the_rnd(const Step& s) {
   Needle& n = needle();
   PatternSection& sec = section();
   auto row_of = [&](std::uint32_t l) {
@@ -257,13 +256,11 @@ void ProgramPatternBuilder::join_flat_piece_in_the_rnd(const Step& s,
   bool worked_since = last_row < sec.first_row && out_.rows.size() > sec.first_row;
   if (row_open_ || last_row == kNone || worked_since || sec.joined_in_rnd_at)
     not_yet(s, "joins a flat piece in the rnd after rows of its own that are not its last");
-  for (std::uint32_t l : met) in_met_[l] = 1;
   bool keeps_some = false, older = false;
   for (std::uint32_t l : n.ring) {
     keeps_some = keeps_some || in_met_[l];
     older = older || row_of(l) != last_row;
   }
-  for (std::uint32_t l : met) in_met_[l] = 0;
   if (keeps_some || older)
     not_yet(s, "joins a flat piece in the rnd with sts of its own, or of rows before its last");
   // The rnd goes on the way the last row went: that row ends without turning.
@@ -353,12 +350,12 @@ LoopAt ProgramPatternBuilder::hold_parts_of_spare_needle(std::uint32_t section,
 }
 
 bool ProgramPatternBuilder::used_up_by_rows(const std::vector<std::uint32_t>& loops) const {
-  auto row_of_yarn = [&](std::uint32_t loop, std::uint32_t yarn) {
-    const Step* taker = taker_step_[loop] == kNone ? nullptr : &p_.steps[taker_step_[loop]];
-    return taker && taker->yarn == yarn && taker->shape != RowShape::closed;
-  };
-  return !loops.empty() && std::all_of(loops.begin(), loops.end(), [&](std::uint32_t l) {
-    return row_of_yarn(l, taker_yarn(loops.front()));
+  if (loops.empty()) return false;
+  std::uint32_t yarn = taker_yarn(loops.front());
+  return std::all_of(loops.begin(), loops.end(), [&](std::uint32_t loop) {
+    std::uint32_t taker = taker_step_[loop];
+    return taker != kNone && p_.steps[taker].yarn == yarn &&
+           p_.steps[taker].shape != RowShape::closed;
   });
 }
 
