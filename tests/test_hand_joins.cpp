@@ -559,49 +559,50 @@ TEST(HandPieces, TheTwoBarsAtAnotherGaugeGoOnIntoTheRndAfterAnOddFace) {
   EXPECT_EQ(testing::unproven_hand_formats(c), "");
 }
 
-// The letter R at 27 sts and 39 rows to 10 cm: its bowl's rows take sts from Piece 1's spare
-// needle and from holder 3's at once (holder 3 goes on a second spare needle; the pattern wrote
-// `sl1 from spare` for both), and its flap has an odd number of rows, worked back from the end
-// of the rnd, whose sts are still the rnd's last (the pattern slipped the first ones).
+// The letter R at 27 sts and 39 rows to 10 cm: its bowl's rows take sts from two holders at
+// once, each on a spare needle of its own (the pattern once wrote `sl1 from spare` for both),
+// and its flap has an odd number of rows, worked back from the end of the rnd, whose sts are
+// still the rnd's last (the pattern slipped the first ones).
 TEST(HandPieces, TheLetterRAtAnotherGaugeNamesEachSpareNeedleAndHoldsItsOddFlap) {
   Compilation c = testing::sample_at_gauge("letter-r", 27, 39);
   std::string text = emit(c, "hand");
   for (const char* line :
        {"Slip sts 9\u201332 of the rnd to holder 1 \u2014 8 sts.\n",
-        "Put the 11 sts of holder 3 on a second spare needle, the last st of its last rnd at the "
-        "tip.\n\n**Row 28 (RS):** Sl1 from 2nd spare, ssk, k24, sl1 from spare behind, ssk, "
+        "Put the 11 sts of holder 3 on a spare needle, the last st of its last rnd at the tip.\n\n"
+        "Put the 11 sts of holder 5 on a second spare needle, the first st of its last rnd at the "
+        "tip.\n\n**Row 28 (RS):** Sl1 from spare, ssk, k24, sl1 from 2nd spare behind, ssk, "
         "turn.\n"})
     EXPECT_NE(text.find(line), std::string::npos) << line << "\n" << text;
   EXPECT_EQ(testing::unproven_hand_formats(c), "");
 }
 
 // The letter R: a flap worked back from the end of a rnd (the model's shift-path there is a
-// turn, its turn after the flap a shift down the flap's edge), rnds worked with the WS facing,
-// a last rnd shared out to holders, a three-needle bind-off in the middle of a piece's work
-// said before its rnd, two spare needles at once, a new yarn joined in the rnd on a chain, and
-// a last rnd bound off with two pieces held behind it.
+// turn, its turn after the flap a shift down the flap's edge), the model's rnds knit as its
+// mirror image (right to left), a last rnd shared out to holders, a three-needle bind-off in
+// the middle of a piece's work said before its rnd, two spare needles at once, a new yarn
+// joined in the rnd on a chain, and a last rnd bound off with two pieces held behind it.
 TEST(HandPieces, TheLetterRIsProvenInEveryFormat) {
   expect_written_and_proven(
       "samples/letter-r/letter-r.yaml",
-      {"**Row 20 (WS):** P10, p DS, p17, turn.\n\n**Row 21 (RS):** K21, turn.\n",
-       "**Rnd 28 (WS):** Purl.\n\nSlip sts 8\u201328 of the rnd to holder 1 \u2014 7 sts.\n",
-       "Slip sts 1\u20138 of the rnd to holder 2, sts 9\u201315 to holder 3 and sts 16\u201323 to "
-       "holder 4 \u2014 7 sts.\n\nLeave the 7 sts on a spare needle and cut the yarn.\n",
-       "Hold the 7 sts of holder 3 behind the needle, the last st of its last row at the "
+      {"**Row 20 (RS):** K10, k DS, k17, turn.\n\n**Row 21 (WS):** P21, turn.\n",
+       "**Rnd 28:** Knit.\n\nSlip sts 8\u201328 of the rnd to holder 1 \u2014 7 sts.\n",
+       "Slip sts 1\u20138 of the rnd to holder 2, sts 9\u201315 to holder 3, sts 16\u201323 to "
+       "holder 4 and sts 24\u201330 to holder 5.\n\nCut the yarn.\n",
+       "Hold the 7 sts of holder 3 behind the needle, the last st of its last rnd at the "
        "tip.\n\n**Rnd 20:** K3, k DS, k to last 7 sts, 3-needle BO 7 sts \u2014 21 sts.\n",
        "Put the 8 sts of holder 4 on a second spare needle, the first st of its last rnd at the "
-       "tip.\n\n**Row 21 (RS):** Sl1 from spare behind, k2tog, k19, sl1 from 2nd spare, k2tog, "
+       "tip.\n\n**Row 21 (RS):** Sl1 from spare, ssk, k19, sl1 from 2nd spare behind, ssk, "
        "turn.\n",
        "Join a new yarn to the 7 loops of Piece 1's chain, the last st cast on at the tip. Pm and "
        "join to work in the rnd, being careful not to twist.\n",
-       "Hold the 7 sts of Piece 1 behind the needle, the last st of its last row at the tip. Hold "
-       "the 21 sts of Piece 2 behind the needle, the first st of its last row at the "
+       "Hold the 7 sts of holder 5 behind the needle, the last st of its last rnd at the tip. "
+       "Hold the 21 sts of Piece 2 behind the needle, the first st of its last row at the "
        "tip.\n\n**Rnd 51:** 3-needle BO 28 sts.\n\nFasten off.\n",
-       // The notions and techniques follow: two spare needles at once, and the gusset's
-       // pick-ups into a rnd worked with the WS facing.
+       // The notions and techniques follow: two spare needles at once, and the pick-ups into
+       // a rnd.
        "- A second spare needle, for rows that take sts from two at once.\n",
-       "with the side the rnd is worked from (the WS in a rnd labelled (WS)) facing and no new "
-       "yarn"});
+       "onto the needle of a rnd** (\"..., onto the needle after the first 18 sts of the "
+       "rnd\"): with the RS facing and no new yarn"});
 }
 
 // A tube whose last 2 sts wait on a holder and go back on its spare needle before the fold.
@@ -824,28 +825,36 @@ TEST(HandPieces, PlacingOnAFlatNeedleCountsTheRowsSts) {
             "'of the rnd')");
 }
 
-// The teapot: its body parted into two strips going on as tubes, a top strip turned like a heel
-// on a new yarn, a second new yarn on sts that strip left on its needle (two runs of an earlier
-// row to holders as it is set aside) going on as a tube round a provisional cast-on, and the
+// The teapot: its body parted into two strips going on as tubes; the body's last row parted
+// between the pieces that take it (the top's middle strip, its sides joined to it a st a row,
+// the back strip); the middle strip turned like a heel on a new yarn, its sides on spare
+// needles ("sl1 from spare"); a row of it that leaves sts to another yarn slips them to holders
+// first; a second new yarn on them going on as a tube round a provisional cast-on; and the
 // strip taken up again on that cast-on's chain and the new yarn's held sts, placed on its flat
 // needle after the sts its next row works first.
 TEST(HandPieces, TheTeapotIsProvenInEveryFormat) {
   expect_written_and_proven(
       "samples/teapot/teapot.yaml",
-      {"Slip sts 1\u20137 of Row 8 to holder 12 and sts 8\u201314 to holder 13 \u2014 7 "
-       "sts.\n\nLeave the 7 sts on the needle and set the yarn aside (do not cut it).\n",
-       "Slip the 7 sts of Row 8 to holder 14.\n",
-       "Place the 7 sts of holder 13 on the needle after the first 8 sts of the rnd, the last st "
+      {"Slip sts 1\u20137 of Row 18 to holder 10, sts 8\u201330 to holder 11, sts 31\u201353 to "
+       "holder 12, sts 54\u201374 to holder 13 and sts 75\u201382 to holder 14.\n\nCut the yarn.\n",
+       "Put the 7 sts of holder 10 on a spare needle, the last st of its last row at the tip.\n\n"
+       "Put the 23 sts of holder 12 on a second spare needle, the first st of its last row at the "
+       "tip.\n\n**Row 2 (WS):** Sl1 from spare, ssp, p to last st, sl1 from 2nd spare behind, "
+       "ssp.\n",
+       "Slip sts 1\u20137 of Row 8 to holder 15 and sts 8\u201314 to holder 16 \u2014 7 sts.\n\n"
+       "**Row 9 (RS):** Sl1 from 2nd spare, ssk, k to end.\n",
+       "Slip the 7 sts of Row 8 to holder 17.\n",
+       "Place the 7 sts of holder 16 on the needle after the first 8 sts of the rnd, the last st "
        "of its last row first.\n",
        "**Rnd 9:** CO 7 sts with a provisional cast-on, k to end \u2014 30 sts.\n",
-       "Take up Piece 4 again with its yarn. Put the 8 sts of holder 11 on a second spare needle, "
-       "the last st of its last row at the tip. Place the 7 loops of Piece 5's chain on the "
-       "needle after the first 7 sts of the row, the last st cast on first. Place the 7 sts of "
-       "holder 14 on the needle after the first 14 sts of the row, the last st of its last row "
-       "first \u2014 21 sts.\n\n**Row 17 (RS):** Sl1 from spare, ssk, k to last st, sl1 from 2nd "
-       "spare behind, ssk.\n",
+       "Take up Piece 4 again with its yarn. Put the 8 sts of holder 14 on a spare needle, the "
+       "last st of its last row at the tip. Place the 7 loops of Piece 5's chain on the needle "
+       "after the first 7 sts of the row, the last st cast on first. Place the 7 sts of holder 17 "
+       "on the needle after the first 14 sts of the row, the last st of its last row first "
+       "\u2014 21 sts.\n\n**Row 17 (RS):** Sl1 from 2nd spare, ssk, k to last st, sl1 from spare "
+       "behind, ssk.\n",
        "Three-needle bind-off: hold the pieces with RS together: Piece 4 in front, the first st "
-       "of its last row at the needle tip; holder 10 behind, the last st of its last row at the "
+       "of its last row at the needle tip; holder 13 behind, the last st of its last row at the "
        "tip"});
 }
 

@@ -39,8 +39,8 @@ TEST(HandRowJoin, TheThreeBarsWithTheirOwnYarnsAreProvenInEveryFormat) {
   std::string pattern = emit(c, "hand");
   for (const char* line :
        {"Take up Piece 1 again with its yarn. Hold the 9 sts of holder 2 behind the needle, the "
-        "last st of its last row at the tip. Hold the 9 sts of holder 6 behind the needle, the "
-        "last st of its last row at the tip.\n",
+        "last st of its last rnd at the tip. Hold the 9 sts of holder 6 behind the needle, the "
+        "last st of its last rnd at the tip.\n",
         "**Rnd 23:** *3-needle BO 9 sts, k9; rep from * to end \u2014 18 sts.\n",
         "**Rnd 24:** K9, CO 9 sts with a provisional cast-on, k to end \u2014 36 sts.\n",
         "Place the 9 loops of Piece 1's chain on the needle after the first 18 sts of the rnd, "

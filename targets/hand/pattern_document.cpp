@@ -32,7 +32,9 @@ std::string sts(std::uint32_t n) {
 
 // A piece whose last row went to holders for the pieces that work it: no st to fasten off.
 bool parted_between_pieces(const PatternSection& sec) {
-  return !sec.holdings.empty() && sec.holdings.back().of_row;
+  if (sec.holdings.empty()) return false;
+  const PatternSection::Holding& last = sec.holdings.back();
+  return last.of_row || (sec.end_row > 0 && last.after_row + 1 == sec.end_row);
 }
 
 std::string cm_and_inches(double cm) {
@@ -135,18 +137,18 @@ class InstructionWriter {
     for (const PatternSection::Hold& h : sec.holds)
       if (h.before_row == row)
         text += fmt::format(
-            " Hold the {} of {} behind the needle, the {} st of its last row at the tip.",
+            " Hold the {} of {} behind the needle, the {} st of its last {} at the tip.",
             sts(h.count),
             h.holder ? fmt::format("holder {}", h.holder)
                      : piece_name(p_, p_.sections[h.section].piece),
-            h.from_last ? "last" : "first");
+            h.from_last ? "last" : "first", last_course(p_.sections[h.section], h.holder));
     return text;
   }
 
   std::string first_setup_text(const PatternSection& sec) const {
     if (sec.resumed) return take_up_text(sec);
     if (sec.starts_from) return join_spare_text(*sec.starts_from) + join_round_text(sec);
-    if (sec.picks_up) return pick_up_text(*sec.picks_up, sec.cast_on);
+    if (sec.picks_up) return pick_up_text(*sec.picks_up, sec.cast_on) + join_round_text(sec);
     std::string held = holdings_text(sec.first_row - 1, sec.cast_on);  // parts of the cast-on
     return fmt::format("Cast on {}{}.", sts(sec.cast_on),
                        sec.provisional ? " with a provisional cast-on" : "") +
@@ -257,13 +259,20 @@ class InstructionWriter {
     return texts;
   }
 
+  // Is the section worked in the rnd at the row (a flat piece joined in the rnd only from its
+  // first rnd on)?
+  bool in_the_rnd_before(std::uint32_t row) const {
+    const PatternSection& sec = p_.sections[section_];
+    return sec.in_round && (!sec.joined_in_rnd_at || row >= *sec.joined_in_rnd_at);
+  }
+
   // "Place the 9 loops of Piece 3's chain on the needle after the first 9 sts of the rnd, the
   // first st cast on first." A piece worked in the rnd is placed from the st its rnd works
   // first: "..., st 16 of its last rnd first."
   std::string placement_text(const PatternSection::Placement& p) const {
     const PatternSection& spare = p_.sections[p.section];
     // On a flat piece: counted from the tip of the needle its next row works.
-    const char* along = p_.sections[section_].in_round ? "rnd" : "row";
+    const char* along = in_the_rnd_before(p.before_row) ? "rnd" : "row";
     std::string where = p.after == 0
                             ? fmt::format("at the beginning of the {}", along)
                             : fmt::format("after the first {} of the {}", sts(p.after), along);
@@ -271,14 +280,13 @@ class InstructionWriter {
       return fmt::format("{}, onto the needle {}.", pick_up_words(*p.edge, p.count), where);
     if (p.to_spare)
       return fmt::format(
-          "Put the {} sts of holder {} on a {}spare needle, the {} st of its last {} "
+          "Put the {} of holder {} on a {}spare needle, the {} st of its last {} "
           "at the tip.",
-          p.count, p.holder, p.second_spare ? "second " : "", p.from_last ? "last" : "first",
-          spare.in_round && !holds_a_flat_row(p.holder) ? "rnd" : "row");
+          sts(p.count), p.holder, p.second_spare ? "second " : "", p.from_last ? "last" : "first",
+          last_course(spare, p.holder));
     bool cast_on = p.chain || spare.first_row == spare.end_row;
-    std::string which = cast_on                                         ? "cast on"
-                        : spare.in_round && !holds_a_flat_row(p.holder) ? "of its last rnd"
-                                                                        : "of its last row";
+    std::string which =
+        cast_on ? "cast on" : fmt::format("of its last {}", last_course(spare, p.holder));
     std::string from =
         p.holder != 0 ? fmt::format("holder {}", p.holder)
                       : fmt::format("{}{}", piece_name(p_, spare.piece), p.chain ? "'s chain" : "");
@@ -416,6 +424,14 @@ class InstructionWriter {
 
   // Does the holder hold the sts of a flat piece's last row (slipped before it was joined in
   // the rnd)?
+  // "rnd" or "row": the course whose first (or last) st names the end of a holder's sts, or
+  // of a piece's on its spare needle.
+  const char* last_course(const PatternSection& spare, std::uint32_t holder) const {
+    if (holder != 0) return spare.in_round && !holds_a_flat_row(holder) ? "rnd" : "row";
+    bool rnd = spare.end_row > spare.first_row ? p_.rows[spare.end_row - 1].round : spare.in_round;
+    return rnd ? "rnd" : "row";
+  }
+
   bool holds_a_flat_row(std::uint32_t holder) const {
     for (const PatternSection& sec : p_.sections)
       for (const PatternSection::Holding& h : sec.holdings)
@@ -437,7 +453,7 @@ class InstructionWriter {
       return fmt::format(
           "Join a new yarn to the {} of holder {}, the {} st of its last {} at the tip.",
           sts(start.count), start.holder, start.from_last ? "last" : "first",
-          spare.in_round && !holds_a_flat_row(start.holder) ? "rnd" : "row");
+          last_course(spare, start.holder));
     return fmt::format("Join a new yarn to the {} {} of {}{}, the {} st cast on at the tip.",
                        start.count, start.chain ? "loops" : "sts", piece_name(p_, spare.piece),
                        start.chain ? "'s chain" : "", start.from_last ? "last" : "first");
@@ -447,7 +463,7 @@ class InstructionWriter {
     if (sec.set_aside)
       return fmt::format("Leave the {} on the needle and set the yarn aside (do not cut it).",
                          sts(sec.live_at_end));
-    if (sec.left_live)
+    if (sec.left_live && sec.live_at_end != 0)
       return fmt::format("Leave the {} on a spare needle and cut the yarn.", sts(sec.live_at_end));
     if (parted_between_pieces(sec)) return "Cut the yarn.";
     return "Fasten off.";
@@ -690,10 +706,11 @@ class FrontMatter {
     std::vector<std::string> items;
     for (const PatternSection& s : p_.sections) {
       if (s.joins || (s.resumed && s.first_row == s.end_row)) continue;  // nothing to measure
-      std::uint32_t widest = s.cast_on, rows = 0, short_rows = 0;
+      std::uint32_t widest = s.cast_on, rows = 0, short_rows = 0, rnds = 0;
       for (std::uint32_t r = s.first_row; r < s.end_row; ++r) {
         widest = std::max(widest, p_.rows[r].sts_after);
         ++(p_.rows[r].partial ? short_rows : rows);
+        rnds += !p_.rows[r].partial && p_.rows[r].round;
       }
       std::string piece = p_.sections.size() > 1 ? fmt::format("{}{}: ", piece_name(p_, s.piece),
                                                                s.resumed ? " (taken up again)" : "")
@@ -701,19 +718,20 @@ class FrontMatter {
       std::string width = fmt::format("{}{}: {}, {} sts at the widest.", piece,
                                       s.in_round ? "Circumference" : "Width",
                                       cm_and_inches(width_cm(widest)), widest);
-      items.push_back(width + " " + height(s, rows, short_rows));
+      const char* unit = rnds == 0 ? "rows" : rnds == rows ? "rnds" : "rows and rnds";
+      items.push_back(width + " " + height(s, rows, short_rows, s.in_round ? unit : "rows"));
     }
     return items;
   }
 
   // Short rows add length to part of the piece only; a piece of a cast-on alone (along a
   // split) has no height.
-  std::string height(const PatternSection& s, std::uint32_t rows, std::uint32_t short_rows) const {
-    std::string unit = s.joined_in_rnd_at ? "rows and rnds" : s.in_round ? "rnds" : "rows";
+  std::string height(const PatternSection& s, std::uint32_t rows, std::uint32_t short_rows,
+                     const char* unit) const {
     if (rows == 0 && short_rows == 0) return "A cast-on only: no rows of its own.";
     if (rows == 0)
       return fmt::format("{} short rows (worked on part of the sts), no whole {}.", short_rows,
-                         unit);
+                         s.in_round ? "rnds" : "rows");
     std::string extra = short_rows ? fmt::format(", plus {} short rows", short_rows) : "";
     return fmt::format("{}: {}, {} {}{}.", s.in_round ? "Height" : "Length",
                        cm_and_inches(length_cm(rows)), rows, unit, extra);

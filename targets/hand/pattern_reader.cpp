@@ -614,7 +614,9 @@ class SentenceReader {
     need_words(c, {",", "the"}, "', the first (or last) st of its last row'");
     from_last = c.eat("last");
     need(from_last || c.eat("first"), c, "'first' or 'last'");
-    need_words(c, {"st", "of", "its", "last", "row", "at", "the"}, "'st of its last row at the'");
+    need_words(c, {"st", "of", "its", "last"}, "'st of its last row (or rnd)'");
+    need(c.eat("row") || c.eat("rnd"), c, "'row' or 'rnd'");
+    need_words(c, {"at", "the"}, "'at the tip'");
     c.eat("needle");
     need(c.eat("tip"), c, "'tip'");
     return piece;

@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -64,6 +65,15 @@ class ProgramPatternBuilder {
   // "step 12 (course of yarn 2 at face 40 (k, row 7)) works ...".
   [[noreturn]] void not_yet(const Step& s, const std::string& what) const;
 
+  // A rnd that binds off none of its sts leaves them in a ring, also where the lowering keeps
+  // them in a longer line with sts that wait for a later course (a spout's first rnds, worked
+  // while the body's sts wait beside it); one that binds off in places leaves lines.
+  bool works_a_whole_rnd(const Step& s) const {
+    if (s.shape != RowShape::closed) return false;
+    return s.run_shape == RunShape::ring ||
+           std::none_of(stitches_of(s).begin(), stitches_of(s).end(),
+                        [&](const WorkedStitch& w) { return g_.type[w.stitch] == T::bo; });
+  }
   std::span<const WorkedStitch> stitches_of(const Step& s) const {
     return {p_.stitches.data() + s.stitches.begin, s.stitches.size()};
   }
@@ -139,7 +149,7 @@ class ProgramPatternBuilder {
   // Slips the needle's loops the rnd leaves to holders, joins the yarn to (or carries it on
   // to) the loops it starts on, places the others: the needle then holds `met` from the
   // marker, the rnd's way round.
-  void gather(const Step& s, const std::vector<std::uint32_t>& met);
+  void gather(const Step& s, std::vector<std::uint32_t> met);
 
   // A row in the rnd that takes sts from elsewhere (a gusset's sides, a crotch): all the sts of
   // each place it takes from go into the rnd beside the st it meets them next to, the ones it
@@ -148,18 +158,23 @@ class ProgramPatternBuilder {
   // it, slipped back).
   void place_into_ring_row(const Step& s, const std::vector<std::uint32_t>& met);
 
-  // Rows in the rnd that each take sts of holders one at a time, each together with a st of
-  // the needle (a gusset's decreases, a bowl closing at both edges): each holder goes on a
-  // spare needle (two at once at the most) and the row slips its next st from there ("sl1
-  // from spare", or behind the st it is worked with). Is this row one of those?
-  bool takes_from_spare_needles(const Step& s) const;
+  // A spare needle whose sts the rows have all slipped is free for another holder's.
+  void let_go_of_used_spare_needles();
 
-  // Puts the holders of the row's sts from elsewhere on spare needles, the st it takes first
-  // at the tip.
+  // Rows that each take sts of a holder one at a time, each together with another st (a
+  // gusset's decreases, a bowl closing at both edges, a lid's middle joined to its sides
+  // row by row): the holder goes on a spare needle (two at once at the most) and the row
+  // slips its next st from there ("sl1 from spare", or behind the st it is worked with).
+  // Is `holder` one of those for this row?
+  bool waits_for_rows(std::uint32_t holder, const Step& s) const;
+
+  // Puts the holders whose sts wait for the rows (waits_for_rows) on spare needles, the st
+  // the row takes first at the tip.
   void put_on_spare_needles(const Step& s);
 
-  // Before the stitch is worked, the sts it takes from spare needles go onto the left needle.
-  void slip_from_spare_needles(std::uint32_t worked, Needle& n);
+  // Before the stitch is worked, the sts it takes from spare needles go onto the left needle;
+  // returns how many.
+  std::uint32_t slip_from_spare_needles(std::uint32_t worked, Needle& n);
 
   // Calls `f` with each of a stitch's loops in the order the course going `d` meets them.
   template <class F>
@@ -226,13 +241,19 @@ class ProgramPatternBuilder {
   // the spare needle ("sl1 from spare") rather than from holders.
   bool used_up_by_rows(const std::vector<std::uint32_t>& loops) const;
 
+  // Are loops `a` and `b` taken by two rows of one yarn, neither its first (a lid's sides,
+  // joined to its middle one st a row: they wait together on a spare needle for "sl1 from
+  // spare")?
+  bool taken_by_rows_one_by_one(std::uint32_t a, std::uint32_t b) const;
+
   // Are loops `a` and `b` taken side by side by one course (or both by none)?
   bool taken_together(std::uint32_t a, std::uint32_t b) const;
 
   // How the sts a piece left on a spare needle are counted to slip a part of them to a holder:
   // of its last rnd, of its last row (in the order it worked them) or of its cast-on; none
-  // where the pattern cannot name them so (after a row in the rnd).
-  std::optional<PatternSection::Holding> counting_of_spare_needle(const PatternSection& sec) const;
+  // where the pattern cannot name them so (after a row in the rnd on part of them).
+  std::optional<PatternSection::Holding> counting_of_spare_needle(
+      const PatternSection& sec, const std::vector<std::uint32_t>& spare) const;
 
   // The sts a knitter counts on the needle: the two loops of an sr5 are one (a DS, a wrapped
   // st).
@@ -241,6 +262,13 @@ class ProgramPatternBuilder {
   // The needle's loops the rnd does not take go to holders, a block of the rnd each; the rest
   // stay, from the marker on.
   std::vector<std::uint32_t> hold_what_it_leaves(const Step& s);
+
+  // The sts of `order` (as the pattern counts them) that do not stay go to holders, a block
+  // for each course that takes them side by side, counted in the rnd or (`of_row`) in the
+  // last row; returns those that stay, in order.
+  std::vector<std::uint32_t> hold_blocks(const std::vector<std::uint32_t>& order,
+                                         const std::function<bool(std::uint32_t)>& stays,
+                                         bool of_row);
 
   // The section's latest holder, if the course that takes its loops meets `block` right after
   // them, one after the other (a tube parting over two rnds: the leg's sts go to one holder);
@@ -390,10 +418,11 @@ class ProgramPatternBuilder {
   // takes. A wrapped st goes back to the left needle.
   std::uint32_t move_loops(StitchId st, Needle& n, const Step& s) const;
 
-  // Sts of a flat piece that another yarn works (a flap of their own) go to a holder before
-  // the row that leaves them: a block of the last row's sts, counted in the order it worked
-  // them.
-  void hold_what_others_work(const Step& s, Needle& n);
+  // Sts of a flat piece that other yarns work (a flap of their own, a spout and a lid's
+  // middle) go to holders before the row that leaves them: a block for each course that takes
+  // them, counted in the order the last row worked them. Before a course that `gathers` sts
+  // from elsewhere, only where some of its own stay.
+  void hold_what_others_work(const Step& s, Needle& n, bool gathers = false);
 
   // A flat row meets its loops side by side along the line from where the yarn is.
   void check_met_along_the_row(const Step& s, const Needle& n) const;

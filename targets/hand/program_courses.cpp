@@ -20,9 +20,13 @@ void ProgramPatternBuilder::course(const Step& s) {
   begin_row(s, n);
   check_met_along_the_row(s, n);
   std::uint32_t takes = 0;
-  for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i) takes += work(s, i, n, r);
+  for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i) {
+    std::uint32_t slipped = slip_from_spare_needles(i, n);
+    takes += work(s, i, n, r) - slipped;  // the needle's sts the row works
+  }
   end_row(s, n, r, takes);
   replace_in_line(s, n);
+  let_go_of_used_spare_needles();
   r.end_op = static_cast<std::uint32_t>(out_.ops.size());
   r.sts_after = n.live;
   out_.rows.push_back(r);
@@ -167,13 +171,12 @@ void ProgramPatternBuilder::ring_course(const Step& s, Needle& n) {
       open_ring_row(s, n, forward);
       if (back) slip_back_across_gap(n, back_across_marker);
     }
-    slip_from_spare_needles(i, n);
-    pending_takes_ += work(s, i, n, pending_);
+    std::uint32_t slipped = slip_from_spare_needles(i, n);
+    pending_takes_ += work(s, i, n, pending_) - slipped;
     taken_so_far += on_needle;
   }
   replace_in_ring(s, n, forward, first, static_cast<std::uint32_t>(met.size()));
-  for (std::uint32_t k : {0u, 1u})
-    if (spare_queue_[k].empty()) spare_rows_[k] = 0;
+  let_go_of_used_spare_needles();
   note_course(s, n);
   if (forward && !n.marker_off && (n.gap == 0 || n.ring.empty())) close_ring_row(s, n, false);
   // Bound off in one or two places (underarms), the rest stays on the circular needle in
@@ -198,6 +201,10 @@ void ProgramPatternBuilder::turn_after_last_rnd() {
   if (r.end_op != out_.ops.size() || out_.ops.back() == HandOp::wt) return;
   out_.ops.push_back(HandOp::turn);
   ++r.end_op;
+  // A rnd that turns at the marker is a row in the rnd that ends there (rows on a rnd bound
+  // off in part): a short row, labelled as the rows before and after it.
+  r.round = false;
+  r.short_row = true;
 }
 
 void ProgramPatternBuilder::step_over_turn(Needle& n, bool forward) {
@@ -360,47 +367,36 @@ std::uint32_t ProgramPatternBuilder::move_loops(StitchId st, Needle& n, const St
   return t.loops_in;
 }
 
-void ProgramPatternBuilder::hold_what_others_work(const Step& s, Needle& n) {
-  std::vector<std::uint32_t> others;
-  for (std::uint32_t l : n.ring) {
+void ProgramPatternBuilder::hold_what_others_work(const Step& s, Needle& n, bool gathers) {
+  auto others_take = [&](std::uint32_t l) {
     StitchId taker = g_.loops[l].taker;
-    if (taker != kNoStitch && yarn_of_[taker] != s.yarn) others.push_back(l);
-  }
-  if (others.empty()) return;
+    return taker != kNoStitch && yarn_of_[taker] != s.yarn;
+  };
+  if (std::none_of(n.ring.begin(), n.ring.end(), others_take)) return;
+  // Where none stay, the piece is left whole (or joined in the rnd) as it is.
+  if (gathers && std::all_of(n.ring.begin(), n.ring.end(), others_take)) return;
   if (!n.worked || n.ahead != 0 || out_.rows.size() == section().first_row)
     not_yet(s, "leaves sts to another yarn that its last row did not work to the end");
   std::vector<std::uint32_t> order = n.ring;  // as the last row worked them
   if (n.last == CourseDirection::right_to_left) std::reverse(order.begin(), order.end());
-  auto first = std::find(order.begin(), order.end(), others.front());
-  auto k = static_cast<std::uint32_t>(first - order.begin());
-  for (std::uint32_t i = 0; i < others.size(); ++i)
-    if (k + i >= order.size() || order[k + i] != others[i]) {
-      std::reverse(others.begin(), others.end());
-      break;
-    }
-  k = static_cast<std::uint32_t>(std::find(order.begin(), order.end(), others.front()) -
-                                 order.begin());
-  if (!std::equal(others.begin(), others.end(),
-                  order.begin() + std::min<std::size_t>(k, order.size())))
-    not_yet(s, "leaves sts to another yarn that are not side by side");
-  std::uint32_t holder = places_.hold(others, n.section);
-  PatternSection::Holding h{static_cast<std::uint32_t>(out_.rows.size() - 1), k + 1,
-                            static_cast<std::uint32_t>(others.size()), holder};
-  h.of_row = true;
-  section().holdings.push_back(h);
-  for (std::uint32_t l : others) in_met_[l] = 1;
-  std::uint32_t before_gap = 0;
-  for (std::uint32_t i = 0; i < n.gap; ++i) before_gap += in_met_[n.ring[i]];
-  std::erase_if(n.ring, [&](std::uint32_t l) { return in_met_[l] != 0; });
-  for (std::uint32_t l : others) in_met_[l] = 0;
+  std::vector<std::uint32_t> stay = hold_blocks(
+      order, [&](std::uint32_t l) { return !others_take(l); }, true);
+  std::uint32_t before_gap = 0, held = 0;
+  for (std::uint32_t i = 0; i < n.ring.size(); ++i) {
+    bool leaves = others_take(n.ring[i]);
+    before_gap += leaves && i < n.gap;
+    if (leaves) held += hand_sts({n.ring.data() + i, 1});
+  }
+  if (n.last == CourseDirection::right_to_left) std::reverse(stay.begin(), stay.end());
+  n.ring = std::move(stay);
   n.gap -= before_gap;
-  n.live -= hand_sts(others);
-  n.behind -= hand_sts(others);
+  n.live -= held;
+  n.behind -= held;
   index_ring(n);
 }
 
 void ProgramPatternBuilder::check_met_along_the_row(const Step& s, const Needle& n) const {
-  std::vector<std::uint32_t> met = loops_met(s);
+  std::vector<std::uint32_t> met = on_the_needle(loops_met(s));
   bool right = s.direction == CourseDirection::left_to_right;
   if (met.size() > (right ? n.ring.size() - std::min<std::size_t>(n.gap, n.ring.size()) : n.gap))
     not_yet(s, "works past the end of the needle");
@@ -416,7 +412,7 @@ void ProgramPatternBuilder::replace_in_line(const Step& s, Needle& n) {
   std::uint32_t taken = 0;
   for (std::uint32_t k = 0; k < s.stitches.size(); ++k) {
     std::uint32_t i = right ? s.stitches.begin + k : s.stitches.end - 1 - k;
-    taken += static_cast<std::uint32_t>(taken_by(i).size());
+    for (std::uint32_t l : taken_by(i)) taken += spare_slot(l) == kNone;
     for (const PlacedLoop& m : made_by(i))
       if (m.place == LoopPlace::in_run) made.push_back(m.loop);
   }

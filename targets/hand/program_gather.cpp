@@ -13,6 +13,7 @@ namespace skein::hand::from_program {
 Needle& ProgramPatternBuilder::needle_for(const Step& s, const std::vector<std::uint32_t>& met) {
   std::uint32_t own = needle_of_yarn_[s.yarn];
   if (own != kNone && current_ != own) not_yet(s, "works with a yarn set aside or ended");
+  if (own != kNone && !needles_[own].in_round) hold_what_others_work(s, needles_[own], true);
   bool on_needle = own != kNone && std::all_of(met.begin(), met.end(), [&](std::uint32_t l) {
                      return places_.at(l) == LoopAt{Place::needle, own};
                    });
@@ -22,12 +23,19 @@ Needle& ProgramPatternBuilder::needle_for(const Step& s, const std::vector<std::
   return needle();
 }
 
-void ProgramPatternBuilder::gather(const Step& s, const std::vector<std::uint32_t>& met) {
-  bool round = s.shape == RowShape::closed && s.run_shape == RunShape::ring;
+void ProgramPatternBuilder::gather(const Step& s, std::vector<std::uint32_t> met) {
+  bool round = works_a_whole_rnd(s);
   bool own = working() && needle().live > 0 && current_ == needle_of_yarn_[s.yarn];
+  if (own && !round) {
+    hold_what_others_take(s);
+    put_on_spare_needles(s);
+    met = on_the_needle(met);
+    const LoopAt mine{Place::needle, current_};
+    if (std::all_of(met.begin(), met.end(), [&](std::uint32_t l) { return places_.at(l) == mine; }))
+      return;
+  }
   if (own && needle().in_round) {
-    if (!round)
-      return takes_from_spare_needles(s) ? put_on_spare_needles(s) : place_into_ring_row(s, met);
+    if (!round) return place_into_ring_row(s, met);
     turn_in_ring(s, needle());
     begin_rnd_at_yarn(s, needle());
   }
@@ -52,38 +60,34 @@ void ProgramPatternBuilder::gather(const Step& s, const std::vector<std::uint32_
   places_.set(met, {Place::needle, current_});
 }
 
-bool ProgramPatternBuilder::takes_from_spare_needles(const Step& s) const {
-  const LoopAt own{Place::needle, current_};
-  bool any = false;
+void ProgramPatternBuilder::let_go_of_used_spare_needles() {
+  for (std::uint32_t k : {0u, 1u})
+    if (spare_queue_[k].empty()) spare_rows_[k] = 0;
+}
+
+bool ProgramPatternBuilder::waits_for_rows(std::uint32_t holder, const Step& s) const {
+  const LoopAt at{Place::holder, holder};
   for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i) {
-    std::size_t held = 0, mine = 0;
-    for (std::uint32_t l : taken_by(i)) {
-      LoopAt at = places_.at(l);
-      mine += at == own;
-      held += at.place == Place::holder;
-      if (at != own && at.place != Place::holder) return false;
-    }
-    if (held > 1 || (held == 1 && mine == 0)) return false;
-    any = any || held == 1;
+    std::span<const std::uint32_t> taken = taken_by(i);
+    auto held = std::count_if(taken.begin(), taken.end(),
+                              [&](std::uint32_t l) { return places_.at(l) == at; });
+    if (held > 1 || (held == 1 && taken.size() == 1)) return false;
   }
-  // Each holder is used up by the rows (a spare needle keeps no sts for a rnd to place).
-  for (std::uint32_t i = s.stitches.begin; i < s.stitches.end && any; ++i)
-    for (std::uint32_t l : taken_by(i)) {
-      if (places_.at(l).place != Place::holder || spare_slot(l) != kNone) continue;  // checked
-      for (std::uint32_t other : places_.loops_of(places_.at(l))) {
-        const Step* taker = taker_step_[other] == kNone ? nullptr : &p_.steps[taker_step_[other]];
-        if (!taker || taker->yarn != s.yarn || taker->shape == RowShape::closed) return false;
-      }
-    }
-  return any;
+  // The holder is used up by the rows (a spare needle keeps no sts for a rnd to place).
+  std::vector<std::uint32_t> loops = places_.loops_of(at);
+  return std::all_of(loops.begin(), loops.end(), [&](std::uint32_t other) {
+    const Step* taker = taker_step_[other] == kNone ? nullptr : &p_.steps[taker_step_[other]];
+    return taker && taker->yarn == s.yarn && taker->shape != RowShape::closed;
+  });
 }
 
 void ProgramPatternBuilder::put_on_spare_needles(const Step& s) {
-  hold_what_others_take(s);
   for (std::uint32_t loop : loops_met(s)) {
     LoopAt holder = places_.at(loop);
-    if (holder.place != Place::holder || spare_slot(loop) != kNone) continue;
-    turn_in_ring(s, needle());
+    if (holder.place != Place::holder || spare_slot(loop) != kNone ||
+        !waits_for_rows(holder.index, s))
+      continue;
+    if (needle().in_round) turn_in_ring(s, needle());
     if (row_open_) not_yet(s, "puts sts on a spare needle in the middle of a row");
     std::uint32_t k = spare_rows_[0] == 0 ? 0 : spare_rows_[1] == 0 ? 1 : kNone;
     if (k == kNone) not_yet(s, "takes sts from a third spare needle");
@@ -103,8 +107,8 @@ void ProgramPatternBuilder::put_on_spare_needles(const Step& s) {
   }
 }
 
-void ProgramPatternBuilder::slip_from_spare_needles(std::uint32_t worked, Needle& n) {
-  std::uint32_t j = 0;  // the loop's place among the stitch's, as met
+std::uint32_t ProgramPatternBuilder::slip_from_spare_needles(std::uint32_t worked, Needle& n) {
+  std::uint32_t j = 0, slipped = 0;  // j: the loop's place among the stitch's, as met
   for_each_met(taken_by(worked), p_.steps[step_].direction, [&](std::uint32_t loop) {
     bool behind = j++ > 0;  // worked after the st at the tip of the left needle
     std::uint32_t k = spare_slot(loop);
@@ -116,7 +120,10 @@ void ProgramPatternBuilder::slip_from_spare_needles(std::uint32_t worked, Needle
         k == 0 ? (behind ? HandOp::from_spare_behind : HandOp::from_spare)
                : (behind ? HandOp::from_second_spare_behind : HandOp::from_second_spare));
     ++n.live;
+    ++slipped;
+    if (!n.in_round) ++n.ahead;  // slipped onto the tip of the left needle
   });
+  return slipped;
 }
 
 void ProgramPatternBuilder::place_into_ring_row(const Step& s,
@@ -318,21 +325,23 @@ LoopAt ProgramPatternBuilder::hold_parts_of_spare_needle(std::uint32_t section,
   PatternSection& sec = out_.sections[section];
   const LoopAt spare_needle{Place::spare, section};
   std::vector<std::uint32_t> spare = places_.loops_of(spare_needle);
-  std::optional<PatternSection::Holding> counted = counting_of_spare_needle(sec);
+  std::optional<PatternSection::Holding> counted = counting_of_spare_needle(sec, spare);
   if (!counted || used_up_by_rows(spare)) return spare_needle;
   // The sts keep the numbers they had when the piece was left, so each part is a run of
   // those numbers, and all parts go to holders in one sentence, in order. The part that goes
   // round past the end (or else the last) stays on the spare needle.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> parts;  // [begin, end) in `spare`
   for (std::uint32_t i = 0, end = 0; i < spare.size(); i = end) {
-    for (end = i + 1; end < spare.size() && taken_together(spare[end - 1], spare[end]) &&
+    for (end = i + 1; end < spare.size() &&
+                      (taken_together(spare[end - 1], spare[end]) ||
+                       taken_by_rows_one_by_one(spare[end - 1], spare[end])) &&
                       places_.counted_at(spare[end]) == places_.counted_at(spare[end - 1]) + 1;
          ++end) {
     }
     parts.emplace_back(i, end);
   }
   bool round_the_end = parts.size() > 1 && taken_together(spare.back(), spare.front());
-  for (std::size_t k = round_the_end ? 1 : 0; k + 1 < parts.size(); ++k) {
+  for (std::size_t k = round_the_end ? 1 : 0; k + (round_the_end ? 1 : 0) < parts.size(); ++k) {
     std::span<const std::uint32_t> part(spare.data() + parts[k].first,
                                         parts[k].second - parts[k].first);
     PatternSection::Holding h = *counted;
@@ -359,13 +368,23 @@ bool ProgramPatternBuilder::used_up_by_rows(const std::vector<std::uint32_t>& lo
   });
 }
 
+bool ProgramPatternBuilder::taken_by_rows_one_by_one(std::uint32_t a, std::uint32_t b) const {
+  std::uint32_t at = taker_step_[a], bt = taker_step_[b];
+  if (at == kNone || bt == kNone || at == bt) return false;
+  const Step &sa = p_.steps[at], &sb = p_.steps[bt];
+  auto later_row = [&](const Step& s, std::uint32_t step) {
+    return s.shape != RowShape::closed && first_course_of_yarn_[s.yarn] != step;
+  };
+  return sa.yarn == sb.yarn && later_row(sa, at) && later_row(sb, bt);
+}
+
 bool ProgramPatternBuilder::taken_together(std::uint32_t a, std::uint32_t b) const {
   if (taker_step_[a] != taker_step_[b]) return false;
   return taker_step_[a] == kNone || met_at_[a] + 1 == met_at_[b] || met_at_[b] + 1 == met_at_[a];
 }
 
 std::optional<PatternSection::Holding> ProgramPatternBuilder::counting_of_spare_needle(
-    const PatternSection& sec) const {
+    const PatternSection& sec, const std::vector<std::uint32_t>& spare) const {
   PatternSection::Holding h{};
   if (sec.first_row == sec.end_row) {  // its cast-on only
     if (sec.resumed || sec.starts_from || sec.picks_up || sec.in_round) return std::nullopt;
@@ -375,7 +394,11 @@ std::optional<PatternSection::Holding> ProgramPatternBuilder::counting_of_spare_
   }
   h.after_row = sec.end_row - 1;
   const PatternRow& last = out_.rows[h.after_row];
-  if (sec.in_round != last.round) return std::nullopt;  // a row in the rnd counts round from it
+  // A row in the rnd numbers the sts in the order it worked them: only where it made them all.
+  if (sec.in_round != last.round && !std::all_of(spare.begin(), spare.end(), [&](std::uint32_t l) {
+        return row_of_[g_.loops[l].maker] == h.after_row;
+      }))
+    return std::nullopt;
   h.of_row = !last.round;
   return h;
 }
@@ -398,21 +421,28 @@ std::vector<std::uint32_t> ProgramPatternBuilder::hold_what_it_leaves(const Step
   if (!n.in_round || row_open_ || !at_marker)
     not_yet(s, "gathers sts onto a flat piece, or a tube not at the end of a rnd");
   n.gap = 0;
-  PatternSection& sec = section();
-  std::uint32_t after_row = static_cast<std::uint32_t>(out_.rows.size()) - 1;
   if (out_.rows.empty()) not_yet(s, "gathers sts before any row is worked");
+  return hold_blocks(
+      n.ring, [&](std::uint32_t l) { return in_met_[l] != 0; }, false);
+}
+
+std::vector<std::uint32_t> ProgramPatternBuilder::hold_blocks(
+    const std::vector<std::uint32_t>& order, const std::function<bool(std::uint32_t)>& stays,
+    bool of_row) {
+  Needle& n = needle();
+  PatternSection& sec = section();
+  auto after_row = static_cast<std::uint32_t>(out_.rows.size()) - 1;
   std::vector<std::uint32_t> stay;
-  for (std::uint32_t i = 0; i < n.ring.size();) {
-    if (in_met_[n.ring[i]]) {
-      stay.push_back(n.ring[i++]);
+  for (std::uint32_t i = 0; i < order.size();) {
+    if (stays(order[i])) {
+      stay.push_back(order[i++]);
       continue;
     }
     // A block for each yarn that takes them (a gusset's sts, and a join's beside them).
     std::uint32_t end = i + 1;
-    while (end < n.ring.size() && !in_met_[n.ring[end]] &&
-           held_together(n.ring[end - 1], n.ring[end]))
+    while (end < order.size() && !stays(order[end]) && held_together(order[end - 1], order[end]))
       ++end;
-    std::span<const std::uint32_t> block(n.ring.data() + i, end - i);
+    std::span<const std::uint32_t> block(order.data() + i, end - i);
     std::uint32_t holder = holder_met_before(block, n.section), onto = 0;
     if (holder != 0) {
       onto = static_cast<std::uint32_t>(places_.loops_of({Place::holder, holder}).size());
@@ -420,7 +450,9 @@ std::vector<std::uint32_t> ProgramPatternBuilder::hold_what_it_leaves(const Step
     } else {
       holder = places_.hold(block, n.section);
     }
-    sec.holdings.push_back({after_row, i + 1, end - i, holder, onto});
+    PatternSection::Holding h{after_row, i + 1, end - i, holder, onto};
+    h.of_row = of_row;
+    sec.holdings.push_back(h);
     i = end;
   }
   return stay;
@@ -489,6 +521,10 @@ std::vector<std::uint32_t> ProgramPatternBuilder::join_to_first_source(
     if (places_.at(l) == source) host.push_back(l);
   if (source.place == Place::edge) return start_from_pick_up(s, host, round);
   std::optional<Lie> lie = places_.lie(source, host);
+  if (!lie && source.place == Place::spare) {  // the sts of a piece that others share
+    source = hold_parts_of_spare_needle(source.index, host.front());
+    lie = places_.lie(source, host);
+  }
   if (source.place == Place::none || source.place == Place::needle || !lie)
     not_yet(s, "begins on sts that wait nowhere the pattern can name, or out of their order");
   auto count = static_cast<std::uint32_t>(host.size());
@@ -599,7 +635,10 @@ std::optional<PatternSection::PickUp> ProgramPatternBuilder::pick_up_of(
 
 std::vector<std::uint32_t> ProgramPatternBuilder::start_from_pick_up(
     const Step& s, const std::vector<std::uint32_t>& host, bool round) {
+  // A row after the pick-up works the last loop picked up first; a rnd joined after it, the
+  // first.
   std::vector<std::uint32_t> picked(host.rbegin(), host.rend());
+  if (round) picked = host;
   std::optional<PatternSection::PickUp> p = pick_up_of(places_.at(host.front()), picked);
   if (!p) not_yet(s, "begins on loops along an edge that are not one in each row of an edge");
   start_section(s.yarn, kNone);

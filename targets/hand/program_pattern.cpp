@@ -302,6 +302,11 @@ void ProgramPatternBuilder::three_needle_bind_off(const Step& s) {
     auto taken = all_taken_by(i);
     for (int k : {0, 1}) side[k].push_back(taken[k]);
   }
+  // Its own sts bound off with those of several pieces held behind, one after another: a rnd
+  // of three-needle bind-off ("Hold the 7 sts of Piece 1 behind the needle. Hold the 21 sts
+  // of Piece 2 behind ...").
+  auto other_place = [&](std::uint32_t l) { return places_.at(l) != places_.at(side[1][0]); };
+  if (own != kNone && std::any_of(side[1].begin(), side[1].end(), other_place)) return course(s);
   std::uint32_t joined = own == kNone ? kNone : needles_[own].section;
   end_section();
   PatternSection join;
