@@ -48,16 +48,21 @@ class Lowering {
  private:
   // A course ends where a row starts and where its yarn ends. Where the yarn is set aside
   // (hold) the course waits, unlowered, while other yarns work; it goes on when the yarn is
-  // taken up again (resume), so a course is lowered whole, at its end.
+  // taken up again (resume), so a course is lowered whole, at its end. But where another yarn
+  // takes loops the course has made so far (a cast-on along a split, worked on from the other
+  // side while this yarn waits), the course ends at the hold and goes on as another.
   void walk_schedule() {
     pending_.resize(yarns_.size());
-    for (const Event& e : schedule_.events) {
+    index_events();
+    for (std::uint32_t i = 0; i < schedule_.events.size(); ++i) {
+      const Event& e = schedule_.events[i];
       switch (e.kind) {
         case EventKind::row_start:
         case EventKind::yarn_end:
           close_course(e.yarn);
           break;
         case EventKind::hold:
+          if (taken_while_held(pending_[e.yarn], resumed_at_[i])) close_course(e.yarn);
           add_hold(e.yarn, e.waits_for);
           break;
         case EventKind::resume:
@@ -73,6 +78,33 @@ class Lowering {
       }
     }
     for (std::uint32_t y = 0; y < pending_.size(); ++y) close_course(y);
+  }
+
+  // Per stitch, the index of its event; per hold event, that of the resume after it.
+  void index_events() {
+    const std::vector<Event>& events = schedule_.events;
+    worked_in_event_.assign(g_.size(), kNone);
+    resumed_at_.assign(events.size(), kNone);
+    std::vector<std::uint32_t> next_resume(yarns_.size(), kNone);
+    for (auto i = static_cast<std::uint32_t>(events.size()); i-- > 0;) {
+      const Event& e = events[i];
+      if (e.kind == EventKind::stitch) worked_in_event_[e.stitch] = i;
+      if (e.kind == EventKind::resume) next_resume[e.yarn] = i;
+      if (e.kind == EventKind::hold) resumed_at_[i] = next_resume[e.yarn];
+    }
+  }
+
+  // Does another yarn take a loop of the course before the yarn resumes (event `resume`)?
+  bool taken_while_held(const std::vector<StitchId>& course, std::uint32_t resume) const {
+    return std::any_of(course.begin(), course.end(), [&](StitchId s) {
+      for (std::uint32_t loop : g_.loops_made_by(s)) {
+        StitchId taker = g_.loops[loop].taker;
+        if (taker != kNoStitch && yarns_.piece_of[taker] != yarns_.piece_of[s] &&
+            worked_in_event_[taker] < resume)
+          return true;
+      }
+      return false;
+    });
   }
 
   static Step step_of(StepKind kind, std::uint32_t yarn) {
@@ -483,6 +515,8 @@ class Lowering {
   std::vector<std::uint8_t> unoriented_;  // per run: cast on across a split, not yet walked
   Program out_;
   std::vector<std::vector<StitchId>> pending_;  // per yarn: its course so far
+  std::vector<std::uint32_t> worked_in_event_;  // per stitch: its event's index
+  std::vector<std::uint32_t> resumed_at_;       // per hold event: the resume's (kNone: none)
 };
 
 }  // namespace

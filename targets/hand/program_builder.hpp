@@ -457,6 +457,9 @@ class ProgramPatternBuilder {
   std::vector<RowEnds> row_ends_;
   std::vector<std::uint32_t> taker_step_ = std::vector<std::uint32_t>(g_.loops.size(), kNone);
   std::vector<std::uint32_t> first_course_of_yarn_;  // per yarn: its first course's step
+  std::vector<std::uint32_t> courses_of_yarn_;       // per yarn: its courses (counting up)
+  // Per step: how many courses its yarn worked before it.
+  std::vector<std::uint32_t> course_number_ = std::vector<std::uint32_t>(p_.steps.size(), 0);
   std::vector<std::uint32_t> met_at_ = std::vector<std::uint32_t>(g_.loops.size(), 0);
   // The row in the rnd being written, until the work turns or the marker ends it.
   PatternRow pending_;

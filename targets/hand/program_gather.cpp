@@ -375,7 +375,12 @@ bool ProgramPatternBuilder::taken_by_rows_one_by_one(std::uint32_t a, std::uint3
   auto later_row = [&](const Step& s, std::uint32_t step) {
     return s.shape != RowShape::closed && first_course_of_yarn_[s.yarn] != step;
   };
-  return sa.yarn == sb.yarn && later_row(sa, at) && later_row(sb, bt);
+  // Taken from one end of the needle: by rows one or two apart (every row, or every other row
+  // where the rows take sts at both their ends).
+  std::uint32_t apart = course_number_[at] > course_number_[bt]
+                            ? course_number_[at] - course_number_[bt]
+                            : course_number_[bt] - course_number_[at];
+  return sa.yarn == sb.yarn && later_row(sa, at) && later_row(sb, bt) && apart <= 2;
 }
 
 bool ProgramPatternBuilder::taken_together(std::uint32_t a, std::uint32_t b) const {
@@ -496,6 +501,7 @@ void ProgramPatternBuilder::index_loops_met() {
         s.kind != StepKind::three_needle_bind_off)
       continue;
     if (first_course_of_yarn_[s.yarn] == kNone) first_course_of_yarn_[s.yarn] = i;
+    course_number_[i] = courses_of_yarn_[s.yarn]++;
     std::vector<std::uint32_t> met = loops_met(s);
     for (std::uint32_t k = 0; k < met.size(); ++k) {
       taker_step_[met[k]] = i;

@@ -29,7 +29,8 @@ ProgramPatternBuilder::ProgramPatternBuilder(const Compilation& c, const Program
       places_(c.knit.loops.size()),
       needle_of_yarn_(c.yarns.size(), kNone),
       yarn_of_(c.yarns.piece_of),
-      first_course_of_yarn_(c.yarns.size(), kNone) {
+      first_course_of_yarn_(c.yarns.size(), kNone),
+      courses_of_yarn_(c.yarns.size(), 0) {
   out_.source = c.input;
   out_.turns = turns;
   out_.mirror = mirror;
