@@ -13,6 +13,7 @@
 #include "driver/pipeline.hpp"
 #include "labeling/shapes.hpp"
 #include "mesh/autoknit_st.hpp"
+#include "random_garments.hpp"
 #include "target_runner.hpp"
 #include "yarn/build.hpp"
 #include "yarn/checks.hpp"
@@ -24,6 +25,7 @@ namespace {
 // Yarns may come this close after relaxation, in diameters (the relaxation stops when no
 // overlap is deeper than RelaxOptions::overlap = 0.1).
 constexpr float kClearance = 0.9f;
+constexpr int kRandomGarments = 30;
 
 std::string sample_path(const std::string& name, const std::string& extension) {
   return std::string(SKEIN_SOURCE_DIR) + "/samples/" + name + "/" + name + extension;
@@ -78,7 +80,7 @@ TEST(YarnModel, EveryPieceIsOneCurveInYarnOrder) {
   YarnModel m = yarn_of(c, 0).model;
   ASSERT_EQ(m.pieces(), c.yarns.size());
   // Consecutive stitches along the yarn are consecutive runs of points, and no step between
-  // two points is longer than a stitch (the yarn is continuous).
+  // two points is longer than a stitch, 8 radii (the yarn is continuous).
   for (StitchId s = 0; s < c.knit.size(); ++s) {
     StitchId next = c.knit.yarn_next[s];
     if (next == kNoStitch) continue;
@@ -86,7 +88,7 @@ TEST(YarnModel, EveryPieceIsOneCurveInYarnOrder) {
   }
   for (std::uint32_t p = 0; p < m.pieces(); ++p)
     for (std::uint32_t i = m.piece_first[p]; i + 1 < m.piece_first[p + 1]; ++i)
-      ASSERT_LT((m.point[i + 1] - m.point[i]).norm(), 4 * m.radius) << i;
+      ASSERT_LT((m.point[i + 1] - m.point[i]).norm(), 8 * m.radius) << i;
 }
 
 // Munden's constants for dry-relaxed plain knitting: loop length = 3.8 stitch widths (kw)
@@ -107,17 +109,15 @@ TEST(YarnModel, KnitLengthPerStitchMatchesTheGauge) {
 
 // Every sample's yarn as laid: its loops held as the knit graph says, with at most the loops
 // each still misses (not held) or lets an unrelated neighbour's yarn through (held wrongly)
-// today: letter-h's loops at the three-needle bind-off of row 130, letter-r's at its 3nbo of
-// row 73, the teapot's in row 10 and at its joins, and the sweater's armpits (its sleeves'
-// last bands fold back over the band before in the input itself).
+// today: the teapot's at its body's corners (row 10, 34, 57) and the sweater's beside its
+// decreases and where the round steps up at the armpits, all next to a k2tog or a shift-path.
 // An edge stitch that makes a loop besides its own across an expanding perpendicular edge
 // lays no lobe for it: the teapot has 52 such loops (letter-r 16, two-bars 20), picked up
 // through a side and not checked. Before they were told apart, lobes bent their heads to the
 // wrong taker: the teapot's loops were 79 not held and 37 held wrongly, letter-r's 26 and 16,
-// two-bars' 15 and 10. Before the relaxed mesh bent (and a loop across a perpendicular edge
-// stacked half as deep): letter-h 25 / 7, letter-r 4 / 11, teapot 18 / 11, letter-i 0 / 5,
-// three-bars 1 / 0, three-bars-own 0 / 1, sweater 162 / 316; before its sleeves' last rings
-// stood a sleeve radius out from the body, the sweater's were 152 / 242.
+// two-bars' 15 and 10. Before a join's bind-off stood as a ridge (its loops' heads bent across
+// its cell from one side) and the stitch mesh bent everywhere at 0.3 (the sweater's yoke
+// stayed folded): letter-h 7 / 0, letter-r 0 / 1, teapot 4 / 5, sweater 72 / 86.
 TEST(YarnModel, EverySampleAsLaidHoldsItsLoops) {
   struct Expected {
     std::string sample;
@@ -126,9 +126,9 @@ TEST(YarnModel, EverySampleAsLaidHoldsItsLoops) {
   const std::vector<Expected> samples = {
       {"hat", 0, 0, 0},       {"rib-swatch", 0, 0, 0},      {"swatch", 0, 0, 0},
       {"beanie", 0, 0, 0},    {"short-row-wedge", 0, 0, 0}, {"sock", 0, 0, 0},
-      {"letter-i", 0, 0, 0},  {"letter-h", 0, 7, 0},        {"letter-r", 16, 0, 1},
+      {"letter-i", 0, 0, 0},  {"letter-h", 0, 0, 0},        {"letter-r", 16, 0, 0},
       {"two-bars", 20, 0, 0}, {"three-bars", 0, 0, 0},      {"three-bars-own", 0, 0, 0},
-      {"teapot", 52, 4, 5},   {"sweater", 0, 72, 86}};
+      {"teapot", 52, 0, 6},   {"sweater", 0, 0, 14}};
   for (const Expected& e : samples) {
     std::string yaml = std::string(SKEIN_SOURCE_DIR) + "/samples/" + e.sample + "/" + e.sample;
     Compilation c =
@@ -146,25 +146,19 @@ TEST(YarnModel, EverySampleAsLaidHoldsItsLoops) {
 // The relaxed stitch mesh the yarn is laid on does not fold back on itself: springs alone
 // buckled every band the input gives less room than its rows need (the teapot had 936 faces
 // turned over a neighbour, letter-h 477, three-bars 642, the sock's heel 78); bending unfolds
-// them. What is left stands at join edges, which do not bend, and in the sweater's armpits
-// (998 faces before its sleeves' last rings stood a sleeve radius out from the body: the
-// input folded those bands back over the band before).
+// them, and the sweater's yoke, folded in the input (872 faces). Before join edges bent and
+// bending was 0.3 (0.1) with an anchor of 0.1 (0.05): letter-h 28, two-bars 36, three-bars
+// 72, teapot 4, sweater 384.
 TEST(YarnModel, RelaxedStitchMeshDoesNotFold) {
-  const std::vector<std::pair<std::string, std::uint32_t>> samples = {
-      {"hat", 0},       {"rib-swatch", 0},      {"swatch", 0},
-      {"beanie", 0},    {"short-row-wedge", 0}, {"sock", 0},
-      {"letter-i", 0},  {"letter-h", 28},       {"letter-r", 0},
-      {"two-bars", 36}, {"three-bars", 72},     {"three-bars-own", 0},
-      {"teapot", 4},    {"sweater", 384}};
-  for (const auto& [sample, ceiling] : samples) {
+  for (const std::string sample :
+       {"hat", "rib-swatch", "swatch", "beanie", "short-row-wedge", "sock", "letter-i", "letter-h",
+        "letter-r", "two-bars", "three-bars", "three-bars-own", "teapot", "sweater"}) {
     std::string yaml = std::string(SKEIN_SOURCE_DIR) + "/samples/" + sample + "/" + sample;
     Compilation c =
         compile_model(std::filesystem::exists(yaml + ".yaml") ? yaml + ".yaml" : yaml + ".obj");
     ASSERT_TRUE(c.mesh.has_value()) << sample;
     std::vector<Point3> relaxed = relax_stitch_mesh(*c.mesh, stitch_mesh_gauge(*c.mesh));
-    std::uint32_t folded = folded_faces(*c.mesh, relaxed);
-    std::cout << sample << ": " << folded << " faces turned over a neighbour\n";
-    EXPECT_LE(folded, ceiling) << sample;
+    EXPECT_EQ(folded_faces(*c.mesh, relaxed), 0u) << sample;
   }
 }
 
@@ -198,8 +192,9 @@ TEST(YarnModel, RandomShapesHoldEveryLoopAndStayClear) {
 
 // A small sweater (`skein new sweater`, 20 cm round, body 6 cm, at half the default gauge:
 // 1,660 stitches, three pieces joined at the yoke) relaxes in a bounded number of steps with
-// no yarn through another and every loop held by its taker; 22 of 1,636 loops are pierced by
-// a neighbour's yarn as well as laid (1.3%), 5 after 800 steps (0.3%). Before the sleeves' last
+// no yarn through another and every loop held by its taker; 26 of 1,636 loops are pierced by
+// a neighbour's yarn as well as laid (1.6%; 22 before the stitch mesh bent at 0.3), 5 after
+// 800 steps (0.3%). Before the sleeves' last
 // rings stood out from the body, the armholes folded back and yarn crossed yarn there.
 TEST(YarnModel, SmallSweaterRelaxesClearWithEveryLoopHeld) {
   auto dir = std::filesystem::temp_directory_path() /
@@ -214,7 +209,7 @@ TEST(YarnModel, SmallSweaterRelaxesClearWithEveryLoopHeld) {
   shape.project.replace(shape.project.find(gauge), gauge.size(), "gauge: {stitches: 11, rows: 15}");
   Compilation c = compile_model(write_shape(shape, (dir / "sweater").string()));
   EXPECT_EQ(c.knit.size(), 1660u);
-  expect_held(c, yarn_of(c, 0).model, "as laid", 0.015);
+  expect_held(c, yarn_of(c, 0).model, "as laid", 0.017);
   YarnBuild relaxed = yarn_of(c, 1200);
   expect_held(c, relaxed.model, "relaxed", 0.005);
   expect_clear(c, relaxed.model);
@@ -271,6 +266,25 @@ TEST(YarnModel, FabricOfAKnitoutFileHoldsEveryLoop) {
   YarnBuild yarn = build_yarn(c.knit, c.yarns, nullptr, positions, laid);
   EXPECT_EQ(yarn.model.pieces(), c.yarns.size());
   expect_held(c, yarn.model, "as laid", 0.02, 0.001);
+}
+
+// Random garments (tests/random_garments.hpp: trees of tubes that part and join, bent by short
+// rows; sheets whose flaps part or join), as laid: a ratchet on the loops not held and held
+// wrongly over the 30 garments (156,479 loops). What is left: a k2tog's first loop pierced by
+// its second maker's yarn (a knit beside a purl in rib), and loops where the input folds.
+// Before a join's bind-off stood as a ridge and the stitch mesh bent everywhere: 153 and 236.
+TEST(YarnModel, RandomGarmentsAsLaidHoldTheirLoops) {
+  std::uint32_t loops = 0, not_held = 0, wrongly_held = 0;
+  testing::tally_random_garments(kRandomGarments, [&](const Compilation& c, testing::Dice&) {
+    TopologyReport t = check_yarn_topology(c.knit, yarn_of(c, 0).model);
+    loops += t.loops, not_held += t.not_held, wrongly_held += t.wrongly_held;
+    return testing::Verdict{true, ""};
+  });
+  std::cout << loops << " loops, " << not_held << " not held, " << wrongly_held
+            << " held wrongly\n";
+  EXPECT_GT(loops, 150000u);
+  EXPECT_LE(not_held, 117u);
+  EXPECT_LE(wrongly_held, 222u);
 }
 
 }  // namespace

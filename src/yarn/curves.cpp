@@ -80,6 +80,20 @@ bool takes_across_perpendicular_edge(const KnitGraph& graph, StitchId taker) {
   return false;
 }
 
+// +1 or -1 when the stitch making the loop in the taker's input slot lies in front of the
+// taker's cell or behind it (more than a quarter row off its surface), 0 when beside it.
+float maker_offset(const KnitGraph& graph, const StitchLayout& layout, StitchId taker,
+                   std::uint32_t slot) {
+  StitchId maker = kNoStitch;
+  for (std::uint32_t l : graph.loops_taken_by(taker))
+    if (graph.loops[l].taker_slot == slot) maker = graph.loops[l].maker;
+  if (maker == kNoStitch) return 0;
+  const StitchFrame& f = layout.frame[taker];
+  float off = (layout.frame[maker].at(0.5f, 0.5f, 0) - f.at(0.5f, 0.5f, 0)).dot(f.normal);
+  if (std::abs(off) < 0.25f * f.wale.norm()) return 0;
+  return off > 0 ? 1.0f : -1.0f;
+}
+
 // Where a stitch grips the old loop in its input slot: the centre and width (in its cell's
 // x) the loop's head takes there, how far up the cell it reaches, its offset in depth, and
 // the side it pulls its loop to (the old loop's head lies on the other).
@@ -100,6 +114,10 @@ Grip grip(const KnitGraph& graph, const StitchLayout& layout, StitchId taker, st
     float lobe = std::floor(static_cast<float>(at * t.lobes) / static_cast<float>(inputs));
     float stack = (static_cast<float>(at) - static_cast<float>(inputs - 1) / 2) * kStack;
     if (takes_across_perpendicular_edge(graph, taker)) stack *= kSideStack;
+    // A loop whose maker lies in front of the taker's cell or behind it (a join's two sides
+    // meeting at its bind-off's ridge) stacks on that side.
+    if (float off = maker_offset(graph, layout, taker, slot); off != 0)
+      stack = std::abs(stack) * off;
     return {(lobe + 0.5f) / lobes, 1 / lobes, 0, stack * diameter, t.side};
   }
   float share = 1.0f / static_cast<float>(inputs);  // an increase: one old loop, many lobes

@@ -148,6 +148,7 @@ std::vector<Point3> evenly_spaced_rows(const KnitGraph& graph, const std::vector
   // no longer relaxed to tolerance).
   MeshRelaxOptions options;
   options.bend = 0;
+  options.anchor = 0.05f;
   return relax_springs(centre, springs, options);
 }
 
@@ -201,21 +202,34 @@ StitchLayout layout_from_mesh(const StitchMesh& mesh, std::span<const Point3> po
     layout.right_to_left[s] = !mesh.runs_left_to_right(f);
     centre[s] = layout.frame[s].at(0.5f, 0.5f, 0);
   }
-  // Extruded stitches sit on their mismatched edge, facing as the faces around them do.
+  // Extruded stitches (a join's three-needle bind-off, a split's cast-on) sit on their
+  // mismatched edge between two sides that meet there, their loops going to or coming from
+  // both: they stand as a ridge on the wrong side, course along the edge the way their yarn
+  // runs, wale out of the surface, so that each side's loops reach them from below (as the
+  // two pieces held right sides together are bound off). A wale in the surface pointed away
+  // from one side: its loops' heads were bent back across the cell (letter-h's seven loops
+  // not held at its join).
   for (StitchId s = faces; s < graph.size(); ++s) {
     const MismatchEdge& e = graph.mismatch_edges[graph.extruded_at[s - faces]];
     centre[s] = (position[e.vertex[0]] + position[e.vertex[1]]) / 2;
   }
   std::vector<StitchId> prev = yarn_predecessors(graph);
   for (StitchId s = faces; s < graph.size(); ++s) {
+    const MismatchEdge& e = graph.mismatch_edges[graph.extruded_at[s - faces]];
     NeighbourAxes axes = neighbour_axes(graph, centre, prev, s);
-    Point3 normal = Point3::Zero();
+    Point3 surface = Point3::Zero();
     for (std::uint32_t l : graph.loops_taken_by(s))
-      if (graph.loops[l].maker < faces) normal += layout.frame[graph.loops[l].maker].normal;
+      if (graph.loops[l].maker < faces) surface += layout.frame[graph.loops[l].maker].normal;
     for (std::uint32_t l : graph.loops_made_by(s))
-      if (graph.loops[l].taker < faces) normal += layout.frame[graph.loops[l].taker].normal;
-    if (normal.norm() < 1e-12f) normal = axes.course.cross(axes.wale);
-    layout.frame[s] = frame_at(centre[s], axes.course, axes.wale, normal, layout.gauge);
+      if (graph.loops[l].taker < faces) surface += layout.frame[graph.loops[l].taker].normal;
+    if (surface.norm() < 1e-12f) surface = axes.course.cross(axes.wale);
+    surface.normalize();
+    Point3 course = position[e.vertex[1]] - position[e.vertex[0]];
+    course -= surface * surface.dot(course);
+    if (course.dot(axes.course) < 0) course = -course;
+    Point3 wale = -surface * layout.gauge.row_height;
+    layout.frame[s] =
+        frame_at(centre[s] + wale / 2, course, wale, course.cross(wale), layout.gauge);
   }
   return layout;
 }

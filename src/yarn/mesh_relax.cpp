@@ -98,8 +98,7 @@ Gauge stitch_mesh_gauge(const StitchMesh& mesh) {
 }
 
 std::vector<Point3> relax_springs(const std::vector<Point3>& start, std::span<const Spring> springs,
-                                  const MeshRelaxOptions& options,
-                                  std::span<const std::uint8_t> bends) {
+                                  const MeshRelaxOptions& options) {
   const auto n = static_cast<std::uint32_t>(start.size());
   std::vector<Point3> x = start, delta(n), lap(n), bilap(n);
   std::vector<float> valence(n, 0);
@@ -136,7 +135,7 @@ std::vector<Point3> relax_springs(const std::vector<Point3>& start, std::span<co
     }
     for (std::uint32_t v = 0; v < n; ++v) {
       if (valence[v] > 0) x[v] += delta[v] / valence[v];
-      if (bend && (bends.empty() || bends[v])) x[v] -= options.bend * bilap[v];
+      if (bend) x[v] -= options.bend * bilap[v];
       x[v] += options.anchor * (start[v] - x[v]);
     }
   }
@@ -147,16 +146,7 @@ std::vector<Point3> relax_stitch_mesh(const StitchMesh& mesh, const Gauge& gauge
                                       const MeshRelaxOptions& options) {
   std::vector<Point3> start(mesh.num_vertices());
   for (Vertex v : mesh.vertices()) start[v.index()] = point(mesh.position[v]);
-  // The ends of join and split edges do not bend: two pieces meet there at an angle, and
-  // smoothing that crease drew the three-needle bind-offs' cells away from the loops they
-  // take (the teapot's 3nbo: 20 loops more not held as laid).
-  std::vector<std::uint8_t> bends(mesh.num_vertices(), 1);
-  for (Edge e : mesh.edges()) {
-    if (mesh.kind(e) != EdgeKind::join && mesh.kind(e) != EdgeKind::split) continue;
-    Halfedge h = mesh.halfedge(e);
-    bends[mesh.tail(h).index()] = bends[mesh.head(h).index()] = 0;
-  }
-  return relax_springs(start, springs_of(mesh, gauge), options, bends);
+  return relax_springs(start, springs_of(mesh, gauge), options);
 }
 
 std::uint32_t folded_faces(const StitchMesh& mesh, std::span<const Point3> positions) {
