@@ -618,7 +618,9 @@ class ProgramLayouts {
   // A turn's wrap closes the gap beside a short row, which a later course knits across: the
   // course that takes the waiting loop beyond the turn takes loops made since the turn too.
   // Beside a slit (a sheet parted into flaps, each knit on its own) the course that takes the
-  // other flap's loop takes none: a wrap there would join the flaps, so the turn goes unwrapped.
+  // other flap's loop takes none: a wrap there would join the flaps, so the turn goes unwrapped;
+  // so too where another yarn takes the waiting loop (a branch knit on with a yarn of its own):
+  // the turn's yarn never comes back to knit its wrap.
   void wrap_turns(std::uint32_t index) {
     CourseLayout& l = layouts_[index];
     std::vector<std::uint32_t> course_of(g_.size(), kNoWrap);
@@ -628,7 +630,8 @@ class ProgramLayouts {
     for (const Turn& t : turns_) {
       if (t.layout != index) continue;
       std::uint32_t across = t.beyond == kNoWrap ? kNoWrap : course_of[g_.loops[t.beyond].taker];
-      if (across != kNoWrap && takes_loops_made_since(l, l.courses[across], t.course, course_of))
+      if (across != kNoWrap && l.courses[across].yarn == l.courses[t.course].yarn &&
+          takes_loops_made_since(l, l.courses[across], t.course, course_of))
         choose_wrap(g_, t.turning, t.beyond, l.courses[t.course], wrapped_);
     }
   }
