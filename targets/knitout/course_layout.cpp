@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <optional>
 #include <unordered_map>
 
 #include "common/error.hpp"
@@ -268,6 +269,7 @@ class ProgramLayouts {
       case StepKind::cast_on:
         return add_course(step);
       case StepKind::split:  // the branches are knit where their loops wait, in one layout
+        note_whether_alone(p_.segments[step.reads.begin]);
         return runs_.cut(p_.segments[step.reads.begin], step.run, step.other);
       case StepKind::reverse:
         return runs_.reverse(step.run);
@@ -287,6 +289,17 @@ class ProgramLayouts {
       case StepKind::resume:
         return;  // pieces apart are knit one after another
     }
+  }
+
+  // A cast-on along a split is followed by the split that parts the tube: the crotch may roll
+  // the tube when the tube and the crotch's loops (those in runs of their own) are all that
+  // is on its layout's bed (no branch of an earlier crotch waits beside it).
+  void note_whether_alone(const Segment& seg) {
+    if (!crotch_alone_) return;
+    const PendingCrotch& k = *crotch_alone_;
+    layouts_[k.layout].courses[k.course].alone =
+        runs_.size(seg.run) + k.own_loops == pieces_[k.layout].on_bed;
+    crotch_alone_.reset();
   }
 
   StitchId first_stitch(const Step& step) const {
@@ -435,6 +448,8 @@ class ProgramLayouts {
     note_right_branch_starts(piece, first, second);
     Course& course = l.courses.emplace_back(append(l, step.stitches, left_to_right));
     course.along_split = true;
+    crotch_alone_ = PendingCrotch{index_of(l), static_cast<std::uint32_t>(l.courses.size() - 1),
+                                  static_cast<std::uint32_t>(first.size() + second.size())};
     crotch_course_[step.run.index()] = {index_of(l),
                                         static_cast<std::uint32_t>(l.courses.size() - 1)};
   }
@@ -489,6 +504,7 @@ class ProgramLayouts {
       }
       begin = end;
     }
+    crotch_alone_ = PendingCrotch{index_of(l), crotch, static_cast<std::uint32_t>(second.size())};
     note_arc_ends_in_round(l.courses[crotch], sco, left);
   }
   void note_arc_ends_in_round(Course& c, Range sco, const std::vector<std::uint32_t>& ring) const {
@@ -672,6 +688,12 @@ class ProgramLayouts {
   // Per first side of a cast-on along a split not yet joined: its layout and course.
   std::unordered_map<std::uint32_t, std::pair<std::uint32_t, std::uint32_t>> crotch_course_;
   std::uint32_t tails_ = 0;
+  // The last cast-on along a split, until the split after it: its layout, course, and the
+  // loops it put in runs of their own.
+  struct PendingCrotch {
+    std::uint32_t layout, course, own_loops;
+  };
+  std::optional<PendingCrotch> crotch_alone_;
 };
 
 }  // namespace

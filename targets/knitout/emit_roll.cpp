@@ -47,7 +47,7 @@ std::int32_t Emitter::roll_onto_fold(std::int32_t lo, std::int32_t hi, std::int3
 
 // Where a branch's arc ends on the bed where it starts, rolls the tube so that a fold runs
 // between the two ends: the branch on one bed (or the other, round both folds) then goes
-// round one fold. Only a whole tube rolls: not one parted at a crotch already.
+// round one fold. Only a tube alone on the bed rolls (no branch of it waiting beside it).
 void Emitter::roll_branch_onto_fold(const Course& c) {
   std::vector<Move> home;
   for (std::uint32_t loop : on_needles_) {
@@ -57,7 +57,7 @@ void Emitter::roll_branch_onto_fold(const Course& c) {
   }
   emit_moves(home);
   std::vector<std::uint32_t> loops =
-      crotch_ ? std::vector<std::uint32_t>{} : loops_round_the_tube();
+      c.alone ? loops_round_the_tube() : std::vector<std::uint32_t>{};
   auto index = [&](std::uint32_t loop) {
     return static_cast<std::int32_t>(std::find(loops.begin(), loops.end(), loop) - loops.begin());
   };
@@ -66,7 +66,7 @@ void Emitter::roll_branch_onto_fold(const Course& c) {
   if (e == n || s == n || e == s)
     unsupported_split(c,
                       "a cast-on along a split whose branch lies on one bed of a tube that cannot "
-                      "roll (parted already, or its loops stacked)");
+                      "roll (a branch waits beside it, or its loops are stacked)");
   auto front = static_cast<std::int32_t>(std::count_if(
       loops.begin(), loops.end(), [&](std::uint32_t l) { return live_[l].home.bed == Bed::f; }));
   std::int32_t by = roll_onto_fold(std::min(e, s), std::max(e, s), front, n);
