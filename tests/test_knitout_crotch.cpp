@@ -148,7 +148,7 @@ TEST(KnitoutCrotch, RandomPartedTubesAreProvenOrRefusedByName) {
       crotches, proven, refused, unknittable);
   for (const auto& [why, n] : refusals) std::cout << "  " << n << " " << why << "\n";
   EXPECT_GT(crotches, 20);
-  EXPECT_GT(proven, crotches / 2);
+  EXPECT_GE(proven, 34);  // 2026-12-02, a branch on one bed rolled (29 before)
 }
 
 }  // namespace
