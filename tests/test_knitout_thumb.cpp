@@ -5,12 +5,10 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <iostream>
 #include <map>
 #include <sstream>
 
-#include "labeling/shapes.hpp"
 #include "random_garments.hpp"
 #include "test_knitout_util.hpp"
 
@@ -22,11 +20,7 @@ using testing::shipped_profile;
 // A mitten from `skein new` (small: it fits every profile), with the yarn the project picks for
 // the crotch.
 Compilation small_mitten(const std::string& yarn) {
-  Shape shape = make_shape("mitten", {16, 0, 14}, "mitten");
-  shape.project += fmt::format("yarn: {{default: {}}}\n", yarn);
-  std::string dir = ::testing::TempDir() + "thumb-" + yarn;
-  std::filesystem::create_directories(dir);
-  return compile_model(write_shape(shape, dir + "/mitten"));
+  return testing::compile_new_shape("mitten", {16, 0, 14}, yarn);
 }
 
 // The lines of the file's roll: from its note to the next note.
