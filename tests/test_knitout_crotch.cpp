@@ -5,7 +5,6 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <iostream>
 #include <map>
 
@@ -23,11 +22,7 @@ using testing::shipped_profile;
 // Shorts from `skein new` (small: the crotch fits every profile), with the yarn the project
 // picks for the crotch.
 Compilation small_shorts(const std::string& yarn) {
-  Shape shape = make_shape("shorts", {40, 0, 6}, "shorts");
-  shape.project += fmt::format("yarn: {{default: {}}}\n", yarn);
-  std::string dir = ::testing::TempDir() + "crotch-" + yarn;
-  std::filesystem::create_directories(dir);
-  return compile_model(write_shape(shape, dir + "/shorts"));
+  return testing::compile_new_shape("shorts", {40, 0, 6}, yarn);
 }
 
 // The crotch is one course of its own, between the body's last round and the first leg's.
@@ -148,7 +143,7 @@ TEST(KnitoutCrotch, RandomPartedTubesAreProvenOrRefusedByName) {
       crotches, proven, refused, unknittable);
   for (const auto& [why, n] : refusals) std::cout << "  " << n << " " << why << "\n";
   EXPECT_GT(crotches, 20);
-  EXPECT_GT(proven, crotches / 2);
+  EXPECT_GE(proven, 34);  // 2026-12-02, a branch on one bed rolled (29 before)
 }
 
 }  // namespace

@@ -41,7 +41,8 @@ TEST(KnitoutRandomGarments, EachIsProvenOrRefusedByNameBeforeWriting) {
                    "knittable\n",
                    kModels, tally.proven, tally.refused, tally.unknittable)
             << tally.table();
-  EXPECT_GT(tally.proven, 0);
+  // 2026-12-02: 232 proven, 58 refused, 10 not knittable (175 / 115 before thumbs rolled).
+  EXPECT_GE(tally.proven, 232);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <random>
 #include <sstream>
 #include <string>
@@ -18,12 +19,24 @@
 #include "knitout/machine_profile.hpp"
 #include "knitout/vbed_simulator.hpp"
 #include "knitout/whole_file_proof.hpp"
+#include "labeling/shapes.hpp"
 #include "mesh/autoknit_st.hpp"
 
 namespace skein::testing {
 
 inline knitout::MachineProfile shipped_profile(const std::string& name) {
   return knitout::read_machine_profile(source_path("machine_profiles/" + name + ".yaml"));
+}
+
+// A shape from `skein new` at `size`, with the yarn its project picks for a crotch (extra, own),
+// compiled from files written under the test's temporary directory.
+inline Compilation compile_new_shape(const std::string& kind, const ShapeSize& size,
+                                     const std::string& yarn) {
+  Shape shape = make_shape(kind, size, kind);
+  shape.project += fmt::format("yarn: {{default: {}}}\n", yarn);
+  std::string dir = ::testing::TempDir() + kind + "-" + yarn;
+  std::filesystem::create_directories(dir);
+  return compile_model(write_shape(shape, dir + "/" + kind));
 }
 
 inline std::string emit_knitout_text(const Compilation& c, const knitout::MachineProfile& p) {

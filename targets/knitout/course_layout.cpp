@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <optional>
 #include <unordered_map>
 
 #include "common/error.hpp"
@@ -268,6 +269,7 @@ class ProgramLayouts {
       case StepKind::cast_on:
         return add_course(step);
       case StepKind::split:  // the branches are knit where their loops wait, in one layout
+        note_whether_alone(p_.segments[step.reads.begin]);
         return runs_.cut(p_.segments[step.reads.begin], step.run, step.other);
       case StepKind::reverse:
         return runs_.reverse(step.run);
@@ -287,6 +289,17 @@ class ProgramLayouts {
       case StepKind::resume:
         return;  // pieces apart are knit one after another
     }
+  }
+
+  // A cast-on along a split is followed by the split that parts the tube: the crotch may roll
+  // the tube when the tube and the crotch's loops (those in runs of their own) are all that
+  // is on its layout's bed (no branch of an earlier crotch waits beside it).
+  void note_whether_alone(const Segment& seg) {
+    if (!crotch_alone_) return;
+    const PendingCrotch& k = *crotch_alone_;
+    layouts_[k.layout].courses[k.course].alone =
+        runs_.size(seg.run) + k.own_loops == pieces_[k.layout].on_bed;
+    crotch_alone_.reset();
   }
 
   StitchId first_stitch(const Step& step) const {
@@ -435,6 +448,8 @@ class ProgramLayouts {
     note_right_branch_starts(piece, first, second);
     Course& course = l.courses.emplace_back(append(l, step.stitches, left_to_right));
     course.along_split = true;
+    crotch_alone_ = PendingCrotch{index_of(l), static_cast<std::uint32_t>(l.courses.size() - 1),
+                                  static_cast<std::uint32_t>(first.size() + second.size())};
     crotch_course_[step.run.index()] = {index_of(l),
                                         static_cast<std::uint32_t>(l.courses.size() - 1)};
   }
@@ -489,6 +504,7 @@ class ProgramLayouts {
       }
       begin = end;
     }
+    crotch_alone_ = PendingCrotch{index_of(l), crotch, static_cast<std::uint32_t>(second.size())};
     note_arc_ends_in_round(l.courses[crotch], sco, left);
   }
   void note_arc_ends_in_round(Course& c, Range sco, const std::vector<std::uint32_t>& ring) const {
@@ -618,7 +634,9 @@ class ProgramLayouts {
   // A turn's wrap closes the gap beside a short row, which a later course knits across: the
   // course that takes the waiting loop beyond the turn takes loops made since the turn too.
   // Beside a slit (a sheet parted into flaps, each knit on its own) the course that takes the
-  // other flap's loop takes none: a wrap there would join the flaps, so the turn goes unwrapped.
+  // other flap's loop takes none: a wrap there would join the flaps, so the turn goes unwrapped;
+  // so too where another yarn takes the waiting loop (a branch knit on with a yarn of its own):
+  // the turn's yarn never comes back to knit its wrap.
   void wrap_turns(std::uint32_t index) {
     CourseLayout& l = layouts_[index];
     std::vector<std::uint32_t> course_of(g_.size(), kNoWrap);
@@ -628,7 +646,8 @@ class ProgramLayouts {
     for (const Turn& t : turns_) {
       if (t.layout != index) continue;
       std::uint32_t across = t.beyond == kNoWrap ? kNoWrap : course_of[g_.loops[t.beyond].taker];
-      if (across != kNoWrap && takes_loops_made_since(l, l.courses[across], t.course, course_of))
+      if (across != kNoWrap && l.courses[across].yarn == l.courses[t.course].yarn &&
+          takes_loops_made_since(l, l.courses[across], t.course, course_of))
         choose_wrap(g_, t.turning, t.beyond, l.courses[t.course], wrapped_);
     }
   }
@@ -669,6 +688,12 @@ class ProgramLayouts {
   // Per first side of a cast-on along a split not yet joined: its layout and course.
   std::unordered_map<std::uint32_t, std::pair<std::uint32_t, std::uint32_t>> crotch_course_;
   std::uint32_t tails_ = 0;
+  // The last cast-on along a split, until the split after it: its layout, course, and the
+  // loops it put in runs of their own.
+  struct PendingCrotch {
+    std::uint32_t layout, course, own_loops;
+  };
+  std::optional<PendingCrotch> crotch_alone_;
 };
 
 }  // namespace

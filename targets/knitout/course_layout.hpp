@@ -40,6 +40,7 @@ struct Course {
   // makes a loop for each, cast on between them where they part. The loops of the first
   // branch's ring (the one that takes the sts' first loops) just before and just after its sts.
   bool along_split = false;
+  bool alone = false;  // the tube it parts is all that is on the bed (no branch waits beside it)
   std::uint32_t arc_end = kNoWrap, arc_start = kNoWrap;
 };
 

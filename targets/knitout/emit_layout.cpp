@@ -273,11 +273,29 @@ void Emitter::off_the_bed(StitchId s) const {
       c_.input, g_.describe(s), p_.name, p_.needles - 1));
 }
 
-void Emitter::plan_course(const Course& c, bool first) {
+// Once a tube has rolled round its needles, its round starts elsewhere than at the front's
+// left end: a whole round is laid out from the stitch whose loop lies there, so that its loops
+// need not move round the tube back again.
+std::uint32_t Emitter::stitch_at_front_left(const Course& c) const {
+  std::uint32_t n = c.end - c.begin, best = 0;
+  std::int32_t leftmost = std::numeric_limits<std::int32_t>::max();
+  for (std::uint32_t k = 0; k < n; ++k) {
+    StitchId s = l_.order[c.left_to_right ? c.begin + k : c.end - 1 - k];
+    auto in = taken(s);
+    if (in.empty()) continue;
+    std::int32_t u = ring(live_[in[stacking_order(g_.type[s])[0]]].home);
+    if (u < leftmost) leftmost = u, best = k;
+  }
+  return best;
+}
+
+void Emitter::plan_course(const Course& course, bool first) {
   room_.clear();
   for (auto& bed : shaping_) bed.clear();
   // A bind-off, like a short row, is knit where its loops wait (wherever its round starts).
-  if (c.partial || chained_off(g_.type[l_.order[c.begin]])) return plan_in_place(c);
+  if (course.partial || chained_off(g_.type[l_.order[course.begin]])) return plan_in_place(course);
+  Course c = course;
+  if (rolled_ && !first) c.layout_start = stitch_at_front_left(c);
   Footprint f = measure(c);
   // A tube whose halves keep their folds moves no loop between the beds: its right fold may
   // then follow the loops; while loops cross a fold it stays where it is.

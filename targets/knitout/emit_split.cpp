@@ -38,11 +38,8 @@ bool Emitter::on_the_bed(std::uint32_t loop) const {
 Emitter::Crotch Emitter::plan_crotch(const Course& c) {
   if (!l_.tube || !on_the_bed(c.arc_end) || !on_the_bed(c.arc_start))
     unsupported_split(c, "a cast-on along a split that does not close a branch of a tube");
+  if (fabric_place(c.arc_end).bed == fabric_place(c.arc_start).bed) roll_branch_onto_fold(c);
   Place end = fabric_place(c.arc_end), start = fabric_place(c.arc_start);
-  if (end.bed == start.bed)
-    unsupported_split(c,
-                      "a cast-on along a split whose branch lies on one bed (as a thumb: the "
-                      "branch would need needles of its own)");
   Crotch k;
   // The first branch is right of the cuts when its arc reaches the crotch from the back (it
   // goes round the tube's right fold), left of them otherwise.

@@ -115,7 +115,8 @@ class Emitter {
   bool is_turn_loop(std::uint32_t loop) const;
   std::uint32_t resting_loop(StitchId s) const;
   void plan_in_place(const Course& c);
-  void plan_course(const Course& c, bool first);
+  std::uint32_t stitch_at_front_left(const Course& c) const;
+  void plan_course(const Course& course, bool first);
   void plan_beside(const Course& c);
 
   // ---- shaping inside a short row (emit_layout.cpp) ----
@@ -201,6 +202,14 @@ class Emitter {
   std::array<Place, 2> crotch_places(const Crotch& k, std::uint32_t i, std::uint32_t sts) const;
   void cast_on_along_split(const Course& c);
 
+  // ---- rolling a tube round its needles (emit_roll.cpp) ----
+  std::vector<std::uint32_t> loops_round_the_tube() const;
+  static std::int32_t roll_onto_fold(std::int32_t lo, std::int32_t hi, std::int32_t front,
+                                     std::int32_t n);
+  void roll_branch_onto_fold(const Course& c);
+  bool roll_stage(std::vector<std::uint32_t>& loops, const std::vector<Place>& slots,
+                  std::int32_t step);
+
   // ---- output helpers ----
   void source(const Course& c, const char* what);  // emit.cpp
   std::span<const std::uint32_t> taken(StitchId s) const { return g_.loops_taken_by(s); }
@@ -222,6 +231,7 @@ class Emitter {
   const std::vector<std::string>& carriers_;
   std::string carrier_;  // the carrier of the course being knit
   bool crotch_ = false;  // a cast-on along a split has parted the tube into branches
+  bool rolled_ = false;  // the tube has rolled round its needles: its rounds start elsewhere
 };
 
 }  // namespace skein::knitout::emit
