@@ -3,38 +3,93 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <array>
+#include <numeric>
 #include <sstream>
 #include <vector>
 
 #include "common/error.hpp"
 #include "knitout/fabric_stitch_graph.hpp"
 #include "mesh/autoknit_st.hpp"
-#include "mesh/generate.hpp"
 #include "mesh/obj_format.hpp"
 
 namespace skein::knitout {
 namespace {
 
-constexpr std::uint32_t kNotBelow = 0xffffffffu;
+constexpr std::uint32_t kNone = 0xffffffffu;
 
-struct Row {
-  std::vector<StitchId> chart;  // its stitches left to right on the side facing the front bed
-  std::vector<StitchType> types;
-  bool left_to_right = true;
-  std::uint32_t turn = 0;  // on a round: which loop of the round below the first stitch takes
+// A loop of the fabric between two faces: its maker, which of the maker's loops it is along the
+// yarn, and its taker (kNone: it ends nowhere, which the .st reader does not allow).
+struct FabricLoop {
+  StitchId maker = kNoStitch, taker = kNoStitch;
+  std::uint8_t yarn_slot = 0;
+  bool alive = true;
 };
 
-class MeshOfFabric {
+// How a face stands: its course edges, which way its yarn runs, and whether it is a short-row
+// end (its yarn leaves on the side it came in by).
+struct FaceShape {
+  std::uint32_t first_corner = 0;
+  std::uint8_t bottoms = 1, tops = 1;
+  bool left_to_right = true;
+  bool turns = false;
+  StitchType type = StitchType::k;
+  std::vector<std::uint32_t> takes, makes;  // loop ids, each left to right in the face's frame
+};
+
+// The ends of a wale edge, bottom first, as corner ids.
+struct WaleEnds {
+  std::uint32_t bottom, top;
+};
+
+// Union-find over corners: the faces' corners glued into the mesh's vertices.
+struct Corners {
+  std::vector<std::uint32_t> parent;
+  std::uint32_t add(std::uint32_t n) {
+    auto first = static_cast<std::uint32_t>(parent.size());
+    parent.resize(parent.size() + n);
+    std::iota(parent.begin() + first, parent.end(), first);
+    return first;
+  }
+  std::uint32_t find(std::uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  void glue(std::uint32_t a, std::uint32_t b) {
+    a = find(a), b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+};
+
+class GluedFabric {
  public:
-  MeshOfFabric(const KnitGraph& g, const std::vector<std::array<double, 3>>& positions,
-               const std::string& file)
-      : g_(g), positions_(positions), file_(file), position_below_(g.loops.size(), kNotBelow) {}
+  GluedFabric(const KnitGraph& g, const std::vector<std::array<double, 3>>& positions,
+              const std::string& file)
+      : g_(g),
+        positions_(positions),
+        file_(file),
+        kept_(g.size(), true),
+        merged_(g.size(), false),
+        turns_after_wrap_(g.size(), false),
+        next_(g.yarn_next) {
+    for (std::uint32_t l = 0; l < g.loops.size(); ++l)
+      loops_.push_back({g.loops[l].maker, g.loops[l].taker, g.loops[l].maker_slot});
+  }
 
   StitchMesh build() {
-    split_rows();
-    for (std::size_t r = 0; r < rows_.size(); ++r) name_types(r);
-    for (std::size_t r = 1; r < rows_.size(); ++r) place_on_row_below(r);
+    fold_wraps();
+    merge_decrease_chains();
+    shape_faces();
+    glue_loops();
+    glue_yarn();
+    if (getenv("GLUE_DEBUG"))
+      for (StitchId s = 0; s < g_.size(); ++s)
+        fprintf(stderr, "%u kept%d row%u shape%d link%d next%u turns%d type%s ltr%d b%d t%d\n", s,
+                int(kept_[s]), g_.row[s], int(g_.row_shape[g_.row[s]]), int(g_.yarn_link[s]),
+                next_[s], int(faces_[s].turns), std::string(abbreviation(faces_[s].type)).c_str(),
+                int(faces_[s].left_to_right), faces_[s].bottoms, faces_[s].tops);
     return lay_out();
   }
 
@@ -47,141 +102,358 @@ class MeshOfFabric {
   }
 
   std::string where(StitchId s) const {
-    return fmt::format("stitch {} of row {}", s - first_of_row_[g_.row[s]] + 1, g_.row[s] + 1);
+    return fmt::format("its stitch on needle {} of row {} ({})", positions_[s][0], g_.row[s] + 1,
+                       abbreviation(g_.type[s]));
   }
 
-  void split_rows() {
-    tube_ = !g_.row_shape.empty() && g_.row_shape[0] == RowShape::closed;
-    for (std::uint32_t r = 0; r < g_.row_shape.size(); ++r) {
-      if (g_.row_shape[r] == RowShape::short_row)
-        refuse(fmt::format("row {} is a short row", r + 1));
-      if ((g_.row_shape[r] == RowShape::closed) != tube_)
-        refuse(fmt::format("row {} is {} and row 1 is {}", r + 1, row_shape_name(g_.row_shape[r]),
-                           row_shape_name(g_.row_shape[0])));
+  std::uint32_t taken_loop(StitchId s) const { return g_.loops_taken_by(s)[0]; }
+  std::uint32_t made_loop(StitchId s) const { return g_.loops_made_by(s)[0]; }
+
+  // A wrap: a tuck the yarn turns at, laid over a loop beside the short row's end. A stitch mesh
+  // turns inside a face (sr4, sr5) and has no face beyond the turn, so the wrap is folded into
+  // the wale it lies on: the stitch knit through it takes the loop under it.
+  void fold_wraps() {
+    for (StitchId t = 0; t < g_.size(); ++t) {
+      if (g_.type[t] != StitchType::tuck || g_.yarn_link[t] != YarnLink::turn) continue;
+      if (t == 0 || g_.yarn_next[t - 1] != t) continue;  // a yarn's first stitch turns nothing
+      FabricLoop& under = loops_[taken_loop(t)];
+      FabricLoop& over = loops_[made_loop(t)];
+      over.maker = under.maker, over.yarn_slot = under.yarn_slot;
+      under.alive = false;
+      kept_[t] = false;
+      next_[t - 1] = next_[t];
+      turns_after_wrap_[t - 1] = true;
     }
-    rows_.resize(g_.row_shape.size());
-    first_of_row_.assign(rows_.size(), 0);
+  }
+
+  // `.st` says a decrease of three loops as two `d`s, the second taking the first's loop: one
+  // face of the catalogue's widest decrease (s2kp). Wider ones have no face.
+  void merge_decrease_chains() {
+    for (StitchId s = 1; s < g_.size(); ++s) {
+      if (!kept_[s] || g_.type[s] != StitchType::k2tog || g_.type[s - 1] != StitchType::k2tog ||
+          next_[s - 1] != s || loops_[made_loop(s - 1)].taker != s)
+        continue;
+      if (merged_[s - 1]) refuse(fmt::format("{} decreases four loops or more", where(s)));
+      loops_[made_loop(s - 1)].alive = false;
+      for (std::uint32_t l : g_.loops_taken_by(s - 1)) loops_[l].taker = s;
+      kept_[s - 1] = false;
+      merged_[s] = true;
+      if (s >= 2 && next_[s - 2] == s - 1) next_[s - 2] = s;
+    }
+  }
+
+  bool is_turn(StitchId s) const {
+    return g_.yarn_link[s] == YarnLink::turn || turns_after_wrap_[s];
+  }
+
+  // A turn where the next stitch takes none of this one's loops: the work turns in the middle
+  // of the row, and this stitch is its short-row end.
+  bool is_short_row_end(StitchId s, const FaceShape& f) const {
+    if (next_[s] == kNoStitch || !is_turn(s) || f.makes.empty() || f.takes.empty()) return false;
+    return std::none_of(f.makes.begin(), f.makes.end(),
+                        [&](std::uint32_t l) { return loops_[l].taker == next_[s]; });
+  }
+
+  void shape_faces() {
+    std::vector<std::vector<std::uint32_t>> taken(g_.size()), made(g_.size());
+    for (std::uint32_t l = 0; l < loops_.size(); ++l) {
+      if (!loops_[l].alive) continue;
+      made[loops_[l].maker].push_back(l);
+      taken[loops_[l].taker].push_back(l);
+    }
+    faces_.resize(g_.size());
     for (StitchId s = 0; s < g_.size(); ++s) {
-      Row& row = rows_[g_.row[s]];
-      bool left_to_right = g_.direction[s] == CourseDirection::left_to_right;
-      if (row.chart.empty()) first_of_row_[g_.row[s]] = s, row.left_to_right = left_to_right;
-      if (s > 0 && g_.yarn_next[s - 1] != s)
-        refuse(fmt::format("its {} begins a second yarn piece", where(s)));
-      if (left_to_right != row.left_to_right && g_.row[s] > 0)
-        refuse(fmt::format("row {} goes both ways (a course knit in two passes): its {} turns back",
-                           g_.row[s] + 1, where(s)));
-      row.chart.push_back(s);
+      if (!kept_[s]) continue;
+      FaceShape& f = faces_[s];
+      f.left_to_right = g_.direction[s] != CourseDirection::right_to_left;
+      f.takes = std::move(taken[s]);
+      f.makes = std::move(made[s]);
+      f.type = merged_[s] ? StitchType::s2kp : g_.type[s];
+      f.turns = is_short_row_end(s, f);
+      if (f.turns) f.type = short_row_end(s, f);
+      f.bottoms = static_cast<std::uint8_t>(std::max<std::size_t>(f.takes.size(), 1));
+      f.tops = static_cast<std::uint8_t>(std::max<std::size_t>(f.makes.size(), 1));
+      f.first_corner = corners_.add(f.bottoms + f.tops + 2u);
     }
-    for (Row& row : rows_)
-      if (!row.left_to_right) std::reverse(row.chart.begin(), row.chart.end());
-    if (rows_.size() > 1) lay_cast_on_row();
+    for (StitchId s = 0; s < g_.size(); ++s)
+      if (kept_[s]) order_loops(s);
   }
 
-  // A cast-on is often made in more than one pass (every other needle one way, the others
-  // back): its loops are one row, placed by their needles (left to right on a sheet, round the
-  // tube: the front left to right, the back right to left), made the way the row above goes
-  // (a round) or the other way (a sheet).
-  void lay_cast_on_row() {
-    Row& row = rows_[0];
-    auto place = [&](StitchId s) {
-      double x = positions_[s][0], back = positions_[s][2];
-      return tube_ ? std::pair{back, back != 0 ? -x : x} : std::pair{x, back};
-    };
-    std::stable_sort(row.chart.begin(), row.chart.end(),
-                     [&](StitchId a, StitchId b) { return place(a) < place(b); });
-    row.left_to_right = rows_[1].left_to_right == tube_;
+  StitchType short_row_end(StitchId s, const FaceShape& f) const {
+    if (f.takes.size() != 1)
+      refuse(
+          fmt::format("{} turns the work in the middle of its row and takes {} loops; a "
+                      "short-row end (sr4, sr5) takes one",
+                      where(s), f.takes.size()));
+    return f.makes.size() == 1 ? StitchType::sr4 : StitchType::sr5;
   }
 
-  // The stitch mesh's types: a cast-on only in the first row, a bind-off only in the last (a
-  // loop through nothing or a wale ending anywhere else has no face); the rest are the stitch
-  // graph's (its `p` a purl).
-  void name_types(std::size_t r) {
-    for (StitchId s : rows_[r].chart) {
-      StitchType t = g_.type[s];
-      if ((t == StitchType::co) != (r == 0))
-        refuse(r == 0 ? fmt::format("its {} takes a loop, and the first row is a cast-on", where(s))
-                      : fmt::format("its {} is pulled through nothing", where(s)));
-      if ((t == StitchType::bo) != (r + 1 == rows_.size()))
-        refuse(t == StitchType::bo ? fmt::format("its {} ends a wale inside the fabric", where(s))
-                                   : fmt::format("its {} is left on a needle", where(s)));
-      rows_[r].types.push_back(t);
+  // Left to right in the face's frame: a stitch's loops in the order its yarn made them, the
+  // other way when it runs right to left; loops taken from several stitches by their makers'
+  // order the same way, a round's loops from where the round begins.
+  void order_loops(StitchId s) {
+    FaceShape& f = faces_[s];
+    std::sort(f.makes.begin(), f.makes.end(), [&](std::uint32_t a, std::uint32_t b) {
+      return loops_[a].yarn_slot < loops_[b].yarn_slot;
+    });
+    if (!f.left_to_right) std::reverse(f.makes.begin(), f.makes.end());
+    if (f.takes.size() < 2) return;
+    auto key = [&](std::uint32_t l) { return std::pair{loops_[l].maker, loops_[l].yarn_slot}; };
+    std::sort(f.takes.begin(), f.takes.end(),
+              [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
+    rotate_across_round_start(f.takes);
+    StitchId maker = loops_[f.takes[0]].maker;
+    if (g_.direction[maker] == CourseDirection::right_to_left)
+      std::reverse(f.takes.begin(), f.takes.end());
+  }
+
+  // Loops taken across the start of a round (its last stitch's and its first's) begin after
+  // the widest gap between their makers round the round.
+  void rotate_across_round_start(std::vector<std::uint32_t>& takes) const {
+    StitchId first = loops_[takes.front()].maker, last = loops_[takes.back()].maker;
+    std::uint32_t row = g_.row[first];
+    if (g_.row[last] != row || g_.row_shape[row] != RowShape::closed) return;
+    StitchId start = first, end = last;
+    while (start > 0 && g_.row[start - 1] == row) --start;
+    while (end + 1 < g_.size() && g_.row[end + 1] == row) ++end;
+    std::uint32_t widest = static_cast<std::uint32_t>(first + (end - start + 1) - last);
+    std::size_t at = 0;
+    for (std::size_t i = 1; i < takes.size(); ++i) {
+      std::uint32_t gap = loops_[takes[i]].maker - loops_[takes[i - 1]].maker;
+      if (gap > widest) widest = gap, at = i;
+    }
+    std::rotate(takes.begin(), takes.begin() + static_cast<std::ptrdiff_t>(at), takes.end());
+  }
+
+  // Corner ids of a face (B bottom and T top course edges, B + T + 2 corners), counter-clockwise
+  // from the bottom left: the bottom corners b_0..b_B, then the top corners from right to left
+  // u_T..u_0. A short-row end has a corner where its yarn turns, m, on the side it enters by,
+  // and there its top run meets its bottom run: turning on its right, b_0..b_B m u_T..u_1 (u_0
+  // is b_0); on its left, b_0..b_B u_T-1..u_0 m (u_T is b_B).
+  std::uint32_t bottom_corner(StitchId s, std::uint32_t i) const {
+    return faces_[s].first_corner + i;
+  }
+  std::uint32_t top_corner(StitchId s, std::uint32_t j) const {
+    const FaceShape& f = faces_[s];
+    std::uint32_t after_bottom = f.first_corner + f.bottoms + 1u;
+    if (!f.turns) return after_bottom + (f.tops - j);
+    if (!f.left_to_right) return j == 0 ? bottom_corner(s, 0) : after_bottom + 1 + (f.tops - j);
+    return j == f.tops ? bottom_corner(s, f.bottoms) : after_bottom + (f.tops - 1 - j);
+  }
+  std::uint32_t turn_corner(StitchId s) const {
+    const FaceShape& f = faces_[s];
+    return f.first_corner + f.bottoms + 1u + (f.left_to_right ? f.tops : 0u);
+  }
+
+  WaleEnds wale(StitchId s, bool out) const {
+    const FaceShape& f = faces_[s];
+    WaleEnds left{bottom_corner(s, 0), top_corner(s, 0)};
+    WaleEnds right{bottom_corner(s, f.bottoms), top_corner(s, f.tops)};
+    if (f.turns) {
+      std::uint32_t m = turn_corner(s);
+      WaleEnds side = f.left_to_right ? left : right;
+      return out ? WaleEnds{m, side.top} : WaleEnds{side.bottom, m};
+    }
+    return out == f.left_to_right ? right : left;
+  }
+
+  std::uint32_t slot_of(const std::vector<std::uint32_t>& loops, std::uint32_t l) const {
+    return static_cast<std::uint32_t>(std::find(loops.begin(), loops.end(), l) - loops.begin());
+  }
+
+  void glue_loops() {
+    for (std::uint32_t l = 0; l < loops_.size(); ++l) {
+      if (!loops_[l].alive) continue;
+      StitchId maker = loops_[l].maker, taker = loops_[l].taker;
+      std::uint32_t i = slot_of(faces_[maker].makes, l), j = slot_of(faces_[taker].takes, l);
+      corners_.glue(top_corner(maker, i), bottom_corner(taker, j));
+      corners_.glue(top_corner(maker, i + 1), bottom_corner(taker, j + 1));
     }
   }
 
-  // The loops a row makes, left to right: a stitch's two loops in the order its yarn made them.
-  std::vector<std::uint32_t> loops_made(const Row& row) const {
-    std::vector<std::uint32_t> loops;
-    for (StitchId s : row.chart) {
-      auto made = g_.loops_made_by(s);
-      if (row.left_to_right)
-        loops.insert(loops.end(), made.begin(), made.end());
-      else
-        loops.insert(loops.end(), made.rbegin(), made.rend());
-    }
-    return loops;
-  }
-
-  // Row r must take the loops of row r - 1 one after the other, left to right (a round may
-  // start anywhere along the round below: its turn).
-  void place_on_row_below(std::size_t r) {
-    std::vector<std::uint32_t> below = loops_made(rows_[r - 1]);
-    auto m = static_cast<std::uint32_t>(below.size());
-    for (std::uint32_t i = 0; i < m; ++i) position_below_[below[i]] = i;
-    std::uint32_t expected = kNotBelow, taken = 0;
-    for (StitchId s : rows_[r].chart) {
-      std::vector<std::uint32_t> at;
-      for (std::uint32_t loop : g_.loops_taken_by(s)) {
-        if (position_below_[loop] == kNotBelow)
-          refuse(fmt::format("its {} takes a loop that is not the row below's", where(s)));
-        at.push_back(position_below_[loop]);
+  // A tube's seam: the wale up from the first stitch of each yarn piece's first round (the
+  // stitch graph's closed row), through the loop each seam stitch makes first in its frame.
+  void find_seams() {
+    on_seam_.assign(g_.size(), false);
+    std::vector<bool> seeded(g_.size(), false);
+    for (StitchId s = 0; s < g_.size(); ++s) {
+      std::uint32_t row = g_.row[s];
+      bool round_start = g_.row_shape[row] == RowShape::closed && (s == 0 || g_.row[s - 1] != row);
+      std::uint32_t piece = piece_[s];
+      if (!kept_[s] || !round_start || seeded[piece]) continue;
+      seeded[piece] = true;
+      for (StitchId x = s; x != kNoStitch && !on_seam_[x];) {
+        on_seam_[x] = true;
+        x = faces_[x].makes.empty() ? kNoStitch : loops_[faces_[x].makes[0]].taker;
       }
-      std::sort(at.begin(), at.end());
-      if (tube_ && at.size() == 2 && at[0] == 0 && at[1] == m - 1) std::swap(at[0], at[1]);
-      for (std::uint32_t p : at) {
-        if (expected == kNotBelow) rows_[r].turn = expected = p;
-        if (p != expected)
-          refuse(
-              fmt::format("its {} takes the loops of the row below out of their order", where(s)));
-        expected = (p + 1) % m;
-        ++taken;
+    }
+  }
+
+  // Per stitch its yarn piece, and how many turns at an edge (not in a short-row end) its
+  // yarn made before it.
+  void number_pieces() {
+    piece_.assign(g_.size(), 0);
+    edge_turns_before_.assign(g_.size(), 0);
+    for (StitchId s = 1; s < g_.size(); ++s) {
+      piece_[s] = piece_[s - 1] + (g_.yarn_next[s - 1] == s ? 0 : 1);
+      bool edge_turn = kept_[s - 1] && is_turn(s - 1) && !faces_[s - 1].turns;
+      edge_turns_before_[s] = edge_turns_before_[s - 1] + (edge_turn ? 1 : 0);
+    }
+  }
+
+  // The seam stitch under a stitch on the seam: the maker of its loop on the seam.
+  StitchId seam_below(StitchId s) const {
+    for (std::uint32_t l : faces_[s].takes)
+      if (on_seam_[loops_[l].maker]) return loops_[l].maker;
+    return kNoStitch;
+  }
+
+  // The round ending at `last` closes on `first` when the yarn between them runs round without
+  // turning at an edge (it may turn in short-row ends: a heel).
+  bool close_round(StitchId last, StitchId first) {
+    if (first >= last || piece_[first] != piece_[last] ||
+        edge_turns_before_[last] != edge_turns_before_[first])
+      return false;
+    WaleEnds out = wale(last, true), start = wale(first, false);
+    corners_.glue(out.bottom, start.bottom);
+    corners_.glue(out.top, start.top);
+    seams_.push_back({out.bottom, out.top, faces_[first].left_to_right});
+    return true;
+  }
+
+  // Along a row the yarn crosses a wale edge the two faces share; from a row to the next (a
+  // turn at the edge, a round's step up at the seam) it leaves at the top of one face's wale
+  // edge and enters at the bottom of the next's, as the knit graph's reader of meshes looks for
+  // it. Where the yarn comes round to a tube's seam, the round closes: its last stitch meets its
+  // first (the seam stitch under the next), across a shift-path.
+  void glue_yarn() {
+    number_pieces();
+    find_seams();
+    std::vector<StitchId> round_start(piece_.back() + 1, kNoStitch);
+    for (StitchId s = 0; s < g_.size(); ++s) {
+      if (!kept_[s]) continue;
+      StitchId next = next_[s];
+      if (next == kNoStitch) {  // a round bound off closes too
+        if (round_start[piece_[s]] != kNoStitch) close_round(s, round_start[piece_[s]]);
+        continue;
+      }
+      WaleEnds out = wale(s, true), in = wale(next, false);
+      StitchId first = on_seam_[next] && !is_turn(s) ? seam_below(next) : kNoStitch;
+      if (first != kNoStitch && !close_round(s, first)) first = kNoStitch;
+      if (first != kNoStitch) round_start[piece_[s]] = next;
+      if (faces_[s].turns || (!is_turn(s) && first == kNoStitch)) {
+        corners_.glue(out.bottom, in.bottom);
+        corners_.glue(out.top, in.top);
+      } else {
+        corners_.glue(out.top, in.bottom);
       }
     }
-    if (taken != m || (!tube_ && rows_[r].turn != 0))
-      refuse(fmt::format("row {} does not take every loop of row {} in order", r + 1, r));
-    for (std::uint32_t loop : below) position_below_[loop] = kNotBelow;
   }
 
-  static std::uint32_t edges(const std::vector<StitchType>& types, bool top) {
-    std::uint32_t n = 0;
-    for (StitchType t : types) n += top ? info(t).top_edges : info(t).bottom_edges;
-    return n;
-  }
+  struct Seam {
+    std::uint32_t bottom, top;
+    bool left_to_right;
+  };
 
-  StitchMesh lay_out() const {
+  StitchMesh lay_out() {
     StitchMeshBuilder builder(file_ + " (its fabric)");
-    Layout layout = tube_ ? Layout::tube : Layout::sheet;
-    std::vector<Vertex> below = add_ring(builder, edges(rows_[0].types, false), 0, layout);
-    for (std::uint32_t r = 0; r < rows_.size(); ++r) {
-      const Row& row = rows_[r];
-      if (row.turn) {  // the round begins `turn` loops along: so does its bottom ring
-        below.pop_back();
-        std::rotate(below.begin(), below.begin() + row.turn, below.end());
-        below.push_back(below.front());
+    std::vector<std::uint32_t> vertex(corners_.parent.size(), kNone);
+    std::vector<Vec3> sum;
+    std::vector<float> count;
+    auto vertex_of = [&](std::uint32_t corner, Vec3 at) {
+      std::uint32_t root = corners_.find(corner);
+      if (vertex[root] == kNone) {
+        vertex[root] = builder.add_vertex({}).index();
+        sum.push_back({});
+        count.push_back(0);
       }
-      std::vector<Vertex> above = add_ring(builder, edges(row.types, true), r + 1, layout);
-      add_row(builder, row.types, below, above, row.left_to_right);
-      below = std::move(above);
+      Vec3& p = sum[vertex[root]];
+      p.x += at.x, p.y += at.y, p.z += at.z;
+      ++count[vertex[root]];
+      return Vertex(vertex[root]);
+    };
+    std::vector<Vertex> corners;
+    std::vector<EdgeRole> roles;
+    for (StitchId s = 0; s < g_.size(); ++s) {
+      if (!kept_[s]) continue;
+      corners.clear();
+      roles.clear();
+      face_outline(s, corners, roles, vertex_of);
+      builder.add_face(corners, roles, faces_[s].type);
     }
-    return std::move(builder).build();
+    StitchMesh mesh = build_mesh(std::move(builder));
+    for (Vertex v : mesh.vertices()) {
+      const Vec3& p = sum[v.index()];
+      float n = count[v.index()];
+      mesh.position[v] = {p.x / n, p.y / n, p.z / n};
+    }
+    for (const Seam& seam : seams_) {
+      Edge e = mesh.find_edge(Vertex(vertex[corners_.find(seam.bottom)]),
+                              Vertex(vertex[corners_.find(seam.top)]));
+      if (e.valid()) mesh.shift_path[e] = seam.left_to_right ? kShiftUpRight : kShiftUpLeft;
+    }
+    return mesh;
+  }
+
+  // The face's corners counter-clockwise, each with the role of the edge from it to the next.
+  template <class VertexOf>
+  void face_outline(StitchId s, std::vector<Vertex>& corners, std::vector<EdgeRole>& roles,
+                    VertexOf& vertex_of) const {
+    const FaceShape& f = faces_[s];
+    const auto& p = positions_[s];
+    float x = static_cast<float>(p[0]), y = static_cast<float>(p[1]), z = static_cast<float>(p[2]);
+    float side = z == 0 ? 1.f : -1.f;  // a tube's back is seen from behind
+    auto corner = [&](std::uint32_t id, float along, float up, EdgeRole role) {
+      corners.push_back(vertex_of(id, Vec3{x + side * (along - 0.5f), y + up, z}));
+      roles.push_back(role);
+    };
+    auto bottom = [&](std::uint32_t i, EdgeRole role) {
+      corner(bottom_corner(s, i), static_cast<float>(i) / f.bottoms, -0.5f, role);
+    };
+    auto top = [&](std::uint32_t j, EdgeRole role) {
+      corner(top_corner(s, j), static_cast<float>(j) / f.tops, 0.5f, role);
+    };
+    for (std::uint32_t i = 0; i < f.bottoms; ++i) bottom(i, EdgeRole::bottom);
+    if (!f.turns) {
+      bottom(f.bottoms, f.left_to_right ? EdgeRole::wale_out : EdgeRole::wale_in);
+      for (std::uint32_t j = f.tops; j > 0; --j) top(j, EdgeRole::top);
+      top(0, f.left_to_right ? EdgeRole::wale_in : EdgeRole::wale_out);
+    } else if (!f.left_to_right) {  // turning on its right
+      bottom(f.bottoms, EdgeRole::wale_in);
+      corner(turn_corner(s), 1, 0, EdgeRole::wale_out);
+      for (std::uint32_t j = f.tops; j > 0; --j) top(j, EdgeRole::top);
+    } else {  // turning on its left
+      for (std::uint32_t j = f.tops; j > 0; --j) top(j, EdgeRole::top);
+      top(0, EdgeRole::wale_out);
+      corner(turn_corner(s), 0, 0, EdgeRole::wale_in);
+    }
+  }
+
+  // Faces glued where the fabric's loops and yarn say: an edge used twice the same way means
+  // the fabric folds over itself where a stitch mesh cannot.
+  StitchMesh build_mesh(StitchMeshBuilder builder) const {
+    try {
+      return std::move(builder).build();
+    } catch (const MeshError& e) {
+      refuse(
+          fmt::format("its stitches, glued where its loops and yarn join them, do not lie "
+                      "side by side as a mesh's faces ({})",
+                      e.what()));
+    }
   }
 
   const KnitGraph& g_;
   const std::vector<std::array<double, 3>>& positions_;
   const std::string& file_;
-  bool tube_ = false;
-  std::vector<Row> rows_;
-  std::vector<StitchId> first_of_row_;
-  std::vector<std::uint32_t> position_below_;  // per loop: where in the row below it lies
+  std::vector<bool> kept_, merged_;
+  std::vector<bool> turns_after_wrap_;  // a stitch whose wrap was folded: the yarn turns after it
+  std::vector<StitchId> next_;
+  std::vector<FabricLoop> loops_;
+  std::vector<FaceShape> faces_;
+  Corners corners_;
+  std::vector<std::uint32_t> piece_, edge_turns_before_;  // per stitch: see number_pieces
+  std::vector<bool> on_seam_;
+  std::vector<Seam> seams_;
 };
 
 }  // namespace
@@ -192,7 +464,7 @@ void write_fabric_stitch_mesh(const Replay& replay, const std::string& file, std
   write_fabric_stitch_graph(replay, file, st, border);
   std::vector<std::array<double, 3>> positions;
   KnitGraph graph = parse_autoknit_st(st.str(), file + " (its fabric)", &positions);
-  write_stitch_mesh(MeshOfFabric(graph, positions, file).build(), out);
+  write_stitch_mesh(GluedFabric(graph, positions, file).build(), out);
 }
 
 }  // namespace skein::knitout
