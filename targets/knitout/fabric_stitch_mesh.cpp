@@ -271,17 +271,14 @@ class GluedFabric {
     }
   }
 
-  // A tube's seam: the wale up from the first stitch of each yarn piece's first round (the
-  // stitch graph's closed row), through the loop each seam stitch makes first in its frame.
+  // A tube's seams: the wales up from the first stitch of each round (the stitch graph's
+  // closed rows), through the loop each seam stitch makes first in its frame.
   void find_seams() {
     on_seam_.assign(g_.size(), false);
-    std::vector<bool> seeded(g_.size(), false);
+    std::vector<bool> seeded(piece_.back() + 1, false);
     for (StitchId s = 0; s < g_.size(); ++s) {
-      std::uint32_t row = g_.row[s];
-      bool round_start = g_.row_shape[row] == RowShape::closed && (s == 0 || g_.row[s - 1] != row);
-      std::uint32_t piece = piece_[s];
-      if (!kept_[s] || !round_start || seeded[piece]) continue;
-      seeded[piece] = true;
+      if (round_first(s) != s || seeded[piece_[s]]) continue;
+      seeded[piece_[s]] = true;
       for (StitchId x = s; x != kNoStitch && !on_seam_[x];) {
         on_seam_[x] = true;
         x = faces_[x].makes.empty() ? kNoStitch : loops_[faces_[x].makes[0]].taker;
@@ -289,8 +286,15 @@ class GluedFabric {
     }
   }
 
-  // Per stitch its yarn piece, and how many turns at an edge (not in a short-row end) its
-  // yarn made before it.
+  // The first stitch kept of the round `s` is in (kNoStitch: its row is not a round).
+  StitchId round_first(StitchId s) const {
+    std::uint32_t row = g_.row[s];
+    if (g_.row_shape[row] != RowShape::closed) return kNoStitch;
+    while (s > 0 && g_.row[s - 1] == row) --s;
+    while (s < g_.size() && !kept_[s]) ++s;
+    return s < g_.size() && g_.row[s] == row ? s : kNoStitch;
+  }
+
   void number_pieces() {
     piece_.assign(g_.size(), 0);
     edge_turns_before_.assign(g_.size(), 0);
@@ -309,43 +313,47 @@ class GluedFabric {
   }
 
   // The round ending at `last` closes on `first` when the yarn between them runs round without
-  // turning at an edge (it may turn in short-row ends: a heel).
+  // turning at an edge (it may turn in short-row ends: a heel) and nothing comes into `first`
+  // along its row yet.
   bool close_round(StitchId last, StitchId first) {
-    if (first >= last || piece_[first] != piece_[last] ||
-        edge_turns_before_[last] != edge_turns_before_[first])
+    if (first == kNoStitch || first >= last || piece_[first] != piece_[last] ||
+        edge_turns_before_[last] != edge_turns_before_[first] || entered_[first])
       return false;
-    WaleEnds out = wale(last, true), start = wale(first, false);
-    corners_.glue(out.bottom, start.bottom);
-    corners_.glue(out.top, start.top);
-    seams_.push_back({out.bottom, out.top, faces_[first].left_to_right});
+    glue_wale(last, first);
+    seams_.push_back({wale(last, true).bottom, wale(last, true).top, faces_[first].left_to_right});
     return true;
   }
 
-  // Along a row the yarn crosses a wale edge the two faces share; from a row to the next (a
-  // turn at the edge, a round's step up at the seam) it leaves at the top of one face's wale
-  // edge and enters at the bottom of the next's, as the knit graph's reader of meshes looks for
-  // it. Where the yarn comes round to a tube's seam, the round closes: its last stitch meets its
-  // first (the seam stitch under the next), across a shift-path.
+  void glue_wale(StitchId from, StitchId to) {
+    WaleEnds out = wale(from, true), in = wale(to, false);
+    corners_.glue(out.bottom, in.bottom);
+    corners_.glue(out.top, in.top);
+    entered_[to] = true;
+  }
+
+  // Along a row, and from a round to the next, the yarn crosses a wale edge the two faces
+  // share (a tube's rounds are a helix); where it comes round to the tube's seam, the round
+  // closes instead: its last stitch meets its first across a shift-path, as the round bound off
+  // last does. From a row to the next at a turn the faces are not glued: the loops they take
+  // place them, and the knit graph's reader of meshes finds the yarn's way where it leaves at
+  // the top of one face's wale edge and enters at the bottom of the next's.
   void glue_yarn() {
     number_pieces();
     find_seams();
+    entered_.assign(g_.size(), false);
     std::vector<StitchId> round_start(piece_.back() + 1, kNoStitch);
     for (StitchId s = 0; s < g_.size(); ++s) {
       if (!kept_[s]) continue;
       StitchId next = next_[s];
-      if (next == kNoStitch) {  // a round bound off closes too
-        if (round_start[piece_[s]] != kNoStitch) close_round(s, round_start[piece_[s]]);
-        continue;
-      }
-      WaleEnds out = wale(s, true), in = wale(next, false);
-      StitchId first = on_seam_[next] && !is_turn(s) ? seam_below(next) : kNoStitch;
-      if (first != kNoStitch && !close_round(s, first)) first = kNoStitch;
-      if (first != kNoStitch) round_start[piece_[s]] = next;
-      if (faces_[s].turns || (!is_turn(s) && first == kNoStitch)) {
-        corners_.glue(out.bottom, in.bottom);
-        corners_.glue(out.top, in.top);
-      } else {
-        corners_.glue(out.top, in.bottom);
+      if (next == kNoStitch) {
+        close_round(s, round_start[piece_[s]]);
+      } else if (faces_[s].turns) {
+        glue_wale(s, next);
+      } else if (!is_turn(s)) {
+        if (on_seam_[next] && close_round(s, seam_below(next)))
+          round_start[piece_[s]] = next;
+        else
+          glue_wale(s, next);
       }
     }
   }
@@ -452,7 +460,7 @@ class GluedFabric {
   std::vector<FaceShape> faces_;
   Corners corners_;
   std::vector<std::uint32_t> piece_, edge_turns_before_;  // per stitch: see number_pieces
-  std::vector<bool> on_seam_;
+  std::vector<bool> on_seam_, entered_;  // entered_: a face whose wale_in is glued
   std::vector<Seam> seams_;
 };
 
