@@ -271,19 +271,34 @@ class GluedFabric {
     }
   }
 
-  // A tube's seams: the wales up from the first stitch of each round (the stitch graph's
-  // closed rows), through the loop each seam stitch makes first in its frame.
+  // A tube's seam: a wale up from a stitch of its yarn piece's first round (the stitch graph's
+  // first closed row), through the loop each seam stitch makes first in its frame, where no row
+  // going the other way round crosses it (a heel's short rows turn back before it): the first
+  // such wale from the round's start.
   void find_seams() {
     on_seam_.assign(g_.size(), false);
     std::vector<bool> seeded(piece_.back() + 1, false);
+    std::vector<StitchId> wale;
     for (StitchId s = 0; s < g_.size(); ++s) {
       if (round_first(s) != s || seeded[piece_[s]]) continue;
       seeded[piece_[s]] = true;
-      for (StitchId x = s; x != kNoStitch && !on_seam_[x];) {
-        on_seam_[x] = true;
-        x = faces_[x].makes.empty() ? kNoStitch : loops_[faces_[x].makes[0]].taker;
+      for (StitchId seed = s; seed < g_.size() && g_.row[seed] == g_.row[s]; ++seed) {
+        if (!kept_[seed] || !wale_up(seed, g_.direction[s], wale)) continue;
+        for (StitchId x : wale) on_seam_[x] = true;
+        break;
       }
     }
+  }
+
+  // The wale up from `seed`; false when a row going against `round_way` crosses it.
+  bool wale_up(StitchId seed, CourseDirection round_way, std::vector<StitchId>& wale) const {
+    wale.clear();
+    for (StitchId x = seed; x != kNoStitch && !on_seam_[x];) {
+      if (g_.direction[x] != round_way && next_[x] != kNoStitch && !is_turn(x)) return false;
+      wale.push_back(x);
+      x = faces_[x].makes.empty() ? kNoStitch : loops_[faces_[x].makes[0]].taker;
+    }
+    return true;
   }
 
   // The first stitch kept of the round `s` is in (kNoStitch: its row is not a round).
@@ -387,6 +402,11 @@ class GluedFabric {
       corners.clear();
       roles.clear();
       face_outline(s, corners, roles, vertex_of);
+      if (getenv("GLUE_DEBUG")) {
+        fprintf(stderr, "face %u stitch %u:", builder.num_faces() + 1, s);
+        for (std::size_t i = 0; i < corners.size(); ++i) fprintf(stderr, " %u%c", corners[i].index() + 1, role_letter(roles[i]));
+        fprintf(stderr, "\n");
+      }
       builder.add_face(corners, roles, faces_[s].type);
     }
     StitchMesh mesh = build_mesh(std::move(builder));
