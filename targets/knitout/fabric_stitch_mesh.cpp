@@ -3,8 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <array>
 #include <numeric>
 #include <sstream>
@@ -84,12 +82,6 @@ class GluedFabric {
     shape_faces();
     glue_loops();
     glue_yarn();
-    if (getenv("GLUE_DEBUG"))
-      for (StitchId s = 0; s < g_.size(); ++s)
-        fprintf(stderr, "%u kept%d row%u shape%d link%d next%u turns%d type%s ltr%d b%d t%d\n", s,
-                int(kept_[s]), g_.row[s], int(g_.row_shape[g_.row[s]]), int(g_.yarn_link[s]),
-                next_[s], int(faces_[s].turns), std::string(abbreviation(faces_[s].type)).c_str(),
-                int(faces_[s].left_to_right), faces_[s].bottoms, faces_[s].tops);
     return lay_out();
   }
 
@@ -313,8 +305,11 @@ class GluedFabric {
   void number_pieces() {
     piece_.assign(g_.size(), 0);
     edge_turns_before_.assign(g_.size(), 0);
+    tubular_.assign(1, false);
     for (StitchId s = 1; s < g_.size(); ++s) {
       piece_[s] = piece_[s - 1] + (g_.yarn_next[s - 1] == s ? 0 : 1);
+      if (piece_[s] == tubular_.size()) tubular_.push_back(false);
+      tubular_[piece_[s]] = tubular_[piece_[s]] || g_.row_shape[g_.row[s]] == RowShape::closed;
       bool edge_turn = kept_[s - 1] && is_turn(s - 1) && !faces_[s - 1].turns;
       edge_turns_before_[s] = edge_turns_before_[s - 1] + (edge_turn ? 1 : 0);
     }
@@ -356,10 +351,12 @@ class GluedFabric {
     number_pieces();
     find_seams();
     entered_.assign(g_.size(), false);
+    std::vector<bool> laid = lay_cast_on_passes();
     std::vector<StitchId> round_start(piece_.back() + 1, kNoStitch);
     for (StitchId s = 0; s < g_.size(); ++s) {
       if (!kept_[s]) continue;
       StitchId next = next_[s];
+      if (laid[s] && next != kNoStitch && laid[next]) continue;
       if (next == kNoStitch) {
         close_round(s, round_start[piece_[s]]);
       } else if (faces_[s].turns) {
@@ -371,6 +368,39 @@ class GluedFabric {
           glue_wale(s, next);
       }
     }
+  }
+
+  // A cast-on is often made in more than one pass (every other needle one way, the others
+  // back), which no row of faces says: its stitches are laid as one row in the order of their
+  // needles (round a tube: the front left to right, the back right to left), going the way the
+  // row after it goes round a tube, or the other way on a sheet. Returns the stitches laid.
+  std::vector<bool> lay_cast_on_passes() {
+    std::vector<bool> laid(g_.size(), false);
+    auto cast_on = [&](StitchId s) { return s != kNoStitch && g_.type[s] == StitchType::co; };
+    std::vector<StitchId> run;
+    for (StitchId s = 0; s < g_.size(); ++s) {
+      if (!kept_[s] || !cast_on(s) || (s > 0 && next_[s - 1] == s && cast_on(s - 1))) continue;
+      run.assign(1, s);
+      bool turns = false;
+      for (StitchId x = s; cast_on(next_[x]); x = next_[x]) {
+        turns = turns || is_turn(x) || g_.direction[x] != g_.direction[next_[x]];
+        run.push_back(next_[x]);
+      }
+      if (!turns) continue;
+      bool tube = tubular_[piece_[s]];
+      auto place = [&](StitchId c) {
+        double x = positions_[c][0], back = positions_[c][2];
+        return tube ? std::pair{back, back != 0 ? -x : x} : std::pair{x, back};
+      };
+      std::stable_sort(run.begin(), run.end(),
+                       [&](StitchId a, StitchId b) { return place(a) < place(b); });
+      StitchId after = next_[run.back()];
+      bool left_to_right = after == kNoStitch || faces_[after].left_to_right == tube;
+      for (StitchId c : run) faces_[c].left_to_right = left_to_right, laid[c] = true;
+      for (std::size_t i = 0; i + 1 < run.size(); ++i)
+        left_to_right ? glue_wale(run[i], run[i + 1]) : glue_wale(run[i + 1], run[i]);
+    }
+    return laid;
   }
 
   struct Seam {
@@ -402,11 +432,6 @@ class GluedFabric {
       corners.clear();
       roles.clear();
       face_outline(s, corners, roles, vertex_of);
-      if (getenv("GLUE_DEBUG")) {
-        fprintf(stderr, "face %u stitch %u:", builder.num_faces() + 1, s);
-        for (std::size_t i = 0; i < corners.size(); ++i) fprintf(stderr, " %u%c", corners[i].index() + 1, role_letter(roles[i]));
-        fprintf(stderr, "\n");
-      }
       builder.add_face(corners, roles, faces_[s].type);
     }
     StitchMesh mesh = build_mesh(std::move(builder));
@@ -480,6 +505,7 @@ class GluedFabric {
   std::vector<FaceShape> faces_;
   Corners corners_;
   std::vector<std::uint32_t> piece_, edge_turns_before_;  // per stitch: see number_pieces
+  std::vector<bool> tubular_;  // per yarn piece: it knits rounds
   std::vector<bool> on_seam_, entered_;  // entered_: a face whose wale_in is glued
   std::vector<Seam> seams_;
 };
