@@ -505,8 +505,8 @@ class GluedFabric {
   std::vector<FaceShape> faces_;
   Corners corners_;
   std::vector<std::uint32_t> piece_, edge_turns_before_;  // per stitch: see number_pieces
-  std::vector<bool> tubular_;  // per yarn piece: it knits rounds
-  std::vector<bool> on_seam_, entered_;  // entered_: a face whose wale_in is glued
+  std::vector<bool> tubular_;                             // per yarn piece: it knits rounds
+  std::vector<bool> on_seam_, entered_;                   // entered_: a face whose wale_in is glued
   std::vector<Seam> seams_;
 };
 
