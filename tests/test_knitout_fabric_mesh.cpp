@@ -102,6 +102,7 @@ TEST(KnitoutFabricMesh, EverySampleRoundTripsOnEachProfileOrIsRefusedByName) {
       Compilation fabric = compile_stitch_mesh(parse_stitch_mesh(obj.str(), "x.obj"), "x.obj");
       EXPECT_TRUE(fabric.knittability.knittable) << check_report(fabric);
       EXPECT_EQ(types(fabric.knit), types(model.knit)) << check_report(fabric);
+      EXPECT_NO_THROW(testing::emit_knitout_text(fabric, p));  // and it knits again
       written.insert(fmt::format("{} on {}", entry.path().filename().string(), profile));
     }
   }

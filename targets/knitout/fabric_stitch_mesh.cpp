@@ -71,7 +71,9 @@ class GluedFabric {
         kept_(g.size(), true),
         merged_(g.size(), false),
         turns_after_wrap_(g.size(), false),
-        next_(g.yarn_next) {
+        next_(g.yarn_next),
+        row_size_(g.row_shape.size(), 0) {
+    for (std::uint32_t row : g.row) ++row_size_[row];
     for (std::uint32_t l = 0; l < g.loops.size(); ++l)
       loops_.push_back({g.loops[l].maker, g.loops[l].taker, g.loops[l].maker_slot});
   }
@@ -205,10 +207,7 @@ class GluedFabric {
     StitchId first = loops_[takes.front()].maker, last = loops_[takes.back()].maker;
     std::uint32_t row = g_.row[first];
     if (g_.row[last] != row || g_.row_shape[row] != RowShape::closed) return;
-    StitchId start = first, end = last;
-    while (start > 0 && g_.row[start - 1] == row) --start;
-    while (end + 1 < g_.size() && g_.row[end + 1] == row) ++end;
-    std::uint32_t widest = static_cast<std::uint32_t>(first + (end - start + 1) - last);
+    std::uint32_t widest = first + row_size_[row] - last;
     std::size_t at = 0;
     for (std::size_t i = 1; i < takes.size(); ++i) {
       std::uint32_t gap = loops_[takes[i]].maker - loops_[takes[i - 1]].maker;
@@ -272,7 +271,9 @@ class GluedFabric {
     std::vector<bool> seeded(piece_.back() + 1, false);
     std::vector<StitchId> wale;
     for (StitchId s = 0; s < g_.size(); ++s) {
-      if (round_first(s) != s || seeded[piece_[s]]) continue;
+      bool round_start =
+          (s == 0 || g_.row[s - 1] != g_.row[s]) && g_.row_shape[g_.row[s]] == RowShape::closed;
+      if (!round_start || seeded[piece_[s]]) continue;
       seeded[piece_[s]] = true;
       for (StitchId seed = s; seed < g_.size() && g_.row[seed] == g_.row[s]; ++seed) {
         if (!kept_[seed] || !wale_up(seed, g_.direction[s], wale)) continue;
@@ -291,15 +292,6 @@ class GluedFabric {
       x = faces_[x].makes.empty() ? kNoStitch : loops_[faces_[x].makes[0]].taker;
     }
     return true;
-  }
-
-  // The first stitch kept of the round `s` is in (kNoStitch: its row is not a round).
-  StitchId round_first(StitchId s) const {
-    std::uint32_t row = g_.row[s];
-    if (g_.row_shape[row] != RowShape::closed) return kNoStitch;
-    while (s > 0 && g_.row[s - 1] == row) --s;
-    while (s < g_.size() && !kept_[s]) ++s;
-    return s < g_.size() && g_.row[s] == row ? s : kNoStitch;
   }
 
   void number_pieces() {
@@ -501,6 +493,7 @@ class GluedFabric {
   std::vector<bool> kept_, merged_;
   std::vector<bool> turns_after_wrap_;  // a stitch whose wrap was folded: the yarn turns after it
   std::vector<StitchId> next_;
+  std::vector<std::uint32_t> row_size_;  // per row of the stitch graph: its stitches
   std::vector<FabricLoop> loops_;
   std::vector<FaceShape> faces_;
   Corners corners_;
