@@ -52,6 +52,20 @@ std::map<StitchType, int> types(const KnitGraph& g) {
   return n;
 }
 
+// `skein verify F --against M --fabric x.obj`: the file replayed and proven, its fabric written
+// as a stitch mesh (the piece's border in its own yarn left out: its tucks), the mesh's text.
+// Throws UnsupportedError where the fabric is refused.
+std::string proven_fabric_mesh(const std::string& text, const Compilation& model,
+                               const knitout::MachineProfile& p) {
+  knitout::Replay r = knitout::replay_knitout(text, "out.k", p);
+  knitout::ProofResult proof = knitout::prove_whole_file(r, text, model);
+  EXPECT_TRUE(proof.proven) << proof.summary;
+  std::vector<bool> border = knitout::own_yarn_border(r, proof);
+  std::ostringstream obj;
+  knitout::write_fabric_stitch_mesh(r, "out.k", obj, &border);
+  return obj.str();
+}
+
 // Every sample on generic and swg091n2 whose knitout is proven: its fabric, written as
 // `skein verify F --against M --fabric x.obj` writes it (the piece's border in its own yarn left
 // out: its tucks), reads back as a knittable stitch mesh with the model's stitches, type by type
@@ -84,13 +98,9 @@ TEST(KnitoutFabricMesh, EverySampleRoundTripsOnEachProfileOrIsRefusedByName) {
       } catch (const UnsupportedError&) {
         continue;  // not knit on the machine yet: nothing to round-trip
       }
-      knitout::Replay r = knitout::replay_knitout(text, "out.k", p);
-      knitout::ProofResult proof = knitout::prove_whole_file(r, text, model);
-      ASSERT_TRUE(proof.proven) << proof.summary;
-      std::vector<bool> border = knitout::own_yarn_border(r, proof);
-      std::ostringstream obj;
+      std::string obj;
       try {
-        knitout::write_fabric_stitch_mesh(r, "out.k", obj, &border);
+        obj = proven_fabric_mesh(text, model, p);
       } catch (const UnsupportedError& e) {
         EXPECT_NE(std::string(e.what()).find("cannot be written as a stitch mesh: its stitches, "
                                              "glued where its loops and yarn join them"),
@@ -99,7 +109,7 @@ TEST(KnitoutFabricMesh, EverySampleRoundTripsOnEachProfileOrIsRefusedByName) {
         refused.insert(fmt::format("{} on {}", entry.path().filename().string(), profile));
         continue;
       }
-      Compilation fabric = compile_stitch_mesh(parse_stitch_mesh(obj.str(), "x.obj"), "x.obj");
+      Compilation fabric = compile_stitch_mesh(parse_stitch_mesh(obj, "x.obj"), "x.obj");
       EXPECT_TRUE(fabric.knittability.knittable) << check_report(fabric);
       EXPECT_EQ(types(fabric.knit), types(model.knit)) << check_report(fabric);
       EXPECT_NO_THROW(testing::emit_knitout_text(fabric, p));  // and it knits again
@@ -141,13 +151,8 @@ TEST(KnitoutFabricMesh, KniterateWasteAndDrawThreadAreWrittenWithThePiece) {
     Compilation model = compile_model(fmt::format("samples/{}", trip.sample));
     knitout::MachineProfile p = testing::shipped_profile("kniterate");
     std::string text = testing::emit_knitout_text(model, p);
-    knitout::Replay r = knitout::replay_knitout(text, "out.k", p);
-    knitout::ProofResult proof = knitout::prove_whole_file(r, text, model);
-    ASSERT_TRUE(proof.proven) << proof.summary;
-    std::vector<bool> border = knitout::own_yarn_border(r, proof);
-    std::ostringstream obj;
-    knitout::write_fabric_stitch_mesh(r, "out.k", obj, &border);
-    Compilation fabric = compile_stitch_mesh(parse_stitch_mesh(obj.str(), "x.obj"), "x.obj");
+    std::string obj = proven_fabric_mesh(text, model, p);
+    Compilation fabric = compile_stitch_mesh(parse_stitch_mesh(obj, "x.obj"), "x.obj");
     EXPECT_TRUE(fabric.knittability.knittable) << check_report(fabric);
     std::map<StitchType, int> expected = types(model.knit), got = types(fabric.knit);
     EXPECT_EQ(knits(fabric.knit), knits(model.knit) + trip.extra_knits);
@@ -311,13 +316,9 @@ TEST(KnitoutFabricMesh, RandomGarmentsRoundTripOrAreRefusedByName) {
           v.refusal = std::string("knitout: ") + e.what();
           return v;
         }
-        knitout::Replay r = knitout::replay_knitout(text, "out.k", p);
-        knitout::ProofResult proof = knitout::prove_whole_file(r, text, c);
-        EXPECT_TRUE(proof.proven) << proof.summary;
-        std::vector<bool> border = knitout::own_yarn_border(r, proof);
-        std::ostringstream obj;
+        std::string obj;
         try {
-          knitout::write_fabric_stitch_mesh(r, "out.k", obj, &border);
+          obj = proven_fabric_mesh(text, c, p);
         } catch (const UnsupportedError& e) {
           v.refusal = e.what();
           return v;
@@ -328,7 +329,7 @@ TEST(KnitoutFabricMesh, RandomGarmentsRoundTripOrAreRefusedByName) {
           ++unreadable;
           return v;
         }
-        Compilation fabric = compile_stitch_mesh(parse_stitch_mesh(obj.str(), "x.obj"), "x.obj");
+        Compilation fabric = compile_stitch_mesh(parse_stitch_mesh(obj, "x.obj"), "x.obj");
         EXPECT_TRUE(fabric.knittability.knittable) << check_report(fabric);
         // A split's cast-on (sco) the machine makes its own way: the proof holds it to the model.
         bool split = std::count(c.knit.type.begin(), c.knit.type.end(), StitchType::sco) > 0;
