@@ -69,9 +69,9 @@ std::string proven_fabric_mesh(const std::string& text, const Compilation& model
 // Every sample on generic and swg091n2 whose knitout is proven: its fabric, written as
 // `skein verify F --against M --fabric x.obj` writes it (the piece's border in its own yarn left
 // out: its tucks), reads back as a knittable stitch mesh with the model's stitches, type by type
-// (a short row's turn is the model's sr4 again, its wrap folded away). Refused, by the face where
-// the glued stitches fold over each other: the sock, whose heel's short rows cross every wale of
-// its first round; AutoKnit's test-A (a turn's tuck and slip on one needle), test-B (a tube
+// (a short row's turn is the model's sr4 again, its wrap folded away). Refused, by the stitch
+// where the glued stitches fold over each other: the sock, whose heel's short rows cross every wale
+// of its first round; AutoKnit's test-A (a turn's tuck and slip on one needle), test-B (a tube
 // parting into legs, one bound off while the other goes on) and test-C (two tubes joined). Their
 // fabric goes the way the refusal says, as a stitch graph (.st):
 // KnitoutFabricGraph.EveryProvenSampleRoundTripsWithItsStitchCounts round-trips each of them.

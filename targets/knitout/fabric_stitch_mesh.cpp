@@ -6,6 +6,7 @@
 #include <array>
 #include <numeric>
 #include <sstream>
+#include <unordered_map>
 #include <vector>
 
 #include "common/error.hpp"
@@ -96,7 +97,7 @@ class GluedFabric {
   }
 
   std::string where(StitchId s) const {
-    return fmt::format("its stitch on needle {} of row {} ({})", positions_[s][0], g_.row[s] + 1,
+    return fmt::format("the stitch on needle {} of row {} ({})", positions_[s][0], g_.row[s] + 1,
                        abbreviation(g_.type[s]));
   }
 
@@ -419,11 +420,14 @@ class GluedFabric {
     };
     std::vector<Vertex> corners;
     std::vector<EdgeRole> roles;
+    std::unordered_map<std::uint64_t, StitchId>
+        edge_of;  // a face's edge, tail and head, its stitch
     for (StitchId s = 0; s < g_.size(); ++s) {
       if (!kept_[s]) continue;
       corners.clear();
       roles.clear();
       face_outline(s, corners, roles, vertex_of);
+      check_outline(s, corners, edge_of);
       builder.add_face(corners, roles, faces_[s].type);
     }
     StitchMesh mesh = build_mesh(std::move(builder));
@@ -474,8 +478,24 @@ class GluedFabric {
     }
   }
 
-  // Faces glued where the fabric's loops and yarn say: an edge used twice the same way means
-  // the fabric folds over itself where a stitch mesh cannot.
+  // Faces glued where the fabric's loops and yarn say fold over each other where a face would
+  // have two corners at one point, or two faces would run the same way along one edge.
+  void check_outline(StitchId s, const std::vector<Vertex>& corners,
+                     std::unordered_map<std::uint64_t, StitchId>& edge_of) const {
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+      Vertex a = corners[i], b = corners[(i + 1) % corners.size()];
+      if (a == b)
+        refuse(fmt::format("{}, {}, would have two corners at one point", folded, where(s)));
+      auto [at, added] = edge_of.try_emplace(std::uint64_t{a.index()} << 32 | b.index(), s);
+      if (!added)
+        refuse(fmt::format("{}, {} and {}, would run the same way along one edge", folded,
+                           where(at->second), where(s)));
+    }
+  }
+  static constexpr const char* folded =
+      "its stitches, glued where its loops and yarn join them, fold over each other";
+
+  // The builder's own checks, should any fail.
   StitchMesh build_mesh(StitchMeshBuilder builder) const {
     try {
       return std::move(builder).build();

@@ -6,8 +6,9 @@
 // into the wale it lies on), a tube's rounds a helix cut at a seam into rounds that close across
 // a shift-path; docs/knitout.md says how each case is laid. A fabric whose stitches, so glued,
 // would fold over each other, or that has a stitch no face says (a short row turning at a
-// decrease, a decrease of four loops), is refused with UnsupportedError naming the stitch or
-// face, and nothing is written: the stitch graph (`.st`) says it.
+// decrease, a decrease of four loops), is refused with UnsupportedError naming the stitch (its
+// needle and its row in the stitch graph), and nothing is written: the stitch graph (`.st`) says
+// it.
 #pragma once
 
 #include <iosfwd>
