@@ -420,17 +420,16 @@ class GluedFabric {
     };
     std::vector<Vertex> corners;
     std::vector<EdgeRole> roles;
-    std::unordered_map<std::uint64_t, StitchId>
-        edge_of;  // a face's edge, tail and head, its stitch
+    Outlines outlines;
     for (StitchId s = 0; s < g_.size(); ++s) {
       if (!kept_[s]) continue;
       corners.clear();
       roles.clear();
       face_outline(s, corners, roles, vertex_of);
-      check_outline(s, corners, edge_of);
       builder.add_face(corners, roles, faces_[s].type);
+      outlines.add(s, corners);
     }
-    StitchMesh mesh = build_mesh(std::move(builder));
+    StitchMesh mesh = build_mesh(std::move(builder), outlines);
     for (Vertex v : mesh.vertices()) {
       const Vec3& p = sum[v.index()];
       float n = count[v.index()];
@@ -478,34 +477,48 @@ class GluedFabric {
     }
   }
 
-  // Faces glued where the fabric's loops and yarn say fold over each other where a face would
-  // have two corners at one point, or two faces would run the same way along one edge.
-  void check_outline(StitchId s, const std::vector<Vertex>& corners,
-                     std::unordered_map<std::uint64_t, StitchId>& edge_of) const {
-    for (std::size_t i = 0; i < corners.size(); ++i) {
-      Vertex a = corners[i], b = corners[(i + 1) % corners.size()];
-      if (a == b)
-        refuse(fmt::format("{}, {}, would have two corners at one point", folded, where(s)));
-      auto [at, added] = edge_of.try_emplace(std::uint64_t{a.index()} << 32 | b.index(), s);
-      if (!added)
-        refuse(fmt::format("{}, {} and {}, would run the same way along one edge", folded,
-                           where(at->second), where(s)));
+  // Each face's corners, kept to name the stitches where the builder finds faces folded.
+  struct Outlines {
+    std::vector<StitchId> stitch;
+    std::vector<std::uint32_t> first{0};
+    std::vector<Vertex> corners;
+    void add(StitchId s, const std::vector<Vertex>& outline) {
+      stitch.push_back(s);
+      corners.insert(corners.end(), outline.begin(), outline.end());
+      first.push_back(static_cast<std::uint32_t>(corners.size()));
     }
-  }
-  static constexpr const char* folded =
-      "its stitches, glued where its loops and yarn join them, fold over each other";
+  };
 
-  // The builder's own checks, should any fail.
-  StitchMesh build_mesh(StitchMeshBuilder builder) const {
+  // Faces glued where the fabric's loops and yarn say fold over each other where a face would
+  // have two corners at one point, or two faces would run the same way along one edge: the
+  // builder finds it, and the outlines say which stitches.
+  StitchMesh build_mesh(StitchMeshBuilder builder, const Outlines& outlines) const {
     try {
       return std::move(builder).build();
     } catch (const MeshError& e) {
-      refuse(
-          fmt::format("its stitches, glued where its loops and yarn join them, do not lie "
-                      "side by side as a mesh's faces ({})",
-                      e.what()));
+      name_folded_stitches(outlines);
+      refuse(fmt::format("{} ({})", kFolded, e.what()));
     }
   }
+
+  void name_folded_stitches(const Outlines& o) const {
+    std::unordered_map<std::uint64_t, StitchId> edge_of;  // tail and head: the stitch
+    for (std::size_t f = 0; f + 1 < o.first.size(); ++f) {
+      std::uint32_t n = o.first[f + 1] - o.first[f];
+      for (std::uint32_t i = 0; i < n; ++i) {
+        Vertex a = o.corners[o.first[f] + i], b = o.corners[o.first[f] + (i + 1) % n];
+        StitchId s = o.stitch[f];
+        if (a == b)
+          refuse(fmt::format("{}: {} would have two corners at one point", kFolded, where(s)));
+        auto [at, added] = edge_of.try_emplace(std::uint64_t{a.index()} << 32 | b.index(), s);
+        if (!added)
+          refuse(fmt::format("{}: {} and {} would run the same way along one edge", kFolded,
+                             where(at->second), where(s)));
+      }
+    }
+  }
+  static constexpr const char* kFolded =
+      "its stitches, glued where its loops and yarn join them, fold over each other";
 
   const KnitGraph& g_;
   const std::vector<std::array<double, 3>>& positions_;
