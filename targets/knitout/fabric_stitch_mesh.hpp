@@ -1,15 +1,14 @@
 // The fabric a knitout file makes, written as a skein stitch mesh (`.obj`, which `skein check`
 // and `skein compile` read): the stitch graph of fabric_stitch_graph.hpp, read back as a knit
-// graph, laid out row on row. A face per stitch: its bottom edges are the loops it takes from
-// the row below, its top edges the loops it makes, its wale edges shared with its neighbours
-// along the row (in chart order: left to right on the side facing the front bed).
-//
-// Built for what a stitch mesh of whole rows can say: one yarn piece worked flat (open rows)
-// or round (closed rounds), cast on in its first row and bound off in its last, each row
-// taking exactly the loops of the row below, side by side in their order. A fabric that is
-// anything else (short rows, several yarn pieces, loops held over rows, crossed or
-// yarned-over loops, wales ending inside it) is refused with UnsupportedError naming the row,
-// and nothing is written: the stitch graph (`.st`) says it.
+// graph, each stitch a face glued to its neighbours where the fabric joins them: its bottom
+// edges to the top edges of the stitches whose loops it takes, its wale edges to the stitches
+// before and after it along the row. A short row's turn is a short-row face (its wrap folded
+// into the wale it lies on), a tube's rounds a helix cut at a seam into rounds that close across
+// a shift-path; docs/knitout.md says how each case is laid. A fabric whose stitches, so glued,
+// would fold over each other, or that has a stitch no face says (a short row turning at a
+// decrease, a decrease of four loops), is refused with UnsupportedError naming the stitch (its
+// needle and its row in the stitch graph), and nothing is written: the stitch graph (`.st`) says
+// it.
 #pragma once
 
 #include <iosfwd>
