@@ -49,18 +49,18 @@ testing::Tally random_garments(const std::string& builder) {
 }
 
 // The default builder (auto): the program's, else the schedule's where the program's refuses
-// (267 proven; the schedule's alone 230).
+// (270 proven; the schedule's alone 230).
 TEST(HandRandomGarments, EachIsProvenOrRefusedByNameBeforeWriting) {
   testing::Tally tally = random_garments("auto");
-  EXPECT_GE(tally.proven, 267);
+  EXPECT_GE(tally.proven, 270);
 }
 
 // The pattern built on the lowering's live-loop program (`--set builder=program`), measured on
-// the same garments: what it writes is proven, the rest refused by name (264 proven against
+// the same garments: what it writes is proven, the rest refused by name (270 proven against
 // the schedule builder's 230).
 TEST(HandRandomGarments, ProgramBuilderProvesOrRefusesEachByName) {
   testing::Tally tally = random_garments("program");
-  EXPECT_GE(tally.proven, 264);
+  EXPECT_GE(tally.proven, 270);
 }
 
 }  // namespace

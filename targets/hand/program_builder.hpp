@@ -233,9 +233,15 @@ class ProgramPatternBuilder {
   // into a yoke, each between the sleeves; a leg's inside to the crotch; a glove's fingers,
   // each taking part of one cast-on): before the piece is left, its last rnd, last row or
   // cast-on is parted, a run of sts for each course that takes them, each to a holder of its own
-  // but the one that goes round past the end of the needle (or else the last). Returns where
-  // `loop` then waits.
-  LoopAt hold_parts_of_spare_needle(std::uint32_t section, std::uint32_t loop);
+  // but the one that goes round past the end of the needle, where `round_the_end_stays` (a
+  // rnd places it from its middle; a three-needle bind-off holds each part behind in turn).
+  // Returns where `loop` then waits.
+  LoopAt hold_parts_of_spare_needle(std::uint32_t section, std::uint32_t loop,
+                                    bool round_the_end_stays = true);
+
+  // The sts held behind for the three-needle bind-off from worked st `i` on, as long as they
+  // wait in one place.
+  std::vector<std::uint32_t> held_behind_from(std::uint32_t i) const;
 
   // Are all `loops` taken by rows (not rnds) of one yarn? Those slip them one at a time from
   // the spare needle ("sl1 from spare") rather than from holders.

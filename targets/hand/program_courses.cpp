@@ -57,18 +57,15 @@ std::uint32_t ProgramPatternBuilder::work(const Step& s, std::uint32_t i, Needle
 std::uint32_t ProgramPatternBuilder::bind_off_with_held_st(std::uint32_t i, Needle& n) {
   const Step& s = p_.steps[step_];
   if (held_behind_left_ == 0) {
-    // The sts held behind on one needle (or holder); others are held after them.
-    std::vector<std::uint32_t> behind;
-    for (std::uint32_t k = i; k < s.stitches.end; ++k) {
-      if (!binds_off_together(k)) continue;
-      std::uint32_t held = all_taken_by(k)[1];
-      if (!behind.empty() && places_.at(held) != places_.at(behind.front())) break;
-      behind.push_back(held);
-    }
+    // The sts held behind on one needle (or holder); others are held after them. Those that
+    // go round past the end of a spare needle are parted there, each part held in turn.
+    std::vector<std::uint32_t> behind = held_behind_from(i);
     LoopAt source = places_.at(behind.front());
     std::optional<Lie> lie = places_.lie(source, behind);
     if (!lie && source.place == Place::spare) {
-      source = hold_parts_of_spare_needle(source.index, behind.front());
+      hold_parts_of_spare_needle(source.index, behind.front(), false);
+      behind = held_behind_from(i);
+      source = places_.at(behind.front());
       lie = places_.lie(source, behind);
     }
     bool nameable = source.place == Place::holder || source.place == Place::spare;
@@ -92,6 +89,18 @@ std::uint32_t ProgramPatternBuilder::bind_off_with_held_st(std::uint32_t i, Need
   --n.live;
   if (!n.in_round) --n.ahead;
   return 1;
+}
+
+std::vector<std::uint32_t> ProgramPatternBuilder::held_behind_from(std::uint32_t i) const {
+  const Step& s = p_.steps[step_];
+  std::vector<std::uint32_t> behind;
+  for (std::uint32_t k = i; k < s.stitches.end; ++k) {
+    if (!binds_off_together(k)) continue;
+    std::uint32_t held = all_taken_by(k)[1];
+    if (!behind.empty() && places_.at(held) != places_.at(behind.front())) break;
+    behind.push_back(held);
+  }
+  return behind;
 }
 
 std::uint32_t ProgramPatternBuilder::cast_on_in_row(std::uint32_t i, Needle& n) {

@@ -320,16 +320,17 @@ void ProgramPatternBuilder::lay_row_ahead(const Step& s, const std::vector<std::
   places_.set(met, {Place::needle, current_});
 }
 
-LoopAt ProgramPatternBuilder::hold_parts_of_spare_needle(std::uint32_t section,
-                                                         std::uint32_t loop) {
+LoopAt ProgramPatternBuilder::hold_parts_of_spare_needle(std::uint32_t section, std::uint32_t loop,
+                                                         bool round_the_end_stays) {
   PatternSection& sec = out_.sections[section];
   const LoopAt spare_needle{Place::spare, section};
   std::vector<std::uint32_t> spare = places_.loops_of(spare_needle);
   std::optional<PatternSection::Holding> counted = counting_of_spare_needle(sec, spare);
   if (!counted || used_up_by_rows(spare)) return spare_needle;
   // The sts keep the numbers they had when the piece was left, so each part is a run of
-  // those numbers, and all parts go to holders in one sentence, in order. The part that goes
-  // round past the end (or else the last) stays on the spare needle.
+  // those numbers, and all parts go to holders in one sentence, in order, but the one that
+  // goes round past the end, which stays on the spare needle for a rnd to place from its
+  // middle (where `round_the_end_stays`).
   std::vector<std::pair<std::uint32_t, std::uint32_t>> parts;  // [begin, end) in `spare`
   for (std::uint32_t i = 0, end = 0; i < spare.size(); i = end) {
     for (end = i + 1; end < spare.size() &&
@@ -340,7 +341,8 @@ LoopAt ProgramPatternBuilder::hold_parts_of_spare_needle(std::uint32_t section,
     }
     parts.emplace_back(i, end);
   }
-  bool round_the_end = parts.size() > 1 && taken_together(spare.back(), spare.front());
+  bool round_the_end =
+      round_the_end_stays && parts.size() > 1 && taken_together(spare.back(), spare.front());
   for (std::size_t k = round_the_end ? 1 : 0; k + (round_the_end ? 1 : 0) < parts.size(); ++k) {
     std::span<const std::uint32_t> part(spare.data() + parts[k].first,
                                         parts[k].second - parts[k].first);

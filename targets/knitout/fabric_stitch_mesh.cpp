@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/error.hpp"
+#include "driver/pipeline.hpp"
 #include "knitout/fabric_stitch_graph.hpp"
 #include "mesh/autoknit_st.hpp"
 #include "mesh/obj_format.hpp"
@@ -544,7 +545,19 @@ void write_fabric_stitch_mesh(const Replay& replay, const std::string& file, std
   write_fabric_stitch_graph(replay, file, st, border);
   std::vector<std::array<double, 3>> positions;
   KnitGraph graph = parse_autoknit_st(st.str(), file + " (its fabric)", &positions);
-  write_stitch_mesh(GluedFabric(graph, positions, file).build(), out);
+  StitchMesh mesh = GluedFabric(graph, positions, file).build();
+  // Never a mesh `skein check` would refuse: the fabric goes as a stitch graph (.st) instead.
+  try {
+    (void)compile_stitch_mesh(mesh, file + " (its fabric)");
+  } catch (const UnsupportedError&) {
+    throw;
+  } catch (const Error& e) {
+    throw UnsupportedError(fmt::format(
+        "{}: the fabric cannot be written as a stitch mesh yet: the mesh laid out does not check "
+        "({}); write it as a stitch graph (.st)",
+        file, e.what()));
+  }
+  write_stitch_mesh(mesh, out);
 }
 
 }  // namespace skein::knitout
