@@ -108,8 +108,8 @@ void Emitter::merge_decreases(const Course& c) {
         along.push_back({lp.now, bottom});
       } else if (near) {
         landing.push_back({lp.now, bottom});
-      } else {  // from bed to bed over a tube's empty needles
-        move_across_beds(lp.now, bottom, along_bed ? &busy : nullptr);
+      } else {  // from bed to bed over a tube's empty needles (past loops that wait there)
+        move_across_beds(lp.now, bottom, &busy);
       }
       lp.now = lp.home = bottom;
     }
