@@ -245,6 +245,8 @@ class ProgramLayouts {
   // lowering's list of live loops. The course after it knits across the pieces.
   void join(const Step& step) {
     note_arc_ends(step);
+    for (std::uint32_t i = step.reads.begin; i < step.reads.end; ++i)
+      turn_outer_arc_away(p_.segments[i]);
     for (std::uint32_t i = step.reads.begin; i < step.reads.end; ++i) {
       const Segment& seg = p_.segments[i];
       // Tubes side by side (legs) join where the round goes once round each of them: a tube's
@@ -258,6 +260,32 @@ class ProgramLayouts {
       runs_.open_at(seg.run, seg.first);
       if (i > step.reads.begin) runs_.append(step.run, seg.run);
     }
+  }
+
+  // A tube cast on beside another (a leg) is laid out from its cast-on turned so that the arc
+  // the join takes (its outer arc) goes round its far fold, the right one when it lies right of
+  // the others: the join's round then goes round the legs one way, and the arc it leaves (the
+  // crotch) faces the other leg. The arc's middle loop is followed down its wales to the cast-on.
+  void turn_outer_arc_away(const Segment& seg) {
+    std::uint32_t run = seg.run.index();
+    while (run != kNoWrap && !beside_cast_on_.count(run)) run = split_from_[run];
+    if (run == kNoWrap) return;
+    auto [layout, index] = beside_cast_on_[run];
+    Course& c = layouts_[layout].courses[index];
+    std::uint32_t middle = seg.first;
+    for (std::uint32_t n = 0; n < seg.count / 2; ++n)
+      middle = seg.walk == Walk::forward ? runs_.next(middle) : runs_.prev(middle);
+    StitchId s = g_.loops[middle].maker;
+    while (g_.type[s] != StitchType::co && !g_.loops_taken_by(s).empty())
+      s = g_.loops[g_.loops_taken_by(s)[0]].maker;
+    const CourseLayout& l = layouts_[layout];
+    std::uint32_t n = c.end - c.begin, j = n;
+    for (std::uint32_t i = c.begin; i < c.end; ++i)
+      if (l.order[i] == s) j = c.left_to_right ? i - c.begin : c.end - 1 - i;
+    if (j == n) return;  // the arc's wale does not reach the cast-on: left as it is
+    // The left fold is where the layout starts (and ends), the right one half way round.
+    c.layout_start = c.beside == Beside::right ? (j + n - n / 2) % n : j;
+    beside_cast_on_.erase(run);
   }
 
   // A join that takes the first side of a cast-on along a split closes the first branch's ring
@@ -394,6 +422,9 @@ class ProgramLayouts {
       Course& course = l.courses.emplace_back(append(l, step.stitches, left_to_right));
       course.cast_on = true;
       course.beside = beside;
+      if (l.tube && beside != Beside::none)
+        beside_cast_on_[step.run.index()] = {index,
+                                             static_cast<std::uint32_t>(l.courses.size() - 1)};
       return;
     }
     for (std::uint32_t begin = step.stitches.begin; begin < step.stitches.end;) {
@@ -699,6 +730,8 @@ class ProgramLayouts {
   std::vector<std::uint32_t> join_place_;  // per run: its place in the first join taking it
   std::vector<std::uint32_t> split_from_;  // per run: the run it was split off (kNoWrap: none)
   std::unordered_map<std::uint32_t, std::uint32_t> layout_of_group_;  // root run -> layout + 1
+  // Per tube cast on beside others, until the join that takes it: its layout and course.
+  std::unordered_map<std::uint32_t, std::pair<std::uint32_t, std::uint32_t>> beside_cast_on_;
   // Per first side of a cast-on along a split not yet joined: its layout and course.
   std::unordered_map<std::uint32_t, std::pair<std::uint32_t, std::uint32_t>> crotch_course_;
   std::uint32_t tails_ = 0;
