@@ -46,9 +46,9 @@ TEST(KnitoutRandomGarments, EachIsProvenOrRefusedByNameBeforeWriting) {
                    "knittable\n",
                    kModels, tally.proven, tally.refused, tally.unknittable)
             << tally.table();
-  // 2026-12-02: 239 proven, 51 refused, 10 not knittable (232 / 58 before legs were cast on
+  // 2026-12-02: 241 proven, 49 refused, 10 not knittable (232 / 58 before legs were cast on
   // side by side; 175 / 115 before thumbs rolled).
-  EXPECT_GE(tally.proven, 239);
+  EXPECT_GE(tally.proven, 241);
 }
 
 // Legs knit from their hems and joined into a body: the second leg is cast on beside the first
