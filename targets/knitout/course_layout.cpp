@@ -162,7 +162,8 @@ class ProgramLayouts {
         layout_of_(c.yarns.size(), kNoWrap),
         wrapped_(c.knit.loops.size(), 0),
         joined_to_(c.program.runs.size()),
-        join_place_(c.program.runs.size(), kNoWrap) {
+        join_place_(c.program.runs.size(), kNoWrap),
+        split_from_(c.program.runs.size(), kNoWrap) {
     for (std::uint32_t r = 0; r < joined_to_.size(); ++r) joined_to_[r] = r;
     for (const Step& step : p_.steps) {
       // A split's parts and a cast-on along a split's two sides stay in the layout of the tube
@@ -170,13 +171,19 @@ class ProgramLayouts {
       if (step.kind == StepKind::split || (step.kind == StepKind::cast_on && step.other.valid())) {
         RunId from = step.kind == StepKind::split ? p_.segments[step.reads.begin].run : step.run;
         for (RunId part : {step.run, step.other})
-          if (part.valid() && part != from) unite(part.index(), from.index());
+          if (part.valid() && part != from) {
+            unite(part.index(), from.index());
+            if (step.kind == StepKind::split) split_from_[part.index()] = from.index();
+          }
       }
       if (step.kind != StepKind::join) continue;
       for (std::uint32_t i = step.reads.begin; i < step.reads.end; ++i) {
         std::uint32_t run = p_.segments[i].run.index();
         unite(run, step.run.index());
-        if (join_place_[run] == kNoWrap) join_place_[run] = i - step.reads.begin;
+        // A run split off another (a leg's outer arc, its inner one left for a crotch seam)
+        // places the run it came from too.
+        for (; run != kNoWrap; run = split_from_[run])
+          if (join_place_[run] == kNoWrap) join_place_[run] = i - step.reads.begin;
       }
     }
   }
@@ -218,34 +225,67 @@ class ProgramLayouts {
   }
   void unite(std::uint32_t run, std::uint32_t into) { joined_to_[root(run)] = root(into); }
 
-  // A sheet cast on while loops wait on the bed goes left of them when the join takes it before
-  // every run cast on so far, right of them when after; between them there is no room.
-  Beside side_of(const Step& step, Piece& piece, StitchId at) {
+  // A piece cast on while loops wait on the bed (a flap, a leg) goes left of them when the join
+  // takes it before every run cast on so far, right of them when after; between them there is
+  // no room. Tubes must be of one kind: a sheet beside a tube would need a layout of both.
+  Beside side_of(const Step& step, const CourseLayout& l, Piece& piece, StitchId at) {
     std::uint32_t place = join_place_[step.run.index()];
-    if (step.run_shape == RunShape::ring || place == kNoWrap)
-      unsupported(g_,
-                  step.run_shape == RunShape::ring
-                      ? "a tube cast on while another piece waits on the bed (tubes joined on "
-                        "the bed, as legs into a body)"
-                      : "a piece cast on while another waits on the bed, which no course joins",
-                  at);
+    if (place == kNoWrap)
+      unsupported(g_, "a piece cast on while another waits on the bed, which no course joins", at);
+    if ((step.run_shape == RunShape::ring) != l.tube)
+      unsupported(g_, "a sheet and a tube cast on side by side on the bed", at);
     if (place < piece.leftmost) return piece.leftmost = place, Beside::left;
     if (place > piece.rightmost) return piece.rightmost = place, Beside::right;
-    unsupported(g_, "a sheet cast on between two pieces on the bed", at);
+    unsupported(
+        g_, fmt::format("a {} cast on between two pieces on the bed", l.tube ? "tube" : "sheet"),
+        at);
   }
 
   // Runs taken up by one course become one (flaps into a sheet): the program's join, on the
   // lowering's list of live loops. The course after it knits across the pieces.
   void join(const Step& step) {
     note_arc_ends(step);
+    for (std::uint32_t i = step.reads.begin; i < step.reads.end; ++i)
+      turn_outer_arc_away(p_.segments[i]);
     for (std::uint32_t i = step.reads.begin; i < step.reads.end; ++i) {
       const Segment& seg = p_.segments[i];
-      if (runs_.shape(seg.run) == RunShape::ring)
-        unsupported(g_, "tubes joined on the bed (as legs into a body, a thumb into a hand)",
+      // Tubes side by side (legs) join where the round goes once round each of them: a tube's
+      // loops taken in two places would put one leg between the halves of the other.
+      bool whole_ring = seg.walk == Walk::forward && seg.count == runs_.size(seg.run);
+      if (runs_.shape(seg.run) == RunShape::ring && !whole_ring)
+        unsupported(g_,
+                    "tubes joined on the bed by a round that takes one tube's loops in two "
+                    "places (a thumb into a hand)",
                     first_stitch(step));
       runs_.open_at(seg.run, seg.first);
       if (i > step.reads.begin) runs_.append(step.run, seg.run);
     }
+  }
+
+  // A tube cast on beside another (a leg) is laid out from its cast-on turned so that the arc
+  // the join takes (its outer arc) goes round its far fold, the right one when it lies right of
+  // the others: the join's round then goes round the legs one way, and the arc it leaves (the
+  // crotch) faces the other leg. The arc's middle loop is followed down its wales to the cast-on.
+  void turn_outer_arc_away(const Segment& seg) {
+    std::uint32_t run = seg.run.index();
+    while (run != kNoWrap && !beside_cast_on_.count(run)) run = split_from_[run];
+    if (run == kNoWrap) return;
+    auto [layout, index] = beside_cast_on_[run];
+    Course& c = layouts_[layout].courses[index];
+    std::uint32_t middle = seg.first;
+    for (std::uint32_t n = 0; n < seg.count / 2; ++n)
+      middle = seg.walk == Walk::forward ? runs_.next(middle) : runs_.prev(middle);
+    StitchId s = g_.loops[middle].maker;
+    while (g_.type[s] != StitchType::co && !g_.loops_taken_by(s).empty())
+      s = g_.loops[g_.loops_taken_by(s)[0]].maker;
+    const CourseLayout& l = layouts_[layout];
+    std::uint32_t n = c.end - c.begin, j = n;
+    for (std::uint32_t i = c.begin; i < c.end; ++i)
+      if (l.order[i] == s) j = c.left_to_right ? i - c.begin : c.end - 1 - i;
+    if (j == n) return;  // the arc's wale does not reach the cast-on: left as it is
+    // The left fold is where the layout starts (and ends), the right one half way round.
+    c.layout_start = c.beside == Beside::right ? (j + n - n / 2) % n : j;
+    beside_cast_on_.erase(run);
   }
 
   // A join that takes the first side of a cast-on along a split closes the first branch's ring
@@ -373,14 +413,18 @@ class ProgramLayouts {
       if (l.courses.empty())
         piece.leftmost = piece.rightmost = join_place_[step.run.index()];
       else
-        beside = side_of(step, piece, first);
+        beside = side_of(step, l, piece, first);
       l.tube = step.run_shape == RunShape::ring;
       runs_.start(step.run, left, step.run_shape);
-      piece.round_start = left.empty() ? kNoWrap : left.front();
+      // The joined tube's rounds start where the leftmost tube's do (at the front's left end).
+      if (beside != Beside::right) piece.round_start = left.empty() ? kNoWrap : left.front();
       piece.on_bed += static_cast<std::uint32_t>(left.size());
       Course& course = l.courses.emplace_back(append(l, step.stitches, left_to_right));
       course.cast_on = true;
       course.beside = beside;
+      if (l.tube && beside != Beside::none)
+        beside_cast_on_[step.run.index()] = {index,
+                                             static_cast<std::uint32_t>(l.courses.size() - 1)};
       return;
     }
     for (std::uint32_t begin = step.stitches.begin; begin < step.stitches.end;) {
@@ -684,7 +728,10 @@ class ProgramLayouts {
   std::vector<Turn> turns_;                // in knitting order
   std::vector<std::uint32_t> joined_to_;   // per run of the program: a run it is joined into
   std::vector<std::uint32_t> join_place_;  // per run: its place in the first join taking it
+  std::vector<std::uint32_t> split_from_;  // per run: the run it was split off (kNoWrap: none)
   std::unordered_map<std::uint32_t, std::uint32_t> layout_of_group_;  // root run -> layout + 1
+  // Per tube cast on beside others, until the join that takes it: its layout and course.
+  std::unordered_map<std::uint32_t, std::pair<std::uint32_t, std::uint32_t>> beside_cast_on_;
   // Per first side of a cast-on along a split not yet joined: its layout and course.
   std::unordered_map<std::uint32_t, std::pair<std::uint32_t, std::uint32_t>> crotch_course_;
   std::uint32_t tails_ = 0;

@@ -13,8 +13,9 @@ namespace skein::knitout {
 
 inline constexpr std::uint32_t kNoWrap = 0xffffffffu;
 
-// Where a sheet cast on while another piece's loops wait on the bed goes: beside them, on the
-// side from which the course that later joins the pieces takes it (a flap left of the other).
+// Where a piece cast on while another piece's loops wait on the bed goes (a sheet beside sheets,
+// a tube beside tubes): beside them, on the side from which the course that later joins the
+// pieces takes it (a flap left of the other, a leg right of the other).
 enum class Beside : std::uint8_t { none, left, right };
 
 struct Course {

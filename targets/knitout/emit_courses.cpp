@@ -303,8 +303,9 @@ void Emitter::chain_link(Place here, Place there, const std::vector<std::uint8_t
   std::int32_t r = w_.racking();
   for (std::int32_t far = -dir * limit; !fits(r) && std::abs(far) <= limit; far += dir) r = far;
   if (!fits(r)) {  // no free needle within reach: to the facing needle, then across in hops
+    // (past loops that wait between the stitches, as a crotch's between two legs' arcs)
     w_.xfer(at(here), at(facing(here)));
-    return move_across_beds(facing(here), there);
+    return move_across_beds(facing(here), there, &busy);
   }
   w_.xfer(at(here), at(out_at(r)));
   w_.xfer(at(out_at(r)), at(there));

@@ -61,15 +61,21 @@ void Emitter::check_width() {
 void Emitter::check_side_by_side() {
   for (const Course& c : l_.courses) {
     if (c.beside == Beside::none) continue;
-    auto width = static_cast<std::int32_t>(measure(c).total) + 1;
+    auto width = static_cast<std::int32_t>(needles_needed(measure(c))) + pitch_;
     (c.beside == Beside::left ? beside_left_ : beside_right_) += width;
   }
   const Course& first = l_.courses.front();
-  auto needed = static_cast<std::uint32_t>(beside_left_ + beside_right_) + measure(first).total;
+  std::uint32_t own = needles_needed(measure(first)),
+                needed = static_cast<std::uint32_t>(beside_left_ + beside_right_) + own;
   if (needed > p_.needles)
     throw UnsupportedError(
         fmt::format("{} needs {} needles for its pieces cast on side by side (from {}), {} has {}",
                     c_.input, needed, g_.describe(l_.order[first.begin]), p_.name, p_.needles));
+  // A tube with tubes beside it: the first is centred with them (its right fold halved).
+  if (l_.tube && beside_left_ + beside_right_ > 0) {
+    std::int32_t low = (static_cast<std::int32_t>(p_.needles - needed) / 2 + beside_left_) & ~1;
+    fold_ = (low + static_cast<std::int32_t>(own)) / 2 - 1;
+  }
 }
 
 // The loops each stitch gathers on one needle, and the transfers a double decrease needs.
@@ -157,9 +163,35 @@ std::uint32_t Emitter::resting_loop(StitchId s) const {
   return taken(s)[0];
 }
 
+// Tubes side by side (legs) are one tube to the round that joins them only where it goes
+// round the bed one way: along the fronts left to right, the backs right to left (or all the
+// other way). Where the model takes a leg's outer arc round the fold that faces the other leg,
+// the round would cross between the beds: the leg needs laying out turned round, which the
+// target does not do yet.
+void Emitter::check_round_order(const Course& c) const {
+  auto needles = static_cast<std::int32_t>(p_.needles);
+  std::vector<std::int32_t> keys;  // places round the bed, front left to right, back after
+  for (std::uint32_t i = c.begin; i < c.end; ++i) {
+    if (taken(l_.order[i]).empty()) continue;
+    const Place& h = live_[resting_loop(l_.order[i])].home;
+    keys.push_back(h.bed == Bed::f ? h.needle : 2 * needles - h.needle);
+  }
+  std::size_t up = 0, down = 0;  // steps round the bed each way, closing the course on itself
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    std::int32_t a = keys[k], b = keys[(k + 1) % keys.size()];
+    up += b > a ? 1 : 0;
+    down += b < a ? 1 : 0;
+  }
+  if (up > 1 && down > 1)
+    unsupported_split(c,
+                      "tubes side by side joined by a round that goes round one of them the other "
+                      "way (a leg whose outer arc is at the fold facing the other leg)");
+}
+
 // A short row takes the loops of one needle per stitch and leaves one: each stitch knits
 // where its loop waits, so the loops beside the short row stay where they are.
 void Emitter::plan_in_place(const Course& c) {
+  if (l_.tube && beside_left_ + beside_right_ > 0) check_round_order(c);
   for (std::uint32_t i = c.begin; i < c.end; ++i) {
     StitchId s = l_.order[i];
     StitchPlan& sp = plan_[s];
@@ -301,34 +333,9 @@ void Emitter::plan_course(const Course& course, bool first) {
   // then follow the loops; while loops cross a fold it stays where it is.
   bool fold_may_move = l_.tube && !first && keep_folds(c, f);
   std::uint32_t back = f.total - f.front;
+  // Where the stitches' bottom loops are, as offsets that would leave them in place.
   std::vector<std::int32_t> wants;
-  std::uint32_t q = 0, index = 0;
-  auto place = [&](StitchId s, std::int32_t offset, bool record) {
-    StitchPlan& sp = plan_[s];
-    bool ltr = l_.left_to_right[s];
-    sp.knit_slot = knit_slot(g_.type[s], ltr);
-    std::uint32_t qk = q + sp.knit_slot;
-    bool on_back = l_.tube && index >= f.split;
-    sp.home = on_back ? Bed::b : Bed::f;
-    // A sheet counts from its left end; a tube from its right fold, where the two beds meet.
-    std::int32_t rank = static_cast<std::int32_t>(!l_.tube  ? qk
-                                                  : on_back ? qk - f.front
-                                                            : f.front - 1 - qk);
-    std::int32_t sign = l_.tube ? -1 : 1;
-    sp.needle = l_.tube ? 2 * (offset - rank) + (on_back ? 1 : 0) : offset + rank;
-    aim(s, sp, on_back);
-    if (record && !g_.loops_taken_by(s).empty()) {
-      std::uint32_t bottom = g_.loops_taken_by(s)[stacking_order(g_.type[s])[0]];
-      const Place& h = live_[bottom].home;
-      if (h.bed == sp.home) {
-        std::int32_t have = l_.tube ? (h.needle - (on_back ? 1 : 0)) / 2 : h.needle;
-        wants.push_back(have - sign * rank);
-      }
-    }
-    q += footprint(g_.type[s]);
-    ++index;
-  };
-  each_in_layout_order(c, [&](StitchId s) { place(s, 0, !first); });
+  if (!first) lay_out(c, f, 0, &wants);
   std::int32_t span = static_cast<std::int32_t>(l_.tube ? p_.needles / 2 : p_.needles);
   std::int32_t used = static_cast<std::int32_t>(l_.tube ? std::max(f.front, back) : f.total);
   std::int32_t low = l_.tube ? used - 1 : 0, high = l_.tube ? span - 1 : span - used;
@@ -340,12 +347,43 @@ void Emitter::plan_course(const Course& course, bool first) {
   }
   if (l_.tube && !fold_may_move) offset = fold_;
   if (l_.tube) fold_ = offset;
-  q = index = 0;
-  each_in_layout_order(c, [&](StitchId s) { place(s, offset, false); });
+  lay_out(c, f, offset, nullptr);
 }
 
-// A sheet cast on while another piece's loops wait on the bed: on the needles beside theirs,
-// with one empty needle between, on the side from which the course joining them takes it.
+// Each stitch's needle with the course laid out from `offset`: a sheet's left end, a tube's
+// right fold (in half gauge: front loops on even needles, back loops on odd ones).
+void Emitter::lay_out(const Course& c, const Footprint& f, std::int32_t offset,
+                      std::vector<std::int32_t>* wants) {
+  std::uint32_t q = 0, index = 0;
+  each_in_layout_order(c, [&](StitchId s) {
+    StitchPlan& sp = plan_[s];
+    sp.knit_slot = knit_slot(g_.type[s], l_.left_to_right[s]);
+    std::uint32_t qk = q + sp.knit_slot;
+    bool on_back = l_.tube && index >= f.split;
+    sp.home = on_back ? Bed::b : Bed::f;
+    // A sheet counts from its left end; a tube from its right fold, where the two beds meet.
+    std::int32_t rank = static_cast<std::int32_t>(!l_.tube  ? qk
+                                                  : on_back ? qk - f.front
+                                                            : f.front - 1 - qk);
+    std::int32_t sign = l_.tube ? -1 : 1;
+    sp.needle = l_.tube ? 2 * (offset - rank) + (on_back ? 1 : 0) : offset + rank;
+    aim(s, sp, on_back);
+    if (wants && !g_.loops_taken_by(s).empty()) {
+      std::uint32_t bottom = g_.loops_taken_by(s)[stacking_order(g_.type[s])[0]];
+      const Place& h = live_[bottom].home;
+      if (h.bed == sp.home) {
+        std::int32_t have = l_.tube ? (h.needle - (on_back ? 1 : 0)) / 2 : h.needle;
+        wants->push_back(have - sign * rank);
+      }
+    }
+    q += footprint(g_.type[s]);
+    ++index;
+  });
+}
+
+// A piece cast on while another piece's loops wait on the bed: on the needles beside theirs,
+// on the side from which the course joining them takes it, with one empty needle between (two
+// for a tube, which keeps its front loops on even needles).
 void Emitter::plan_beside(const Course& c) {
   std::int32_t low = std::numeric_limits<std::int32_t>::max(), high = -1;
   for (std::uint32_t loop : on_needles_) {
@@ -354,22 +392,17 @@ void Emitter::plan_beside(const Course& c) {
       high = std::max(high, p.needle);
     }
   }
-  auto total = static_cast<std::int32_t>(measure(c).total);
-  std::int32_t first = c.beside == Beside::right ? high + 2 : low - 1 - total;
+  Footprint f = measure(c);
+  auto total = static_cast<std::int32_t>(needles_needed(f));
+  std::int32_t gap = pitch_, first = c.beside == Beside::right ? high + 1 + gap : low - gap - total;
+  if (l_.tube) first += first & 1;  // even: the tube's first front needle
   if (first < 0 || first + total > static_cast<std::int32_t>(p_.needles))
     throw UnsupportedError(fmt::format(
         "{}: {} is cast on beside the loops on needles {}..{}, which leaves it no room on "
         "{}'s {} needles",
         c_.input, g_.describe(l_.order[c.begin]), low, high, p_.name, p_.needles));
-  std::uint32_t q = 0;
-  each_in_layout_order(c, [&](StitchId s) {
-    StitchPlan& sp = plan_[s];
-    sp.knit_slot = knit_slot(g_.type[s], l_.left_to_right[s]);
-    sp.home = Bed::f;
-    sp.needle = first + static_cast<std::int32_t>(q + sp.knit_slot);
-    aim(s, sp, false);
-    q += footprint(g_.type[s]);
-  });
+  // A tube's right fold is its last front needle (halved): the back's loops face the front's.
+  lay_out(c, f, l_.tube ? (first + total) / 2 - 1 : first, nullptr);
 }
 
 }  // namespace skein::knitout::emit

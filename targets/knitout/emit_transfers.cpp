@@ -60,6 +60,16 @@ void Emitter::go_home(const Course& c, std::vector<std::uint8_t>& ready, bool st
   };
   for (const RoomMove& r : room_) send_home(r.loop);
   if (c.wrap != kNoWrap && !c.wrap_back) send_home(c.wrap);
+  // Beside pieces side by side, the loops that wait (a crotch between two legs) rest at home:
+  // the transfers hop past them on the needles their tube leaves empty.
+  if (l_.tube && beside_left_ + beside_right_ > 0) {
+    for (std::uint32_t i = c.begin; i < c.end; ++i)
+      for (std::uint32_t loop : taken(l_.order[i])) in_course_[loop] = 1;
+    for (std::uint32_t loop : on_needles_)
+      if (!in_course_[loop]) send_home(loop);
+    for (std::uint32_t i = c.begin; i < c.end; ++i)
+      for (std::uint32_t loop : taken(l_.order[i])) in_course_[loop] = 0;
+  }
   for (std::uint32_t i = c.begin; i < c.end; ++i) {
     StitchId s = l_.order[i];
     const StitchPlan& sp = plan_[s];
@@ -108,8 +118,8 @@ void Emitter::merge_decreases(const Course& c) {
         along.push_back({lp.now, bottom});
       } else if (near) {
         landing.push_back({lp.now, bottom});
-      } else {  // from bed to bed over a tube's empty needles
-        move_across_beds(lp.now, bottom, along_bed ? &busy : nullptr);
+      } else {  // from bed to bed over a tube's empty needles (past loops that wait there)
+        move_across_beds(lp.now, bottom, &busy);
       }
       lp.now = lp.home = bottom;
     }

@@ -114,9 +114,12 @@ class Emitter {
   void aim(StitchId s, StitchPlan& sp, bool on_back) const;
   bool is_turn_loop(std::uint32_t loop) const;
   std::uint32_t resting_loop(StitchId s) const;
+  void check_round_order(const Course& c) const;
   void plan_in_place(const Course& c);
   std::uint32_t stitch_at_front_left(const Course& c) const;
   void plan_course(const Course& course, bool first);
+  void lay_out(const Course& c, const Footprint& f, std::int32_t offset,
+               std::vector<std::int32_t>* wants);
   void plan_beside(const Course& c);
 
   // ---- shaping inside a short row (emit_layout.cpp) ----
@@ -221,7 +224,7 @@ class Emitter {
   KnitoutWriter& w_;
   std::int32_t pitch_ = 1, reach_ = 1;
   std::int32_t fold_ = 0;  // a tube's right fold: front f2R faces back b2R+1 beside it
-  std::int32_t beside_left_ = 0, beside_right_ = 0;  // needles for the sheets cast on beside
+  std::int32_t beside_left_ = 0, beside_right_ = 0;  // needles for the pieces cast on beside
   std::vector<StitchPlan> plan_;                     // per stitch, for the course being knit
   std::vector<LoopPlace> live_;                      // per loop of the knit graph
   std::vector<std::uint32_t> on_needles_, index_on_needles_;  // the loops made, not yet taken
