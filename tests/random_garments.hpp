@@ -236,6 +236,15 @@ struct Tally {
   std::map<std::string, int> refusals;
   int proven = 0, refused = 0, unknittable = 0;
 
+  // "300 random garments on knitout: 241 proven, 49 refused by name, 10 not knittable", then
+  // the table (`proven_word`: what the test calls a success).
+  std::string report(int models, const std::string& what, const std::string& proven_word = "proven",
+                     const std::string& refused_word = "refused by name") const {
+    return fmt::format("{} random garments{}: {} {}, {} {}, {} not knittable\n", models, what,
+                       proven, proven_word, refused, refused_word, unknittable) +
+           table();
+  }
+
   std::string table() const {
     std::string out = "structure | proven | refused by name | not knittable (skein check)\n";
     for (const auto& [s, n] : by_structure)

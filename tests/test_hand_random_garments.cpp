@@ -40,11 +40,7 @@ testing::Tally random_garments(const std::string& builder) {
         v.proven = report.proven;
         return v;
       });
-  std::cout << fmt::format(
-                   "{} random garments, builder={}: {} proven, {} refused by name, {} not "
-                   "knittable\n",
-                   kModels, builder, tally.proven, tally.refused, tally.unknittable)
-            << tally.table();
+  std::cout << tally.report(kModels, fmt::format(", builder={}", builder));
   return tally;
 }
 

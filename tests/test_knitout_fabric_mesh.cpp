@@ -339,11 +339,8 @@ TEST(KnitoutFabricMesh, RandomGarmentsRoundTripOrAreRefusedByName) {
         v.proven = fabric.knittability.knittable;
         return v;
       });
-  std::cout << fmt::format(
-                   "{} random garments, their fabric as a stitch mesh: {} written, {} refused by "
-                   "name (knitout's refusals among them), {} not knittable\n",
-                   kModels, tally.proven, tally.refused, tally.unknittable)
-            << tally.table();
+  std::cout << tally.report(kModels, ", their fabric as a stitch mesh", "written",
+                            "refused by name (knitout's refusals among them)");
   EXPECT_GT(tally.proven, 0);
   EXPECT_LE(unreadable, 3);
 }

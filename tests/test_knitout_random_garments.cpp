@@ -41,11 +41,7 @@ testing::Tally knitout_tally() {
 
 TEST(KnitoutRandomGarments, EachIsProvenOrRefusedByNameBeforeWriting) {
   testing::Tally tally = knitout_tally();
-  std::cout << fmt::format(
-                   "{} random garments on knitout: {} proven, {} refused by name, {} not "
-                   "knittable\n",
-                   kModels, tally.proven, tally.refused, tally.unknittable)
-            << tally.table();
+  std::cout << tally.report(kModels, " on knitout");
   // 2026-12-02: 241 proven, 49 refused, 10 not knittable (232 / 58 before legs were cast on
   // side by side; 175 / 115 before thumbs rolled).
   EXPECT_GE(tally.proven, 241);
