@@ -351,6 +351,9 @@ KnitGraph heel_turn_graph() {
   }
   for (StitchId end_of_round : {c[5], a[5], e[2]}) g.yarn_link[end_of_round] = YarnLink::shift;
   for (StitchId turn : {b[1], d[0]}) g.yarn_link[turn] = YarnLink::turn;
+  for (StitchId s : d) g.direction[s] = CourseDirection::left_to_right;  // the WS row
+  for (auto* row : {&c, &a, &b, &e, &f})
+    for (StitchId s : *row) g.direction[s] = CourseDirection::right_to_left;
   auto loop = [&](StitchId maker, StitchId taker, std::uint8_t slot, LoopKind kind) {
     g.loops.push_back({maker, taker, kind, 0, slot});
   };
