@@ -239,6 +239,10 @@ class ProgramPatternBuilder {
   LoopAt hold_parts_of_spare_needle(std::uint32_t section, std::uint32_t loop,
                                     bool round_the_end_stays = true);
 
+  // Where `block` lies in `source` (places_.lie); a piece's spare needle whose sts go
+  // different ways is parted first, and `source` becomes where the block then waits.
+  std::optional<Lie> lie_parting_spare_needle(LoopAt& source, std::span<const std::uint32_t> block);
+
   // The sts held behind for the three-needle bind-off from worked st `i` on, as long as they
   // wait in one place.
   std::vector<std::uint32_t> held_behind_from(std::uint32_t i) const;
@@ -299,6 +303,11 @@ class ProgramPatternBuilder {
   // yarn's first course starts on a holder of its own (it is joined to all of that holder's
   // sts): a set-in sweater's back, beside an underarm its sleeve takes later.
   bool held_together(std::uint32_t a, std::uint32_t b) const;
+
+  // Is the course at `step` (a loop's taker step, or kNone) its yarn's first?
+  bool starts_its_yarn(std::uint32_t step) const {
+    return step != kNone && course_number_[step] == 0;
+  }
 
   // Are the loops met by one course, one after the other (either way)?
   bool met_one_after_another(const std::vector<std::uint32_t>& loops) const;
@@ -426,9 +435,9 @@ class ProgramPatternBuilder {
 
   // Sts of a flat piece that other yarns work (a flap of their own, a spout and a lid's
   // middle) go to holders before the row that leaves them: a block for each course that takes
-  // them, counted in the order the last row worked them. Before a course that `gathers` sts
-  // from elsewhere, only where some of its own stay.
-  void hold_what_others_work(const Step& s, Needle& n, bool gathers = false);
+  // them, counted in the order the last row worked them; only where some of its own stay.
+  // Before the course gathers (needle_for): a needle it lays out holds only its own loops.
+  void hold_what_others_work(const Step& s, Needle& n);
 
   // A flat row meets its loops side by side along the line from where the yarn is.
   void check_met_along_the_row(const Step& s, const Needle& n) const;
@@ -462,9 +471,7 @@ class ProgramPatternBuilder {
   std::vector<std::uint32_t> number_of_ = std::vector<std::uint32_t>(g_.size(), 0);
   std::vector<RowEnds> row_ends_;
   std::vector<std::uint32_t> taker_step_ = std::vector<std::uint32_t>(g_.loops.size(), kNone);
-  std::vector<std::uint32_t> first_course_of_yarn_;  // per yarn: its first course's step
-  std::vector<std::uint32_t> courses_of_yarn_;       // per yarn: its courses (counting up)
-  // Per step: how many courses its yarn worked before it.
+  // Per course step: how many courses its yarn worked before it (0: its yarn's first).
   std::vector<std::uint32_t> course_number_ = std::vector<std::uint32_t>(p_.steps.size(), 0);
   std::vector<std::uint32_t> met_at_ = std::vector<std::uint32_t>(g_.loops.size(), 0);
   // The row in the rnd being written, until the work turns or the marker ends it.

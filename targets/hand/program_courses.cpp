@@ -16,7 +16,6 @@ void ProgramPatternBuilder::course(const Step& s) {
   PatternRow r = open_row(s, n);
   r.bind_off = std::all_of(stitches_of(s).begin(), stitches_of(s).end(),
                            [&](const WorkedStitch& w) { return g_.type[w.stitch] == T::bo; });
-  hold_what_others_work(s, n);
   begin_row(s, n);
   check_met_along_the_row(s, n);
   std::uint32_t takes = 0;
@@ -376,14 +375,14 @@ std::uint32_t ProgramPatternBuilder::move_loops(StitchId st, Needle& n, const St
   return t.loops_in;
 }
 
-void ProgramPatternBuilder::hold_what_others_work(const Step& s, Needle& n, bool gathers) {
+void ProgramPatternBuilder::hold_what_others_work(const Step& s, Needle& n) {
   auto others_take = [&](std::uint32_t l) {
     StitchId taker = g_.loops[l].taker;
     return taker != kNoStitch && yarn_of_[taker] != s.yarn;
   };
   if (std::none_of(n.ring.begin(), n.ring.end(), others_take)) return;
   // Where none stay, the piece is left whole (or joined in the rnd) as it is.
-  if (gathers && std::all_of(n.ring.begin(), n.ring.end(), others_take)) return;
+  if (std::all_of(n.ring.begin(), n.ring.end(), others_take)) return;
   if (!n.worked || n.ahead != 0 || out_.rows.size() == section().first_row)
     not_yet(s, "leaves sts to another yarn that its last row did not work to the end");
   std::vector<std::uint32_t> order = n.ring;  // as the last row worked them

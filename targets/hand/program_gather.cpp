@@ -13,7 +13,7 @@ namespace skein::hand::from_program {
 Needle& ProgramPatternBuilder::needle_for(const Step& s, const std::vector<std::uint32_t>& met) {
   std::uint32_t own = needle_of_yarn_[s.yarn];
   if (own != kNone && current_ != own) not_yet(s, "works with a yarn set aside or ended");
-  if (own != kNone && !needles_[own].in_round) hold_what_others_work(s, needles_[own], true);
+  if (own != kNone && !needles_[own].in_round) hold_what_others_work(s, needles_[own]);
   bool on_needle = own != kNone && std::all_of(met.begin(), met.end(), [&](std::uint32_t l) {
                      return places_.at(l) == LoopAt{Place::needle, own};
                    });
@@ -360,6 +360,14 @@ LoopAt ProgramPatternBuilder::hold_parts_of_spare_needle(std::uint32_t section, 
   return places_.at(loop);
 }
 
+std::optional<Lie> ProgramPatternBuilder::lie_parting_spare_needle(
+    LoopAt& source, std::span<const std::uint32_t> block) {
+  std::optional<Lie> lie = places_.lie(source, block);
+  if (lie || source.place != Place::spare) return lie;
+  source = hold_parts_of_spare_needle(source.index, block.front());
+  return places_.lie(source, block);
+}
+
 bool ProgramPatternBuilder::used_up_by_rows(const std::vector<std::uint32_t>& loops) const {
   if (loops.empty()) return false;
   std::uint32_t yarn = taker_yarn(loops.front());
@@ -375,13 +383,12 @@ bool ProgramPatternBuilder::taken_by_rows_one_by_one(std::uint32_t a, std::uint3
   if (at == kNone || bt == kNone || at == bt) return false;
   const Step &sa = p_.steps[at], &sb = p_.steps[bt];
   auto later_row = [&](const Step& s, std::uint32_t step) {
-    return s.shape != RowShape::closed && first_course_of_yarn_[s.yarn] != step;
+    return s.shape != RowShape::closed && !starts_its_yarn(step);
   };
   // Taken from one end of the needle: by rows one or two apart (every row, or every other row
   // where the rows take sts at both their ends).
-  std::uint32_t apart = course_number_[at] > course_number_[bt]
-                            ? course_number_[at] - course_number_[bt]
-                            : course_number_[bt] - course_number_[at];
+  std::uint32_t apart = std::max(course_number_[at], course_number_[bt]) -
+                        std::min(course_number_[at], course_number_[bt]);
   return sa.yarn == sb.yarn && later_row(sa, at) && later_row(sb, bt) && apart <= 2;
 }
 
@@ -429,8 +436,7 @@ std::vector<std::uint32_t> ProgramPatternBuilder::hold_what_it_leaves(const Step
     not_yet(s, "gathers sts onto a flat piece, or a tube not at the end of a rnd");
   n.gap = 0;
   if (out_.rows.empty()) not_yet(s, "gathers sts before any row is worked");
-  return hold_blocks(
-      n.ring, [&](std::uint32_t l) { return in_met_[l] != 0; }, false);
+  return hold_blocks(n.ring, kept, false);
 }
 
 std::vector<std::uint32_t> ProgramPatternBuilder::hold_blocks(
@@ -490,20 +496,17 @@ bool ProgramPatternBuilder::met_one_after_another(const std::vector<std::uint32_
 bool ProgramPatternBuilder::held_together(std::uint32_t a, std::uint32_t b) const {
   if (holder_for(a) != holder_for(b)) return false;
   std::uint32_t at = taker_step_[a], bt = taker_step_[b];
-  auto starts_its_yarn = [&](std::uint32_t step) {
-    return step != kNone && first_course_of_yarn_[p_.steps[step].yarn] == step;
-  };
   return at == bt || (!starts_its_yarn(at) && !starts_its_yarn(bt));
 }
 
 void ProgramPatternBuilder::index_loops_met() {
+  std::vector<std::uint32_t> courses_of_yarn(needle_of_yarn_.size(), 0);  // so far
   for (std::uint32_t i = 0; i < p_.steps.size(); ++i) {
     const Step& s = p_.steps[i];
     if (s.kind != StepKind::course && s.kind != StepKind::bind_off &&
         s.kind != StepKind::three_needle_bind_off)
       continue;
-    if (first_course_of_yarn_[s.yarn] == kNone) first_course_of_yarn_[s.yarn] = i;
-    course_number_[i] = courses_of_yarn_[s.yarn]++;
+    course_number_[i] = courses_of_yarn[s.yarn]++;
     std::vector<std::uint32_t> met = loops_met(s);
     for (std::uint32_t k = 0; k < met.size(); ++k) {
       taker_step_[met[k]] = i;
@@ -528,11 +531,7 @@ std::vector<std::uint32_t> ProgramPatternBuilder::join_to_first_source(
   for (std::uint32_t l : met)
     if (places_.at(l) == source) host.push_back(l);
   if (source.place == Place::edge) return start_from_pick_up(s, host, round);
-  std::optional<Lie> lie = places_.lie(source, host);
-  if (!lie && source.place == Place::spare) {  // the sts of a piece that others share
-    source = hold_parts_of_spare_needle(source.index, host.front());
-    lie = places_.lie(source, host);
-  }
+  std::optional<Lie> lie = lie_parting_spare_needle(source, host);
   if (source.place == Place::none || source.place == Place::needle || !lie)
     not_yet(s, "begins on sts that wait nowhere the pattern can name, or out of their order");
   auto count = static_cast<std::uint32_t>(host.size());
@@ -583,11 +582,7 @@ void ProgramPatternBuilder::place_the_others(const Step& s, const std::vector<st
 void ProgramPatternBuilder::place(const Step& s, LoopAt source,
                                   std::span<const std::uint32_t> block, std::uint32_t after) {
   if (source.place == Place::edge) return pick_up_into_rnd(s, source, block, after);
-  std::optional<Lie> lie = places_.lie(source, block);
-  if (!lie && source.place == Place::spare) {
-    source = hold_parts_of_spare_needle(source.index, block.front());
-    lie = places_.lie(source, block);
-  }
+  std::optional<Lie> lie = lie_parting_spare_needle(source, block);
   bool nameable =
       source.place == Place::holder || source.place == Place::spare || source.place == Place::chain;
   if (!nameable || !lie || (lie->from_last && lie->at != 0))

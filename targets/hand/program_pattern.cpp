@@ -28,9 +28,7 @@ ProgramPatternBuilder::ProgramPatternBuilder(const Compilation& c, const Program
       p_(program),
       places_(c.knit.loops.size()),
       needle_of_yarn_(c.yarns.size(), kNone),
-      yarn_of_(c.yarns.piece_of),
-      first_course_of_yarn_(c.yarns.size(), kNone),
-      courses_of_yarn_(c.yarns.size(), 0) {
+      yarn_of_(c.yarns.piece_of) {
   out_.source = c.input;
   out_.turns = turns;
   out_.mirror = mirror;
