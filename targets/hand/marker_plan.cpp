@@ -122,8 +122,7 @@ class Planner {
     // The markers come off with the last shaped row where other rows follow, or where the sts
     // go on to be worked after this section (a piece set aside, left on a spare needle or
     // parted to holders): counted instructions there would meet them.
-    bool worked_on = s.set_aside || s.left_live ||
-                     (!s.holdings.empty() && s.holdings.back().after_row + 1 >= s.end_row);
+    bool worked_on = s.set_aside || s.left_live || s.last_row_held();
     bool remove = worked_on || std::any_of(p_.rows.begin() + g.last + 1,
                                            p_.rows.begin() + s.end_row, [&](const PatternRow& r) {
                                              return !r.bind_off && !is_plain_row(p_, r);

@@ -32,9 +32,7 @@ std::string sts(std::uint32_t n) {
 
 // A piece whose last row went to holders for the pieces that work it: no st to fasten off.
 bool parted_between_pieces(const PatternSection& sec) {
-  if (sec.holdings.empty()) return false;
-  const PatternSection::Holding& last = sec.holdings.back();
-  return last.of_row || (sec.end_row > 0 && last.after_row + 1 == sec.end_row);
+  return sec.last_row_held() || (!sec.holdings.empty() && sec.holdings.back().of_row);
 }
 
 std::string cm_and_inches(double cm) {

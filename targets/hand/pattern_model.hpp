@@ -101,6 +101,10 @@ struct PatternSection {
     bool of_cast_on = false;
   };
   std::vector<Holding> holdings;
+  // Its sts after its last row went to holders (a last row or rnd parted between pieces).
+  bool last_row_held() const {
+    return !holdings.empty() && end_row > 0 && holdings.back().after_row + 1 >= end_row;
+  }
   // After binding off every st, the yarn goes on to the sts of a holder (a tube's second leg,
   // worked with the yarn of the first), joined to work in the rnd from row `before_row` on:
   // `count` sts, the first (or the last) slipped to it at the tip.
