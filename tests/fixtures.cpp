@@ -316,6 +316,25 @@ namespace skein::testing {
 
 namespace {
 
+// The hand-made graphs below number a row's stitches from right to left seen from the RS, and
+// a RS row runs right to left: each yarn's first course runs the way its first two stitches
+// are numbered (right to left when they count up), and each turn reverses the way.
+void record_course_directions(KnitGraph& g) {
+  std::vector<std::uint8_t> has_before(g.size(), 0);
+  for (StitchId s = 0; s < g.size(); ++s)
+    if (g.yarn_next[s] != kNoStitch) has_before[g.yarn_next[s]] = 1;
+  for (StitchId start = 0; start < g.size(); ++start) {
+    if (has_before[start]) continue;
+    StitchId second = g.yarn_next[start];
+    auto way = second == kNoStitch || second > start ? CourseDirection::right_to_left
+                                                     : CourseDirection::left_to_right;
+    for (StitchId s = start; s != kNoStitch; s = g.yarn_next[s]) {
+      g.direction[s] = way;
+      if (g.yarn_link[s] == YarnLink::turn) way = reversed(way);
+    }
+  }
+}
+
 // A tube's graph with a flap of two rows back and forth between its first rnds and its last:
 // cast-on, rnd, row, row, rnd, bind-off.
 KnitGraph tube_with_flap(const char* name) {
@@ -351,9 +370,7 @@ KnitGraph heel_turn_graph() {
   }
   for (StitchId end_of_round : {c[5], a[5], e[2]}) g.yarn_link[end_of_round] = YarnLink::shift;
   for (StitchId turn : {b[1], d[0]}) g.yarn_link[turn] = YarnLink::turn;
-  for (StitchId s : d) g.direction[s] = CourseDirection::left_to_right;  // the WS row
-  for (auto* row : {&c, &a, &b, &e, &f})
-    for (StitchId s : *row) g.direction[s] = CourseDirection::right_to_left;
+  record_course_directions(g);
   auto loop = [&](StitchId maker, StitchId taker, std::uint8_t slot, LoopKind kind) {
     g.loops.push_back({maker, taker, kind, 0, slot});
   };
@@ -398,6 +415,7 @@ struct GraphRows {
               std::initializer_list<StitchId> turns) {
     for (StitchId s : ends_of_rounds) g.yarn_link[s] = YarnLink::shift;
     for (StitchId s : turns) g.yarn_link[s] = YarnLink::turn;
+    record_course_directions(g);
     g.index_loops();
   }
 };
@@ -625,6 +643,11 @@ KnitGraph reversed_gusset_leg_graph() {
   for (int i = 0; i < 3; ++i) loop(h[i], j[i], 0, w);
   for (StitchId s : {c[5], z[5], a[5], e[6]}) g.yarn_link[s] = YarnLink::shift;
   for (StitchId s : {b[2], d[2], h[2]}) g.yarn_link[s] = YarnLink::turn;
+  record_course_directions(g);
+  // The flap turns back at the rnd's end (b), and the rnd after it goes on the way d went.
+  for (StitchId s : b) g.direction[s] = CourseDirection::left_to_right;
+  for (const auto* run : {&d, &e, &f})
+    for (StitchId s : *run) g.direction[s] = CourseDirection::right_to_left;
   g.index_loops();
   return g;
 }
@@ -741,6 +764,7 @@ KnitGraph strip_joined_in_the_rnd_graph(bool leg_in_the_rnd) {
   for (int i = 0; i < 4; ++i) wale(e[i], f[i], 0);
   for (int i = 0; i < 3; ++i) wale(d[i], h[i], i == 2 ? 1 : 0);
   for (int i = 0; i < 3; ++i) wale(h[i], j[i], 0);
+  record_course_directions(g);
   g.index_loops();
   return g;
 }
@@ -816,7 +840,8 @@ KnitGraph corner_strip_graph() {
   t.loop(c[3], e[3], 0);
   t.loop(c[4], e[4], 0);
   for (int i = 0; i < 8; ++i) t.loop(e[i], f[i], 0);
-  t.finish({e[7]}, {c[0], b[2], d[0], r[2], h[2]});
+  t.finish({e[7]}, {c[0], b[2], d[0], h[2]});
+  t.g.yarn_link[r[2]] = YarnLink::turn;  // the model's turn at the corner: the rnd goes on RS
   return std::move(t.g);
 }
 
@@ -839,6 +864,9 @@ KnitGraph folded_tube_graph() {
     g.loops.push_back({8 - i, 12 + i, LoopKind::joined, 0, 0});  // front: a2, a1, a0
     g.loops.push_back({9 + i, 12 + i, LoopKind::joined, 0, 1});  // back: a3, a4, a5
   }
+  // The rnds run left to right; the bind-off's sts are ordered as the mismatch transform
+  // extrudes them: along their loops.
+  for (StitchId s = 12; s < 15; ++s) g.direction[s] = CourseDirection::along_its_loops;
   g.index_loops();
   return g;
 }
