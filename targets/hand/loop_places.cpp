@@ -44,6 +44,14 @@ void LoopPlaces::take_off_spare(std::uint32_t section, std::span<const std::uint
   std::erase_if(spare, [&](std::uint32_t loop) { return at_[loop].place != Place::spare; });
 }
 
+std::uint32_t LoopPlaces::spare_needles_holding_sts() const {
+  auto holds_sts = [&](const std::vector<std::uint32_t>& loops) {
+    return std::any_of(loops.begin(), loops.end(),
+                       [&](std::uint32_t loop) { return at_[loop].place == Place::spare; });
+  };
+  return static_cast<std::uint32_t>(std::count_if(spares_.begin(), spares_.end(), holds_sts));
+}
+
 const std::vector<std::uint32_t>& LoopPlaces::loops_of(LoopAt source) const {
   static const std::vector<std::uint32_t> kNone;
   const std::vector<std::vector<std::uint32_t>>* lists = nullptr;

@@ -54,6 +54,8 @@ class LoopPlaces {
   // A loop's place (1-based) on the spare needle it was left on, counted as the pattern counts
   // them when it was left: it keeps its number when others are taken off before it.
   std::uint32_t counted_at(std::uint32_t loop) const { return counted_at_[loop]; }
+  // How many sections' spare needles hold loops.
+  std::uint32_t spare_needles_holding_sts() const;
   // The loops on a holder, spare needle or chain, in order.
   const std::vector<std::uint32_t>& loops_of(LoopAt source) const;
 

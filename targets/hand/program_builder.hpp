@@ -165,12 +165,16 @@ class ProgramPatternBuilder {
   // gusset's decreases, a bowl closing at both edges, a lid's middle joined to its sides
   // row by row): the holder goes on a spare needle (two at once at the most) and the row
   // slips its next st from there ("sl1 from spare", or behind the st it is worked with).
-  // Is `holder` one of those for this row?
-  bool waits_for_rows(std::uint32_t holder, const Step& s) const;
+  // Is `holder` one of those for this row? (Or a piece's spare needle, whose sts the rows slip
+  // from there as they are.)
+  bool waits_for_rows(LoopAt holder, const Step& s) const;
 
   // Puts the holders whose sts wait for the rows (waits_for_rows) on spare needles, the st
   // the row takes first at the tip.
   void put_on_spare_needles(const Step& s);
+  // The rows slip the sts of a piece left on its spare needle from there, `first` first.
+  void slip_from_piece_left_on_spare_needle(const Step& s, LoopAt spare, std::uint32_t k,
+                                            std::uint32_t first);
 
   // Before the stitch is worked, the sts it takes from spare needles go onto the left needle;
   // returns how many.
@@ -195,7 +199,7 @@ class ProgramPatternBuilder {
   std::uint32_t spare_slot(std::uint32_t loop) const {
     LoopAt at = places_.at(loop);
     for (std::uint32_t k : {0u, 1u})
-      if (at.place == Place::holder && spare_rows_[k] == at.index) return k;
+      if (at.place != Place::none && spare_rows_[k] == at) return k;
     return kNone;
   }
 
@@ -341,6 +345,15 @@ class ProgramPatternBuilder {
   };
 
   void note_row_end(StitchId st, const PatternRow& r);
+  // A cast-on st whose loop waits along the edge: the cast-on is the edge's row 0, its first
+  // st on the side the cast-on began (as a row going its way).
+  void note_cast_on_end(StitchId st, CourseDirection direction);
+  const RowEnds* ends_of_row_of(StitchId st) const;  // its row's, or its cast-on's; or none
+  // Which edge of its row `maker`'s `loop` waits along. A st that makes it with its wale's
+  // loop says so by their order; one that makes only that loop, by the end of the row it sits
+  // at (a row of one st: either). None: the st is not at that edge.
+  enum class Edge : std::uint8_t { left, right, either };
+  std::optional<Edge> edge_of(StitchId maker, std::uint32_t loop, const RowEnds& ends) const;
 
   // The pick-up that gives `loops` in their order: one in each row, rows numbered one after
   // the other, each from the st at the same edge of its row; none where they are not.
@@ -470,6 +483,7 @@ class ProgramPatternBuilder {
   std::vector<std::uint32_t> row_of_ = std::vector<std::uint32_t>(g_.size(), kNone);
   std::vector<std::uint32_t> number_of_ = std::vector<std::uint32_t>(g_.size(), 0);
   std::vector<RowEnds> row_ends_;
+  std::unordered_map<StitchId, RowEnds> cast_on_ends_;  // cast-on sts with a loop on an edge
   std::vector<std::uint32_t> taker_step_ = std::vector<std::uint32_t>(g_.loops.size(), kNone);
   // Per course step: how many courses its yarn worked before it (0: its yarn's first).
   std::vector<std::uint32_t> course_number_ = std::vector<std::uint32_t>(p_.steps.size(), 0);
@@ -478,9 +492,9 @@ class ProgramPatternBuilder {
   PatternRow pending_;
   bool row_open_ = false, row_forward_ = false, ds_next_ = false;
   bool row_at_marker_after_turn_ = false;
-  bool row_from_marker_ = false;          // the row in the rnd began at the marker
-  bool pm_next_ = false;                  // the next row places the beginning-of-round marker first
-  std::uint32_t spare_rows_[2] = {0, 0};  // the holders on spare needles for rows (0: none)
+  bool row_from_marker_ = false;  // the row in the rnd began at the marker
+  bool pm_next_ = false;          // the next row places the beginning-of-round marker first
+  LoopAt spare_rows_[2];          // the holders (or a piece's spare needle) that rows slip sts from
   std::vector<std::uint32_t> spare_queue_[2];  // their sts, the one slipped next first
   CourseDirection row_dir_ = CourseDirection::left_to_right;
   std::uint32_t pending_takes_ = 0;

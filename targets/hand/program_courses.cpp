@@ -20,6 +20,7 @@ void ProgramPatternBuilder::course(const Step& s) {
   check_met_along_the_row(s, n);
   std::uint32_t takes = 0;
   for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i) {
+    note_region_mark(p_.stitches[i].stitch, r);  // before the sts it slips from spare needles
     std::uint32_t slipped = slip_from_spare_needles(i, n);
     takes += work(s, i, n, r) - slipped;  // the needle's sts the row works
   }
@@ -45,7 +46,6 @@ PatternRow ProgramPatternBuilder::open_row(const Step& s, const Needle& n) const
 std::uint32_t ProgramPatternBuilder::work(const Step& s, std::uint32_t i, Needle& n,
                                           PatternRow& r) {
   StitchId st = p_.stitches[i].stitch;
-  note_region_mark(st, r);
   note_row_end(st, r);
   if (g_.type[st] == T::sco) return cast_on_in_row(i, n);
   if (g_.type[st] == T::tnbo) return bind_off_with_held_st(i, n);
@@ -179,6 +179,7 @@ void ProgramPatternBuilder::ring_course(const Step& s, Needle& n) {
       open_ring_row(s, n, forward);
       if (back) slip_back_across_gap(n, back_across_marker);
     }
+    note_region_mark(p_.stitches[i].stitch, pending_);
     std::uint32_t slipped = slip_from_spare_needles(i, n);
     pending_takes_ += work(s, i, n, pending_) - slipped;
     taken_so_far += on_needle;

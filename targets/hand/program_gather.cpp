@@ -62,11 +62,10 @@ void ProgramPatternBuilder::gather(const Step& s, std::vector<std::uint32_t> met
 
 void ProgramPatternBuilder::let_go_of_used_spare_needles() {
   for (std::uint32_t k : {0u, 1u})
-    if (spare_queue_[k].empty()) spare_rows_[k] = 0;
+    if (spare_queue_[k].empty()) spare_rows_[k] = {};
 }
 
-bool ProgramPatternBuilder::waits_for_rows(std::uint32_t holder, const Step& s) const {
-  const LoopAt at{Place::holder, holder};
+bool ProgramPatternBuilder::waits_for_rows(LoopAt at, const Step& s) const {
   for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i) {
     std::span<const std::uint32_t> taken = taken_by(i);
     auto held = std::count_if(taken.begin(), taken.end(),
@@ -83,28 +82,49 @@ bool ProgramPatternBuilder::waits_for_rows(std::uint32_t holder, const Step& s) 
 
 void ProgramPatternBuilder::put_on_spare_needles(const Step& s) {
   for (std::uint32_t loop : loops_met(s)) {
-    LoopAt holder = places_.at(loop);
-    if (holder.place != Place::holder || spare_slot(loop) != kNone ||
-        !waits_for_rows(holder.index, s))
+    LoopAt source = places_.at(loop);
+    bool holder = source.place == Place::holder;
+    if ((!holder && source.place != Place::spare) || spare_slot(loop) != kNone ||
+        !waits_for_rows(source, s))
       continue;
     if (needle().in_round) turn_in_ring(s, needle());
     if (row_open_) not_yet(s, "puts sts on a spare needle in the middle of a row");
-    std::uint32_t k = spare_rows_[0] == 0 ? 0 : spare_rows_[1] == 0 ? 1 : kNone;
+    std::uint32_t k = spare_rows_[0].place == Place::none   ? 0
+                      : spare_rows_[1].place == Place::none ? 1
+                                                            : kNone;
     if (k == kNone) not_yet(s, "takes sts from a third spare needle");
-    std::vector<std::uint32_t> loops = places_.loops_of(holder);
+    std::vector<std::uint32_t> loops = places_.loops_of(source);
+    if (!holder) {
+      slip_from_piece_left_on_spare_needle(s, source, k, loop);
+      continue;
+    }
     bool from_last = loops.front() != loop;
     if (from_last) std::reverse(loops.begin(), loops.end());
     if (loops.front() != loop) not_yet(s, "takes a holder's sts one at a time, not from an end");
-    PatternSection::Placement p{places_.holder_section(holder.index),
+    PatternSection::Placement p{places_.holder_section(source.index),
                                 static_cast<std::uint32_t>(loops.size()), 0, from_last};
     p.before_row = static_cast<std::uint32_t>(out_.rows.size());
-    p.holder = holder.index;
+    p.holder = source.index;
     p.to_spare = true;
     p.second_spare = k == 1;
     section().placements.push_back(p);
-    spare_rows_[k] = holder.index;
+    spare_rows_[k] = source;
     spare_queue_[k] = std::move(loops);
   }
+}
+
+void ProgramPatternBuilder::slip_from_piece_left_on_spare_needle(const Step& s, LoopAt spare,
+                                                                 std::uint32_t k,
+                                                                 std::uint32_t first) {
+  // "Sl1 from spare" names no needle: it is the one piece that waits on one, its sts taken in
+  // the order they were left there.
+  if (k != 0 || places_.spare_needles_holding_sts() != 1)
+    not_yet(s, "slips sts from a piece's spare needle while another piece waits on one");
+  std::vector<std::uint32_t> loops = places_.loops_of(spare);
+  std::erase_if(loops, [&](std::uint32_t l) { return places_.at(l) != spare; });
+  if (loops.front() != first) not_yet(s, "takes a spare needle's sts from its far end");
+  spare_rows_[k] = spare;
+  spare_queue_[k] = std::move(loops);
 }
 
 std::uint32_t ProgramPatternBuilder::slip_from_spare_needles(std::uint32_t worked, Needle& n) {
@@ -503,8 +523,9 @@ void ProgramPatternBuilder::index_loops_met() {
   std::vector<std::uint32_t> courses_of_yarn(needle_of_yarn_.size(), 0);  // so far
   for (std::uint32_t i = 0; i < p_.steps.size(); ++i) {
     const Step& s = p_.steps[i];
+    bool picks_up = s.kind == StepKind::cast_on && s.picked_up > 0;
     if (s.kind != StepKind::course && s.kind != StepKind::bind_off &&
-        s.kind != StepKind::three_needle_bind_off)
+        s.kind != StepKind::three_needle_bind_off && !picks_up)
       continue;
     course_number_[i] = courses_of_yarn[s.yarn]++;
     std::vector<std::uint32_t> met = loops_met(s);
@@ -610,29 +631,61 @@ void ProgramPatternBuilder::note_row_end(StitchId st, const PatternRow& r) {
   number_of_[st] = r.number;
 }
 
+void ProgramPatternBuilder::note_cast_on_end(StitchId st, CourseDirection direction) {
+  RowEnds& ends = cast_on_ends_[st];
+  ends.first = p_.stitches[p_.steps[step_].stitches.begin].stitch;
+  ends.last = p_.stitches[p_.steps[step_].stitches.end - 1].stitch;
+  ends.side = direction == CourseDirection::right_to_left ? Side::rs : Side::ws;
+}
+
+const ProgramPatternBuilder::RowEnds* ProgramPatternBuilder::ends_of_row_of(StitchId st) const {
+  if (row_of_[st] != kNone) return &row_ends_[row_of_[st]];
+  auto cast_on = cast_on_ends_.find(st);
+  return cast_on == cast_on_ends_.end() ? nullptr : &cast_on->second;
+}
+
+std::optional<ProgramPatternBuilder::Edge> ProgramPatternBuilder::edge_of(
+    StitchId maker, std::uint32_t loop, const RowEnds& ends) const {
+  bool at_right = maker == (ends.side == Side::rs ? ends.first : ends.last);
+  bool at_left = maker == (ends.side == Side::rs ? ends.last : ends.first);
+  auto made = made_by(p_.worked_at[maker]);
+  if (made.size() > 1) {  // the loop across the edge made after its wale's is on the right
+    bool right = made.back().loop == loop;
+    if (!(right ? at_right : at_left)) return std::nullopt;
+    return right ? Edge::right : Edge::left;
+  }
+  if (at_right && at_left) return Edge::either;
+  if (!at_right && !at_left) return std::nullopt;
+  return at_right ? Edge::right : Edge::left;
+}
+
 std::optional<PatternSection::PickUp> ProgramPatternBuilder::pick_up_of(
     LoopAt source, std::span<const std::uint32_t> loops) const {
   PatternSection::PickUp p;
   p.section = source.index;
+  std::optional<bool> right_edge;  // known once a st says which edge it is on
   for (std::size_t i = 0; i < loops.size(); ++i) {
     StitchId maker = g_.loops[loops[i]].maker;
-    if (places_.at(loops[i]) != source || maker == kNoStitch || row_of_[maker] == kNone)
-      return std::nullopt;
-    auto made = made_by(p_.worked_at[maker]);
-    bool right = made.size() > 1 && made.back().loop == loops[i];
-    const RowEnds& ends = row_ends_[row_of_[maker]];
-    if (maker != ((ends.side == Side::rs) == right ? ends.first : ends.last)) return std::nullopt;
-    std::uint32_t row = number_of_[maker];
+    const RowEnds* ends = maker == kNoStitch ? nullptr : ends_of_row_of(maker);
+    if (places_.at(loops[i]) != source || !ends) return std::nullopt;
+    std::optional<Edge> edge = edge_of(maker, loops[i], *ends);
+    if (!edge) return std::nullopt;
+    if (*edge != Edge::either) {
+      bool right = *edge == Edge::right;
+      if (right != right_edge.value_or(right)) return std::nullopt;
+      right_edge = right;
+    }
+    std::uint32_t row = number_of_[maker];  // 0: the cast-on
     if (i == 0) {
-      p.right = right;
       p.from_row = p.to_row = row;
       continue;
     }
     bool up = row == p.to_row + 1 && (i == 1 || p.from_row < p.to_row);
     bool down = row + 1 == p.to_row && (i == 1 || p.from_row > p.to_row);
-    if (right != p.right || !(up || down)) return std::nullopt;
+    if (!(up || down)) return std::nullopt;
     p.to_row = row;
   }
+  p.right = right_edge.value_or(true);
   return p;
 }
 

@@ -45,9 +45,12 @@ HandPattern ProgramPatternBuilder::run() && {
   for (step_ = 0; step_ < p_.steps.size(); ++step_) {
     const Step& s = p_.steps[step_];
     switch (s.kind) {
-      case StepKind::cast_on:
-        cast_on(s);
-        break;
+      case StepKind::cast_on:  // one that picks up along an edge is worked as a row
+        if (s.picked_up == 0) {
+          cast_on(s);
+          break;
+        }
+        [[fallthrough]];
       case StepKind::course:
       case StepKind::bind_off:
         course(s);
@@ -196,8 +199,11 @@ void ProgramPatternBuilder::cast_on(const Step& s) {
   std::vector<std::uint32_t> chain;
   for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i)
     for (const PlacedLoop& m : made_by(i)) {
-      if (m.place == LoopPlace::along_edge)
-        not_yet(s, "casts on a st that makes a loop along an edge, to be picked up");
+      if (m.place == LoopPlace::along_edge) {
+        note_cast_on_end(p_.stitches[i].stitch, s.direction);
+        places_.set({&m.loop, 1}, {Place::edge, n.section});
+        continue;
+      }
       (m.place == LoopPlace::in_run ? n.ring : chain).push_back(m.loop);
     }
   if (!n.in_round) {  // a line, left to right seen from the RS; the yarn at its end
