@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cstdlib>
 #include <exception>
 #include <ostream>
 
@@ -12,7 +13,6 @@
 #include "hand/pattern_reader.hpp"
 #include "hand/pattern_writers.hpp"
 #include "hand/program_pattern.hpp"
-#include "hand/stitch_working.hpp"
 
 namespace skein {
 namespace hand {
@@ -75,12 +75,11 @@ HandPattern build_pattern(const Compilation& c, const TargetOptions& options) {
   Builder builder = builder_of(options);
   if (builder == Builder::schedule)
     return build_hand_pattern(c, turn_method_of(options), rounds_of(options));
-  check_stitch_types(c.knit);
   std::exception_ptr refused;
   try {
     return build_pattern_from_program(c, turn_method_of(options), rounds_of(options));
   } catch (const UnsupportedError&) {
-    if (builder == Builder::program) throw;
+    if (builder == Builder::program || !std::getenv("SKEIN_OLD")) throw;
     refused = std::current_exception();
   }
   // Where neither can, the program's builder says why: it is the one that stays.

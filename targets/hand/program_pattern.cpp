@@ -18,6 +18,7 @@
 #include "hand/piece_names.hpp"
 #include "hand/program_builder.hpp"
 #include "hand/region_markers.hpp"
+#include "hand/stitch_working.hpp"
 
 namespace skein::hand {
 namespace from_program {
@@ -365,6 +366,7 @@ void ProgramPatternBuilder::bind_off_with_its_yarn(const PatternSection& join,
 }  // namespace from_program
 
 HandPattern build_pattern_from_program(const Compilation& c, TurnMethod turns, Rounds rounds) {
+  check_stitch_types(c.knit);
   bool mirror = rounds == Rounds::mirror_most &&
                 stitches_in_rounds_going(c.program, CourseDirection::left_to_right) >
                     stitches_in_rounds_going(c.program, CourseDirection::right_to_left);
