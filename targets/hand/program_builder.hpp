@@ -15,6 +15,7 @@
 #include <span>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "common/error.hpp"
@@ -359,6 +360,9 @@ class ProgramPatternBuilder {
   // the other, each from the st at the same edge of its row; none where they are not.
   std::optional<PatternSection::PickUp> pick_up_of(LoopAt source,
                                                    std::span<const std::uint32_t> loops) const;
+  // The pick-up of the longest start of `loops` that is one; and how many loops that is.
+  std::pair<PatternSection::PickUp, std::size_t> longest_pick_up(
+      LoopAt source, std::span<const std::uint32_t> loops) const;
 
   // A piece that starts on loops picked up along another's edge: the knitter picks them up,
   // and its first course works them, the last picked up first.

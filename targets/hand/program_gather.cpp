@@ -661,32 +661,35 @@ std::optional<ProgramPatternBuilder::Edge> ProgramPatternBuilder::edge_of(
 
 std::optional<PatternSection::PickUp> ProgramPatternBuilder::pick_up_of(
     LoopAt source, std::span<const std::uint32_t> loops) const {
+  auto [p, count] = longest_pick_up(source, loops);
+  if (count == 0 || count != loops.size()) return std::nullopt;
+  return p;
+}
+
+std::pair<PatternSection::PickUp, std::size_t> ProgramPatternBuilder::longest_pick_up(
+    LoopAt source, std::span<const std::uint32_t> loops) const {
   PatternSection::PickUp p;
   p.section = source.index;
   std::optional<bool> right_edge;  // known once a st says which edge it is on
-  for (std::size_t i = 0; i < loops.size(); ++i) {
+  std::size_t i = 0;
+  for (; i < loops.size(); ++i) {
     StitchId maker = g_.loops[loops[i]].maker;
     const RowEnds* ends = maker == kNoStitch ? nullptr : ends_of_row_of(maker);
-    if (places_.at(loops[i]) != source || !ends) return std::nullopt;
+    if (places_.at(loops[i]) != source || !ends) break;
     std::optional<Edge> edge = edge_of(maker, loops[i], *ends);
-    if (!edge) return std::nullopt;
-    if (*edge != Edge::either) {
-      bool right = *edge == Edge::right;
-      if (right != right_edge.value_or(right)) return std::nullopt;
-      right_edge = right;
-    }
+    if (!edge) break;
+    bool right = *edge == Edge::right;
+    if (*edge != Edge::either && right != right_edge.value_or(right)) break;
     std::uint32_t row = number_of_[maker];  // 0: the cast-on
-    if (i == 0) {
-      p.from_row = p.to_row = row;
-      continue;
-    }
     bool up = row == p.to_row + 1 && (i == 1 || p.from_row < p.to_row);
     bool down = row + 1 == p.to_row && (i == 1 || p.from_row > p.to_row);
-    if (!(up || down)) return std::nullopt;
+    if (i > 0 && !(up || down)) break;
+    if (*edge != Edge::either) right_edge = right;
+    if (i == 0) p.from_row = row;
     p.to_row = row;
   }
   p.right = right_edge.value_or(true);
-  return p;
+  return {p, i};
 }
 
 std::vector<std::uint32_t> ProgramPatternBuilder::start_from_pick_up(
@@ -707,16 +710,20 @@ std::vector<std::uint32_t> ProgramPatternBuilder::start_from_pick_up(
 void ProgramPatternBuilder::pick_up_into_rnd(const Step& s, LoopAt source,
                                              std::span<const std::uint32_t> block,
                                              std::uint32_t after) {
-  std::optional<PatternSection::PickUp> p = pick_up_of(source, block);
-  if (!p || !section().in_round)
-    not_yet(s, fmt::format("picks up {} loops along an edge into a row, or not one in each "
-                           "row of an edge",
-                           block.size()));
-  PatternSection::Placement placed{p->section, static_cast<std::uint32_t>(block.size()), after,
-                                   false};
-  placed.before_row = static_cast<std::uint32_t>(out_.rows.size());
-  placed.edge = p;
-  section().placements.push_back(placed);
+  // One pick-up per edge (a rnd goes down one edge of a flap and up the other).
+  while (!block.empty()) {
+    auto [p, count] = longest_pick_up(source, block);
+    if (count == 0 || !section().in_round)
+      not_yet(s, fmt::format("picks up {} loops along an edge into a row, or not one in each "
+                             "row of an edge",
+                             block.size()));
+    PatternSection::Placement placed{p.section, static_cast<std::uint32_t>(count), after, false};
+    placed.before_row = static_cast<std::uint32_t>(out_.rows.size());
+    placed.edge = p;
+    section().placements.push_back(placed);
+    block = block.subspan(count);
+    after += static_cast<std::uint32_t>(count);
+  }
 }
 
 }  // namespace skein::hand::from_program
