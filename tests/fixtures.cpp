@@ -515,22 +515,26 @@ KnitGraph flat_piece_taken_up_on_a_chain_graph() {
     r.loop(c[i], a[i], 0);
     r.loop(g[i], j[i], 0);
   }
-  // The edges beside the hole: Piece 1's on the right of its sts, the new yarn's on the left.
+  // The edges beside the hole: Piece 1's left one (b1, d1), the new yarn's right one (e0, h0).
+  // A st at a left edge makes its loop across it first, one at a right edge last.
+  auto wale = [&](StitchId maker, StitchId taker, bool across_first) {
+    r.g.loops.push_back({maker, taker, LoopKind::wale, static_cast<std::uint8_t>(across_first), 0});
+  };
   for (int i = 0; i < 2; ++i) {
     r.loop(a[i], b[i], 0);
-    r.loop(b[i], d[i], 0);
-    r.loop(d[i], g[i], 0);
+    wale(b[i], d[i], i == 1);
+    wale(d[i], g[i], i == 1);
     r.loop(a[4 + i], e[i], 0);
-    r.g.loops.push_back({e[i], h[i], LoopKind::wale, static_cast<std::uint8_t>(i == 0), 0});
-    r.g.loops.push_back({h[i], g[4 + i], LoopKind::wale, static_cast<std::uint8_t>(i == 0), 0});
+    wale(e[i], h[i], false);
+    wale(h[i], g[4 + i], false);
     r.loop(co[i], k[1 - i], 0);
     r.g.loops.push_back({co[i], g[2 + i], LoopKind::split, 1, 0});
     r.loop(a[2 + i], rnd[2 + i], 0);
   }
-  across(d[1], 1, rnd[0]);
-  across(b[1], 1, rnd[1]);
-  across(e[0], 0, rnd[4]);
-  across(h[0], 0, rnd[5]);
+  across(d[1], 0, rnd[0]);
+  across(b[1], 0, rnd[1]);
+  across(e[0], 1, rnd[4]);
+  across(h[0], 1, rnd[5]);
   for (int i = 0; i < 6; ++i) r.loop(rnd[i], k[2 + i], 0);
   for (int i = 0; i < 8; ++i) r.loop(k[i], m[i], 0);
   r.finish({rnd[5], k[7]}, {c[5], a[0], b[1], d[0], g[5], e[1], h[0]});

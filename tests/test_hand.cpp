@@ -161,8 +161,8 @@ TEST(HandTarget, AHeelTurnOnANewYarnIsProvenInEveryFormat) {
 // order it worked them, and the piece works on with the others.
 TEST(HandTarget, ANewYarnOnASetAsidePiecesStsIsProvenInEveryFormat) {
   expect_proven_with_lines(testing::new_yarn_on_set_aside_needle_graph(), "set-aside needle",
-                           {"**Row 1 (RS):** Knit.\n\nSlip sts 1–2 of Row 1 to holder 1 — 2 "
-                            "sts.\n\n**Row 2 (WS):** Purl.\n\n**Row 3 (RS):** Knit.\n\nLeave "
+                           {"**Row 1 (WS):** Purl.\n\nSlip sts 1–2 of Row 1 to holder 1 — 2 "
+                            "sts.\n\n**Row 2 (RS):** Knit.\n\n**Row 3 (WS):** Purl.\n\nLeave "
                             "the 2 sts on the needle and set the yarn aside (do not cut it).\n",
                             "Join a new yarn to the 2 sts of holder 1, the last st of its last "
                             "row at the tip.\n",

@@ -68,14 +68,17 @@ std::optional<Lie> LoopPlaces::lie(LoopAt source, std::span<const std::uint32_t>
   auto first = std::find(on.begin(), on.end(), met.empty() ? 0u : met.front());
   if (met.size() != n || n == 0 || first == on.end()) return std::nullopt;
   auto k = static_cast<std::size_t>(first - on.begin());
+  std::optional<Lie> found;
   for (bool down : {false, true}) {
     bool same = true;
     for (std::size_t i = 0; i < n && same; ++i) same = met[i] == on[(down ? k + n - i : k + i) % n];
     if (!same) continue;
     std::size_t tip = down ? n - 1 : 0;
-    return Lie{down, k == tip ? 0u : static_cast<std::uint32_t>(k + 1)};
+    Lie lie{down, k == tip ? 0u : static_cast<std::uint32_t>(k + 1)};
+    // Two loops lie both ways: from the end the knitter takes first, rather than round.
+    if (!found || (found->at != 0 && lie.at == 0)) found = lie;
   }
-  return std::nullopt;
+  return found;
 }
 
 }  // namespace skein::hand
