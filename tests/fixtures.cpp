@@ -374,7 +374,9 @@ KnitGraph heel_turn_graph() {
   auto loop = [&](StitchId maker, StitchId taker, std::uint8_t slot, LoopKind kind) {
     g.loops.push_back({maker, taker, kind, 0, slot});
   };
-  const LoopKind w = LoopKind::wale, across = LoopKind::perpendicular;
+  // The decreases across the gap take live loops from the needle beside them, at their
+  // makers' tops: wale loops (a perpendicular one would wait along an edge to be picked up).
+  const LoopKind w = LoopKind::wale, across = LoopKind::wale;
   for (int i = 0; i < 6; ++i) loop(c[i], a[i], 0, w);
   loop(a[0], b[0], 0, w);
   loop(a[2], b[1], 0, across);  // rows run right to left seen from the RS: a2 is left of a1
@@ -441,8 +443,8 @@ KnitGraph heel_turn_on_new_yarn_graph() {
   auto e = r.row_of(2, T::bo, 4);     // over d0, d1
   r.link({c[0], c[1], c[2], c[3], c[4], c[5], a[5], a[4], a[3], a[2], a[1], a[0]});
   r.link({b[0], b[1], d[1], d[0], e[0], e[1]});
-  auto across = [&](StitchId maker, StitchId taker, std::uint8_t slot) {
-    r.g.loops.push_back({maker, taker, LoopKind::perpendicular, 0, slot});
+  auto across = [&](StitchId maker, StitchId taker, std::uint8_t slot) {  // from beside
+    r.g.loops.push_back({maker, taker, LoopKind::wale, 0, slot});
   };
   for (int i = 0; i < 6; ++i) r.loop(c[i], a[i], 0);
   // Rows run right to left seen from the RS (a RS row takes its second slot first).

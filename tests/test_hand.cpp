@@ -147,12 +147,12 @@ void expect_proven_with_lines(KnitGraph graph, const char* name,
 TEST(HandTarget, AHeelTurnOnANewYarnIsProvenInEveryFormat) {
   expect_proven_with_lines(
       testing::heel_turn_on_new_yarn_graph(), "heel turn",
-      {"Slip sts 1–2 of Row 1 to holder 1, sts 3–4 to holder 2 and sts 5–6 to "
-       "holder 3.\n\nCut the yarn.\n",
-       "Join a new yarn to the 2 sts of holder 2, the last st of its last row at the tip.\n",
-       "Put the 2 sts of holder 3 on a spare needle, the first st of its last row at the tip.\n",
-       "**Row 1 (RS):** Sl1 from spare, k2tog, sl1 from 2nd spare behind, k2tog.\n",
-       "**Row 2 (WS):** Sl1 from 2nd spare, p2tog, sl1 from spare behind, p2tog.\n",
+      {"Slip st 1 of Row 1 to holder 1, sts 2–5 to holder 2 and st 6 to holder 3.\n\nCut the "
+       "yarn.\n",
+       "Join a new yarn to the 4 sts of holder 2, the last st of its last row at the tip.\n",
+       "Put the 1 st of holder 3 on a second spare needle, the first st of its last row at the "
+       "tip.\n",
+       "**Row 2 (WS):** Sl1 from spare, p2tog, sl1 from 2nd spare behind, p2tog.\n",
        "counts them in the order the row worked them"});
 }
 

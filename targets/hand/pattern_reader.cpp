@@ -277,13 +277,14 @@ class SentenceReader {
     return after;
   }
 
-  // "Put the 10 sts of holder 2 on a [second] spare needle, the first st of its last rnd at the
-  // tip".
+  // "Put the 10 sts (the 1 st) of holder 2 on a [second] spare needle, the first st of its last
+  // rnd at the tip".
   void to_spare(Cursor& c) {
     Step step{Step::Kind::to_spare, line_no_};
     c.eat("the");
     step.count = need_number(c, "the number of sts");
-    need_words(c, {"sts", "of", "holder"}, "'sts of holder N'");
+    need(c.eat("sts") || (step.count == 1 && c.eat("st")), c, "'sts of holder N'");
+    need_words(c, {"of", "holder"}, "'sts of holder N'");
     step.number = need_number(c, "a holder number");
     need(c.eat("on") && c.eat("a"), c, "'on a spare needle' or 'on a second spare needle'");
     step.last = c.eat("second") ? 1 : 0;

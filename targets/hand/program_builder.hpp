@@ -49,6 +49,9 @@ struct Needle {
   // The op that slipped the marker in the row in the rnd worked last (kNone: none): a rnd
   // begun where the yarn is turns it into "rm".
   std::uint32_t marker_slipped_at = 0xffffffffu;
+  // The first op of the row in the rnd worked last that began at the marker (kNone: none): a
+  // row that decreases across the marker later removes it there ("Rm, k1, k2tog, turn").
+  std::uint32_t row_began_at_marker = 0xffffffffu;
 };
 
 class ProgramPatternBuilder {
@@ -407,6 +410,12 @@ class ProgramPatternBuilder {
 
   // A course going the other way from the last turns the work: the row in the rnd ends.
   void turn_in_ring(const Step& s, Needle& n);
+  // A short row's decrease takes the sts on both sides of the beginning-of-round marker (a heel
+  // turned across it): the marker came off where it was last at the tip of the needle, and the
+  // next rnd places it anew.
+  bool decreases_across_marker(std::uint32_t worked, const Needle& n) const;
+  void take_marker_off(const Step& s, Needle& n);
+  void insert_op(std::uint32_t at, HandOp op);  // into ops written, the rows after moved on
 
   // The work turns right after a rnd ended at the marker: that rnd ends with the turn.
   void turn_after_last_rnd();

@@ -172,6 +172,7 @@ void ProgramPatternBuilder::ring_course(const Step& s, Needle& n) {
     if (at_marker && forward && rnd_ends) close_ring_row(s, n, false);
     if (at_marker && (!forward || !rnd_ends)) {
       n.marker_slipped_at = static_cast<std::uint32_t>(out_.ops.size());
+      n.row_began_at_marker = kNone;
       out_.ops.push_back(HandOp::sm);
     }
     if (!row_open_) {
@@ -179,6 +180,8 @@ void ProgramPatternBuilder::ring_course(const Step& s, Needle& n) {
       open_ring_row(s, n, forward);
       if (back) slip_back_across_gap(n, back_across_marker);
     }
+    if (row_from_marker_ && pending_takes_ == 0) n.row_began_at_marker = pending_.first_op;
+    if (s.shape != RowShape::closed && decreases_across_marker(i, n)) take_marker_off(s, n);
     note_region_mark(p_.stitches[i].stitch, pending_);
     std::uint32_t slipped = slip_from_spare_needles(i, n);
     pending_takes_ += work(s, i, n, pending_) - slipped;
@@ -194,6 +197,46 @@ void ProgramPatternBuilder::ring_course(const Step& s, Needle& n) {
   if (s.run_shape == RunShape::line && !n.ring.empty() &&
       std::any_of(stitches_of(s).begin(), stitches_of(s).end(), binds_off))
     n.opened = true;
+}
+
+bool ProgramPatternBuilder::decreases_across_marker(std::uint32_t worked, const Needle& n) const {
+  if (n.marker_off || n.ring.size() < 3) return false;
+  const auto last = static_cast<std::uint32_t>(n.ring.size() - 1);
+  bool first_st = false, last_st = false;
+  for (std::uint32_t l : taken_by(worked)) {
+    if (spare_slot(l) != kNone) continue;
+    first_st = first_st || pos_[l] == 0;
+    last_st = last_st || pos_[l] == last;
+  }
+  return first_st && last_st;
+}
+
+void ProgramPatternBuilder::take_marker_off(const Step& s, Needle& n) {
+  // Where the marker was at the tip of the needle last: slipped there, or a row began there.
+  if (n.marker_slipped_at != kNone) {
+    out_.ops[n.marker_slipped_at] = HandOp::rm;
+  } else if (n.row_began_at_marker != kNone) {
+    insert_op(n.row_began_at_marker, HandOp::rm);
+  } else {
+    not_yet(s, "decreases across the beginning-of-round marker");
+  }
+  n.marker_off = true;
+}
+
+void ProgramPatternBuilder::insert_op(std::uint32_t at, HandOp op) {
+  out_.ops.insert(out_.ops.begin() + at, op);
+  auto shift = [&](std::uint32_t& index, bool at_too) {
+    if (index != kNone && (index > at || (at_too && index == at))) ++index;
+  };
+  for (PatternRow& r : out_.rows) {
+    shift(r.first_op, false);  // a row that begins there begins with it
+    shift(r.end_op, false);
+  }
+  if (row_open_) shift(pending_.first_op, false);
+  for (Needle& other : needles_) {
+    shift(other.marker_slipped_at, true);
+    shift(other.row_began_at_marker, false);
+  }
 }
 
 void ProgramPatternBuilder::turn_in_ring(const Step& s, Needle& n) {
@@ -279,7 +322,7 @@ void ProgramPatternBuilder::close_ring_row(const Step& s, Needle& n, bool turn) 
     out_.ops.insert(out_.ops.begin() + r.first_op, HandOp::sm);
     n.marker_slipped_at = r.first_op;
   }
-  if (!turn) n.marker_slipped_at = kNone;
+  if (!turn) n.marker_slipped_at = n.row_began_at_marker = kNone;
   r.end_op = static_cast<std::uint32_t>(out_.ops.size());
   r.sts_after = n.live;
   r.bind_off = n.live == 0 && std::all_of(out_.ops.begin() + r.first_op, out_.ops.end(),

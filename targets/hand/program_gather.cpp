@@ -346,7 +346,7 @@ LoopAt ProgramPatternBuilder::hold_parts_of_spare_needle(std::uint32_t section, 
   const LoopAt spare_needle{Place::spare, section};
   std::vector<std::uint32_t> spare = places_.loops_of(spare_needle);
   std::optional<PatternSection::Holding> counted = counting_of_spare_needle(sec, spare);
-  if (!counted || used_up_by_rows(spare)) return spare_needle;
+  if (!counted) return spare_needle;
   // The sts keep the numbers they had when the piece was left, so each part is a run of
   // those numbers, and all parts go to holders in one sentence, in order, but the one that
   // goes round past the end, which stays on the spare needle for a rnd to place from its
