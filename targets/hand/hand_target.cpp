@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <cstdlib>
 #include <exception>
 #include <ostream>
 
@@ -79,7 +78,7 @@ HandPattern build_pattern(const Compilation& c, const TargetOptions& options) {
   try {
     return build_pattern_from_program(c, turn_method_of(options), rounds_of(options));
   } catch (const UnsupportedError&) {
-    if (builder == Builder::program || !std::getenv("SKEIN_OLD")) throw;
+    if (builder == Builder::program) throw;
     refused = std::current_exception();
   }
   // Where neither can, the program's builder says why: it is the one that stays.

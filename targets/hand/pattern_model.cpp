@@ -1,6 +1,4 @@
 #include "hand/pattern_model.hpp"
-#include "hand/program_pattern.hpp"
-#include <cstdlib>
 
 #include <fmt/format.h>
 
@@ -1819,7 +1817,6 @@ class PatternBuilder {
 }  // namespace
 
 HandPattern build_hand_pattern(const Compilation& c, TurnMethod turns, Rounds rounds) {
-  if (!std::getenv("SKEIN_OLD")) return build_pattern_from_program(c, turns, rounds);
   check_supported(c);
   HandPattern pattern = PatternBuilder(c, turns, rounds).run();
   name_pieces(c.knit, c.yarns, pattern);
