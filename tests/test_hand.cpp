@@ -204,7 +204,7 @@ TEST(HandTarget, AFlatPieceJoinedInTheRndByItsOwnEdgesIsProvenInEveryFormat) {
 TEST(HandTarget, AStripGoingRoundACornerIntoTheRndIsProvenInEveryFormat) {
   expect_proven_with_lines(
       testing::corner_strip_graph(), "corner strip",
-      {"**Row 3 (RS):** K3, do not turn.\n\nSlip the 3 sts of Row 3 to holder 1 \u2014 2 "
+      {"**Row 3 (RS):** K3, do not turn.\n\nSlip sts 1\u20133 of Row 3 to holder 1 \u2014 2 "
        "sts.\n\nPm and join to work in the rnd",
        "onto the needle after the first 5 sts of the rnd \u2014 8 sts.\n\n**Rnd 4:** Knit.\n"});
 }

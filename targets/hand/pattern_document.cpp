@@ -457,13 +457,14 @@ class InstructionWriter {
                        start.chain ? "'s chain" : "", start.from_last ? "last" : "first");
   }
 
-  static std::string finish_text(const PatternSection& sec) {
+  std::string finish_text(const PatternSection& sec) const {
     if (sec.set_aside)
       return fmt::format("Leave the {} on the needle and set the yarn aside (do not cut it).",
                          sts(sec.live_at_end));
     if (sec.left_live && sec.live_at_end != 0)
       return fmt::format("Leave the {} on a spare needle and cut the yarn.", sts(sec.live_at_end));
-    if (parted_between_pieces(sec)) return "Cut the yarn.";
+    bool bound_off = sec.end_row > sec.first_row && p_.rows[sec.end_row - 1].bind_off;
+    if (parted_between_pieces(sec) && !bound_off) return "Cut the yarn.";
     return "Fasten off.";
   }
 

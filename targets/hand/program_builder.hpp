@@ -225,9 +225,12 @@ class ProgramPatternBuilder {
   // A flat piece whose yarn goes on to work in the rnd on sts from elsewhere only (a set-in
   // sweater's back, whose yarn goes on to the sleeve; the teapot's strip going on as a tube):
   // the sts of its last row go to a holder ("Slip the 75 sts of Row 30 to holder 4"), and the
-  // rnd is made of sts placed and picked up onto the empty needle, from a new marker.
+  // rnd is made of sts placed and picked up onto the empty needle, from a new marker. Or the
+  // rnd takes all the needle's sts where they are (those a short row left, between the edges
+  // of a strip going round a corner): it returns them, in the order met.
   // The course's loops are marked in in_met_.
-  void join_flat_piece_in_the_rnd(const Step& s);
+  std::vector<std::uint32_t> join_flat_piece_in_the_rnd(const Step& s,
+                                                        const std::vector<std::uint32_t>& met);
 
   // A flat piece's next row, all of whose own sts it works, takes others placed among them:
   // its own sts are those ahead once it turns, in the order it meets them.
@@ -464,6 +467,8 @@ class ProgramPatternBuilder {
   // them, counted in the order the last row worked them; only where some of its own stay.
   // Before the course gathers (needle_for): a needle it lays out holds only its own loops.
   void hold_what_others_work(const Step& s, Needle& n);
+  // The place on the needle [begin, end) of the sts the last row worked (a short row's).
+  std::pair<std::uint32_t, std::uint32_t> last_rows_sts(const Needle& n) const;
 
   // A flat row meets its loops side by side along the line from where the yarn is.
   void check_met_along_the_row(const Step& s, const Needle& n) const;

@@ -427,24 +427,51 @@ void ProgramPatternBuilder::hold_what_others_work(const Step& s, Needle& n) {
   if (std::none_of(n.ring.begin(), n.ring.end(), others_take)) return;
   // Where none stay, the piece is left whole (or joined in the rnd) as it is.
   if (std::all_of(n.ring.begin(), n.ring.end(), others_take)) return;
-  if (!n.worked || n.ahead != 0 || out_.rows.size() == section().first_row)
-    not_yet(s, "leaves sts to another yarn that its last row did not work to the end");
-  std::vector<std::uint32_t> order = n.ring;  // as the last row worked them
-  if (n.last == CourseDirection::right_to_left) std::reverse(order.begin(), order.end());
+  if (!n.worked || out_.rows.size() == section().first_row)
+    not_yet(s, "leaves sts to another yarn before its first row");
+  // The sts counted are the last row's: all of the needle's, or after a short row (a strip
+  // going round a corner), those it worked, the others staying where they wait.
+  auto [lo, hi] =
+      n.ahead == 0 ? std::pair<std::uint32_t, std::uint32_t>{0, n.ring.size()} : last_rows_sts(n);
+  for (std::uint32_t i = 0; i < n.ring.size(); ++i)
+    if ((i < lo || i >= hi) && others_take(n.ring[i]))
+      not_yet(s, "leaves sts to another yarn that its last row did not work");
+  std::vector<std::uint32_t> order(n.ring.begin() + lo, n.ring.begin() + hi);
+  bool right_to_left = n.last == CourseDirection::right_to_left;
+  if (right_to_left) std::reverse(order.begin(), order.end());  // as the last row worked them
   std::vector<std::uint32_t> stay = hold_blocks(
       order, [&](std::uint32_t l) { return !others_take(l); }, true);
+  if (right_to_left) std::reverse(stay.begin(), stay.end());
   std::uint32_t before_gap = 0, held = 0;
-  for (std::uint32_t i = 0; i < n.ring.size(); ++i) {
+  for (std::uint32_t i = lo; i < hi; ++i) {
     bool leaves = others_take(n.ring[i]);
     before_gap += leaves && i < n.gap;
     if (leaves) held += hand_sts({n.ring.data() + i, 1});
   }
-  if (n.last == CourseDirection::right_to_left) std::reverse(stay.begin(), stay.end());
+  stay.insert(stay.begin(), n.ring.begin(), n.ring.begin() + lo);
+  stay.insert(stay.end(), n.ring.begin() + hi, n.ring.end());
   n.ring = std::move(stay);
   n.gap -= before_gap;
   n.live -= held;
   n.behind -= held;
   index_ring(n);
+}
+
+std::pair<std::uint32_t, std::uint32_t> ProgramPatternBuilder::last_rows_sts(
+    const Needle& n) const {
+  const auto last_row = static_cast<std::uint32_t>(out_.rows.size() - 1);
+  auto of_last_row = [&](std::uint32_t l) {
+    StitchId maker = g_.loops[l].maker;
+    return maker != kNoStitch && row_of_[maker] == last_row;
+  };
+  // They lie side by side, ending at the yarn.
+  std::uint32_t lo = n.gap, hi = n.gap;
+  if (n.last == CourseDirection::right_to_left) {
+    while (hi < n.ring.size() && of_last_row(n.ring[hi])) ++hi;
+  } else {
+    while (lo > 0 && of_last_row(n.ring[lo - 1])) --lo;
+  }
+  return {lo, hi};
 }
 
 void ProgramPatternBuilder::check_met_along_the_row(const Step& s, const Needle& n) const {

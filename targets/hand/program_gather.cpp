@@ -41,8 +41,7 @@ void ProgramPatternBuilder::gather(const Step& s, std::vector<std::uint32_t> met
   }
   for (std::uint32_t l : met) in_met_[l] = 1;
   bool joined_here = own && round && !needle().in_round;
-  if (joined_here) join_flat_piece_in_the_rnd(s);
-  std::vector<std::uint32_t> host = joined_here ? std::vector<std::uint32_t>{}
+  std::vector<std::uint32_t> host = joined_here ? join_flat_piece_in_the_rnd(s, met)
                                     : !own      ? join_to_first_source(s, met, round)
                                     : round     ? hold_what_it_leaves(s)
                                                 : row_ahead(s);
@@ -272,32 +271,55 @@ void ProgramPatternBuilder::begin_rnd_at_yarn(const Step& s, Needle& n) {
   index_ring(n);
 }
 
-void ProgramPatternBuilder::join_flat_piece_in_the_rnd(const Step& s) {
+std::vector<std::uint32_t> ProgramPatternBuilder::join_flat_piece_in_the_rnd(
+    const Step& s, const std::vector<std::uint32_t>& met) {
   Needle& n = needle();
   PatternSection& sec = section();
   auto row_of = [&](std::uint32_t l) {
     StitchId maker = g_.loops[l].maker;
     return maker == kNoStitch ? kNone : row_of_[maker];
   };
-  std::uint32_t last_row = row_of(n.ring.front());
+  // The row that made the needle's sts; or, where a short row left only cast-on sts there, the
+  // last row written.
+  std::uint32_t last_row = kNone;
+  for (std::uint32_t l : n.ring) last_row = last_row == kNone ? row_of(l) : last_row;
+  if (last_row == kNone && out_.rows.size() > sec.first_row)
+    last_row = static_cast<std::uint32_t>(out_.rows.size() - 1);
   bool worked_since = last_row < sec.first_row && out_.rows.size() > sec.first_row;
   if (row_open_ || last_row == kNone || worked_since || sec.joined_in_rnd_at)
     not_yet(s, "joins a flat piece in the rnd after rows of its own that are not its last");
-  bool keeps_some = false, older = false;
+  std::size_t kept = 0;
+  bool older = false;
   for (std::uint32_t l : n.ring) {
-    keeps_some = keeps_some || in_met_[l];
+    kept += in_met_[l];
     older = older || row_of(l) != last_row;
   }
-  if (keeps_some || older)
-    not_yet(s, "joins a flat piece in the rnd with sts of its own, or of rows before its last");
+  // The rnd takes all the needle's sts where they are (the sts a short row left, between a
+  // strip's edges), or none: they go to a holder, to be placed.
+  bool keeps_all = kept == n.ring.size();
+  if ((kept > 0 && !keeps_all) || (!keeps_all && older))
+    not_yet(s,
+            "joins a flat piece in the rnd with some sts of its own, or of rows before its last");
   // The rnd goes on the way the last row went: that row ends without turning.
   PatternRow& last = out_.rows[last_row];
   Side rnd_side = s.direction == CourseDirection::right_to_left ? Side::rs : Side::ws;
   if (last.side == rnd_side) {
     if (last.end_op != out_.ops.size())
       not_yet(s, "joins a flat piece in the rnd the way its last row went, after other work");
+    if (out_.ops.back() == HandOp::turn) {  // a short row goes on round the corner instead
+      out_.ops.pop_back();
+      last.short_row = false;
+    }
     out_.ops.push_back(HandOp::no_turn);
     last.end_op = static_cast<std::uint32_t>(out_.ops.size());
+  }
+  sec.in_round = true;
+  sec.joined_in_rnd_at = static_cast<std::uint32_t>(out_.rows.size());
+  if (keeps_all) {
+    std::vector<std::uint32_t> host;
+    for (std::uint32_t l : met)
+      if (places_.at(l) == LoopAt{Place::needle, current_}) host.push_back(l);
+    return host;
   }
   std::vector<std::uint32_t> row = counted_on_spare_needle(n);  // as the last row worked them
   // Taken up again: the sts are slipped as it is taken up, naming the row.
@@ -307,10 +329,9 @@ void ProgramPatternBuilder::join_flat_piece_in_the_rnd(const Step& s) {
   h.flat_row = true;
   h.of_number = taken_up ? out_.rows[last_row].number : 0;
   sec.holdings.push_back(h);
-  sec.in_round = true;
-  sec.joined_in_rnd_at = static_cast<std::uint32_t>(out_.rows.size());
   n.ring.clear();
   n.live = n.ahead = n.behind = 0;
+  return {};
 }
 
 std::vector<std::uint32_t> ProgramPatternBuilder::row_ahead(const Step& s) {
