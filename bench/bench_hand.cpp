@@ -59,10 +59,9 @@ const Compilation& model(HandCase c) {
   return *slot;
 }
 
-// The pattern as markdown, from the schedule's builder or (`program`) the live-loop program's.
-std::string pattern_of(const Compilation& c, bool program = false) {
-  hand::HandPattern pattern =
-      program ? hand::build_pattern_from_program(c) : hand::build_hand_pattern(c);
+// The pattern as markdown.
+std::string pattern_of(const Compilation& c) {
+  hand::HandPattern pattern = hand::build_hand_pattern(c);
   std::ostringstream out;
   hand::write_markdown(hand::make_document(pattern), out);
   return out.str();
@@ -78,13 +77,6 @@ void BM_HandEmit(benchmark::State& state) {
   }
   state.counters["stitches"] = c.knit.size();
   state.counters["pattern_bytes"] = static_cast<double>(bytes);
-}
-
-// The same from the live-loop program (`--set builder=program`).
-void BM_HandEmitFromProgram(benchmark::State& state) {
-  const Compilation& c = model(static_cast<HandCase>(state.range(0)));
-  for (auto _ : state) benchmark::DoNotOptimize(pattern_of(c, true));
-  state.counters["stitches"] = c.knit.size();
 }
 
 void BM_HandVerify(benchmark::State& state) {
@@ -105,7 +97,6 @@ void hand_cases(benchmark::internal::Benchmark* b) {
 }
 
 BENCHMARK(BM_HandEmit)->Apply(hand_cases);
-BENCHMARK(BM_HandEmitFromProgram)->Apply(hand_cases);
 BENCHMARK(BM_HandVerify)->Apply(hand_cases);
 
 }  // namespace

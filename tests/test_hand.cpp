@@ -16,6 +16,7 @@
 #include "golden.hpp"
 #include "hand/hand_target.hpp"
 #include "hand/pattern_model.hpp"
+#include "hand/program_pattern.hpp"
 #include "hand/row_text.hpp"
 #include "labeling/project.hpp"
 #include "labeling/shapes.hpp"
@@ -303,10 +304,9 @@ TEST(HandRandomized, ShapedSheetsAndTubesAreProven) {
 }
 
 // Every shape `skein new` makes, at 50 random sizes and gauges each, with either short-row
-// method, through the hand target with `builder` (its `--set builder=`): per shape, how many
-// patterns are proven and how many the hand target refuses by name; every one is knittable and
-// none is written unproven.
-std::map<std::string, std::array<int, 2>> shapes_at_random_sizes(const std::string& builder) {
+// method, through the hand target: per shape, how many patterns are proven and how many the hand
+// target refuses by name; every one is knittable and none is written unproven.
+std::map<std::string, std::array<int, 2>> shapes_at_random_sizes() {
   std::mt19937_64 rng(23);
   const std::string dir = ::testing::TempDir();
   std::map<std::string, std::array<int, 2>> tally;  // proven, refused
@@ -331,7 +331,6 @@ std::map<std::string, std::array<int, 2>> shapes_at_random_sizes(const std::stri
       if (!c.knittability.knittable) continue;
       TargetOptions options;
       options.settings["short-rows"] = trial % 2 ? "wrap-and-turn" : "german";
-      options.settings["builder"] = builder;
       std::string target = trial % 4 == 0 ? "hand-html" : "hand";
       std::string pattern;
       try {
@@ -348,26 +347,19 @@ std::map<std::string, std::array<int, 2>> shapes_at_random_sizes(const std::stri
     }
   }
   for (const auto& [kind, n] : tally)
-    std::cout << fmt::format("builder={}: {}: {} proven, {} refused by name\n", builder, kind, n[0],
-                             n[1]);
+    std::cout << fmt::format("{}: {} proven, {} refused by name\n", kind, n[0], n[1]);
   return tally;
 }
 
-// The default builder (auto: the program's, else the schedule's where the program's refuses
-// by name) and the program's builder alone (`--set builder=program`) prove every shape at
-// every size: tubes, hats, socks, the yoke and the set-in sweaters, the mitten, glove, shorts,
-// trousers and bag (docs/hand-patterns.md keeps the figures). A glove's fingers each take part
-// of one provisional cast-on, parted onto holders right after it ("Slip sts 1–11 of the
-// cast-on to holder 5 and ..."); a bag's rim binds off in four places and each flap between
-// its handles is worked in rows, the others waiting on holders; a set-in sweater's front and
-// back are worked in rows, each yarn going on from them to a sleeve picked up round its
-// armhole ("Slip the 75 sts of Row 30 to holder 3. Pm and join to work in the rnd: ...").
+// Every shape at every size is proven: tubes, hats, socks, the yoke and the set-in sweaters, the
+// mitten, glove, shorts, trousers and bag (docs/hand-patterns.md keeps the figures). A glove's
+// fingers each take part of one provisional cast-on, parted onto holders right after it ("Slip sts
+// 1–11 of the cast-on to holder 5 and ..."); a bag's rim binds off in four places and each flap
+// between its handles is worked in rows, the others waiting on holders; a set-in sweater's front
+// and back are worked in rows, each yarn going on from them to a sleeve picked up round its armhole
+// ("Slip the 75 sts of Row 30 to holder 3. Pm and join to work in the rnd: ...").
 TEST(HandRandomized, ShapesOfRandomSizesAndGaugesAreProven) {
-  for (const auto& [kind, n] : shapes_at_random_sizes("auto")) EXPECT_EQ(n[0], 50) << kind;
-}
-
-TEST(HandRandomized, ProgramBuilderProvesShapesOfRandomSizesAndGauges) {
-  for (const auto& [kind, n] : shapes_at_random_sizes("program")) EXPECT_EQ(n[0], 50) << kind;
+  for (const auto& [kind, n] : shapes_at_random_sizes()) EXPECT_EQ(n[0], 50) << kind;
 }
 
 // A pattern names its pieces after the parts of the garment (the coarse mesh's OBJ groups):

@@ -13,6 +13,7 @@
 #include "hand/pattern_document.hpp"
 #include "hand/pattern_model.hpp"
 #include "hand/pattern_writers.hpp"
+#include "hand/program_pattern.hpp"
 #include "hand/region_markers.hpp"
 #include "mesh/generate.hpp"
 #include "target_runner.hpp"

@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "hand/pattern_model.hpp"
+#include "hand/program_pattern.hpp"
 #include "hand/region_markers.hpp"
 #include "mesh/generate.hpp"
 

@@ -17,15 +17,14 @@
 namespace skein {
 namespace {
 
-// The 300 random garments through the hand target with `builder` (its `--set builder=`):
-// each proven or refused by name; the tally printed.
-testing::Tally random_garments(const std::string& builder) {
+// The 300 random garments through the hand target: each proven or refused by name; the tally
+// printed.
+testing::Tally random_garments() {
   constexpr int kModels = 300;
   testing::Tally tally =
       testing::tally_random_garments(kModels, [&](const Compilation& c, testing::Dice& dice) {
         TargetOptions options;
         options.settings["short-rows"] = dice.chance(0.5) ? "german" : "wrap-and-turn";
-        options.settings["builder"] = builder;
         testing::Verdict v;
         std::string pattern;
         try {
@@ -40,22 +39,13 @@ testing::Tally random_garments(const std::string& builder) {
         v.proven = report.proven;
         return v;
       });
-  std::cout << tally.report(kModels, fmt::format(", builder={}", builder));
+  std::cout << tally.report(kModels, "");
   return tally;
 }
 
-// The default builder (auto): the program's, else the schedule's where the program's refuses
-// (270 proven; the schedule's alone 230).
+// 270 proven (the schedule's builder, before the lowering, 230), the rest refused by name.
 TEST(HandRandomGarments, EachIsProvenOrRefusedByNameBeforeWriting) {
-  testing::Tally tally = random_garments("auto");
-  EXPECT_GE(tally.proven, 270);
-}
-
-// The pattern built on the lowering's live-loop program (`--set builder=program`), measured on
-// the same garments: what it writes is proven, the rest refused by name (270 proven against
-// the schedule builder's 230).
-TEST(HandRandomGarments, ProgramBuilderProvesOrRefusesEachByName) {
-  testing::Tally tally = random_garments("program");
+  testing::Tally tally = random_garments();
   EXPECT_GE(tally.proven, 270);
 }
 

@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <exception>
 #include <ostream>
 
 #include "common/error.hpp"
@@ -56,37 +55,10 @@ Rounds rounds_of(const TargetOptions& options) {
   return inside_out ? Rounds::ws_facing : Rounds::mirror_most;
 }
 
-// Which builder writes the pattern (`--set builder=`): auto (the default): the one on the
-// lowering's live-loop program, and where it refuses a structure by name (rows in the rnd
-// that take a holder's sts one at a time, a yarn that stops in the middle of a rnd), the one
-// that reads the schedule; or either alone. Every pattern is proven before it is written.
-enum class Builder : std::uint8_t { automatic, program, schedule };
-
-Builder builder_of(const TargetOptions& options) {
-  auto set = options.settings.find("builder");
-  if (set == options.settings.end() || set->second == "auto") return Builder::automatic;
-  return set->second == "program" ? Builder::program : Builder::schedule;
-}
-
 }  // namespace
 
 HandPattern build_pattern(const Compilation& c, const TargetOptions& options) {
-  Builder builder = builder_of(options);
-  if (builder == Builder::schedule)
-    return build_hand_pattern(c, turn_method_of(options), rounds_of(options));
-  std::exception_ptr refused;
-  try {
-    return build_pattern_from_program(c, turn_method_of(options), rounds_of(options));
-  } catch (const UnsupportedError&) {
-    if (builder == Builder::program) throw;
-    refused = std::current_exception();
-  }
-  // Where neither can, the program's builder says why: it is the one that stays.
-  try {
-    return build_hand_pattern(c, turn_method_of(options), rounds_of(options));
-  } catch (const UnsupportedError&) {
-    std::rethrow_exception(refused);
-  }
+  return build_hand_pattern(c, turn_method_of(options), rounds_of(options));
 }
 
 namespace {
@@ -104,11 +76,7 @@ class HandTarget : public Target {
              "how short rows turn (default: the project's short_rows: hand:)"},
             {"rounds",
              {"mirror", "inside-out"},
-             "rnds run left to right: mirror the model if most do, or work them WS facing"},
-            {"builder",
-             {"auto", "program", "schedule"},
-             "build the pattern from the lowering's live-loop program, or from the schedule; "
-             "auto (default): the program's, else the schedule's where the program's refuses"}};
+             "rnds run left to right: mirror the model if most do, or work them WS facing"}};
   }
   void emit(const Compilation& c, const TargetOptions& options, std::ostream& out) const override {
     HandPattern pattern = build_pattern(c, options);

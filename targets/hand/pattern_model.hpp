@@ -200,13 +200,4 @@ struct HandPattern {
 // `pw`). The stitch type the pattern works `s` as; the model's own elsewhere.
 StitchType worked_by_hand(const KnitGraph& g, StitchId s);
 
-// Throws Error naming the stitch when the model needs something hand patterns do not cover
-// yet (joins with a side's own yarn, splits, perpendicular edges, held pieces, stitch graphs
-// without rows). Rows shaped alike get section
-// markers (marker_plan.hpp), mismatch groups and short rows region markers
-// (region_markers.hpp).
-HandPattern build_hand_pattern(const Compilation& compilation,
-                               TurnMethod turns = TurnMethod::german,
-                               Rounds rounds = Rounds::mirror_most);
-
 }  // namespace skein::hand

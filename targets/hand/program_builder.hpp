@@ -1,4 +1,4 @@
-// The builder behind build_pattern_from_program (program_pattern.hpp), private to the hand
+// The builder behind build_hand_pattern (program_pattern.hpp), private to the hand
 // target: it walks the lowering's live-loop program step by step, keeping what each piece has on
 // its needle and where every other live loop waits. Its jobs live in three files:
 // program_pattern.cpp (pieces and sections, cast-ons, three-needle bind-offs), program_gather.cpp

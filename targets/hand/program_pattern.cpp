@@ -365,7 +365,7 @@ void ProgramPatternBuilder::bind_off_with_its_yarn(const PatternSection& join,
 
 }  // namespace from_program
 
-HandPattern build_pattern_from_program(const Compilation& c, TurnMethod turns, Rounds rounds) {
+HandPattern build_hand_pattern(const Compilation& c, TurnMethod turns, Rounds rounds) {
   check_stitch_types(c.knit);
   bool mirror = rounds == Rounds::mirror_most &&
                 stitches_in_rounds_going(c.program, CourseDirection::left_to_right) >
