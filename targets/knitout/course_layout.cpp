@@ -176,6 +176,7 @@ class ProgramLayouts {
             if (step.kind == StepKind::split) split_from_[part.index()] = from.index();
           }
       }
+      if (step.kind == StepKind::three_needle_bind_off) place_bound_off_together(step);
       if (step.kind != StepKind::join) continue;
       for (std::uint32_t i = step.reads.begin; i < step.reads.end; ++i) {
         std::uint32_t run = p_.segments[i].run.index();
@@ -217,6 +218,24 @@ class ProgramLayouts {
     // start with it (it is the left one), the other's rounds start there.
     std::array<std::uint32_t, 2> right_branch_start{kNoWrap, kNoWrap};
   };
+
+  // Pieces knit apart and bound off together (a thumb's inner arc and the hand's) share the
+  // bed: the piece cast on later goes beside the one cast on before, on the side its needle
+  // holds in the bind-off (the first needle's left of the second's), and waits there knit
+  // until the chain takes both.
+  void place_bound_off_together(const Step& step) {
+    std::uint32_t first = p_.segments[step.reads.begin].run.index();
+    bool apart = false;
+    for (std::uint32_t i = step.reads.begin; i < step.reads.end; ++i)
+      apart |= root(p_.segments[i].run.index()) != root(first);
+    if (!apart) return;  // a tube folded flat, or a piece and the yarn knit on from it
+    for (std::uint32_t i = step.reads.begin; i < step.reads.end; ++i) {
+      std::uint32_t run = p_.segments[i].run.index();
+      unite(run, first);
+      for (; run != kNoWrap; run = split_from_[run])
+        if (join_place_[run] == kNoWrap) join_place_[run] = i - step.reads.begin;
+    }
+  }
 
   // The run a run is joined into at last (runs that a join takes share a layout).
   std::uint32_t root(std::uint32_t run) {
