@@ -334,11 +334,7 @@ class ProgramLayouts {
         return runs_.reverse(step.run);
       case StepKind::course:
       case StepKind::bind_off:
-        // A course that binds off in two places parts its run into two lines (`other`): two
-        // runs on the bed.
-        if (step.other.valid() && !casts_on_along_split(step))
-          unsupported(g_, "a course that binds off its run in two places (several runs on the bed)",
-                      first_stitch(step));
+        check_binds_off_once(step);
         return add_course(step);
       case StepKind::join:
         return join(step);
@@ -348,6 +344,14 @@ class ProgramLayouts {
       case StepKind::resume:
         return;  // pieces apart are knit one after another
     }
+  }
+
+  // A course that binds off in two places parts its run into two lines (`other`): two runs on
+  // the bed.
+  void check_binds_off_once(const Step& step) const {
+    if (step.other.valid() && !casts_on_along_split(step))
+      unsupported(g_, "a course that binds off its run in two places (several runs on the bed)",
+                  first_stitch(step));
   }
 
   // A cast-on along a split is followed by the split that parts the tube: the crotch may roll
@@ -446,30 +450,55 @@ class ProgramLayouts {
                                              static_cast<std::uint32_t>(l.courses.size() - 1)};
       return;
     }
+    bool second_taken = false;
     for (std::uint32_t begin = step.stitches.begin; begin < step.stitches.end;) {
       std::uint32_t end = begin + 1;
-      bool binds_off = is_bind_off(g_, p_.stitches[begin].stitch);
-      while (end < step.stitches.end && is_bind_off(g_, p_.stitches[end].stitch) == binds_off)
-        ++end;
+      BlockKind kind = block_kind(p_.stitches[begin].stitch);
+      while (end < step.stitches.end && block_kind(p_.stitches[end].stitch) == kind) ++end;
+      if (kind == BlockKind::bound_off_together) {
+        // The second needle's loops all go with the one block (the program reads them as
+        // one walk per needle, in the course's order).
+        if (second_taken)
+          unsupported(g_, "a row that binds off with a second needle's in two places",
+                      p_.stitches[begin].stitch);
+        take_second_needles(step, piece);
+        second_taken = true;
+      }
       add_block(l, piece, {begin, end}, left_to_right, step.shape);
       begin = end;
     }
   }
 
+  // A course's blocks: sts knit on, bound off, or bound off with a second needle's loops.
+  enum class BlockKind : std::uint8_t { knit, bound_off, bound_off_together };
+  BlockKind block_kind(StitchId s) const {
+    return g_.type[s] == StitchType::tnbo ? BlockKind::bound_off_together
+           : is_bind_off(g_, s)           ? BlockKind::bound_off
+                                          : BlockKind::knit;
+  }
+
+  // A three-needle bind-off takes the second needle's loops off the bed with the chain.
+  void take_second_needles(const Step& step, Piece& piece) {
+    for (std::uint32_t i = step.reads.begin + 1; i < step.reads.end; ++i)
+      take_off(p_.segments[i], piece);
+  }
+  void take_off(Segment seg, Piece& piece) {
+    if (seg.walk == Walk::backward) seg.first = runs_.walk_end(seg);
+    seg.walk = Walk::forward;
+    piece.on_bed -= seg.count;
+    runs_.replace(seg, {}, RowShape::short_row, runs_.leaves_tail(seg) ? tail_run() : RunId());
+  }
+
   // A three-needle bind-off: a chain whose sts each take a loop of the run worked and one of
   // the second needle's run (the emitter lands that one on the first's needle). Both runs
   // must wait on the bed in this layout (a tube's two halves folded together, a piece and
-  // the yarn knit on from its sts); each second loop lies where the course meets it.
+  // the yarn knit on from its sts); each second loop lies where the course meets it. A course
+  // that knits some of its sts (a thumb's round binding off its inner arc with the hand's) is
+  // knit as blocks, as a course that binds off some of its sts.
   void add_three_needle_bind_off(const Step& step) {
     StitchId first = first_stitch(step);
     std::uint32_t index = layout_of(step, first);
     CourseLayout& l = layouts_[index];
-    for (std::uint32_t i = step.stitches.begin; i < step.stitches.end; ++i)
-      if (g_.type[p_.stitches[i].stitch] != StitchType::tnbo)
-        unsupported(g_,
-                    "a row that binds off only some of its sts with a second needle's (a "
-                    "three-needle bind-off in the middle of a row)",
-                    p_.stitches[i].stitch);
     for (std::uint32_t i = step.reads.begin; i < step.reads.end; ++i) {
       const Segment& seg = p_.segments[i];
       StitchId maker = g_.loops[seg.first].maker;
@@ -481,14 +510,17 @@ class ProgramLayouts {
                                 g_.describe(g_.loops[p_.segments[step.reads.begin].first].maker)),
                     first);
     }
+    for (std::uint32_t i = step.stitches.begin; i < step.stitches.end; ++i)
+      if (g_.type[p_.stitches[i].stitch] != StitchType::tnbo) {
+        if (casts_on_along_split(step))
+          unsupported(g_, "a round that casts on along a split and binds off with a second needle",
+                      first);
+        check_binds_off_once(step);
+        return add_course(step);
+      }
     Piece& piece = pieces_[index];
-    for (std::uint32_t i = step.reads.begin; i < step.reads.end; ++i) {
-      Segment seg = p_.segments[i];
-      if (seg.walk == Walk::backward) seg.first = runs_.walk_end(seg);
-      seg.walk = Walk::forward;
-      piece.on_bed -= seg.count;
-      runs_.replace(seg, {}, RowShape::short_row, runs_.leaves_tail(seg) ? tail_run() : RunId());
-    }
+    for (std::uint32_t i = step.reads.begin; i < step.reads.end; ++i)
+      take_off(p_.segments[i], piece);
     bool left_to_right = step.direction != CourseDirection::right_to_left;
     if (continues_chain(l, step.stitches)) {
       l.courses.back().end = append(l, step.stitches, left_to_right).end;
@@ -603,10 +635,12 @@ class ProgramLayouts {
     return course;
   }
 
-  // The loops a block of a course takes, as a forward segment of their run.
+  // The loops a block of a course takes, as a forward segment of their run (a three-needle
+  // bind-off's first needle's: each st's first loop).
   Segment segment_of(Range stitches, bool left_to_right) const {
     std::uint32_t count = 0;
-    for (std::uint32_t i = stitches.begin; i < stitches.end; ++i) count += p_.stitches[i].taken;
+    for (std::uint32_t i = stitches.begin; i < stitches.end; ++i)
+      count += g_.type[p_.stitches[i].stitch] == StitchType::tnbo ? 1 : p_.stitches[i].taken;
     std::uint32_t leftmost = left_to_right ? stitches.begin : stitches.end - 1;
     std::uint32_t first = p_.taken[p_.taken_at[leftmost]];
     return {runs_.run_of(first), first, count, Walk::forward};
