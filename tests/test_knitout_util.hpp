@@ -52,6 +52,21 @@ inline knitout::ProofResult replay_and_prove(const std::string& text, const Comp
   return knitout::prove_whole_file(replay, text, c);
 }
 
+// Emits `c` on `p` and expects the file proven (`what` names it in a failure); returns the
+// target's message when it refuses `c` by name before writing, empty when it wrote the file.
+inline std::string prove_unless_refused(const Compilation& c, const knitout::MachineProfile& p,
+                                        const std::string& what) {
+  std::string text;
+  try {
+    text = emit_knitout_text(c, p);
+  } catch (const UnsupportedError& e) {
+    return e.what();
+  }
+  knitout::ProofResult proof = replay_and_prove(text, c, p);
+  EXPECT_TRUE(proof.proven) << what << " on " << p.name << ": " << proof.summary;
+  return "";
+}
+
 // A stitch graph in AutoKnit's format, one yarn: s cast-on, k knit, i increase, d decrease,
 // t tuck, m miss (slip), e bind-off; '|' turns the yarn back (AutoKnit's dir flips). The loops
 // on the needles are kept in order along the fabric: each stitch takes the next ones the yarn

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <deque>
 #include <ostream>
 
 #include "common/error.hpp"
@@ -83,37 +84,58 @@ void write_header(KnitoutWriter& w, const Compilation& c, const MachineProfile& 
   if (p.speed_number) w.line(fmt::format("x-speed-number {}", p.speed_number));
 }
 
-// One carrier per yarn piece: the profile's yarn carrier, then the others in the header's
-// order, never the waste yarn's or the draw thread's.
-std::vector<std::string> piece_carriers(const Compilation& c, const MachineProfile& p,
-                                        std::size_t pieces) {
+// The carriers for the model's yarns: the profile's yarn carrier, then the others in the
+// header's order, never the waste yarn's or the draw thread's.
+std::vector<std::string> yarn_carrier_names(const MachineProfile& p) {
   std::vector<std::string> carriers{p.yarn_carrier};
   for (const std::string& name : p.carriers)
-    if (carriers.size() < pieces && name != p.yarn_carrier && name != p.waste_carrier &&
-        name != p.draw_carrier)
+    if (name != p.yarn_carrier && name != p.waste_carrier && name != p.draw_carrier)
       carriers.push_back(name);
-  if (carriers.size() < pieces)
-    throw UnsupportedError(
-        fmt::format("{} has {} yarn pieces, one carrier each, and {} has only {} carriers "
-                    "for them{}",
-                    c.input, pieces, p.name, carriers.size(),
-                    p.waste_carrier.empty()  ? ""
-                    : p.draw_carrier.empty() ? " besides the waste yarn's"
-                                             : " besides the waste yarn's and the draw "
-                                               "thread's"));
   return carriers;
+}
+
+[[noreturn]] void too_few_carriers(const Compilation& c, const MachineProfile& p,
+                                   std::size_t carriers, std::size_t in, StitchId at) {
+  throw UnsupportedError(fmt::format(
+      "{} has {} yarn pieces in at once (at {}), one carrier each, and {} has only {} carriers "
+      "for them{}",
+      c.input, in, c.knit.describe(at), p.name, carriers,
+      p.waste_carrier.empty()  ? ""
+      : p.draw_carrier.empty() ? " besides the waste yarn's"
+                               : " besides the waste yarn's and the draw thread's"));
 }
 
 }  // namespace
 
-// Per yarn piece its carrier, in the order the layouts bring the yarns in.
+// Per yarn piece its carrier, in the order the layouts bring the yarns in: a carrier not used
+// yet while the profile has one, then one that a yarn knit before has taken out (its piece
+// bound off, or its loops left to another yarn), the first taken out first. A machine with few
+// carriers (kniterate's 4) so knits a model of more yarn pieces, as long as no more are in at
+// once.
 std::vector<std::string> yarn_carriers(const Compilation& c, const MachineProfile& p,
                                        const std::vector<CourseLayout>& pieces) {
-  std::vector<std::string> names = piece_carriers(c, p, c.yarns.size()), carriers(c.yarns.size());
-  std::size_t next = 0;
+  std::vector<std::string> names = yarn_carrier_names(p), carriers(c.yarns.size());
+  std::deque<std::string> out;  // carriers taken out, to be brought in again
+  std::size_t next = 0, in = 0;
   for (const CourseLayout& l : pieces)
-    for (const Course& course : l.courses)
-      if (course.first_of_yarn) carriers[course.yarn] = names[next++];
+    for (const Course& course : l.courses) {
+      if (course.first_of_yarn) {
+        ++in;
+        if (next == names.size() && out.empty())
+          too_few_carriers(c, p, names.size(), in, l.order[course.begin]);
+        if (next < names.size()) {
+          carriers[course.yarn] = names[next++];
+        } else {
+          carriers[course.yarn] = out.front();
+          out.pop_front();
+        }
+      }
+      // A cast-on never takes its yarn out; any other last course does (Emitter::run).
+      if (course.last_of_yarn && !course.cast_on) {
+        --in;
+        out.push_back(carriers[course.yarn]);
+      }
+    }
   return carriers;
 }
 
@@ -121,7 +143,9 @@ std::vector<std::string> yarn_carriers(const Compilation& c, const MachineProfil
 std::string carriers_of(const CourseLayout& l, const std::vector<std::string>& carriers) {
   std::vector<std::string> used;
   for (const Course& course : l.courses)
-    if (course.first_of_yarn) used.push_back(carriers[course.yarn]);
+    if (course.first_of_yarn &&
+        std::find(used.begin(), used.end(), carriers[course.yarn]) == used.end())
+      used.push_back(carriers[course.yarn]);
   return fmt::format("carrier{} {}", used.size() > 1 ? "s" : "", fmt::join(used, ", "));
 }
 

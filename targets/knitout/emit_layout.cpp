@@ -310,12 +310,12 @@ void Emitter::off_the_bed(StitchId s) const {
 // need not move round the tube back again.
 std::uint32_t Emitter::stitch_at_front_left(const Course& c) const {
   std::uint32_t n = c.end - c.begin, best = 0;
-  std::int32_t leftmost = std::numeric_limits<std::int32_t>::max();
+  std::int32_t fold = ring_fold(c), leftmost = std::numeric_limits<std::int32_t>::max();
   for (std::uint32_t k = 0; k < n; ++k) {
     StitchId s = l_.order[c.left_to_right ? c.begin + k : c.end - 1 - k];
     auto in = taken(s);
     if (in.empty()) continue;
-    std::int32_t u = ring(live_[in[stacking_order(g_.type[s])[0]]].home);
+    std::int32_t u = ring(live_[in[stacking_order(g_.type[s])[0]]].home, fold);
     if (u < leftmost) leftmost = u, best = k;
   }
   return best;
@@ -327,7 +327,10 @@ void Emitter::plan_course(const Course& course, bool first) {
   // A bind-off, like a short row, is knit where its loops wait (wherever its round starts).
   if (course.partial || chained_off(g_.type[l_.order[course.begin]])) return plan_in_place(course);
   Course c = course;
-  if (rolled_ && !first) c.layout_start = stitch_at_front_left(c);
+  // So is a round over tubes side by side (their loops lie round the bed in the round's order
+  // from the front's left end, whichever piece the round's start came from).
+  bool beside = l_.tube && beside_left_ + beside_right_ > 0;
+  if ((rolled_ || beside) && !first) c.layout_start = stitch_at_front_left(c);
   Footprint f = measure(c);
   // A tube whose halves keep their folds moves no loop between the beds: its right fold may
   // then follow the loops; while loops cross a fold it stays where it is.

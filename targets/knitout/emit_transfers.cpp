@@ -38,10 +38,11 @@ void Emitter::transition(const Course& c) {
 // True when every loop reaches its new needle in one transfer: then a loop already where its
 // next stitch is knit may stay there, as no stack passes through its needle on the way.
 bool Emitter::fits_one_stage(const Course& c) const {
+  std::int32_t fold = ring_fold(c);
   for (std::uint32_t i = c.begin; i < c.end; ++i) {
     Place target{plan_[l_.order[i]].home, plan_[l_.order[i]].needle};
     for (std::uint32_t loop : taken(l_.order[i]))
-      if (next_stop(live_[loop].home, target, live_[loop].home.bed != target.bed) != target)
+      if (next_stop(live_[loop].home, target, live_[loop].home.bed != target.bed, fold) != target)
         return false;
   }
   return true;
@@ -166,13 +167,26 @@ std::vector<Place> Emitter::hops_across(Place from, Place to, bool tube_free) co
 // A loop's place along the fabric, left to right in the stitches' frames: the needle on a
 // sheet; on a tube, counted from the right fold (front f2R is 0, back b2R+1 is 1), so that
 // the front reads ..., -1, 0 and the back 1, 2, ... and a fold is crossed between 0 and 1.
-std::int32_t Emitter::ring(Place p) const {
+std::int32_t Emitter::ring(Place p, std::int32_t fold) const {
   if (!l_.tube) return p.needle;
-  return p.bed == Bed::f ? p.needle / 2 - fold_ : fold_ - (p.needle - 1) / 2 + 1;
+  return p.bed == Bed::f ? p.needle / 2 - fold : fold - (p.needle - 1) / 2 + 1;
 }
-Place Emitter::place_at(std::int32_t u) const {
+Place Emitter::place_at(std::int32_t u, std::int32_t fold) const {
   if (!l_.tube) return {Bed::f, u};
-  return u <= 0 ? Place{Bed::f, 2 * (fold_ + u)} : Place{Bed::b, 2 * (fold_ - u + 1) + 1};
+  return u <= 0 ? Place{Bed::f, 2 * (fold + u)} : Place{Bed::b, 2 * (fold - u + 1) + 1};
+}
+
+// The fold a course's loops are counted round when they move along the fabric: the course's
+// right fold, or further right where loops it takes lie beyond it (a tube cast on beside the
+// others, right of them, whose loops a joining round takes): counted from there, every loop
+// and every needle of the course lies in one order round the bed.
+std::int32_t Emitter::ring_fold(const Course& c) const {
+  std::int32_t fold = fold_;
+  if (!l_.tube) return fold;
+  for (std::uint32_t i = c.begin; i < c.end; ++i)
+    for (std::uint32_t loop : taken(l_.order[i]))
+      fold = std::max({fold, live_[loop].now.needle / 2, live_[loop].home.needle / 2});
+  return fold;
 }
 
 // Re-spaces the stacks onto the course's needles in stages: in each, every stack moves at
@@ -197,13 +211,14 @@ void Emitter::shift_stacks(const Course& c, const std::vector<std::uint8_t>& rea
   for (const RoomMove& r : room_) stacks.push_back({kNoStitch, live_[r.loop].now, r.to, r.loop});
   if (stacks.empty()) return;
   std::vector<std::uint8_t> busy = busy_needles();
+  std::int32_t fold = ring_fold(c);
   for (bool moved = true; moved;) {
     moved = false;
     std::vector<Move> along, to_transit, over, landing;
     for (Stack& st : stacks) {
       if (st.now == st.target) continue;
       moved = true;
-      Place stop = next_stop(st.now, st.target, crossing);
+      Place stop = next_stop(st.now, st.target, crossing, fold);
       if (stop.bed == st.now.bed)
         along.push_back({st.now, stop});
       else
@@ -252,12 +267,12 @@ void Emitter::route_through_other_bed(const std::vector<Move>& along,
 
 // One stage's stop toward `target`: along the bed by at most the reach, or, when some loops
 // cross a tube's fold (which then stays put), along the fabric across the fold.
-Place Emitter::next_stop(Place now, Place target, bool crossing) const {
+Place Emitter::next_stop(Place now, Place target, bool crossing, std::int32_t fold) const {
   if (now == facing(target)) return target;  // an sr5's stack, gathered on its turn loop
   if (!crossing)
     return {now.bed, std::clamp(target.needle, now.needle - reach_, now.needle + reach_)};
-  std::int32_t u = ring(now), step = reach_ / pitch_;
-  return place_at(std::clamp(ring(target), u - step, u + step));
+  std::int32_t u = ring(now, fold), step = reach_ / pitch_;
+  return place_at(std::clamp(ring(target, fold), u - step, u + step), fold);
 }
 
 void Emitter::send_purls(const Course& c, const std::vector<std::uint8_t>& ready) {

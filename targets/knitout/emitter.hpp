@@ -157,13 +157,15 @@ class Emitter {
   void merge_decreases(const Course& c);
   void move_across_beds(Place from, Place to, const std::vector<std::uint8_t>* busy = nullptr);
   std::vector<Place> hops_across(Place from, Place to, bool tube_free) const;
-  std::int32_t ring(Place p) const;
-  Place place_at(std::int32_t u) const;
+  std::int32_t ring(Place p) const { return ring(p, fold_); }
+  std::int32_t ring(Place p, std::int32_t fold) const;
+  Place place_at(std::int32_t u, std::int32_t fold) const;
+  std::int32_t ring_fold(const Course& c) const;
   void shift_stacks(const Course& c, const std::vector<std::uint8_t>& ready);
   void route_through_other_bed(const std::vector<Move>& along,
                                const std::vector<std::uint8_t>* busy, std::vector<Move>& to_transit,
                                std::vector<Move>& landing) const;
-  Place next_stop(Place now, Place target, bool crossing) const;
+  Place next_stop(Place now, Place target, bool crossing, std::int32_t fold) const;
   void send_purls(const Course& c, const std::vector<std::uint8_t>& ready);
 
   // ---- knitting, cast-on and bind-off (emit_courses.cpp) ----
