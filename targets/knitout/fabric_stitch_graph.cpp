@@ -80,11 +80,14 @@ class GraphBuilder {
 
  private:
   // The loops `l` takes in the stitch graph: its parents, a tuck standing for the loop under
-  // it, without its yarn's previous loop when that is one link of a chain.
+  // it, without its yarn's previous loop when that is one link of a chain. A tuck made on an
+  // empty needle and moved onto loops later lies over nothing: a loop through nothing that `l`
+  // takes beside them (taken by the tuck, a loop made after it would be listed before its taker).
   void resolve_parents(LoopId l) {
     std::vector<LoopId>& takes = takes_[l];
     for (LoopId parent : f_.parents_of(l)) {
-      if (f_.loops[parent].made_by == OpCode::tuck && !takes.empty()) {
+      const FabricLoop& p = f_.loops[parent];
+      if (p.made_by == OpCode::tuck && !p.over_nothing && !takes.empty()) {
         takes_[parent] = {takes.back()};
         takes.back() = parent;
       } else {

@@ -6,7 +6,8 @@
 //   other than that of its half's pass), `d` (two; more become a chain of `d`s, as `.st` has no
 //   wider decrease), `s` (none: a cast-on);
 // - a tuck lies over the loop under it on its needle: a `t` taking that loop, which the stitch
-//   knit through both then takes (a tuck on an empty needle is a loop through nothing);
+//   knit through both then takes (a tuck made on an empty needle is a loop through nothing,
+//   even once moved onto loops);
 // - the tucks a yarn piece starts with on empty needles are its cast-on's border: not written,
 //   the loops knit through them are the cast-on `s` stitches;
 // - two loops pulled through one loop one after the other along the yarn (a split and a knit),
