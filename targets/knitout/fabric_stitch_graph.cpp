@@ -197,23 +197,44 @@ bool skipped(const Stitch& s) {  // a loop through nothing nothing takes: it hol
   return s.takes.empty() && s.second == kNone && s.taker[0] == kNone;
 }
 
-// A piece is a tube when its front loops go one way round: then the back's go the other.
+// A piece is a tube when its yarn goes round: more of its loops are pulled through loops its
+// yarn made two passes before (the same half, a round below) than through loops of the pass
+// just before (a row knit back across a sheet), whichever beds a rib's purls are knit on. A
+// piece pulled through none of its own loops (a draw thread's one round through the waste) is
+// a tube when its front loops go one way round, the back's being there.
 std::vector<bool> tubular_pieces(const Fabric& f) {
-  std::vector<std::array<std::uint64_t, 2>> front_by_dir;
-  std::vector<bool> has_back;
-  for (const FabricLoop& l : f.loops) {
-    if (l.piece >= front_by_dir.size())
-      front_by_dir.resize(l.piece + 1), has_back.resize(l.piece + 1);
-    if (l.made_by == OpCode::tuck) continue;
-    if (l.front)
-      ++front_by_dir[l.piece][l.dir == Direction::plus];
+  struct Piece {
+    std::uint32_t passes = 0;
+    Direction dir = Direction::none;
+    std::int64_t rounds_over_rows = 0;
+    std::array<std::uint64_t, 2> front_by_dir{0, 0};
+    bool has_back = false;
+  };
+  std::vector<Piece> pieces;
+  std::vector<std::uint32_t> pass(f.loops.size());
+  for (LoopId l = 0; l < f.loops.size(); ++l) {
+    const FabricLoop& loop = f.loops[l];
+    if (loop.piece >= pieces.size()) pieces.resize(loop.piece + 1);
+    Piece& p = pieces[loop.piece];
+    if (loop.dir != p.dir) ++p.passes, p.dir = loop.dir;
+    pass[l] = p.passes;
+    for (LoopId parent : f.parents_of(l)) {
+      if (f.loops[parent].piece != loop.piece) continue;
+      std::uint32_t back = pass[l] - pass[parent];
+      p.rounds_over_rows += (back == 2) - (back == 1);
+    }
+    if (loop.made_by == OpCode::tuck) continue;
+    if (loop.front)
+      ++p.front_by_dir[loop.dir == Direction::plus];
     else
-      has_back[l.piece] = true;
+      p.has_back = true;
   }
-  std::vector<bool> tube(front_by_dir.size());
-  for (std::size_t p = 0; p < tube.size(); ++p) {
-    auto [minus, plus] = front_by_dir[p];
-    tube[p] = has_back[p] && std::min(minus, plus) * 4 < std::max(minus, plus);
+  std::vector<bool> tube(pieces.size());
+  for (std::size_t i = 0; i < tube.size(); ++i) {
+    const Piece& p = pieces[i];
+    auto [minus, plus] = p.front_by_dir;
+    bool one_way = p.has_back && std::min(minus, plus) * 4 < std::max(minus, plus);
+    tube[i] = p.rounds_over_rows > 0 || (p.rounds_over_rows == 0 && one_way);
   }
   return tube;
 }

@@ -19,7 +19,8 @@
 //   each pulled through their yarn's previous loop alone): none of them is written; the loops
 //   a dropped row was pulled through end their wales there.
 // `yarn` is the yarn piece (one per in/inhook), `dir` the way round: the pass direction on a
-// sheet; on a tube (a piece whose front loops are knit going one way) the front half's + and
+// sheet; on a tube (a piece whose loops are mostly pulled through loops made two passes before,
+// a round below, rather than in the pass before, a row below) the front half's + and
 // the back half's - are the same way round, a loop's half being that of the pass it is made in
 // (a rib's purl is knit on the other bed in its half's pass). x is the needle, y the loop's
 // height, z 0 front, 1 back.
