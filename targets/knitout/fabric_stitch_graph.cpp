@@ -197,83 +197,113 @@ bool skipped(const Stitch& s) {  // a loop through nothing nothing takes: it hol
   return s.takes.empty() && s.second == kNone && s.taker[0] == kNone;
 }
 
-// A piece is a tube when its yarn goes round: more of its loops are pulled through loops its
-// yarn made two passes before (the same half, a round below) than through loops of the pass
-// just before (a row knit back across a sheet), whichever beds a rib's purls are knit on. A
-// piece pulled through none of its own loops (a draw thread's one round through the waste) is
-// a tube when its front loops go one way round, the back's being there.
-std::vector<bool> tubular_pieces(const Fabric& f) {
-  struct Piece {
-    std::uint32_t passes = 0;
+// What the passes of each yarn piece (runs of its loops going one way) knit: per piece whether
+// it is a tube, and per loop whether its pass knits a tube's front half (whichever bed a rib's
+// purl or a rolled stitch in it is knit on).
+struct Halves {
+  std::vector<bool> tube;        // per yarn piece
+  std::vector<bool> front_half;  // per loop
+};
+
+class PassReader {
+ public:
+  explicit PassReader(const Fabric& f) : f_(f), pass_of_(f.loops.size()) {}
+
+  Halves read() {
+    std::vector<bool> wale_front(f_.loops.size());
+    for (LoopId l = 0; l < f_.loops.size(); ++l) {
+      const FabricLoop& loop = f_.loops[l];
+      Pass& p = pass_for(l);
+      // A wale stays on the half of the bed its first loop (a cast-on) was made on.
+      wale_front[l] = loop.parent_count ? wale_front[f_.parents_of(l)[0]] : loop.front;
+      Piece& piece = pieces_[loop.piece];
+      piece.front_goes_plus += wale_front[l] == (loop.dir == Direction::plus) ? 1 : -1;
+      count_beds(piece, loop);
+      for (LoopId parent : f_.parents_of(l)) {
+        if (f_.loops[parent].piece != loop.piece) continue;
+        std::uint32_t back = p.number - passes_[pass_of_[parent]].number;
+        p.onto_previous += back == 1;
+        p.onto_older += back >= 2;
+        piece.rounds_over_rows += (back == 2) - (back == 1);
+      }
+    }
+    Halves h{tubes(), std::vector<bool>(f_.loops.size())};
+    for (Pass& p : passes_) {
+      Piece& piece = pieces_[p.piece];
+      piece.reversed ^= p.previous != kNone && p.onto_previous > p.onto_older;
+      bool front_way = (p.dir == Direction::plus) == (piece.front_goes_plus >= 0);
+      p.on_front = front_way != piece.reversed;
+    }
+    for (LoopId l = 0; l < f_.loops.size(); ++l) h.front_half[l] = passes_[pass_of_[l]].on_front;
+    return h;
+  }
+
+ private:
+  struct Pass {
+    std::uint32_t piece = 0, number = 0;  // number: its place among its piece's passes
+    std::uint32_t previous = kNone;       // its piece's pass before it
     Direction dir = Direction::none;
+    std::uint32_t onto_previous = 0, onto_older = 0;  // loops it pulls through, by their pass
+    bool on_front = true;
+  };
+  struct Piece {
+    std::uint32_t last_pass = kNone;
     std::int64_t rounds_over_rows = 0;
+    std::int64_t front_goes_plus = 0;  // front wales' loops going + and back's going -, less
     std::array<std::uint64_t, 2> front_by_dir{0, 0};
     bool has_back = false;
+    // Whether its yarn goes round the other way now: it turned back (a pass pulled through the
+    // pass before it: a short row) an odd number of times. A short row that goes on round the
+    // fold knits the other half going the other way.
+    bool reversed = false;
   };
-  std::vector<Piece> pieces;
-  std::vector<std::uint32_t> pass(f.loops.size());
-  for (LoopId l = 0; l < f.loops.size(); ++l) {
-    const FabricLoop& loop = f.loops[l];
-    if (loop.piece >= pieces.size()) pieces.resize(loop.piece + 1);
-    Piece& p = pieces[loop.piece];
-    if (loop.dir != p.dir) ++p.passes, p.dir = loop.dir;
-    pass[l] = p.passes;
-    for (LoopId parent : f.parents_of(l)) {
-      if (f.loops[parent].piece != loop.piece) continue;
-      std::uint32_t back = pass[l] - pass[parent];
-      p.rounds_over_rows += (back == 2) - (back == 1);
-    }
-    if (loop.made_by == OpCode::tuck) continue;
-    if (loop.front)
-      ++p.front_by_dir[loop.dir == Direction::plus];
-    else
-      p.has_back = true;
-  }
-  std::vector<bool> tube(pieces.size());
-  for (std::size_t i = 0; i < tube.size(); ++i) {
-    const Piece& p = pieces[i];
-    auto [minus, plus] = p.front_by_dir;
-    bool one_way = p.has_back && std::min(minus, plus) * 4 < std::max(minus, plus);
-    tube[i] = p.rounds_over_rows > 0 || (p.rounds_over_rows == 0 && one_way);
-  }
-  return tube;
-}
 
-// Per loop: the bed of the pass it was made in (a run of its yarn piece's loops going one way),
-// by the bed most of the pass's loops are on; in a tie (a 2x2 rib), the front's if the pass
-// goes the way most of the piece's front loops go. On a tube a pass knits one half round; a
-// purl in it is knit on the other bed, going the same way round as the knits beside it.
-std::vector<bool> pass_on_front(const Fabric& f) {
-  std::vector<std::int64_t> front_plus;  // per piece: front loops going + less those going -
-  for (const FabricLoop& l : f.loops) {
-    if (l.piece >= front_plus.size()) front_plus.resize(l.piece + 1, 0);
-    if (l.front) front_plus[l.piece] += l.dir == Direction::plus ? 1 : -1;
+  Pass& pass_for(LoopId l) {
+    const FabricLoop& loop = f_.loops[l];
+    if (loop.piece >= pieces_.size()) pieces_.resize(loop.piece + 1);
+    Piece& piece = pieces_[loop.piece];
+    if (piece.last_pass == kNone || passes_[piece.last_pass].dir != loop.dir) {
+      Pass p;
+      p.piece = loop.piece;
+      p.dir = loop.dir;
+      p.previous = piece.last_pass;
+      p.number = piece.last_pass == kNone ? 0 : passes_[piece.last_pass].number + 1;
+      piece.last_pass = static_cast<std::uint32_t>(passes_.size());
+      passes_.push_back(p);
+    }
+    pass_of_[l] = piece.last_pass;
+    return passes_[piece.last_pass];
   }
-  struct Pass {
-    std::vector<LoopId> loops;
-    std::int64_t front_minus_back = 0;
-    Direction dir = Direction::none;
-  };
-  std::vector<bool> front(f.loops.size(), true);
-  std::vector<Pass> open(front_plus.size());  // per yarn piece: its pass so far
-  auto close = [&](Pass& p) {
-    if (p.loops.empty()) return;
-    bool front_way = (p.dir == Direction::plus) == (front_plus[f.loops[p.loops[0]].piece] >= 0);
-    bool on_front = p.front_minus_back > 0 || (p.front_minus_back == 0 && front_way);
-    for (LoopId l : p.loops) front[l] = on_front;
-    p = Pass{};
-  };
-  for (LoopId l = 0; l < f.loops.size(); ++l) {
-    const FabricLoop& loop = f.loops[l];
-    Pass& p = open[loop.piece];
-    if (p.dir != loop.dir) close(p);
-    p.dir = loop.dir;
-    p.loops.push_back(l);
-    p.front_minus_back += loop.front ? 1 : -1;
+
+  static void count_beds(Piece& piece, const FabricLoop& loop) {
+    if (loop.made_by == OpCode::tuck) return;
+    if (loop.front)
+      ++piece.front_by_dir[loop.dir == Direction::plus];
+    else
+      piece.has_back = true;
   }
-  for (Pass& p : open) close(p);
-  return front;
-}
+
+  // A piece is a tube when its yarn goes round: more of its loops are pulled through loops its
+  // yarn made two passes before (the same half, a round below) than through loops of the pass
+  // just before (a row knit back across a sheet), whichever beds a rib's purls are knit on. A
+  // piece pulled through none of its own loops (a draw thread's one round through the waste)
+  // is a tube when its front loops go one way round, the back's being there.
+  std::vector<bool> tubes() const {
+    std::vector<bool> tube(pieces_.size());
+    for (std::size_t i = 0; i < tube.size(); ++i) {
+      const Piece& p = pieces_[i];
+      auto [minus, plus] = p.front_by_dir;
+      bool one_way = p.has_back && std::min(minus, plus) * 4 < std::max(minus, plus);
+      tube[i] = p.rounds_over_rows > 0 || (p.rounds_over_rows == 0 && one_way);
+    }
+    return tube;
+  }
+
+  const Fabric& f_;
+  std::vector<std::uint32_t> pass_of_;  // per loop
+  std::vector<Pass> passes_;
+  std::vector<Piece> pieces_;
+};
 
 class StWriter {
  public:
@@ -283,8 +313,7 @@ class StWriter {
         stitch_of_(std::move(graph.stitch_of)),
         out_(out),
         height_(loop_heights(f)),
-        tube_(tubular_pieces(f)),
-        pass_front_(pass_on_front(f)) {
+        halves_(PassReader(f).read()) {
     std::uint32_t line = 0;
     for (Stitch& s : stitches_) {
       s.first_line = line;
@@ -350,14 +379,14 @@ class StWriter {
   // than that of its half's pass.
   bool is_purl(LoopId l) const {
     const FabricLoop& loop = f_.loops[l];
-    return loop.front != (tube_[loop.piece] ? pass_front_[l] : true);
+    return loop.front != (halves_.tube[loop.piece] ? halves_.front_half[l] : true);
   }
 
   void line(const Stitch& s, char type, std::array<std::int64_t, 2> in,
             std::array<std::int64_t, 2> outs) {
     const FabricLoop& l = f_.loops[s.loop];
     bool plus = l.dir == Direction::plus;
-    bool round_way = tube_[l.piece] ? plus == pass_front_[s.loop] : plus;
+    bool round_way = halves_.tube[l.piece] ? plus == halves_.front_half[s.loop] : plus;
     fmt::format_to(std::back_inserter(buffer_), "{} {} {} {} {} {} {} {} {} {}\n", l.piece, type,
                    round_way ? 'a' : 'c', in[0], in[1], outs[0], outs[1], l.needle, height_[s.loop],
                    l.front ? 0 : 1);
@@ -374,7 +403,7 @@ class StWriter {
   std::ostream& out_;
   fmt::memory_buffer buffer_;
   std::vector<std::uint32_t> height_;
-  std::vector<bool> tube_, pass_front_;
+  Halves halves_;
   std::uint32_t lines_ = 0;
 };
 

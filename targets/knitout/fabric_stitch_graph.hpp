@@ -20,9 +20,12 @@
 //   a dropped row was pulled through end their wales there.
 // `yarn` is the yarn piece (one per in/inhook), `dir` the way round: the pass direction on a
 // sheet; on a tube (a piece whose loops are mostly pulled through loops made two passes before,
-// a round below, rather than in the pass before, a row below) the front half's + and
-// the back half's - are the same way round, a loop's half being that of the pass it is made in
-// (a rib's purl is knit on the other bed in its half's pass). x is the needle, y the loop's
+// a round below, rather than in the pass before, a row below) the front half's + and the back
+// half's - are the same way round, a loop's half being that of the pass it is made in, whichever
+// bed it is on (a rib's purl is knit on the other bed in its half's pass). A pass's half is told
+// by its direction (the front half's being the way most loops of wales cast on on the front bed
+// go), the other way after the yarn turns back (a pass pulled through the pass before it) an odd
+// number of times: a heel's short row that goes on round the fold. x is the needle, y the loop's
 // height, z 0 front, 1 back.
 #pragma once
 
