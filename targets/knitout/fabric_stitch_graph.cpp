@@ -327,7 +327,9 @@ class StWriter {
 
   // Lines are formatted into a buffer written out in blocks: an ostream call per line costs
   // more than the formatting.
-  void write() {
+  void write(std::vector<bool>* purled_decreases) {
+    purled_ = purled_decreases;
+    if (purled_) purled_->assign(lines_, false);
     for (const Stitch& s : stitches_) {
       if (s.lines) write_stitch(s);
       if (buffer_.size() > (1u << 16)) flush();
@@ -361,7 +363,10 @@ class StWriter {
     std::array<std::int64_t, 2> outs{-1, -1};
     for (std::uint32_t o = 0; o < out_count(s) && !is_end(s); ++o)
       outs[o] = s.taker[o] != kNone ? taker_line(s.taker[o], o ? s.second : s.loop) : next_end++;
-    line(s, letter(s), in, outs);
+    char type = letter(s);
+    line(s, type, in, outs);
+    if (purled_ && type == 'd' && is_purl(s.loop))
+      std::fill_n(purled_->begin() + s.first_line, chain_lines(s) + 1, true);
     for (std::uint32_t e = main_line(s) + 1; e < s.first_line + s.lines; ++e)
       line(s, 'e', {main_line(s), -1}, {-1, -1});
   }
@@ -404,20 +409,22 @@ class StWriter {
   fmt::memory_buffer buffer_;
   std::vector<std::uint32_t> height_;
   Halves halves_;
+  std::vector<bool>* purled_ = nullptr;  // per line: a decrease knit as a purl
   std::uint32_t lines_ = 0;
 };
 
 }  // namespace
 
 void write_fabric_stitch_graph(const Replay& replay, const std::string& file, std::ostream& out,
-                               const std::vector<bool>* border) {
+                               const std::vector<bool>* border,
+                               std::vector<bool>* purled_decreases) {
   StWriter writer(replay.fabric, GraphBuilder(replay.fabric, border).build(), out);
   if (writer.lines() == 0)
     throw Error(
         fmt::format("{}: nothing of the fabric stays (every loop unravels or holds "
                     "nothing), so there is no stitch graph to write",
                     file));
-  writer.write();
+  writer.write(purled_decreases);
 }
 
 }  // namespace skein::knitout

@@ -41,7 +41,10 @@ namespace skein::knitout {
 // knit over them to bring the yarn round, which the proof counts): like the leading tucks, not
 // written; the loops knit through them are the cast-on.
 // Throws Error when nothing of the fabric stays (every loop unravels).
+// `purled_decreases`, when given, is set per line written: whether it is a decrease knit as a
+// purl (a p2tog), which `.st` writes as `d`, having no letter for it.
 void write_fabric_stitch_graph(const Replay& replay, const std::string& file, std::ostream& out,
-                               const std::vector<bool>* border = nullptr);
+                               const std::vector<bool>* border = nullptr,
+                               std::vector<bool>* purled_decreases = nullptr);
 
 }  // namespace skein::knitout
