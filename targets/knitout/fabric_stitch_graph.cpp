@@ -72,6 +72,7 @@ class GraphBuilder {
     for (LoopId l = 0; l < f_.loops.size(); ++l)
       if (!gone_[l] && f_.loops[l].made_by != OpCode::tuck) resolve_parents(l);
     mark_borders();
+    find_cast_on_runs();
     for (LoopId l = 0; l < f_.loops.size(); ++l)
       if (!gone_[l] && !border_[l]) add_stitch(l);
     link_takers();
@@ -123,6 +124,21 @@ class GraphBuilder {
     }
   }
 
+  // Per loop: whether the next loop its yarn makes (of those written) is pulled through
+  // nothing too: two such loops in a row are a cast-on (along a split, a crotch's), not a
+  // yarn-over beside a knit.
+  void find_cast_on_runs() {
+    before_nothing_.assign(f_.loops.size(), false);
+    std::vector<std::uint8_t> next_takes_nothing;  // per piece, going back along the yarn
+    for (LoopId l = static_cast<LoopId>(f_.loops.size()); l-- > 0;) {
+      if (gone_[l] || border_[l]) continue;
+      std::uint32_t piece = f_.loops[l].piece;
+      if (piece >= next_takes_nothing.size()) next_takes_nothing.resize(piece + 1, 0);
+      before_nothing_[l] = next_takes_nothing[piece];
+      next_takes_nothing[piece] = takes_[l].empty();
+    }
+  }
+
   void add_stitch(LoopId l) {
     std::uint32_t piece = f_.loops[l].piece;
     if (piece >= last_stitch_.size()) last_stitch_.resize(piece + 1, kNone);
@@ -148,7 +164,8 @@ class GraphBuilder {
     if (s.second != kNone) return false;
     const std::vector<LoopId>& mine = takes_[l];
     if (s.takes.size() == 1 && mine.size() == 1 && s.takes[0] == mine[0]) return true;
-    if (s.takes.size() == 1 && mine.empty() && !takes_[s.loop].empty()) return true;
+    if (s.takes.size() == 1 && mine.empty() && !takes_[s.loop].empty() && !before_nothing_[l])
+      return true;
     if (s.takes.empty() && s.after_taking && mine.size() == 1 && !taken_[mine[0]] &&
         mine[0] < s.loop) {
       s.takes = {mine[0]};
@@ -168,7 +185,7 @@ class GraphBuilder {
 
   const Fabric& f_;
   const std::vector<bool>* proven_border_;
-  std::vector<bool> gone_, border_;
+  std::vector<bool> gone_, border_, before_nothing_;
   std::vector<std::vector<LoopId>> takes_;
   std::vector<std::uint32_t> stitch_of_;
   std::vector<bool> taken_;

@@ -12,7 +12,8 @@
 //   the loops knit through them are the cast-on `s` stitches;
 // - two loops pulled through one loop one after the other along the yarn (a split and a knit),
 //   or a loop through nothing beside a knit along the yarn (a yarn-over, a make-1), are one
-//   increase `i`;
+//   increase `i`; loops through nothing that follow each other are cast-on `s` stitches (a
+//   crotch's cast-on along a split, knit on after a leg's round), none of them an increase;
 // - a loop pulled through its yarn's previous loop and another (a bind-off's chain) does not
 //   take the previous loop: the chain is the yarn; a loop nothing takes ends its wale (`e`);
 // - a loop dropped while nothing held it unravels, and with it the cord it ends (a tag: loops
