@@ -298,7 +298,7 @@ TEST(KnitoutFabricMesh, RandomShapesRoundTripOrAreRefused) {
 // proof holds to the model, and knitout refuses "a cast-on stitch above the first row"), or is
 // refused by name. The test prints the tally; on 2026-12-02, of 60: 33 written (21 sheets with
 // flaps, 12 tubes: plain, with crowns, parting into legs, 9 of them with a split's cast-on), 12
-// where the glued stitches fold over each other (tubes bent by short rows, thumbs, legs), 2
+// where the glued stitches fold over each other (tubes bent by short rows, legs parting), 2
 // whose mesh laid out does not check, 10 refused by knitout, 3 not knittable.
 TEST(KnitoutFabricMesh, RandomGarmentsRoundTripOrAreRefusedByName) {
   knitout::MachineProfile p = testing::shipped_profile("generic");
