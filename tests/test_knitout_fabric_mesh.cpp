@@ -15,6 +15,8 @@
 #include <random>
 #include <set>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "builtin_targets.hpp"
 #include "cli_runner.hpp"
@@ -52,17 +54,28 @@ std::map<StitchType, int> types(const KnitGraph& g) {
   return n;
 }
 
-// `skein verify F --against M --fabric x.obj`: the file replayed and proven, its fabric written
-// as a stitch mesh (the piece's border in its own yarn left out: its tucks), the mesh's text.
-// Throws UnsupportedError where the fabric is refused.
-std::string proven_fabric_mesh(const std::string& text, const Compilation& model,
-                               const knitout::MachineProfile& p) {
+// `skein verify F --against M`: the file replayed and proven, and the piece's border in its own
+// yarn (its tucks), which the fabric written leaves out.
+struct ProvenFabric {
+  knitout::Replay replay;
+  std::vector<bool> border;
+};
+ProvenFabric prove_fabric(const std::string& text, const Compilation& model,
+                          const knitout::MachineProfile& p) {
   knitout::Replay r = knitout::replay_knitout(text, "out.k", p);
   knitout::ProofResult proof = knitout::prove_whole_file(r, text, model);
   EXPECT_TRUE(proof.proven) << proof.summary;
   std::vector<bool> border = knitout::own_yarn_border(r, proof);
+  return {std::move(r), std::move(border)};
+}
+
+// `skein verify F --against M --fabric x.obj`: the mesh's text. Throws UnsupportedError where
+// the fabric is refused.
+std::string proven_fabric_mesh(const std::string& text, const Compilation& model,
+                               const knitout::MachineProfile& p) {
+  ProvenFabric proven = prove_fabric(text, model, p);
   std::ostringstream obj;
-  knitout::write_fabric_stitch_mesh(r, "out.k", obj, &border);
+  knitout::write_fabric_stitch_mesh(proven.replay, "out.k", obj, &proven.border);
   return obj.str();
 }
 
@@ -315,18 +328,15 @@ TEST(KnitoutFabricMesh, RandomGarmentsRoundTripOrAreRefusedByName) {
           ++not_knit;
           return v;
         }
-        knitout::Replay r = knitout::replay_knitout(text, "out.k", p);
-        knitout::ProofResult proof = knitout::prove_whole_file(r, text, c);
-        EXPECT_TRUE(proof.proven) << proof.summary;
-        std::vector<bool> border = knitout::own_yarn_border(r, proof);
+        ProvenFabric proven = prove_fabric(text, c, p);
         std::ostringstream st;
-        knitout::write_fabric_stitch_graph(r, "out.k", st, &border);
+        knitout::write_fabric_stitch_graph(proven.replay, "out.k", st, &proven.border);
         Compilation graph = compile_knit_graph(parse_autoknit_st(st.str(), "x.st"), "x.st");
         EXPECT_TRUE(graph.knittability.knittable) << check_report(graph);
         ++graphs;
         std::ostringstream obj;
         try {
-          knitout::write_fabric_stitch_mesh(r, "out.k", obj, &border);
+          knitout::write_fabric_stitch_mesh(proven.replay, "out.k", obj, &proven.border);
         } catch (const UnsupportedError& e) {
           v.refusal = e.what();
           return v;
