@@ -72,6 +72,7 @@ class GraphBuilder {
     for (LoopId l = 0; l < f_.loops.size(); ++l)
       if (!gone_[l] && f_.loops[l].made_by != OpCode::tuck) resolve_parents(l);
     mark_borders();
+    find_cast_on_runs();
     for (LoopId l = 0; l < f_.loops.size(); ++l)
       if (!gone_[l] && !border_[l]) add_stitch(l);
     link_takers();
@@ -80,11 +81,14 @@ class GraphBuilder {
 
  private:
   // The loops `l` takes in the stitch graph: its parents, a tuck standing for the loop under
-  // it, without its yarn's previous loop when that is one link of a chain.
+  // it, without its yarn's previous loop when that is one link of a chain. A tuck made on an
+  // empty needle and moved onto loops later lies over nothing: a loop through nothing that `l`
+  // takes beside them (taken by the tuck, a loop made after it would be listed before its taker).
   void resolve_parents(LoopId l) {
     std::vector<LoopId>& takes = takes_[l];
     for (LoopId parent : f_.parents_of(l)) {
-      if (f_.loops[parent].made_by == OpCode::tuck && !takes.empty()) {
+      const FabricLoop& p = f_.loops[parent];
+      if (p.made_by == OpCode::tuck && !p.over_nothing && !takes.empty()) {
         takes_[parent] = {takes.back()};
         takes.back() = parent;
       } else {
@@ -120,6 +124,21 @@ class GraphBuilder {
     }
   }
 
+  // Per loop: whether the next loop its yarn makes (of those written) is pulled through
+  // nothing too: two such loops in a row are a cast-on (along a split, a crotch's), not a
+  // yarn-over beside a knit.
+  void find_cast_on_runs() {
+    before_nothing_.assign(f_.loops.size(), false);
+    std::vector<std::uint8_t> next_takes_nothing;  // per piece, going back along the yarn
+    for (LoopId l = static_cast<LoopId>(f_.loops.size()); l-- > 0;) {
+      if (gone_[l] || border_[l]) continue;
+      std::uint32_t piece = f_.loops[l].piece;
+      if (piece >= next_takes_nothing.size()) next_takes_nothing.resize(piece + 1, 0);
+      before_nothing_[l] = next_takes_nothing[piece];
+      next_takes_nothing[piece] = takes_[l].empty();
+    }
+  }
+
   void add_stitch(LoopId l) {
     std::uint32_t piece = f_.loops[l].piece;
     if (piece >= last_stitch_.size()) last_stitch_.resize(piece + 1, kNone);
@@ -145,7 +164,8 @@ class GraphBuilder {
     if (s.second != kNone) return false;
     const std::vector<LoopId>& mine = takes_[l];
     if (s.takes.size() == 1 && mine.size() == 1 && s.takes[0] == mine[0]) return true;
-    if (s.takes.size() == 1 && mine.empty() && !takes_[s.loop].empty()) return true;
+    if (s.takes.size() == 1 && mine.empty() && !takes_[s.loop].empty() && !before_nothing_[l])
+      return true;
     if (s.takes.empty() && s.after_taking && mine.size() == 1 && !taken_[mine[0]] &&
         mine[0] < s.loop) {
       s.takes = {mine[0]};
@@ -165,7 +185,7 @@ class GraphBuilder {
 
   const Fabric& f_;
   const std::vector<bool>* proven_border_;
-  std::vector<bool> gone_, border_;
+  std::vector<bool> gone_, border_, before_nothing_;
   std::vector<std::vector<LoopId>> takes_;
   std::vector<std::uint32_t> stitch_of_;
   std::vector<bool> taken_;
@@ -194,62 +214,113 @@ bool skipped(const Stitch& s) {  // a loop through nothing nothing takes: it hol
   return s.takes.empty() && s.second == kNone && s.taker[0] == kNone;
 }
 
-// A piece is a tube when its front loops go one way round: then the back's go the other.
-std::vector<bool> tubular_pieces(const Fabric& f) {
-  std::vector<std::array<std::uint64_t, 2>> front_by_dir;
-  std::vector<bool> has_back;
-  for (const FabricLoop& l : f.loops) {
-    if (l.piece >= front_by_dir.size())
-      front_by_dir.resize(l.piece + 1), has_back.resize(l.piece + 1);
-    if (l.made_by == OpCode::tuck) continue;
-    if (l.front)
-      ++front_by_dir[l.piece][l.dir == Direction::plus];
-    else
-      has_back[l.piece] = true;
-  }
-  std::vector<bool> tube(front_by_dir.size());
-  for (std::size_t p = 0; p < tube.size(); ++p) {
-    auto [minus, plus] = front_by_dir[p];
-    tube[p] = has_back[p] && std::min(minus, plus) * 4 < std::max(minus, plus);
-  }
-  return tube;
-}
+// What the passes of each yarn piece (runs of its loops going one way) knit: per piece whether
+// it is a tube, and per loop whether its pass knits a tube's front half (whichever bed a rib's
+// purl or a rolled stitch in it is knit on).
+struct Halves {
+  std::vector<bool> tube;        // per yarn piece
+  std::vector<bool> front_half;  // per loop
+};
 
-// Per loop: the bed of the pass it was made in (a run of its yarn piece's loops going one way),
-// by the bed most of the pass's loops are on; in a tie (a 2x2 rib), the front's if the pass
-// goes the way most of the piece's front loops go. On a tube a pass knits one half round; a
-// purl in it is knit on the other bed, going the same way round as the knits beside it.
-std::vector<bool> pass_on_front(const Fabric& f) {
-  std::vector<std::int64_t> front_plus;  // per piece: front loops going + less those going -
-  for (const FabricLoop& l : f.loops) {
-    if (l.piece >= front_plus.size()) front_plus.resize(l.piece + 1, 0);
-    if (l.front) front_plus[l.piece] += l.dir == Direction::plus ? 1 : -1;
+class PassReader {
+ public:
+  explicit PassReader(const Fabric& f) : f_(f), pass_of_(f.loops.size()) {}
+
+  Halves read() {
+    std::vector<bool> wale_front(f_.loops.size());
+    for (LoopId l = 0; l < f_.loops.size(); ++l) {
+      const FabricLoop& loop = f_.loops[l];
+      Pass& p = pass_for(l);
+      // A wale stays on the half of the bed its first loop (a cast-on) was made on.
+      wale_front[l] = loop.parent_count ? wale_front[f_.parents_of(l)[0]] : loop.front;
+      Piece& piece = pieces_[loop.piece];
+      piece.front_goes_plus += wale_front[l] == (loop.dir == Direction::plus) ? 1 : -1;
+      count_beds(piece, loop);
+      for (LoopId parent : f_.parents_of(l)) {
+        if (f_.loops[parent].piece != loop.piece) continue;
+        std::uint32_t back = p.number - passes_[pass_of_[parent]].number;
+        p.onto_previous += back == 1;
+        p.onto_older += back >= 2;
+        piece.rounds_over_rows += (back == 2) - (back == 1);
+      }
+    }
+    Halves h{tubes(), std::vector<bool>(f_.loops.size())};
+    for (Pass& p : passes_) {
+      Piece& piece = pieces_[p.piece];
+      piece.reversed ^= p.previous != kNone && p.onto_previous > p.onto_older;
+      bool front_way = (p.dir == Direction::plus) == (piece.front_goes_plus >= 0);
+      p.on_front = front_way != piece.reversed;
+    }
+    for (LoopId l = 0; l < f_.loops.size(); ++l) h.front_half[l] = passes_[pass_of_[l]].on_front;
+    return h;
   }
+
+ private:
   struct Pass {
-    std::vector<LoopId> loops;
-    std::int64_t front_minus_back = 0;
+    std::uint32_t piece = 0, number = 0;  // number: its place among its piece's passes
+    std::uint32_t previous = kNone;       // its piece's pass before it
     Direction dir = Direction::none;
+    std::uint32_t onto_previous = 0, onto_older = 0;  // loops it pulls through, by their pass
+    bool on_front = true;
   };
-  std::vector<bool> front(f.loops.size(), true);
-  std::vector<Pass> open(front_plus.size());  // per yarn piece: its pass so far
-  auto close = [&](Pass& p) {
-    if (p.loops.empty()) return;
-    bool front_way = (p.dir == Direction::plus) == (front_plus[f.loops[p.loops[0]].piece] >= 0);
-    bool on_front = p.front_minus_back > 0 || (p.front_minus_back == 0 && front_way);
-    for (LoopId l : p.loops) front[l] = on_front;
-    p = Pass{};
+  struct Piece {
+    std::uint32_t last_pass = kNone;
+    std::int64_t rounds_over_rows = 0;
+    std::int64_t front_goes_plus = 0;  // front wales' loops going + and back's going -, less
+    std::array<std::uint64_t, 2> front_by_dir{0, 0};
+    bool has_back = false;
+    // Whether its yarn goes round the other way now: it turned back (a pass pulled through the
+    // pass before it: a short row) an odd number of times. A short row that goes on round the
+    // fold knits the other half going the other way.
+    bool reversed = false;
   };
-  for (LoopId l = 0; l < f.loops.size(); ++l) {
-    const FabricLoop& loop = f.loops[l];
-    Pass& p = open[loop.piece];
-    if (p.dir != loop.dir) close(p);
-    p.dir = loop.dir;
-    p.loops.push_back(l);
-    p.front_minus_back += loop.front ? 1 : -1;
+
+  Pass& pass_for(LoopId l) {
+    const FabricLoop& loop = f_.loops[l];
+    if (loop.piece >= pieces_.size()) pieces_.resize(loop.piece + 1);
+    Piece& piece = pieces_[loop.piece];
+    if (piece.last_pass == kNone || passes_[piece.last_pass].dir != loop.dir) {
+      Pass p;
+      p.piece = loop.piece;
+      p.dir = loop.dir;
+      p.previous = piece.last_pass;
+      p.number = piece.last_pass == kNone ? 0 : passes_[piece.last_pass].number + 1;
+      piece.last_pass = static_cast<std::uint32_t>(passes_.size());
+      passes_.push_back(p);
+    }
+    pass_of_[l] = piece.last_pass;
+    return passes_[piece.last_pass];
   }
-  for (Pass& p : open) close(p);
-  return front;
-}
+
+  static void count_beds(Piece& piece, const FabricLoop& loop) {
+    if (loop.made_by == OpCode::tuck) return;
+    if (loop.front)
+      ++piece.front_by_dir[loop.dir == Direction::plus];
+    else
+      piece.has_back = true;
+  }
+
+  // A piece is a tube when its yarn goes round: more of its loops are pulled through loops its
+  // yarn made two passes before (the same half, a round below) than through loops of the pass
+  // just before (a row knit back across a sheet), whichever beds a rib's purls are knit on. A
+  // piece pulled through none of its own loops (a draw thread's one round through the waste)
+  // is a tube when its front loops go one way round, the back's being there.
+  std::vector<bool> tubes() const {
+    std::vector<bool> tube(pieces_.size());
+    for (std::size_t i = 0; i < tube.size(); ++i) {
+      const Piece& p = pieces_[i];
+      auto [minus, plus] = p.front_by_dir;
+      bool one_way = p.has_back && std::min(minus, plus) * 4 < std::max(minus, plus);
+      tube[i] = p.rounds_over_rows > 0 || (p.rounds_over_rows == 0 && one_way);
+    }
+    return tube;
+  }
+
+  const Fabric& f_;
+  std::vector<std::uint32_t> pass_of_;  // per loop
+  std::vector<Pass> passes_;
+  std::vector<Piece> pieces_;
+};
 
 class StWriter {
  public:
@@ -259,8 +330,7 @@ class StWriter {
         stitch_of_(std::move(graph.stitch_of)),
         out_(out),
         height_(loop_heights(f)),
-        tube_(tubular_pieces(f)),
-        pass_front_(pass_on_front(f)) {
+        halves_(PassReader(f).read()) {
     std::uint32_t line = 0;
     for (Stitch& s : stitches_) {
       s.first_line = line;
@@ -274,7 +344,9 @@ class StWriter {
 
   // Lines are formatted into a buffer written out in blocks: an ostream call per line costs
   // more than the formatting.
-  void write() {
+  void write(std::vector<bool>* purled_decreases) {
+    purled_ = purled_decreases;
+    if (purled_) purled_->assign(lines_, false);
     for (const Stitch& s : stitches_) {
       if (s.lines) write_stitch(s);
       if (buffer_.size() > (1u << 16)) flush();
@@ -308,7 +380,10 @@ class StWriter {
     std::array<std::int64_t, 2> outs{-1, -1};
     for (std::uint32_t o = 0; o < out_count(s) && !is_end(s); ++o)
       outs[o] = s.taker[o] != kNone ? taker_line(s.taker[o], o ? s.second : s.loop) : next_end++;
-    line(s, letter(s), in, outs);
+    char type = letter(s);
+    line(s, type, in, outs);
+    if (purled_ && type == 'd' && is_purl(s.loop))
+      std::fill_n(purled_->begin() + s.first_line, chain_lines(s) + 1, true);
     for (std::uint32_t e = main_line(s) + 1; e < s.first_line + s.lines; ++e)
       line(s, 'e', {main_line(s), -1}, {-1, -1});
   }
@@ -326,14 +401,14 @@ class StWriter {
   // than that of its half's pass.
   bool is_purl(LoopId l) const {
     const FabricLoop& loop = f_.loops[l];
-    return loop.front != (tube_[loop.piece] ? pass_front_[l] : true);
+    return loop.front != (halves_.tube[loop.piece] ? halves_.front_half[l] : true);
   }
 
   void line(const Stitch& s, char type, std::array<std::int64_t, 2> in,
             std::array<std::int64_t, 2> outs) {
     const FabricLoop& l = f_.loops[s.loop];
     bool plus = l.dir == Direction::plus;
-    bool round_way = tube_[l.piece] ? plus == pass_front_[s.loop] : plus;
+    bool round_way = halves_.tube[l.piece] ? plus == halves_.front_half[s.loop] : plus;
     fmt::format_to(std::back_inserter(buffer_), "{} {} {} {} {} {} {} {} {} {}\n", l.piece, type,
                    round_way ? 'a' : 'c', in[0], in[1], outs[0], outs[1], l.needle, height_[s.loop],
                    l.front ? 0 : 1);
@@ -350,21 +425,23 @@ class StWriter {
   std::ostream& out_;
   fmt::memory_buffer buffer_;
   std::vector<std::uint32_t> height_;
-  std::vector<bool> tube_, pass_front_;
+  Halves halves_;
+  std::vector<bool>* purled_ = nullptr;  // per line: a decrease knit as a purl
   std::uint32_t lines_ = 0;
 };
 
 }  // namespace
 
 void write_fabric_stitch_graph(const Replay& replay, const std::string& file, std::ostream& out,
-                               const std::vector<bool>* border) {
+                               const std::vector<bool>* border,
+                               std::vector<bool>* purled_decreases) {
   StWriter writer(replay.fabric, GraphBuilder(replay.fabric, border).build(), out);
   if (writer.lines() == 0)
     throw Error(
         fmt::format("{}: nothing of the fabric stays (every loop unravels or holds "
                     "nothing), so there is no stitch graph to write",
                     file));
-  writer.write();
+  writer.write(purled_decreases);
 }
 
 }  // namespace skein::knitout

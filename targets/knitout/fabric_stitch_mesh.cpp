@@ -66,9 +66,10 @@ struct Corners {
 class GluedFabric {
  public:
   GluedFabric(const KnitGraph& g, const std::vector<std::array<double, 3>>& positions,
-              const std::string& file)
+              const std::vector<bool>& purled, const std::string& file)
       : g_(g),
         positions_(positions),
+        purled_(purled),
         file_(file),
         kept_(g.size(), true),
         merged_(g.size(), false),
@@ -165,6 +166,7 @@ class GluedFabric {
       f.takes = std::move(taken[s]);
       f.makes = std::move(made[s]);
       f.type = merged_[s] ? StitchType::s2kp : g_.type[s];
+      if (f.type == StitchType::k2tog && purled_[s]) f.type = StitchType::p2tog;
       f.turns = is_short_row_end(s, f);
       if (f.turns) f.type = short_row_end(s, f);
       f.bottoms = static_cast<std::uint8_t>(std::max<std::size_t>(f.takes.size(), 1));
@@ -523,6 +525,7 @@ class GluedFabric {
 
   const KnitGraph& g_;
   const std::vector<std::array<double, 3>>& positions_;
+  const std::vector<bool>& purled_;  // per stitch: a decrease knit as a purl
   const std::string& file_;
   std::vector<bool> kept_, merged_;
   std::vector<bool> turns_after_wrap_;  // a stitch whose wrap was folded: the yarn turns after it
@@ -542,10 +545,11 @@ class GluedFabric {
 void write_fabric_stitch_mesh(const Replay& replay, const std::string& file, std::ostream& out,
                               const std::vector<bool>* border) {
   std::ostringstream st;
-  write_fabric_stitch_graph(replay, file, st, border);
+  std::vector<bool> purled;
+  write_fabric_stitch_graph(replay, file, st, border, &purled);
   std::vector<std::array<double, 3>> positions;
   KnitGraph graph = parse_autoknit_st(st.str(), file + " (its fabric)", &positions);
-  StitchMesh mesh = GluedFabric(graph, positions, file).build();
+  StitchMesh mesh = GluedFabric(graph, positions, purled, file).build();
   // Never a mesh `skein check` would refuse: the fabric goes as a stitch graph (.st) instead.
   try {
     (void)compile_stitch_mesh(mesh, file + " (its fabric)");

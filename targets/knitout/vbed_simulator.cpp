@@ -314,7 +314,9 @@ void VirtualBed::stitch_op(const Op& op) {
   count_pass(op, false);
   if (op.code == OpCode::tuck) {
     ++r_.stats.tucks;
-    push(s, op.a, new_loop(OpCode::tuck, op.dir, op.a, op.carriers, {}));
+    LoopId tuck = new_loop(OpCode::tuck, op.dir, op.a, op.carriers, {});
+    r_.fabric.loops[tuck].over_nothing = s.size == 0;
+    push(s, op.a, tuck);
     return;
   }
   LoopId made = new_loop(op.code, op.dir, op.a, op.carriers, {s.loop.data(), s.size});

@@ -27,14 +27,17 @@ struct FabricLoop {
   std::uint8_t parent_count = 0;  // loops it was pulled through (knit, split); 0 for tuck
   std::uint8_t children = 0;      // loops later pulled through it (saturates at 255)
   OpCode made_by = OpCode::knit;  // knit, tuck or split
-  // Three flags in one byte: a loop is 24 bytes, and a million of them are written once each.
+  // Four flags in one byte: a loop is 24 bytes, and a million of them are written once each.
   bool dropped : 1 = false;             // released by a drop while nothing was pulled through it
   bool front : 1 = true;                // made on the front bed (seen from the front: a knit)
   Direction dir : 2 = Direction::plus;  // the direction of the pass that made it
-  CarrierMask yarn = 0;                 // the carriers that made it
-  std::uint32_t piece = 0;              // yarn piece (one per in/inhook of its carrier)
-  std::uint32_t line = 0;               // the knitout line that made it
-  std::int32_t needle = 0;              // the needle it was made on
+  // A tuck made on an empty needle: it lies over nothing (a cast-on's loop), even once moved
+  // onto loops; else it lies over the loop under it on its needle.
+  bool over_nothing : 1 = false;
+  CarrierMask yarn = 0;     // the carriers that made it
+  std::uint32_t piece = 0;  // yarn piece (one per in/inhook of its carrier)
+  std::uint32_t line = 0;   // the knitout line that made it
+  std::int32_t needle = 0;  // the needle it was made on
 };
 
 static_assert(sizeof(FabricLoop) == 24);
