@@ -126,9 +126,9 @@ TEST(YarnModel, EverySampleAsLaidHoldsItsLoops) {
   const std::vector<Expected> samples = {
       {"hat", 0, 0, 0},       {"rib-swatch", 0, 0, 0},      {"swatch", 0, 0, 0},
       {"beanie", 0, 0, 0},    {"short-row-wedge", 0, 0, 0}, {"sock", 0, 0, 0},
-      {"letter-i", 0, 0, 0},  {"letter-h", 0, 0, 0},        {"letter-r", 16, 0, 0},
+      {"letter-i", 0, 0, 0},  {"letter-h", 0, 0, 0},        {"letter-r", 16, 0, 1},
       {"two-bars", 20, 0, 0}, {"three-bars", 0, 0, 0},      {"three-bars-own", 0, 0, 0},
-      {"teapot", 52, 0, 6},   {"sweater", 0, 0, 14}};
+      {"teapot", 52, 0, 1},   {"sweater", 0, 0, 6}};
   for (const Expected& e : samples) {
     std::string yaml = std::string(SKEIN_SOURCE_DIR) + "/samples/" + e.sample + "/" + e.sample;
     Compilation c =
@@ -283,8 +283,8 @@ TEST(YarnModel, RandomGarmentsAsLaidHoldTheirLoops) {
   std::cout << loops << " loops, " << not_held << " not held, " << wrongly_held
             << " held wrongly\n";
   EXPECT_GT(loops, 150000u);
-  EXPECT_LE(not_held, 117u);
-  EXPECT_LE(wrongly_held, 222u);
+  EXPECT_LE(not_held, 101u);
+  EXPECT_LE(wrongly_held, 105u);
 }
 
 }  // namespace
