@@ -153,6 +153,14 @@ class Lobe {
     if (loop && t_.kind != LobeKind::slipped && loop->taker != kNoStitch) {
       taker_ = &layout.frame[loop->taker];
       grip_ = grip(graph, layout, loop->taker, loop->taker_slot, diameter);
+      // A stitch beside its taker's cell (AutoKnit's wales lean up to a stitch and a half
+      // beside a decrease) turns its legs as they lean over: turned below, they met the heads
+      // of the loops stacked with its own (test-A did not relax clear).
+      Point3 aside = frame_.at(0.5f, 0.5f, 0) - taker_->at(0.5f, 0.5f, 0);
+      turn_from_ = std::abs(aside.dot(taker_->course)) > 0.5f * taker_->course.squaredNorm()
+                       ? kTurnTo
+                       : kTurnFrom;
+      turn_to_ = turn_from_ == kTurnTo ? 1.0f : kTurnTo;
     }
   }
 
@@ -164,7 +172,7 @@ class Lobe {
     // above the old loops they pass through and before they lean towards the grip: where the
     // heads of a decrease converge, each loop's legs already lie in front of the loops stacked
     // behind it, so no maker's yarn passes through the eye of a loop stacked with its own.
-    float turn = smoothstep(kTurnFrom, kTurnTo, p.y);
+    float turn = smoothstep(turn_from_, turn_to_, p.y);
     float z = p.z + turn * (p.z * (grip_.side * t_.side - 1) + grip_.depth);
     Point3 own = frame_.at(p.x, p.y, z);
     float w = smoothstep(kTurnTo, 1.0f, p.y);
@@ -180,6 +188,7 @@ class Lobe {
   std::uint32_t j_;
   float centre_;
   const StitchFrame* taker_ = nullptr;
+  float turn_from_ = kTurnFrom, turn_to_ = kTurnTo;
   Grip grip_{};
 };
 
