@@ -26,6 +26,21 @@ TEST(StitchCatalogue, AbbreviationsRoundTripAndCountsAreConsistent) {
   EXPECT_FALSE(stitch_type_from_abbreviation("knit").has_value());
 }
 
+// A decrease's loops lie on one another as the stitch says, seen from the right side: k2tog
+// (and p2tog) leans right, its left loop in front; ssk leans left; s2kp's centre loop lies in
+// front, the right one behind it, the left one at the back.
+TEST(StitchCatalogue, DecreasesStackTheirLoopsAsTheyLean) {
+  EXPECT_GT(stack_position(StitchType::k2tog, 0, 2), stack_position(StitchType::k2tog, 1, 2));
+  EXPECT_GT(stack_position(StitchType::p2tog, 0, 2), stack_position(StitchType::p2tog, 1, 2));
+  EXPECT_LT(stack_position(StitchType::ssk, 0, 2), stack_position(StitchType::ssk, 1, 2));
+  EXPECT_EQ(stack_position(StitchType::s2kp, 1, 3), 1.0f);
+  EXPECT_EQ(stack_position(StitchType::s2kp, 2, 3), 0.0f);
+  EXPECT_EQ(stack_position(StitchType::s2kp, 0, 3), -1.0f);
+  EXPECT_EQ(stack_position(StitchType::k, 0, 1), 0.0f);
+  for (const StitchTypeInfo& i : stitch_catalogue())
+    EXPECT_EQ(i.stack == LoopStack::single, i.loops_in < 2) << i.abbreviation;
+}
+
 TEST(StitchMesh, GeneratedSheetHasRowsInKnittingOrderAndValidates) {
   StitchMesh mesh = build_from_rows(ribbed_rows(6, 4, {T::k, T::p}), Layout::sheet);
   EXPECT_EQ(mesh.num_faces(), 36u);

@@ -109,8 +109,10 @@ TEST(YarnModel, KnitLengthPerStitchMatchesTheGauge) {
 
 // Every sample's yarn as laid: its loops held as the knit graph says, with at most the loops
 // each still misses (not held) or lets an unrelated neighbour's yarn through (held wrongly)
-// today: the teapot's at its body's corners (row 10, 34, 57) and the sweater's beside its
-// decreases and where the round steps up at the armpits, all next to a k2tog or a shift-path.
+// today: the teapot's at a k2tog where two cells meet at its body's corner (row 57), the
+// sweater's where its round steps up and a cast-on's loop a purl takes, letter-r's at a join.
+// Before a decrease's loops stacked as the catalogue says and their legs turned to the
+// stack's depth before leaning: teapot 0 / 6, sweater 0 / 14 (k2togs), letter-r 0 / 0.
 // An edge stitch that makes a loop besides its own across an expanding perpendicular edge
 // lays no lobe for it: the teapot has 52 such loops (letter-r 16, two-bars 20), picked up
 // through a side and not checked. Before they were told apart, lobes bent their heads to the
@@ -126,9 +128,9 @@ TEST(YarnModel, EverySampleAsLaidHoldsItsLoops) {
   const std::vector<Expected> samples = {
       {"hat", 0, 0, 0},       {"rib-swatch", 0, 0, 0},      {"swatch", 0, 0, 0},
       {"beanie", 0, 0, 0},    {"short-row-wedge", 0, 0, 0}, {"sock", 0, 0, 0},
-      {"letter-i", 0, 0, 0},  {"letter-h", 0, 0, 0},        {"letter-r", 16, 0, 0},
+      {"letter-i", 0, 0, 0},  {"letter-h", 0, 0, 0},        {"letter-r", 16, 0, 1},
       {"two-bars", 20, 0, 0}, {"three-bars", 0, 0, 0},      {"three-bars-own", 0, 0, 0},
-      {"teapot", 52, 0, 6},   {"sweater", 0, 0, 14}};
+      {"teapot", 52, 0, 1},   {"sweater", 0, 0, 6}};
   for (const Expected& e : samples) {
     std::string yaml = std::string(SKEIN_SOURCE_DIR) + "/samples/" + e.sample + "/" + e.sample;
     Compilation c =
@@ -192,9 +194,10 @@ TEST(YarnModel, RandomShapesHoldEveryLoopAndStayClear) {
 
 // A small sweater (`skein new sweater`, 20 cm round, body 6 cm, at half the default gauge:
 // 1,660 stitches, three pieces joined at the yoke) relaxes in a bounded number of steps with
-// no yarn through another and every loop held by its taker; 26 of 1,636 loops are pierced by
-// a neighbour's yarn as well as laid (1.6%; 22 before the stitch mesh bent at 0.3), 5 after
-// 800 steps (0.3%). Before the sleeves' last
+// no yarn through another and every loop held by its taker; 28 of 1,636 loops are pierced by
+// a neighbour's yarn as well as laid (1.7%: cast-on loops a purl takes, pierced by the next
+// stitch since legs turn to their taker's depth below the lean; 26 before, 22 before the
+// stitch mesh bent at 0.3), 5 after 800 steps (0.3%). Before the sleeves' last
 // rings stood out from the body, the armholes folded back and yarn crossed yarn there.
 TEST(YarnModel, SmallSweaterRelaxesClearWithEveryLoopHeld) {
   auto dir = std::filesystem::temp_directory_path() /
@@ -209,7 +212,7 @@ TEST(YarnModel, SmallSweaterRelaxesClearWithEveryLoopHeld) {
   shape.project.replace(shape.project.find(gauge), gauge.size(), "gauge: {stitches: 11, rows: 15}");
   Compilation c = compile_model(write_shape(shape, (dir / "sweater").string()));
   EXPECT_EQ(c.knit.size(), 1660u);
-  expect_held(c, yarn_of(c, 0).model, "as laid", 0.017);
+  expect_held(c, yarn_of(c, 0).model, "as laid", 0.018);
   YarnBuild relaxed = yarn_of(c, 1200);
   expect_held(c, relaxed.model, "relaxed", 0.005);
   expect_clear(c, relaxed.model);
@@ -270,9 +273,14 @@ TEST(YarnModel, FabricOfAKnitoutFileHoldsEveryLoop) {
 
 // Random garments (tests/random_garments.hpp: trees of tubes that part and join, bent by short
 // rows; sheets whose flaps part or join), as laid: a ratchet on the loops not held and held
-// wrongly over the 30 garments (156,479 loops). What is left: a k2tog's first loop pierced by
-// its second maker's yarn (a knit beside a purl in rib), and loops where the input folds.
-// Before a join's bind-off stood as a ridge and the stitch mesh bent everywhere: 153 and 236.
+// wrongly over the 30 garments (156,479 loops). What is left is mostly at joins and splits:
+// loops a three-needle bind-off takes that it misses (33) or whose taker's loop it pierces
+// (49), split cast-on loops their takers miss (34); then 34 knit loops not held in bands (24
+// in one garment's row 26) and 24 purl loops pierced by a knit neighbour. Before a decrease's
+// loops stacked as the catalogue says and legs turned to their stack's depth before leaning
+// (a k2tog's first loop was pierced by its second maker's yarn, a knit beside a purl in rib):
+// 117 and 222; before a join's bind-off stood as a ridge and the stitch mesh bent
+// everywhere: 153 and 236.
 TEST(YarnModel, RandomGarmentsAsLaidHoldTheirLoops) {
   std::uint32_t loops = 0, not_held = 0, wrongly_held = 0;
   testing::tally_random_garments(kRandomGarments, [&](const Compilation& c, testing::Dice&) {
@@ -283,8 +291,8 @@ TEST(YarnModel, RandomGarmentsAsLaidHoldTheirLoops) {
   std::cout << loops << " loops, " << not_held << " not held, " << wrongly_held
             << " held wrongly\n";
   EXPECT_GT(loops, 150000u);
-  EXPECT_LE(not_held, 117u);
-  EXPECT_LE(wrongly_held, 222u);
+  EXPECT_LE(not_held, 101u);
+  EXPECT_LE(wrongly_held, 105u);
 }
 
 }  // namespace

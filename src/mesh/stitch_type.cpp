@@ -8,29 +8,30 @@ namespace skein {
 namespace {
 
 using T = StitchType;
+using S = LoopStack;
 // clang-format off
 constexpr std::array kCatalogue{
-  //            type      abbr     name                                bot top in out adj  var
-  StitchTypeInfo{T::k,     "k",     "knit",                              1,  1,  1, 1, false, false},
-  StitchTypeInfo{T::p,     "p",     "purl",                              1,  1,  1, 1, false, false},
-  StitchTypeInfo{T::co,    "co",    "cast-on",                           1,  1,  0, 1, false, false},
-  StitchTypeInfo{T::bo,    "bo",    "bind-off",                          1,  1,  1, 0, false, false},
-  StitchTypeInfo{T::kfb,   "kfb",   "knit front and back",               1,  2,  1, 2, false, false},
-  StitchTypeInfo{T::m1l,   "m1l",   "make 1 left",                       1,  2,  1, 2, false, false},
-  StitchTypeInfo{T::m1r,   "m1r",   "make 1 right",                      1,  2,  1, 2, false, false},
-  StitchTypeInfo{T::yo,    "yo",    "yarn over",                         1,  2,  1, 2, false, false},
-  StitchTypeInfo{T::k2tog, "k2tog", "knit 2 together",                   2,  1,  2, 1, false, false},
-  StitchTypeInfo{T::ssk,   "ssk",   "slip, slip, knit",                  2,  1,  2, 1, false, false},
-  StitchTypeInfo{T::p2tog, "p2tog", "purl 2 together",                   2,  1,  2, 1, false, false},
-  StitchTypeInfo{T::s2kp,  "s2kp",  "centred double decrease",           3,  1,  3, 1, false, false},
-  StitchTypeInfo{T::sr4,   "sr4",   "short-row end (4 edges)",           1,  1,  1, 1, true,  false},
-  StitchTypeInfo{T::sr5,   "sr5",   "short-row end (5 edges)",           1,  2,  1, 2, true,  false},
-  StitchTypeInfo{T::srn,   "srn",   "short-row end (collapsed edges)",   1,  2,  1, 2, true,  true},
-  StitchTypeInfo{T::tnbo,  "3nbo",  "three-needle bind-off",             2,  1,  2, 0, false, false},
-  StitchTypeInfo{T::sco,   "sco",   "cast-on along a split",             1,  2,  0, 2, false, false},
-  StitchTypeInfo{T::sl,    "sl",    "slip",                              1,  1,  1, 1, false, false},
-  StitchTypeInfo{T::tuck,  "tuck",  "tuck",                              1,  1,  1, 1, false, false},
-  StitchTypeInfo{T::k2tog_bo, "k2tog-bo", "knit 2 together and bind off",   2,  1,  2, 0, false, false},
+  //            type      abbr     name                                bot top in out adj  var    stack
+  StitchTypeInfo{T::k,     "k",     "knit",                              1,  1,  1, 1, false, false, S::single},
+  StitchTypeInfo{T::p,     "p",     "purl",                              1,  1,  1, 1, false, false, S::single},
+  StitchTypeInfo{T::co,    "co",    "cast-on",                           1,  1,  0, 1, false, false, S::single},
+  StitchTypeInfo{T::bo,    "bo",    "bind-off",                          1,  1,  1, 0, false, false, S::single},
+  StitchTypeInfo{T::kfb,   "kfb",   "knit front and back",               1,  2,  1, 2, false, false, S::single},
+  StitchTypeInfo{T::m1l,   "m1l",   "make 1 left",                       1,  2,  1, 2, false, false, S::single},
+  StitchTypeInfo{T::m1r,   "m1r",   "make 1 right",                      1,  2,  1, 2, false, false, S::single},
+  StitchTypeInfo{T::yo,    "yo",    "yarn over",                         1,  2,  1, 2, false, false, S::single},
+  StitchTypeInfo{T::k2tog, "k2tog", "knit 2 together",                   2,  1,  2, 1, false, false, S::left_on_top},
+  StitchTypeInfo{T::ssk,   "ssk",   "slip, slip, knit",                  2,  1,  2, 1, false, false, S::right_on_top},
+  StitchTypeInfo{T::p2tog, "p2tog", "purl 2 together",                   2,  1,  2, 1, false, false, S::left_on_top},
+  StitchTypeInfo{T::s2kp,  "s2kp",  "centred double decrease",           3,  1,  3, 1, false, false, S::centre_on_top},
+  StitchTypeInfo{T::sr4,   "sr4",   "short-row end (4 edges)",           1,  1,  1, 1, true,  false, S::single},
+  StitchTypeInfo{T::sr5,   "sr5",   "short-row end (5 edges)",           1,  2,  1, 2, true,  false, S::single},
+  StitchTypeInfo{T::srn,   "srn",   "short-row end (collapsed edges)",   1,  2,  1, 2, true,  true,  S::single},
+  StitchTypeInfo{T::tnbo,  "3nbo",  "three-needle bind-off",             2,  1,  2, 0, false, false, S::by_side},
+  StitchTypeInfo{T::sco,   "sco",   "cast-on along a split",             1,  2,  0, 2, false, false, S::single},
+  StitchTypeInfo{T::sl,    "sl",    "slip",                              1,  1,  1, 1, false, false, S::single},
+  StitchTypeInfo{T::tuck,  "tuck",  "tuck",                              1,  1,  1, 1, false, false, S::single},
+  StitchTypeInfo{T::k2tog_bo, "k2tog-bo", "knit 2 together and bind off",   2,  1,  2, 0, false, false, S::left_on_top},
 };
 // clang-format on
 
@@ -47,6 +48,24 @@ const StitchTypeInfo& info(StitchType type) {
   auto index = static_cast<std::size_t>(type);
   SKEIN_ASSERT(index < kCatalogue.size(), "stitch type out of range");
   return kCatalogue[index];
+}
+
+float stack_position(StitchType type, std::uint32_t slot, std::uint32_t loops) {
+  const float middle = static_cast<float>(loops - 1) / 2;
+  const float from_left = static_cast<float>(slot) - middle;
+  switch (info(type).stack) {
+    case LoopStack::single:
+      return 0;
+    case LoopStack::left_on_top:
+      return -from_left;
+    case LoopStack::right_on_top:
+    case LoopStack::by_side:
+      return from_left;
+    case LoopStack::centre_on_top:  // in front; the others behind it as right_on_top
+      if (2 * slot + 1 == loops) return middle;
+      return from_left - (2 * slot > loops ? 1.0f : 0.0f);
+  }
+  return 0;
 }
 
 std::span<const StitchTypeInfo> stitch_catalogue() {

@@ -35,6 +35,17 @@ enum class StitchType : std::uint8_t {
              // contracting perpendicular edge
 };
 
+// How the loops a stitch takes together lie on one another, as seen from the right side.
+enum class LoopStack : std::uint8_t {
+  single,         // it takes at most one loop
+  left_on_top,    // the left loop in front: the decrease leans right (k2tog, p2tog, k2tog-bo)
+  right_on_top,   // the right loop in front: the decrease leans left (ssk)
+  centre_on_top,  // the centre loop in front, the right one behind it, the left one at the back
+                  // (s2kp: the two slipped loops passed over the knitted one)
+  by_side,        // each loop on the side of the piece it comes from (3nbo: two needles held
+                  // together, the front one's loop in front)
+};
+
 struct StitchTypeInfo {
   StitchType type;
   std::string_view abbreviation;  // standard abbreviation, also the name in files
@@ -45,11 +56,18 @@ struct StitchTypeInfo {
   std::uint8_t loops_out;         // loops made (a bind-off's top edge carries none)
   bool wales_adjacent;            // short-row faces: the two wale edges are side by side
   bool variable_course_edges;     // srn: top course edge count may be larger
+  LoopStack stack;                // how the loops it takes lie on one another
 };
 
 const StitchTypeInfo& info(StitchType type);
 std::span<const StitchTypeInfo> stitch_catalogue();
 std::optional<StitchType> stitch_type_from_abbreviation(std::string_view abbreviation);
+// Where the loop in `slot` (counted left to right, right side facing) of the `loops` a stitch of
+// `type` takes lies in their stack: from -(loops - 1) / 2 at the back to (loops - 1) / 2 in
+// front, in loop thicknesses; 0 for a single loop. A `by_side` stitch's loops lie in slot
+// order, the right one in front, until their pieces say otherwise.
+float stack_position(StitchType type, std::uint32_t slot, std::uint32_t loops);
+
 inline std::string_view abbreviation(StitchType type) {
   return info(type).abbreviation;
 }

@@ -109,6 +109,7 @@ TopologyReport check_yarn_topology(const KnitGraph& graph, const YarnModel& mode
     ++report.loops;
     if (piercings(eye, model, graph, loop.taker) == 0) {
       ++report.not_held;
+      report.problems.push_back({l});
       note(fmt::format("the loop {} makes is not held by {}", graph.describe(loop.maker),
                        graph.describe(loop.taker)));
     }
@@ -116,6 +117,7 @@ TopologyReport check_yarn_topology(const KnitGraph& graph, const YarnModel& mode
       if (other == kNoStitch || other == loop.taker || piercings(eye, model, graph, other) == 0)
         continue;
       ++report.wrongly_held;
+      report.problems.push_back({l, other});
       note(fmt::format("the loop {} makes is held by {} too", graph.describe(loop.maker),
                        graph.describe(other)));
     }

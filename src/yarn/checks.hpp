@@ -23,6 +23,12 @@ Clearance yarn_clearance(const YarnModel& model, float allowed, unsigned threads
 // through it, the taker's yarn must pierce the loop's eye (the maker's lobe from one leg's
 // middle over the head to the other's, closed by a chord) at least once; the stitch one row
 // above the taker and the maker's neighbour in its row must not.
+struct TopologyProblem {
+  std::uint32_t loop;  // in the knit graph
+  // The stitch whose yarn goes through the loop's eye though it should not, or kNoStitch when
+  // the loop's taker misses it.
+  StitchId stranger = kNoStitch;
+};
 struct TopologyReport {
   std::uint32_t loops = 0;         // loops checked
   std::uint32_t not_held = 0;      // the taker's yarn misses the eye
@@ -30,7 +36,8 @@ struct TopologyReport {
   // Loops picked up through the side of an edge stitch (an expanding perpendicular edge): no
   // lobe of their own, so no eye to check; counted apart from `loops`.
   std::uint32_t picked_up = 0;
-  std::string first_problem;  // describes the first one, for messages
+  std::string first_problem;              // describes the first one, for messages
+  std::vector<TopologyProblem> problems;  // every one, in loop order
 };
 TopologyReport check_yarn_topology(const KnitGraph& graph, const YarnModel& model);
 

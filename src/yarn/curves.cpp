@@ -25,6 +25,10 @@ constexpr float kStack = 1.0f;       // stacked loops lie side by side, a yarn d
 constexpr float kSideStack = 0.5f;
 constexpr float kWiden = 1.25f;         // an increase's old loop is gripped wider than its lobes
 constexpr float kRowsPerStitch = 1.5f;  // rows of this height take yarn sized by the width
+// A lobe's legs turn to the depth its taker grips the loop at between these heights of its
+// cell (above the old loops' heads, which reach 0.2), then lean over to the grip above them.
+constexpr float kTurnFrom = 0.25f;
+constexpr float kTurnTo = 0.55f;
 
 struct Sample {
   float x, y, z;
@@ -80,18 +84,30 @@ bool takes_across_perpendicular_edge(const KnitGraph& graph, StitchId taker) {
   return false;
 }
 
-// +1 or -1 when the stitch making the loop in the taker's input slot lies in front of the
-// taker's cell or behind it (more than a quarter row off its surface), 0 when beside it.
-float maker_offset(const KnitGraph& graph, const StitchLayout& layout, StitchId taker,
-                   std::uint32_t slot) {
+// How far the stitch making the loop in the taker's input slot lies in front of the taker's
+// cell (behind it: negative), along its normal; 0 for a loop of no stitch.
+float maker_depth(const KnitGraph& graph, const StitchLayout& layout, StitchId taker,
+                  std::uint32_t slot) {
   StitchId maker = kNoStitch;
   for (std::uint32_t l : graph.loops_taken_by(taker))
     if (graph.loops[l].taker_slot == slot) maker = graph.loops[l].maker;
   if (maker == kNoStitch) return 0;
   const StitchFrame& f = layout.frame[taker];
-  float off = (layout.frame[maker].at(0.5f, 0.5f, 0) - f.at(0.5f, 0.5f, 0)).dot(f.normal);
-  if (std::abs(off) < 0.25f * f.wale.norm()) return 0;
-  return off > 0 ? 1.0f : -1.0f;
+  return (layout.frame[maker].at(0.5f, 0.5f, 0) - f.at(0.5f, 0.5f, 0)).dot(f.normal);
+}
+
+// The place in the stack of the loop in `slot` of a stitch taking `inputs` loops: by the
+// catalogue; a three-needle bind-off's loop whose piece lies in front of the taker's cell or
+// behind it (a join's two sides meet at its ridge) more than a quarter row off its surface, on
+// that side.
+float stack_place(const KnitGraph& graph, const StitchLayout& layout, StitchId taker,
+                  std::uint32_t slot, std::uint32_t inputs) {
+  const StitchType type = graph.type[taker];
+  const float place = stack_position(type, slot, inputs);
+  if (info(type).stack != LoopStack::by_side) return place;
+  const float depth = maker_depth(graph, layout, taker, slot);
+  if (std::abs(depth) < 0.25f * layout.frame[taker].wale.norm()) return place;
+  return depth > 0 ? std::abs(place) : -std::abs(place);
 }
 
 // Where a stitch grips the old loop in its input slot: the centre and width (in its cell's
@@ -112,12 +128,8 @@ Grip grip(const KnitGraph& graph, const StitchLayout& layout, StitchId taker, st
   if (inputs == t.lobes) return {(static_cast<float>(at) + 0.5f) / lobes, 1 / lobes, 0, 0, t.side};
   if (inputs > t.lobes) {  // a decrease: the old loops stack on one lobe
     float lobe = std::floor(static_cast<float>(at * t.lobes) / static_cast<float>(inputs));
-    float stack = (static_cast<float>(at) - static_cast<float>(inputs - 1) / 2) * kStack;
+    float stack = stack_place(graph, layout, taker, slot, inputs) * kStack;
     if (takes_across_perpendicular_edge(graph, taker)) stack *= kSideStack;
-    // A loop whose maker lies in front of the taker's cell or behind it (a join's two sides
-    // meeting at its bind-off's ridge) stacks on that side.
-    if (float off = maker_offset(graph, layout, taker, slot); off != 0)
-      stack = std::abs(stack) * off;
     return {(lobe + 0.5f) / lobes, 1 / lobes, 0, stack * diameter, t.side};
   }
   float share = 1.0f / static_cast<float>(inputs);  // an increase: one old loop, many lobes
@@ -141,18 +153,31 @@ class Lobe {
     if (loop && t_.kind != LobeKind::slipped && loop->taker != kNoStitch) {
       taker_ = &layout.frame[loop->taker];
       grip_ = grip(graph, layout, loop->taker, loop->taker_slot, diameter);
+      // A stitch beside its taker's cell (AutoKnit's wales lean up to a stitch and a half
+      // beside a decrease) turns its legs as they lean over: turned below, they met the heads
+      // of the loops stacked with its own (test-A did not relax clear).
+      Point3 aside = frame_.at(0.5f, 0.5f, 0) - taker_->at(0.5f, 0.5f, 0);
+      turn_from_ = std::abs(aside.dot(taker_->course)) > 0.5f * taker_->course.squaredNorm()
+                       ? kTurnTo
+                       : kTurnFrom;
+      turn_to_ = turn_from_ == kTurnTo ? 1.0f : kTurnTo;
     }
   }
 
   Point3 at(std::uint32_t k) const {
     Sample p = lobe_sample(t_, j_, k, amplitude_);
-    Point3 own = frame_.at(p.x, p.y, p.z);
-    float w = taker_ ? smoothstep(0.55f, 1.0f, p.y) : 0;
+    if (!taker_) return frame_.at(p.x, p.y, p.z);
+    // The head lies behind the new loop's legs as the taker sees it (a purl takes a knit
+    // loop's head in front), at its depth in the taker's stack. The legs turn to that depth
+    // above the old loops they pass through and before they lean towards the grip: where the
+    // heads of a decrease converge, each loop's legs already lie in front of the loops stacked
+    // behind it, so no maker's yarn passes through the eye of a loop stacked with its own.
+    float turn = smoothstep(turn_from_, turn_to_, p.y);
+    float z = p.z + turn * (p.z * (grip_.side * t_.side - 1) + grip_.depth);
+    Point3 own = frame_.at(p.x, p.y, z);
+    float w = smoothstep(kTurnTo, 1.0f, p.y);
     if (w == 0) return own;
     float x = grip_.centre + (p.x - centre_) * t_.lobes * grip_.width;
-    // The head lies behind the new loop's legs as the taker sees it: a purl takes a knit
-    // loop's head in front.
-    float z = p.z * grip_.side * t_.side + grip_.depth;
     return (1 - w) * own + w * taker_->at(x, p.y - 1 + grip_.lift, z);
   }
 
@@ -163,6 +188,7 @@ class Lobe {
   std::uint32_t j_;
   float centre_;
   const StitchFrame* taker_ = nullptr;
+  float turn_from_ = kTurnFrom, turn_to_ = kTurnTo;
   Grip grip_{};
 };
 
