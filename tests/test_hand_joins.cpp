@@ -107,6 +107,36 @@ TEST(HandJoins, RejectsAJoinThatCannotBeWorkedWithTheReason) {
             "");
 }
 
+// A needle begun in the middle of a piece's last rnd, its sts following round the needle (a
+// leg's sts bound off at the crotch from where the other leg meets it).
+TEST(HandJoins, ANeedleMayBeginInTheMiddleOfALastRnd) {
+  std::string tubes;
+  for (int tube = 0; tube < 2; ++tube)
+    tubes +=
+        "Cast on 4 sts. Pm and join to work in the rnd, being careful not to twist.\n"
+        "Rnd 1: Knit.\nLeave the 4 sts on a spare needle and cut the yarn.\n";
+  auto join = [](int tip, const char* way) {
+    return fmt::format(
+        "Three-needle bind-off: hold the pieces with RS together: Piece 1 in front, st {} of "
+        "its last rnd at the needle tip, going {} round the needle; Piece 2 behind, the last st "
+        "of its last row at the tip; with a new yarn bind off all 4 pairs.\nFasten off.\n",
+        tip, way);
+  };
+  EXPECT_EQ(failure_of(tubes + join(3, "up")), "");
+  EXPECT_EQ(failure_of(tubes + join(2, "down")), "");
+  EXPECT_EQ(failure_of(tubes + join(5, "up")),
+            "p.md:7: three-needle bind-off: Piece 1 has no st 5");
+  try {
+    failure_of(tubes + join(3, "across"));
+    ADD_FAILURE() << "a needle going across was read";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("p.md:7: expected 'up round the needle' or 'down round "
+                                         "the needle'"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(HandSplits, TheSplitFixturesAreProvenInEveryFormat) {
   using M = MismatchYarn::Kind;
   const std::pair<StitchMesh, const char*> cases[] = {

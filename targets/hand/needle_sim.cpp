@@ -710,8 +710,13 @@ class NeedleSimulator {
                        sts(pc_.live)));
     auto needle = [&](int side) {
       std::uint32_t n = side == 0 ? front : back;
-      return s.holder[side] ? held(n, s.from_last[side], "three-needle bind-off")
-                            : spare_needle(n, s.from_last[side], "three-needle bind-off");
+      bool from_last = s.from_last[side] && s.tip[side] == 0;
+      std::vector<std::uint32_t> sts = s.holder[side]
+                                           ? held(n, from_last, "three-needle bind-off")
+                                           : spare_needle(n, from_last, "three-needle bind-off");
+      if (s.tip[side] == 0) return sts;
+      return round_from(sts, s.tip[side], s.from_last[side],
+                        fmt::format("{} {}", s.holder[side] ? "holder" : "Piece", n));
     };
     std::vector<std::uint32_t> f = needle(0), b = needle(1);
     if (f.size() != b.size())
@@ -737,6 +742,18 @@ class NeedleSimulator {
       else
         spare_needles_.erase({n, kNeedle});
     }
+  }
+
+  // A needle's sts from st `tip` (1-based) at the tip, the others following round the needle,
+  // down (towards st 1) or up.
+  std::vector<std::uint32_t> round_from(const std::vector<std::uint32_t>& sts, std::uint32_t tip,
+                                        bool down, const std::string& whose) const {
+    auto n = static_cast<std::uint32_t>(sts.size());
+    if (tip > n) fail(fmt::format("three-needle bind-off: {} has no st {}", whose, tip));
+    std::vector<std::uint32_t> run;
+    for (std::uint32_t i = 0; i < n; ++i)
+      run.push_back(sts[down ? (tip - 1 + n - i) % n : (tip - 1 + i) % n]);
+    return run;
   }
 
   void bind_off_pairs(const std::vector<std::uint32_t>& f, const std::vector<std::uint32_t>& b) {

@@ -179,12 +179,23 @@ class InstructionWriter {
   std::string three_needle_text(const PatternSection& sec) const {
     if (sec.fold) return folded_needle_text(sec, *sec.fold);
     return fmt::format(
-        "Three-needle bind-off: hold the pieces with RS together: {} in front, the {} st "
-        "of its last row at the needle tip; {} behind, the {} st of its last row at the "
-        "tip (slide the sts to the other end of a needle if need be); with {} yarn bind off "
+        "Three-needle bind-off: hold the pieces with RS together: {} in front, {}; {} behind, "
+        "{} (slide the sts to the other end of a needle if need be); with {} yarn bind off "
         "all {} pairs.",
-        joined_needle(sec, 0), sec.from_last[0] ? "last" : "first", joined_needle(sec, 1),
-        sec.from_last[1] ? "last" : "first", sec.own_yarn ? "its" : "a new", sec.pairs);
+        joined_needle(sec, 0), needle_tip_text(sec, 0, " needle"), joined_needle(sec, 1),
+        needle_tip_text(sec, 1, ""), sec.own_yarn ? "its" : "a new", sec.pairs);
+  }
+
+  // "the first st of its last row at the needle tip", or, a needle begun in the middle of a
+  // piece's last rnd: "st 21 of its last rnd at the tip, going up round the needle".
+  std::string needle_tip_text(const PatternSection& sec, int side, const char* needle) const {
+    if (sec.tips[side] == 0)
+      return fmt::format("the {} st of its last row at the{} tip",
+                         sec.from_last[side] ? "last" : "first", needle);
+    const PatternSection& spare = p_.sections[side == 0 ? sec.front : sec.back];
+    return fmt::format("st {} of its last {} at the{} tip, going {} round the needle",
+                       sec.tips[side], last_course(spare, sec.holders[side]), needle,
+                       sec.from_last[side] ? "down" : "up");
   }
 
   // "Piece 1", or "holder 3" where the sts wait on one.

@@ -149,6 +149,9 @@ struct PatternSection {
   bool from_last[2] = {false, false};  // which end of each last row starts: first or last st
   bool own_yarn = false;               // worked with the front piece's yarn, taken up again
   std::uint32_t holders[2] = {0, 0};   // 1-based: the front (back) sts wait on that holder
+  // 1-based: the st of a needle's last rnd (a holder's, as slipped) at the tip, the others
+  // following round the needle, down if from_last (0: the first or the last st).
+  std::uint32_t tips[2] = {0, 0};
   std::uint32_t pairs = 0;
   // A join of one needle's sts folded in half (the sts of section `front`, counted 1-based
   // round the needle from the first st of its last row): the front needle's from st `tip[0]`

@@ -559,9 +559,9 @@ class SentenceReader {
     } else {
       need_words(c, {"hold", "the", "pieces", "with", "RS", "together", ":"},
                  "': hold the pieces with RS together:' or ': fold the N sts'");
-      step.number = needle_end(c, {"in", "front"}, step.from_last[0], step.holder[0]);
+      step.number = needle_end(c, {"in", "front"}, step.from_last[0], step.holder[0], &step.tip[0]);
       need(c.eat_char(';'), c, "';' after the front piece");
-      step.last = needle_end(c, {"behind"}, step.from_last[1], step.holder[1]);
+      step.last = needle_end(c, {"behind"}, step.from_last[1], step.holder[1], &step.tip[1]);
       if (c.eat_char('('))
         while (!c.done() && !c.eat_char(')')) c.eat_char(c.peek());
     }
@@ -605,21 +605,36 @@ class SentenceReader {
   }
 
   // "Piece 1 (or: holder 3) in front, the first st of its last row at the needle tip": the
-  // piece's (or holder's) number.
+  // piece's (or holder's) number. Where `tip` is given, the needle may begin in the middle:
+  // "..., st 21 of its last rnd at the tip, going up (down) round the needle".
   std::uint32_t needle_end(Cursor& c, std::initializer_list<std::string_view> where,
-                           bool& from_last, bool& holder) {
+                           bool& from_last, bool& holder, std::uint32_t* tip = nullptr) {
     holder = c.eat("holder");
     std::uint32_t piece = holder ? need_number(c, "a holder number")
                                  : need_piece(c, "'Piece N', a piece's name or 'holder N'");
     need_words(c, where, "'in front' or 'behind' after the piece");
-    need_words(c, {",", "the"}, "', the first (or last) st of its last row'");
-    from_last = c.eat("last");
-    need(from_last || c.eat("first"), c, "'first' or 'last'");
-    need_words(c, {"st", "of", "its", "last"}, "'st of its last row (or rnd)'");
+    need(c.eat_char(','), c, "', the first (or last) st of its last row'");
+    bool middle = tip && c.eat("st");
+    if (middle) {
+      *tip = need_number(c, "the st at the tip");
+      need(*tip > 0, c, "a st number from 1");
+    } else {
+      need(c.eat("the"), c, "', the first (or last) st of its last row'");
+      from_last = c.eat("last");
+      need(from_last || c.eat("first"), c, "'first' or 'last'");
+      need(c.eat("st"), c, "'st of its last row (or rnd)'");
+    }
+    need_words(c, {"of", "its", "last"}, "'st of its last row (or rnd)'");
     need(c.eat("row") || c.eat("rnd"), c, "'row' or 'rnd'");
     need_words(c, {"at", "the"}, "'at the tip'");
     c.eat("needle");
     need(c.eat("tip"), c, "'tip'");
+    if (middle) {
+      need_words(c, {",", "going"}, "', going up (or down) round the needle'");
+      from_last = c.eat("down");
+      need((from_last || c.eat("up")) && c.eat("round") && c.eat("the") && c.eat("needle"), c,
+           "'up round the needle' or 'down round the needle'");
+    }
     return piece;
   }
 

@@ -326,8 +326,11 @@ void ProgramPatternBuilder::three_needle_bind_off(const Step& s) {
     LoopAt source = places_.at(side[k].front());
     std::optional<Lie> lie = places_.lie(source, side[k]);
     bool nameable = source.place == Place::holder || source.place == Place::spare;
-    if (!nameable || !lie || lie->at != 0 ||
-        (k == 0 && join.own_yarn && source.place != Place::spare))
+    // A needle may begin in the middle of a piece's last rnd, going round; but the front piece
+    // worked with its own yarn begins where the yarn is, at an end.
+    bool own_front = k == 0 && join.own_yarn;
+    bool begins_well = lie && (lie->at == 0 || !own_front);
+    if (!nameable || !begins_well || (own_front && source.place != Place::spare))
       not_yet(s,
               "binds off sts that do not wait on one spare needle or holder each, from an "
               "end");
@@ -336,6 +339,7 @@ void ProgramPatternBuilder::three_needle_bind_off(const Step& s) {
         holder ? places_.holder_section(source.index) : source.index;
     join.holders[k] = holder ? source.index : 0;
     join.from_last[k] = lie->from_last;
+    join.tips[k] = lie->at;
   }
   join.pairs = static_cast<std::uint32_t>(s.stitches.size());
   for (int k : {0, 1})
@@ -357,6 +361,7 @@ void ProgramPatternBuilder::bind_off_with_its_yarn(const PatternSection& join,
   sec.back = join.back;
   std::copy(std::begin(join.from_last), std::end(join.from_last), sec.from_last);
   std::copy(std::begin(join.holders), std::end(join.holders), sec.holders);
+  std::copy(std::begin(join.tips), std::end(join.tips), sec.tips);
   sec.pairs = join.pairs;
   sec.stitches += join.pairs;
   sec.left_live = false;
