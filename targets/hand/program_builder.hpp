@@ -258,10 +258,6 @@ class ProgramPatternBuilder {
   // wait in one place.
   std::vector<std::uint32_t> held_behind_from(std::uint32_t i) const;
 
-  // Are all `loops` taken by rows (not rnds) of one yarn? Those slip them one at a time from
-  // the spare needle ("sl1 from spare") rather than from holders.
-  bool used_up_by_rows(const std::vector<std::uint32_t>& loops) const;
-
   // Are loops `a` and `b` taken by two rows of one yarn, neither its first (a lid's sides,
   // joined to its middle one st a row: they wait together on a spare needle for "sl1 from
   // spare")?

@@ -409,16 +409,6 @@ std::optional<Lie> ProgramPatternBuilder::lie_parting_spare_needle(
   return places_.lie(source, block);
 }
 
-bool ProgramPatternBuilder::used_up_by_rows(const std::vector<std::uint32_t>& loops) const {
-  if (loops.empty()) return false;
-  std::uint32_t yarn = taker_yarn(loops.front());
-  return std::all_of(loops.begin(), loops.end(), [&](std::uint32_t loop) {
-    std::uint32_t taker = taker_step_[loop];
-    return taker != kNone && p_.steps[taker].yarn == yarn &&
-           p_.steps[taker].shape != RowShape::closed;
-  });
-}
-
 bool ProgramPatternBuilder::taken_by_rows_one_by_one(std::uint32_t a, std::uint32_t b) const {
   std::uint32_t at = taker_step_[a], bt = taker_step_[b];
   if (at == kNone || bt == kNone || at == bt) return false;
