@@ -129,6 +129,14 @@ void LiveRuns::open_at(RunId r, std::uint32_t first) {
   s.shape = RunShape::line;
 }
 
+void LiveRuns::close(RunId r) {
+  State& s = runs_[r.index()];
+  if (s.shape == RunShape::ring || s.size == 0) return;
+  std::uint32_t last = s.head;
+  while (next_[last] != kNoLoop) last = next_[last];
+  close_ring(r, s.head, last);
+}
+
 void LiveRuns::reverse(RunId r) {
   State& s = runs_[r.index()];
   if (s.size == 0) return;

@@ -48,6 +48,8 @@ class LiveRuns {
   void cut(const Segment& seg, RunId id, RunId tail);
   // Opens a ring at `first` (it becomes a line starting there).
   void open_at(RunId r, std::uint32_t first);
+  // Closes a line into a ring, its last loop before its first.
+  void close(RunId r);
   // Turns run `r` round: its loops in the opposite order.
   void reverse(RunId r);
   // Appends line `b` to line `a`; b ends.

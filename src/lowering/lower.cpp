@@ -220,7 +220,10 @@ class Lowering {
     step.picked_up = takes.picked_up;
     std::vector<Segment> segments =
         walks(takes.run, step.direction, step.shape == RowShape::closed);
-    if (segments.size() > 1) segments = {join(split_off(segments), step.yarn)};
+    if (segments.size() > 1) {
+      bool ring = joins_a_tube(step, segments);
+      segments = {join(split_off(segments), step.yarn, ring)};
+    }
     std::vector<Segment> needles = second_needles(takes.second, first);
     segments.insert(segments.end(), needles.begin(), needles.end());
     step.reads = add_segments(segments);
@@ -482,8 +485,20 @@ class Lowering {
     return segments;
   }
 
-  // Runs taken up in one course become one, in the order the course meets them (a join step).
-  Segment join(const std::vector<Segment>& segments, std::uint32_t yarn) {
+  // Does a course join runs into a tube: a short row that takes every loop of each run it
+  // walks (a tube bent by short rows right where its pieces join, a leg and the cast-on
+  // across the crotch)? Its yarn goes on round from the last run's end to the first's start
+  // (a row over all of a flat piece is no short row). One that leaves loops in a run it walks
+  // is a line: those loops wait beside it.
+  bool joins_a_tube(const Step& course, const std::vector<Segment>& segments) const {
+    return course.shape == RowShape::short_row &&
+           std::all_of(segments.begin(), segments.end(),
+                       [&](const Segment& seg) { return seg.count == live_.size(seg.run); });
+  }
+
+  // Runs taken up in one course become one, in the order the course meets them (a join step):
+  // a line, or a `ring`.
+  Segment join(const std::vector<Segment>& segments, std::uint32_t yarn, bool ring) {
     Step step = step_of(StepKind::join, yarn);
     step.reads = add_segments(segments);
     std::uint32_t count = 0;
@@ -491,7 +506,8 @@ class Lowering {
     step.run = segments.front().run;
     for (const Segment& s : segments) live_.open_at(s.run, s.first);
     for (std::size_t i = 1; i < segments.size(); ++i) live_.append(step.run, segments[i].run);
-    step.run_shape = RunShape::line;
+    if (ring) live_.close(step.run);
+    step.run_shape = ring ? RunShape::ring : RunShape::line;
     add_step(step);
     return {step.run, segments.front().first, count, Walk::forward};
   }

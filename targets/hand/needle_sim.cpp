@@ -985,7 +985,16 @@ class NeedleSimulator {
       gather_round();
     else if (!pc_.turn_before)
       slip_bor_if_next();
+    place_bor_before_first_row();
     index_left_needle();
+  }
+
+  // "Pm and join to work in the rnd" before a row (a short row first): the marker goes where
+  // the row begins, as before a first rnd.
+  void place_bor_before_first_row() {
+    if (row_round_ || !pc_.place_bor) return;
+    pc_.right.push_back(pc_.bor = new_marker());
+    pc_.place_bor = false;
   }
 
   // A row that goes on from the end of a rnd starts, like a rnd, by slipping the marker.

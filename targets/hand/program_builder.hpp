@@ -72,6 +72,14 @@ class ProgramPatternBuilder {
   // A rnd that binds off none of its sts leaves them in a ring, also where the lowering keeps
   // them in a longer line with sts that wait for a later course (a spout's first rnds, worked
   // while the body's sts wait beside it); one that binds off in places leaves lines.
+  // The first short row of a tube whose pieces the program joins into a ring right before it
+  // (a tube bent by short rows where its branches join): its sts are placed in the rnd first.
+  bool joins_a_tube(const Step& s) const {
+    if (s.shape != RowShape::short_row || s.run_shape != RunShape::ring || step_ == 0) return false;
+    const Step& before = p_.steps[step_ - 1];
+    return before.kind == StepKind::join && before.run == s.run &&
+           before.run_shape == RunShape::ring;
+  }
   bool works_a_whole_rnd(const Step& s) const {
     if (s.shape != RowShape::closed) return false;
     return s.run_shape == RunShape::ring ||

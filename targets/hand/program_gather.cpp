@@ -24,7 +24,7 @@ Needle& ProgramPatternBuilder::needle_for(const Step& s, const std::vector<std::
 }
 
 void ProgramPatternBuilder::gather(const Step& s, std::vector<std::uint32_t> met) {
-  bool round = works_a_whole_rnd(s);
+  bool round = works_a_whole_rnd(s) || joins_a_tube(s);
   bool own = working() && needle().live > 0 && current_ == needle_of_yarn_[s.yarn];
   if (own && !round) {
     hold_what_others_take(s);
