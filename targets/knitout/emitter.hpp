@@ -235,7 +235,6 @@ class Emitter {
   std::vector<std::uint8_t> in_course_;          // per loop: taken by the course being planned
   const std::vector<std::string>& carriers_;
   std::string carrier_;  // the carrier of the course being knit
-  bool crotch_ = false;  // a cast-on along a split has parted the tube into branches
   bool rolled_ = false;  // the tube has rolled round its needles: its rounds start elsewhere
 };
 
