@@ -43,10 +43,13 @@ testing::Tally random_garments() {
   return tally;
 }
 
-// 281 proven (the schedule's builder, before the lowering, 230), the rest refused by name.
+// 285 proven (the schedule's builder, before the lowering, 230), the rest refused by name; none
+// refused by `skein check` (10 were before a bent tube knit from its branches could be
+// labelled: its round began between the bend's short rows).
 TEST(HandRandomGarments, EachIsProvenOrRefusedByNameBeforeWriting) {
   testing::Tally tally = random_garments();
-  EXPECT_GE(tally.proven, 281);
+  EXPECT_GE(tally.proven, 285);
+  EXPECT_EQ(tally.unknittable, 0);
 }
 
 }  // namespace

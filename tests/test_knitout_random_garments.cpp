@@ -123,8 +123,9 @@ TEST(KnitoutRandomGarments, PiecesKnitApartAreBoundOffTogether) {
   }
   // 2026-12-02: 13 proven (5 before: 36 garments refused as "a three-needle bind-off of two
   // pieces knit apart", 6 as "a row that binds off only some of its sts with a second
-  // needle's").
-  EXPECT_GE(proven, 13);
+  // needle's"). 2026-12-03: 11 of another draw (the garments drawn after the first bent tube
+  // knit from its branches changed once those could be labelled).
+  EXPECT_GE(proven, 11);
   EXPECT_EQ(refused_as_apart, 0);
   EXPECT_EQ(refused_as_mixed, 0);
 }

@@ -273,7 +273,8 @@ TEST(YarnModel, FabricOfAKnitoutFileHoldsEveryLoop) {
 
 // Random garments (tests/random_garments.hpp: trees of tubes that part and join, bent by short
 // rows; sheets whose flaps part or join), as laid: a ratchet on the loops not held and held
-// wrongly over the 30 garments (156,479 loops). What is left is mostly at joins and splits:
+// wrongly over the 30 garments (163,575 loops; 156,479 before bent tubes knit from their
+// branches could be labelled, and 101 and 105 of them). What is left is mostly at joins and splits:
 // loops a three-needle bind-off takes that it misses (33) or whose taker's loop it pierces
 // (49), split cast-on loops their takers miss (34); then 34 knit loops not held in bands (24
 // in one garment's row 26) and 24 purl loops pierced by a knit neighbour. Before a decrease's
@@ -291,8 +292,8 @@ TEST(YarnModel, RandomGarmentsAsLaidHoldTheirLoops) {
   std::cout << loops << " loops, " << not_held << " not held, " << wrongly_held
             << " held wrongly\n";
   EXPECT_GT(loops, 150000u);
-  EXPECT_LE(not_held, 101u);
-  EXPECT_LE(wrongly_held, 105u);
+  EXPECT_LE(not_held, 103u);
+  EXPECT_LE(wrongly_held, 110u);
 }
 
 }  // namespace

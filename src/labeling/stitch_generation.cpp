@@ -411,13 +411,9 @@ class Generator {
     ring.closed = true;
     ring.can_start.assign(faces.size(), 0);
     for (std::size_t i = 0; i < faces.size(); ++i) {
-      CoarseFace f = faces[i], before = faces[(i + faces.size() - 1) % faces.size()];
-      bool turns_here =
-          (L_.short_row[f.index()] && L_.wide_side[f.index()] == CoarseRole::left) ||
-          (L_.short_row[before.index()] && L_.wide_side[before.index()] == CoarseRole::right);
-      if (turns_here) continue;
+      if (among_short_rows(faces, i)) continue;
       ring.can_start[i] = 1;
-      CoarseHalfedge h = side(f, CoarseRole::left);
+      CoarseHalfedge h = side(faces[i], CoarseRole::left);
       for (std::size_t k = 0; k < p_.shift_paths.size(); ++k)
         if (m_.canonical(find_project_edge(m_, p_, p_.shift_paths[k].edge)) == m_.canonical(h)) {
           used_shift_marks_.insert(k);
@@ -429,6 +425,19 @@ class Generator {
            "every side of this ring of faces has short rows turning at it, so no "
            "shift-path can run through it");
     return ring;
+  }
+
+  // Does the left side of ring face `i` lie where short rows go to and fro (between a short-row
+  // face widening to the right and the next one widening to the left)? A round begun there
+  // would have its short rows run back across its start.
+  bool among_short_rows(const std::vector<CoarseFace>& faces, std::size_t i) const {
+    CoarseFace f = faces[i];
+    if (L_.short_row[f.index()]) return L_.wide_side[f.index()] == CoarseRole::left;
+    for (std::size_t k = 1; k < faces.size(); ++k) {
+      CoarseFace before = faces[(i + faces.size() - k) % faces.size()];
+      if (L_.short_row[before.index()]) return L_.wide_side[before.index()] == CoarseRole::right;
+    }
+    return false;
   }
 
   void plan_closed_row(const std::vector<CoarseFace>& faces, const RowEntry& path) {

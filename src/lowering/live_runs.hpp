@@ -28,6 +28,8 @@ class LiveRuns {
   }
   std::uint32_t size(RunId r) const { return runs_[r.index()].size; }
   RunShape shape(RunId r) const { return runs_[r.index()].shape; }
+  // A line's first loop (a ring's: where it was closed).
+  std::uint32_t head(RunId r) const { return runs_[r.index()].head; }
   // The loop a segment's walk ends on.
   std::uint32_t walk_end(const Segment& seg) const;
 

@@ -315,7 +315,6 @@ class Lowering {
     }
   }
 
-  // The loops a course takes from runs as maximal walks of one run each, in run order.
   // The loops a course takes from runs as maximal walks of one run each, in run order. A run
   // cast on across a split has the order of the side that takes it: the first course that
   // meets it backward turns it round (a reverse step) and walks it again.
@@ -337,13 +336,14 @@ class Lowering {
     }
   }
 
-  // Fills `segments`; returns a run still unoriented that the course meets backward. A round
-  // may meet one run at its start and again at its end, where it goes round past where it
-  // began (a leg whose first rnd begins in the middle of the body's sts it takes): the two
-  // walks are cut off and joined in the order met, no crossing.
+  // Fills `segments`; returns a run still unoriented that the course meets backward. A course
+  // may meet one run in several places, each walk further on along it than the last: a round
+  // that begins in the middle of the sts it takes and goes round past where it began (a leg's
+  // first rnd), or one that leaves loops between its walks to other pieces (a body's rnd over
+  // the sts between a spout's and a handle's, which wait for them). Met out of that order, the
+  // walks would cross. A round goes on from a line's end to its start: the round joins them.
   RunId find_walks(const std::vector<std::uint32_t>& loops, CourseDirection d, bool closed,
                    std::vector<Segment>& segments) const {
-    bool round_past_start = false;
     for (std::size_t i = 0; i < loops.size(); ++i) {
       std::uint32_t loop = loops[i];
       RunId run = live_.run_of(loop);
@@ -359,31 +359,39 @@ class Lowering {
                                "other way round: it needs a crossing here",
                                course_direction_name(d))};
       }
-      for (const Segment& seg : segments) {
-        if (seg.run != run || round_the_gap(seg, loop)) continue;
-        if (closed && !round_past_start && &seg == &segments.front()) {
-          round_past_start = true;
-          continue;
-        }
-        throw two_places(loop);
-      }
+      if (!further_on(segments, run, loop, closed)) throw two_places(loop);
       segments.push_back({run, loop, 1, Walk::forward});
     }
-    if (round_past_start && !goes_round_to_its_start(segments)) throw two_places(loops.back());
     return RunId();
+  }
+
+  // Does `loop` lie further on along its run than every walk of that run in `segments`, before
+  // the first of them again? A ring goes on round; a line ends, unless a round goes on to its
+  // start.
+  bool further_on(const std::vector<Segment>& segments, RunId run, std::uint32_t loop,
+                  bool closed) const {
+    auto first = std::find_if(segments.begin(), segments.end(),
+                              [&](const Segment& seg) { return seg.run == run; });
+    if (first == segments.end()) return true;
+    auto last = std::find_if(segments.rbegin(), segments.rend(),
+                             [&](const Segment& seg) { return seg.run == run; });
+    if (round_the_gap(*last, loop)) return true;
+    bool wrapped = false;
+    for (std::uint32_t at = live_.next(live_.walk_end(*last));; at = live_.next(at)) {
+      if (at == kNoLoop) {
+        if (!closed || wrapped) return false;
+        wrapped = true;
+        at = live_.head(run);
+      }
+      if (at == first->first) return false;
+      if (at == loop) return true;
+    }
   }
 
   Stop two_places(std::uint32_t loop) const {
     return Stop{g_.loops[loop].taker,
                 "the course takes the loops of one run in two places, out of their order: it "
                 "needs a crossing here"};
-  }
-
-  // The round's last walk is of its first walk's run and ends right before it begins.
-  bool goes_round_to_its_start(const std::vector<Segment>& segments) const {
-    const Segment &first = segments.front(), &last = segments.back();
-    return segments.size() > 1 && last.run == first.run &&
-           live_.follows(first.first, live_.walk_end(last));
   }
 
   Stop not_live(std::uint32_t loop) const {
@@ -459,6 +467,7 @@ class Lowering {
   // Cuts each segment that is not a whole run into a run of its own (a split step).
   std::vector<Segment> split_off(std::vector<Segment> segments) {
     for (Segment& seg : segments) {
+      seg.run = live_.run_of(seg.first);  // an earlier walk's cut may have moved it to a tail
       if (seg.count == live_.size(seg.run)) continue;
       Step step = step_of(StepKind::split, out_.runs[seg.run.index()].yarn);
       step.reads = add_segments({seg});
