@@ -143,7 +143,9 @@ TEST(KnitoutCrotch, RandomPartedTubesAreProvenOrRefusedByName) {
       crotches, proven, refused, unknittable);
   for (const auto& [why, n] : refusals) std::cout << "  " << n << " " << why << "\n";
   EXPECT_GT(crotches, 20);
-  EXPECT_GE(proven, 34);  // 2026-12-02, a branch on one bed rolled (29 before)
+  // 2026-12-03: 38 proven, 4 refused (34 before a decrease across a fold of a branch was knit,
+  // 29 before a branch on one bed rolled).
+  EXPECT_GE(proven, 38);
 }
 
 }  // namespace

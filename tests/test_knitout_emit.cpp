@@ -119,8 +119,8 @@ TEST(KnitoutFit, ADoubleDecreaseNeedsThreeLoopsPerNeedle) {
 TEST(KnitoutFit, WhatIsNotSupportedYetIsNamedWithItsStitch) {
   std::filesystem::current_path(SKEIN_SOURCE_DIR);
   EXPECT_EQ(emit_error(compile_model("samples/autoknit/test-A.st"), "kniterate"),
-            "line 411 (k2tog) would gather 3 loops on one needle (with tucked loops, short-row "
-            "wraps or the bind-off chain), kniterate allows 2");
+            "line 421 (k2tog) would gather 3 loops on one needle (2 loops taken, 1 tucked loop "
+            "under them), kniterate allows 2");
   // Its two legs share the bed, each with its carrier (KnitoutPieces).
   EXPECT_EQ(emit_error(compile_model("samples/autoknit/test-C.st"), "generic"), "no error");
   // The round that binds off both underarms parts the body's run into two lines.

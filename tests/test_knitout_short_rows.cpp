@@ -224,6 +224,22 @@ TEST(KnitoutShortRows, MakingRoomOffTheBedIsRefusedInWords) {
   }
 }
 
+// A short row turns beside a loop that a k2tog then takes: the turn's wrap would make 3 loops
+// on the k2tog's needle, which kniterate (2 per needle) cannot hold. There the turn is left bare
+// (no tuck over the waiting loop) and the file is proven all the same (the model has no
+// wraps); on swg091n2, which holds 3, the turn is wrapped.
+TEST(KnitoutShortRows, AWrapTheNeedleCannotHoldIsLeftOut) {
+  const char* letters = "ssssss|kkkkkk|kkk|kkk|kkdkk|eeeee";
+  for (const char* profile : {"kniterate", "swg091n2"}) {
+    auto [c, p, text] = testing::emit_letters(letters, "bare-turn.st", profile);
+    std::size_t from = text.find("row 3 knit (short row)"), to = text.find(";!source", from);
+    bool wrapped = text.substr(from, to - from).find("\ntuck ") != std::string::npos;
+    EXPECT_EQ(wrapped, p.max_loops_per_needle >= 3) << profile << "\n" << text;
+    knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
+    EXPECT_TRUE(proof.proven) << profile << ": " << proof.summary;
+  }
+}
+
 // A lopsided tube's bind-off, starting at a turn, goes from the back's left end (b273) to the
 // front's (f266), 7 needles apart: more than swg091n2's transfers stretch (4), so the chain's
 // loop hops over f269 and b267, needles the half-gauge layout leaves empty there.
@@ -287,7 +303,9 @@ TEST(KnitoutRandomized, ShapingInsideShortRowsProvesOrIsRefusedInWords) {
   for (int trial = 0; trial < 60; ++trial)
     testing::prove_or_refuse_gathering(random_shaped_short_rows(rng, trial % 2), proven, refused);
   std::cout << "shaped short rows: " << proven << " proven, " << refused << " refused\n";
-  EXPECT_GT(proven, 100);
+  // 2026-12-03: 131 proven, 49 refused (124 / 56 before a wrap the needle has no room for was
+  // left out).
+  EXPECT_GE(proven, 131);
 }
 
 // Emits and proves `c` on each shipped profile; a profile too narrow for it must refuse it for

@@ -46,6 +46,22 @@ TEST(KnitoutThumb, AMittenIsProvenOnEveryProfileWithExtraOrOwnYarn) {
   }
 }
 
+// `skein new glove` at its default size (a thumb and four fingers parting from the palm, each
+// crotch a cast-on along a split): proven on every profile; prints passes, transfers, racks.
+TEST(KnitoutThumb, AGloveIsProvenOnEveryProfile) {
+  Compilation c = testing::compile_new_shape("glove", {}, "extra");
+  for (const char* profile : {"generic", "swg091n2", "kniterate"}) {
+    knitout::MachineProfile p = shipped_profile(profile);
+    std::string text = testing::emit_knitout_text(c, p);
+    knitout::Replay replay = knitout::replay_knitout(text, "glove.k", p);
+    const knitout::ShopStats& st = replay.stats;
+    std::cout << fmt::format("glove on {}: {} passes, {} transfers, {} rack changes\n", profile,
+                             st.stitch_passes + st.transfer_passes, st.transfers, st.racks);
+    knitout::ProofResult proof = knitout::prove_whole_file(replay, text, c);
+    EXPECT_TRUE(proof.proven) << "glove on " << profile << ": " << proof.summary;
+  }
+}
+
 // The roll moves every loop of the tube the same way round; no transfer of it stretches
 // further than the profile allows (the v-bed would refuse the file), and the judge, which never
 // sees the generator's plan, finds a roll with one transfer left out.

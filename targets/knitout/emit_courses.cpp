@@ -97,9 +97,10 @@ bool Emitter::needs_rack_zero(const Course& c) const {
 
 // Before turning beside a waiting loop, the yarn tucks over its needle, going on the way it
 // went: the waiting stitch is later knit through the tuck too, which closes the turn's hole.
-// A wrap over the turning stitch's own loop is made on the way back.
+// A wrap over the turning stitch's own loop is made on the way back. A turn whose wrap the
+// needle has no room for is left bare (keep_wraps_within_limit).
 void Emitter::wrap_turn(const Course& c) {
-  if (c.wrap == kNoWrap) return;
+  if (c.wrap == kNoWrap || bare_turn_[static_cast<std::size_t>(&c - l_.courses.data())]) return;
   const LoopPlace& waiting = live_[c.wrap];
   bool on_back = l_.tube && waiting.home.bed == Bed::b;
   bool rightward = (!on_back == c.left_to_right) != c.wrap_back;

@@ -79,18 +79,15 @@ void Emitter::check_side_by_side() {
 }
 
 // The loops each stitch gathers on one needle, and the transfers a double decrease needs.
-void Emitter::check_needle_loads() const {
-  std::vector<std::uint32_t> wraps = wraps_per_stitch(), held = held_loops();
+void Emitter::check_needle_loads() {
+  std::vector<std::uint32_t> held = held_loops(), wraps = keep_wraps_within_limit(held);
   for (StitchId s : l_.order) {
-    // A bind-off's needle also receives the chain's loop.
-    std::uint32_t in = info(g_.type[s]).loops_in,
-                  gathered = wraps[s] + (chained_off(g_.type[s]) ? 1 : 0);
-    for (std::uint32_t loop : taken(s)) gathered += held[loop];
-    if (gathered > p_.max_loops_per_needle && gathered > in)
-      throw UnsupportedError(fmt::format(
-          "{} would gather {} loops on one needle (with tucked loops, short-row wraps or the "
-          "bind-off chain), {} allows {}",
-          g_.describe(s), gathered, p_.name, p_.max_loops_per_needle));
+    std::uint32_t in = info(g_.type[s]).loops_in;
+    if (needle_load(s, held) + wraps[s] > std::max(p_.max_loops_per_needle, in))
+      throw UnsupportedError(
+          fmt::format("{} would gather {} loops on one needle ({}), {} allows {}", g_.describe(s),
+                      needle_load(s, held) + wraps[s], what_the_needle_holds(s, held, wraps[s]),
+                      p_.name, p_.max_loops_per_needle));
     if (in > p_.max_loops_per_needle)
       throw UnsupportedError(
           fmt::format("a {}-to-1 decrease exceeds the {} loop{} per needle {} allows, at {}", in,
@@ -113,11 +110,48 @@ std::vector<std::uint32_t> Emitter::held_loops() const {
   return held;
 }
 
-// How many short-row turns wrap each stitch's loop (their tucks are knit with it).
-std::vector<std::uint32_t> Emitter::wraps_per_stitch() const {
+// The loops a stitch gathers on its needle, short-row wraps aside: those it takes with the
+// tucked loops they hold, and a bind-off's chain loop.
+std::uint32_t Emitter::needle_load(StitchId s, const std::vector<std::uint32_t>& held) const {
+  std::uint32_t load = chained_off(g_.type[s]) ? 1 : 0;
+  for (std::uint32_t loop : taken(s)) load += held[loop];
+  return load;
+}
+
+// For a refusal: what the stitch's needle would hold, "2 loops taken, 1 tucked loop under
+// them, 1 short-row wrap, the bind-off chain's loop".
+std::string Emitter::what_the_needle_holds(StitchId s, const std::vector<std::uint32_t>& held,
+                                           std::uint32_t wraps) const {
+  std::size_t loops = taken(s).size();
+  std::uint32_t tucked =
+      needle_load(s, held) - static_cast<std::uint32_t>(loops) - (chained_off(g_.type[s]) ? 1 : 0);
+  auto count = [](std::size_t n, const char* one, const char* many) {
+    return fmt::format("{} {}", n, n == 1 ? one : many);
+  };
+  std::string out = count(loops, "loop taken", "loops taken");
+  if (tucked) out += ", " + count(tucked, "tucked loop under them", "tucked loops under them");
+  if (wraps) out += ", " + count(wraps, "short-row wrap", "short-row wraps");
+  if (chained_off(g_.type[s])) out += ", the bind-off chain's loop";
+  return out;
+}
+
+// How many short-row turns wrap each stitch's loop (their tucks are knit with it). A turn
+// whose wrap the needle could not hold with the loops it gathers is left bare (the model's
+// fabric: the wrap only closes the hole a turn leaves), the first turns keeping theirs.
+std::vector<std::uint32_t> Emitter::keep_wraps_within_limit(
+    const std::vector<std::uint32_t>& held) {
   std::vector<std::uint32_t> wraps(g_.size(), 0);
-  for (const Course& c : l_.courses)
-    if (c.wrap != kNoWrap) ++wraps[g_.loops[c.wrap].taker];
+  bare_turn_.assign(l_.courses.size(), 0);
+  for (std::size_t i = 0; i < l_.courses.size(); ++i) {
+    if (l_.courses[i].wrap == kNoWrap) continue;
+    StitchId taker = g_.loops[l_.courses[i].wrap].taker;
+    std::uint32_t limit =
+        std::max<std::uint32_t>(p_.max_loops_per_needle, info(g_.type[taker]).loops_in);
+    if (needle_load(taker, held) + wraps[taker] < limit)
+      ++wraps[taker];
+    else
+      bare_turn_[i] = 1;
+  }
   return wraps;
 }
 

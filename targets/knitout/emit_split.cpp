@@ -108,7 +108,6 @@ std::array<Place, 2> Emitter::crotch_places(const Crotch& k, std::uint32_t i,
 void Emitter::cast_on_along_split(const Course& c) {
   source(c, "transfers (room for a cast-on along a split)");
   Crotch k = plan_crotch(c);
-  crotch_ = true;
   std::vector<std::uint8_t> ready(c.end - c.begin, 1);  // its sts take no loops
   go_home(c, ready, true);
   shift_stacks(c, ready);

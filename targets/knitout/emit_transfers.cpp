@@ -102,10 +102,6 @@ void Emitter::merge_decreases(const Course& c) {
       auto order = stacking_order(g_.type[s]);
       Place bottom = live_[taken(s)[order[0]]].now;
       LoopPlace& lp = live_[taken(s)[order[stage]]];
-      if (lp.now.bed != bottom.bed && crotch_ && c.partial)
-        unsupported_split(
-            c, fmt::format("a decrease across a fold of a branch parted off at a crotch ({})",
-                           g_.describe(s)));
       bool along_bed = lp.now.bed == bottom.bed;
       bool near = std::abs(along_bed ? lp.now.needle - bottom.needle : rack_of({lp.now, bottom})) <=
                   p_.max_transfer_stretch;

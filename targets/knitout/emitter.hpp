@@ -105,9 +105,12 @@ class Emitter {
   void check_fit();
   void check_width();
   void check_side_by_side();
-  void check_needle_loads() const;
+  void check_needle_loads();
   std::vector<std::uint32_t> held_loops() const;
-  std::vector<std::uint32_t> wraps_per_stitch() const;
+  std::uint32_t needle_load(StitchId s, const std::vector<std::uint32_t>& held) const;
+  std::string what_the_needle_holds(StitchId s, const std::vector<std::uint32_t>& held,
+                                    std::uint32_t wraps) const;
+  std::vector<std::uint32_t> keep_wraps_within_limit(const std::vector<std::uint32_t>& held);
 
   // ---- laying a course out on the needles (emit_layout.cpp) ----
   bool keep_folds(const Course& c, Footprint& f) const;
@@ -233,9 +236,9 @@ class Emitter {
   std::array<std::vector<Shaping>, 2> shaping_;  // a short row's shaped stitches, per bed
   std::vector<RoomMove> room_;                   // the waiting loops the shaping moves
   std::vector<std::uint8_t> in_course_;          // per loop: taken by the course being planned
+  std::vector<std::uint8_t> bare_turn_;  // per course: its turn's wrap left out (no room for it)
   const std::vector<std::string>& carriers_;
   std::string carrier_;  // the carrier of the course being knit
-  bool crotch_ = false;  // a cast-on along a split has parted the tube into branches
   bool rolled_ = false;  // the tube has rolled round its needles: its rounds start elsewhere
 };
 
