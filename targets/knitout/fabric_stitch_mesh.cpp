@@ -110,17 +110,29 @@ class GluedFabric {
   // turns inside a face (sr4, sr5) and has no face beyond the turn, so the wrap is folded into
   // the wale it lies on: the stitch knit through it takes the loop under it.
   void fold_wraps() {
-    for (StitchId t = 0; t < g_.size(); ++t) {
-      if (g_.type[t] != StitchType::tuck || g_.yarn_link[t] != YarnLink::turn) continue;
-      if (t == 0 || g_.yarn_next[t - 1] != t) continue;  // a yarn's first stitch turns nothing
-      FabricLoop& under = loops_[taken_loop(t)];
-      FabricLoop& over = loops_[made_loop(t)];
-      over.maker = under.maker, over.yarn_slot = under.yarn_slot;
-      under.alive = false;
-      kept_[t] = false;
-      next_[t - 1] = next_[t];
-      turns_after_wrap_[t - 1] = true;
-    }
+    for (StitchId t = 0; t < g_.size(); ++t)
+      if (is_wrap(t)) fold_wrap(t);
+  }
+
+  // The yarn turns at the tuck: after it, or before it when the tuck is made going back (round
+  // a tube's fold, the wrap on the other bed is tucked in the pass after the turn), the stitch
+  // graph then reading it as the row before it going on round (a shift).
+  bool is_wrap(StitchId t) const {
+    if (g_.type[t] != StitchType::tuck) return false;
+    if (t == 0 || g_.yarn_next[t - 1] != t) return false;  // a yarn's first stitch turns nothing
+    bool made_going_back = g_.direction[t - 1] != g_.direction[t];
+    return g_.yarn_link[t] == YarnLink::turn ||
+           (made_going_back && g_.yarn_link[t] == YarnLink::shift);
+  }
+
+  void fold_wrap(StitchId t) {
+    FabricLoop& under = loops_[taken_loop(t)];
+    FabricLoop& over = loops_[made_loop(t)];
+    over.maker = under.maker, over.yarn_slot = under.yarn_slot;
+    under.alive = false;
+    kept_[t] = false;
+    next_[t - 1] = next_[t];
+    turns_after_wrap_[t - 1] = true;
   }
 
   // `.st` says a decrease of three loops as two `d`s, the second taking the first's loop: one
@@ -311,11 +323,17 @@ class GluedFabric {
     }
   }
 
-  // The seam stitch under a stitch on the seam: the maker of its loop on the seam.
+  // The round's first stitch under a stitch on the seam: the maker of its loop on the seam, or
+  // below a short row's end there (a heel's short row turning at the seam lies on the round
+  // it turns on) the stitch under that.
   StitchId seam_below(StitchId s) const {
-    for (std::uint32_t l : faces_[s].takes)
-      if (on_seam_[loops_[l].maker]) return loops_[l].maker;
-    return kNoStitch;
+    for (StitchId x = s;;) {
+      auto on_seam = std::find_if(faces_[x].takes.begin(), faces_[x].takes.end(),
+                                  [&](std::uint32_t l) { return on_seam_[loops_[l].maker]; });
+      if (on_seam == faces_[x].takes.end()) return kNoStitch;
+      x = loops_[*on_seam].maker;
+      if (!faces_[x].turns) return x;
+    }
   }
 
   // The round ending at `last` closes on `first` when the yarn between them runs round without
@@ -358,7 +376,7 @@ class GluedFabric {
       } else if (faces_[s].turns) {
         glue_wale(s, next);
       } else if (!is_turn(s)) {
-        if (on_seam_[next] && close_round(s, seam_below(next)))
+        if (on_seam_[next] && !faces_[next].turns && close_round(s, seam_below(next)))
           round_start[piece_[s]] = next;
         else
           glue_wale(s, next);
