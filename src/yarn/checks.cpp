@@ -78,8 +78,7 @@ Clearance yarn_clearance(const YarnModel& model, float allowed, unsigned threads
   Clearance c;
   c.checked = pairs.size();
   for (const SegmentPair& p : pairs) {
-    const auto& x = model.point;
-    float d = closest_points(x[p.a], x[p.a + 1], x[p.b], x[p.b + 1]).distance / diameter;
+    float d = p.distance / diameter;
     c.closest = std::min(c.closest, d);
     c.closer += d < allowed;
   }

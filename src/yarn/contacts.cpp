@@ -196,9 +196,10 @@ std::vector<SegmentPair> close_segments(std::span<const Point3> point,
           if (hi <= lo + kNeighbourSegments) continue;
           float r = me.radius + other.radius;
           if ((me.centre - other.centre).squaredNorm() >= r * r) continue;
-          if (closest_points(point[lo], point[lo + 1], point[hi], point[hi + 1]).distance < reach &&
-              !close_along_yarn(point, starts, lo, hi, along))
-            (pieces_of(lo) || pieces_of(hi) ? repeated : found)[part].push_back({lo, hi});
+          const float distance =
+              closest_points(point[lo], point[lo + 1], point[hi], point[hi + 1]).distance;
+          if (distance < reach && !close_along_yarn(point, starts, lo, hi, along))
+            (pieces_of(lo) || pieces_of(hi) ? repeated : found)[part].push_back({lo, hi, distance});
         }
       }
     }

@@ -15,6 +15,7 @@ namespace skein {
 // Segment i joins point i and i + 1 of one piece.
 struct SegmentPair {
   std::uint32_t a, b;  // a < b, more than kNeighbourSegments apart along the points
+  float distance;      // their closest distance when found
 };
 inline constexpr std::uint32_t kNeighbourSegments = 3;
 

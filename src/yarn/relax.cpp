@@ -14,6 +14,9 @@ constexpr float kClamp = 0.25f;   // largest move per step, in radii
 constexpr float kSkin = 1.5f;     // Verlet skin, in radii
 constexpr float kFeed = 0.5f;     // share of a stretch the yarn gives in a step
 constexpr float kMaxFeed = 1.5f;  // the most a segment grows, of its template length
+// Room left for rounding when a pair is skipped on its distance bound, in radii: a skipped
+// pair would have been found no closer than a diameter, so the output does not change.
+constexpr float kSkipMargin = 0.02f;
 
 class Relaxation {
  public:
@@ -26,6 +29,7 @@ class Relaxation {
         anchor_(model.point),
         next_(model.point.size()),
         rest_(model.point.size(), 0),
+        moved_(model.point.size(), 0),
         push_(threads_, std::vector<Point3>(model.point.size())),
         touches_(threads_, std::vector<std::uint16_t>(model.point.size())) {
     for (std::size_t i = 0; i + 1 < m_.point.size(); ++i)
@@ -42,6 +46,7 @@ class Relaxation {
         pairs_ = close_segments(m_.point, m_.piece_first, diameter_ + kSkin * m_.radius, diameter_,
                                 threads_);
         built_ = m_.point;
+        std::fill(moved_.begin(), moved_.end(), 0.0f);
         ++report.pair_builds;
       }
       report.overlap = push_apart();
@@ -74,11 +79,18 @@ class Relaxation {
         std::fill(touches_[t].begin() + begin, touches_[t].begin() + end, 0);
       }
     });
+    const float margin = diameter_ + kSkipMargin * m_.radius;
     parallel_for(pairs_.size(), threads_, [&](std::size_t begin, std::size_t end, unsigned t) {
       std::vector<Point3>& push = push_[t];
       std::vector<std::uint16_t>& touches = touches_[t];
       for (std::size_t k = begin; k < end; ++k) {
-        const auto [a, b] = pairs_[k];
+        const auto [a, b, found_at] = pairs_[k];
+        // No point of a segment has moved farther than its farther end since the pairs were
+        // found, so the pair is no closer than found_at less both ends' moves: most pairs of
+        // the list (a skin wider than the contact) need no closer look.
+        if (found_at - std::max(moved_[a], moved_[a + 1]) - std::max(moved_[b], moved_[b + 1]) >=
+            margin)
+          continue;
         const Point3 &p0 = m_.point[a], &p1 = m_.point[a + 1];
         const Point3 &q0 = m_.point[b], &q1 = m_.point[b + 1];
         if (!may_touch(m_.point, a, b, diameter_)) continue;
@@ -175,17 +187,19 @@ class Relaxation {
     return *std::max_element(largest.begin(), largest.end()) / m_.radius;
   }
 
-  // The farthest any point lies from where it was when the pair list was built, in radii:
-  // no pair closer than the reach can have come from outside the list while no point has
-  // moved half the skin (summing each step's largest move instead rebuilt the list nearly
-  // every step, as different points moved most).
-  float farthest_from_build() const {
+  // How far each point lies from where it was when the pair list was built (kept for the
+  // pair skip) and the farthest, in radii: no pair closer than the reach can have come from
+  // outside the list while no point has moved half the skin (summing each step's largest
+  // move instead rebuilt the list nearly every step, as different points moved most).
+  float farthest_from_build() {
     std::vector<float> farthest(threads_, 0);
     parallel_for(built_.size(), threads_, [&](std::size_t begin, std::size_t end, unsigned t) {
-      for (std::size_t i = begin; i < end; ++i)
-        farthest[t] = std::max(farthest[t], (m_.point[i] - built_[i]).squaredNorm());
+      for (std::size_t i = begin; i < end; ++i) {
+        moved_[i] = (m_.point[i] - built_[i]).norm();
+        farthest[t] = std::max(farthest[t], moved_[i]);
+      }
     });
-    return std::sqrt(*std::max_element(farthest.begin(), farthest.end())) / m_.radius;
+    return *std::max_element(farthest.begin(), farthest.end()) / m_.radius;
   }
 
   YarnModel& m_;
@@ -195,6 +209,7 @@ class Relaxation {
   std::vector<std::uint8_t> starts_;
   std::vector<Point3> anchor_, next_, built_;
   std::vector<float> rest_, template_;
+  std::vector<float> moved_;  // per point, since the pair list was built
   std::vector<std::vector<Point3>> push_;
   std::vector<std::vector<std::uint16_t>> touches_;
   std::vector<SegmentPair> pairs_;
