@@ -51,7 +51,7 @@ void ProgramPatternBuilder::gather(const Step& s, std::vector<std::uint32_t> met
   Needle& n = needle();
   n.ring = met;
   n.gap = 0;
-  n.live = hand_sts(met);
+  n.live = hand_stitch_count(g_, met);
   n.in_round = true;
   n.rnds = n.last = s.direction;
   n.worked = false;
@@ -212,7 +212,7 @@ void ProgramPatternBuilder::place_into_ring_row(const Step& s,
     places_.set(block, {Place::needle, current_});
   }
   n.gap = 0;
-  n.live = hand_sts(n.ring);
+  n.live = hand_stitch_count(g_, n.ring);
 }
 
 std::vector<std::uint32_t> ProgramPatternBuilder::whole_source(LoopAt source,
@@ -324,7 +324,7 @@ std::vector<std::uint32_t> ProgramPatternBuilder::join_flat_piece_in_the_rnd(
   std::vector<std::uint32_t> row = counted_on_spare_needle(n);  // as the last row worked them
   // Taken up again: the sts are slipped as it is taken up, naming the row.
   bool taken_up = last_row < sec.first_row;
-  PatternSection::Holding h{taken_up ? sec.first_row - 1 : last_row, 1, hand_sts(row),
+  PatternSection::Holding h{taken_up ? sec.first_row - 1 : last_row, 1, hand_stitch_count(g_, row),
                             places_.hold(row, n.section)};
   h.flat_row = true;
   h.of_number = taken_up ? out_.rows[last_row].number : 0;
@@ -336,7 +336,7 @@ std::vector<std::uint32_t> ProgramPatternBuilder::join_flat_piece_in_the_rnd(
 
 std::vector<std::uint32_t> ProgramPatternBuilder::row_ahead(const Step& s) {
   Needle& n = needle();
-  if (row_open_ || s.direction == n.last || n.live != hand_sts(n.ring))
+  if (row_open_ || s.direction == n.last || n.live != hand_stitch_count(g_, n.ring))
     not_yet(s, "places sts into a row that does not turn from a whole row");
   for (std::uint32_t l : n.ring)
     if (!in_met_[l]) not_yet(s, "places sts into a row that leaves some of its own");
@@ -352,7 +352,7 @@ void ProgramPatternBuilder::lay_row_ahead(const Step& s, const std::vector<std::
   if (s.direction == CourseDirection::right_to_left) std::reverse(n.ring.begin(), n.ring.end());
   n.gap =
       s.direction == CourseDirection::right_to_left ? static_cast<std::uint32_t>(met.size()) : 0;
-  n.live = hand_sts(met);
+  n.live = hand_stitch_count(g_, met);
   n.ahead = 0;
   n.behind = n.live;
   n.last = reversed(s.direction);
@@ -396,7 +396,7 @@ LoopAt ProgramPatternBuilder::hold_parts_of_spare_needle(std::uint32_t section, 
       return o.after_row == h.after_row && o.first > h.first;
     });
     sec.holdings.insert(later, h);
-    sec.live_at_end -= hand_sts(part);
+    sec.live_at_end -= hand_stitch_count(g_, part);
   }
   return places_.at(loop);
 }
@@ -446,13 +446,6 @@ std::optional<PatternSection::Holding> ProgramPatternBuilder::counting_of_spare_
     return std::nullopt;
   h.of_row = !last.round;
   return h;
-}
-
-std::uint32_t ProgramPatternBuilder::hand_sts(std::span<const std::uint32_t> loops) const {
-  std::uint32_t sr5 = 0;
-  for (std::uint32_t l : loops)
-    sr5 += g_.loops[l].maker != kNoStitch && g_.type[g_.loops[l].maker] == T::sr5;
-  return static_cast<std::uint32_t>(loops.size()) - sr5 / 2;
 }
 
 std::vector<std::uint32_t> ProgramPatternBuilder::hold_what_it_leaves(const Step& s) {
@@ -714,7 +707,7 @@ std::vector<std::uint32_t> ProgramPatternBuilder::start_from_pick_up(
   start_section(s.yarn, kNone);
   section().in_round = round;
   section().picks_up = *p;
-  section().cast_on = hand_sts(host);
+  section().cast_on = hand_stitch_count(g_, host);
   return host;
 }
 
