@@ -19,12 +19,10 @@ Program mirror_image(const KnitGraph& graph, const Program& program) {
   for (Segment& seg : m.segments)
     seg.walk = seg.walk == Walk::forward ? Walk::backward : Walk::forward;
   for (std::size_t i = 0; i < m.stitches.size(); ++i) {
-    StitchType type = graph.type[m.stitches[i].stitch];
-    // A three-needle bind-off's loops are front and back, a provisional cast-on's the two
-    // sides of its split: neither is left and right.
-    if (type != StitchType::tnbo)
+    const StitchTypeInfo& type = info(graph.type[m.stitches[i].stitch]);
+    if (type.mirror_reverses_taken)
       std::reverse(m.taken.begin() + m.taken_at[i], m.taken.begin() + m.taken_at[i + 1]);
-    if (type != StitchType::sco)
+    if (type.mirror_reverses_made)
       std::reverse(m.made.begin() + m.made_at[i], m.made.begin() + m.made_at[i + 1]);
   }
   return m;

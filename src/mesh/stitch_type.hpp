@@ -1,7 +1,8 @@
 // The catalogue of stitch types, spelled as knitters spell them. Each entry says how many
 // course edges a face of that type has at the bottom (loops it consumes) and at the top
-// (loops it makes), and how its two wale edges sit (opposite, or side by side on a short-row
-// face).
+// (loops it makes), how its two wale edges sit (opposite, or side by side on a short-row
+// face), and the facts every target reads instead of keeping its own list: how its loops
+// stack, its mirror image, whether it shows as a purl, and which targets work it.
 #pragma once
 
 #include <cstdint>
@@ -46,6 +47,14 @@ enum class LoopStack : std::uint8_t {
                   // together, the front one's loop in front)
 };
 
+// The targets that can make a stitch type (flags).
+enum WorkedBy : std::uint8_t {
+  by_none = 0,
+  by_hand = 1,     // hand patterns write it
+  by_machine = 2,  // the knitout target has a recipe for it
+  by_both = by_hand | by_machine,
+};
+
 struct StitchTypeInfo {
   StitchType type;
   std::string_view abbreviation;  // standard abbreviation, also the name in files
@@ -57,6 +66,14 @@ struct StitchTypeInfo {
   bool wales_adjacent;            // short-row faces: the two wale edges are side by side
   bool variable_course_edges;     // srn: top course edge count may be larger
   LoopStack stack;                // how the loops it takes lie on one another
+  StitchType mirror;              // the stitch that looks like it in a mirror (k2tog: ssk)
+  // Mirroring reverses the order of its taken / made loops, unless they are not left and
+  // right: a three-needle bind-off takes a front and a back loop, a cast-on along a split makes
+  // one loop to each side of the split.
+  bool mirror_reverses_taken;
+  bool mirror_reverses_made;
+  bool purl;           // it shows as a purl from the right side (knit on the back bed)
+  WorkedBy worked_by;  // the targets that can make it
 };
 
 const StitchTypeInfo& info(StitchType type);
@@ -67,6 +84,21 @@ std::optional<StitchType> stitch_type_from_abbreviation(std::string_view abbrevi
 // front, in loop thicknesses; 0 for a single loop. A `by_side` stitch's loops lie in slot
 // order, the right one in front, until their pieces say otherwise.
 float stack_position(StitchType type, std::uint32_t slot, std::uint32_t loops);
+// The slots of the loops a stitch of `type` takes, in the order they land on one needle, bottom
+// first: the last lies on top and gives the lean (k2tog, p2tog: {1, 0}; ssk: {0, 1}; s2kp: the
+// centre loop on top, the right one under it, {0, 2, 1}; a three-needle bind-off: the second
+// needle's loop on the first's, {0, 1}); {0} for a stitch that takes one loop.
+std::span<const std::uint8_t> stacking_order(StitchType type);
+
+inline StitchType mirrored(StitchType type) {
+  return info(type).mirror;
+}
+inline bool is_purl(StitchType type) {
+  return info(type).purl;
+}
+inline bool worked_by(StitchType type, WorkedBy target) {
+  return (info(type).worked_by & target) != 0;
+}
 
 inline std::string_view abbreviation(StitchType type) {
   return info(type).abbreviation;

@@ -209,7 +209,7 @@ void bridge(const Point3& from, const Point3& to, std::uint32_t points, Point3* 
 StitchTemplate stitch_template(StitchType type) {
   const StitchTypeInfo& i = info(type);
   auto lobes = static_cast<std::uint8_t>(std::max<int>(i.loops_out, 1));
-  float side = type == StitchType::p || type == StitchType::p2tog ? -1.0f : 1.0f;
+  float side = is_purl(type) ? -1.0f : 1.0f;
   if (type == StitchType::sl) return {LobeKind::slipped, side, lobes};
   if (type == StitchType::tuck) return {LobeKind::tucked, side, lobes};
   if (i.loops_in == 0) return {LobeKind::cast_on, side, lobes};

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "driver/pipeline.hpp"
+#include "knitgraph/worked_by_hand.hpp"
 
 namespace skein::hand {
 namespace {
@@ -24,32 +25,6 @@ const char* link_words(YarnLink link) {
 std::string ordinal(std::size_t n) {
   static constexpr const char* kWords[] = {"1st", "2nd", "3rd"};
   return n < 3 ? kWords[n] : fmt::format("{}th", n + 1);
-}
-
-// The fabric a knitter makes for a model stitch, stated here on its own (the judge shares no
-// code with the pattern builder): a knitter's short-row turn (a DS or a wrap) holds the turn's
-// loop on its st, so the model's sr5, whose st and turn make two loops, is the fabric of an sr4
-// when one k2tog, ssk or p2tog above takes both of those loops and nothing else; that decrease
-// is then the knit (the purl, for a p2tog) of `k DS` / `kw`. Any other stitch is itself.
-bool takes_an_sr5s_two_loops_alone(const KnitGraph& g, StitchId s) {
-  auto taken = g.loops_taken_by(s);
-  if (taken.size() != 2) return false;
-  const Loop &a = g.loops[taken[0]], &b = g.loops[taken[1]];
-  return a.maker != kNoStitch && a.maker == b.maker && g.type[a.maker] == StitchType::sr5;
-}
-
-StitchType as_knit_by_hand(const KnitGraph& g, StitchId s) {
-  switch (g.type[s]) {
-    case StitchType::sr5:
-      return StitchType::sr4;
-    case StitchType::k2tog:
-    case StitchType::ssk:
-      return takes_an_sr5s_two_loops_alone(g, s) ? StitchType::k : g.type[s];
-    case StitchType::p2tog:
-      return takes_an_sr5s_two_loops_alone(g, s) ? StitchType::p : g.type[s];
-    default:
-      return g.type[s];
-  }
 }
 
 class Comparison {
@@ -107,7 +82,9 @@ class Comparison {
     if (f_.yarn_link[x] != g_.yarn_link[s])
       return differ(x, fmt::format("the pattern {} after it, the model {}",
                                    link_words(f_.yarn_link[x]), link_words(g_.yarn_link[s])));
-    StitchType worked = as_knit_by_hand(g_, s);
+    // The fabric a knitter makes for the model's stitch: the core's rule, which the pattern
+    // builder reads too (the judge calls no builder code).
+    StitchType worked = worked_by_hand(g_, s);
     StitchType want = mirror_ ? mirrored(worked) : worked;
     if (f_.type[x] != want) {
       std::optional<Difference> d = differ(
@@ -127,13 +104,13 @@ class Comparison {
     // The decrease that knits an sr5's two loops together takes them as the one loop of the DS
     // or wrap a knitter works (the sr4's).
     auto model_taken = g_.loops_taken_by(s);
-    bool as_one = g_.type[s] != StitchType::sr5 && worked != g_.type[s];
+    bool as_one = knits_an_sr5_as_one(g_, s);
     std::size_t model_count = as_one ? 1 : model_taken.size();
     if (taken.size() != model_count)
       return differ(
           x, fmt::format("it takes {} loop(s), the model's stitch {}", taken.size(), model_count));
     for (std::size_t i = 0; i < taken.size(); ++i) {
-      bool flip_taken = mirror_ && g_.type[s] != StitchType::tnbo;
+      bool flip_taken = mirror_ && info(g_.type[s]).mirror_reverses_taken;
       Loop want_loop = g_.loops[model_taken[flip_taken ? taken.size() - 1 - i : i]];
       if (as_one) want_loop.maker_slot = 0;
       std::uint32_t maker = f_.loop_maker[taken[i]];

@@ -210,19 +210,4 @@ std::optional<Working> working_of(StitchType type, Side side) {
   return Working{side == Side::rs ? HandOp::k : HandOp::p, *op};
 }
 
-StitchType mirrored(StitchType type) {
-  switch (type) {
-    case T::k2tog:
-      return T::ssk;
-    case T::ssk:
-      return T::k2tog;
-    case T::m1l:
-      return T::m1r;
-    case T::m1r:
-      return T::m1l;
-    default:
-      return type;
-  }
-}
-
 }  // namespace skein::hand

@@ -114,7 +114,4 @@ struct Working {
 };
 std::optional<Working> working_of(StitchType type, Side side);
 
-// The stitch that looks like `type` in a mirror (left and right swapped).
-StitchType mirrored(StitchType type);
-
 }  // namespace skein::hand

@@ -196,11 +196,4 @@ struct HandPattern {
   }
 };
 
-// A knitter's short-row turn (a DS, a wrap) is the model's sr4 as well as its sr5 (paper Fig.
-// 10b: the turn's loop a loop of its own, which the stitch above knits together with the
-// sr5's): the pattern works an sr5 as an sr4, and the decrease that takes both of its loops
-// (and no other) as the plain st of `k DS` / `kw` (a p2tog, seen from the RS, as `p DS` /
-// `pw`). The stitch type the pattern works `s` as; the model's own elsewhere.
-StitchType worked_by_hand(const KnitGraph& g, StitchId s);
-
 }  // namespace skein::hand

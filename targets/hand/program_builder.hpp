@@ -22,6 +22,7 @@
 #include "driver/pipeline.hpp"
 #include "hand/loop_places.hpp"
 #include "hand/pattern_model.hpp"
+#include "knitgraph/worked_by_hand.hpp"
 
 namespace skein::hand::from_program {
 
@@ -279,10 +280,6 @@ class ProgramPatternBuilder {
   // where the pattern cannot name them so (after a row in the rnd on part of them).
   std::optional<PatternSection::Holding> counting_of_spare_needle(
       const PatternSection& sec, const std::vector<std::uint32_t>& spare) const;
-
-  // The sts a knitter counts on the needle: the two loops of an sr5 are one (a DS, a wrapped
-  // st).
-  std::uint32_t hand_sts(std::span<const std::uint32_t> loops) const;
 
   // The needle's loops the rnd does not take go to holders, a block of the rnd each; the rest
   // stay, from the marker on.

@@ -446,7 +446,7 @@ void ProgramPatternBuilder::hold_what_others_work(const Step& s, Needle& n) {
   for (std::uint32_t i = lo; i < hi; ++i) {
     bool leaves = others_take(n.ring[i]);
     before_gap += leaves && i < n.gap;
-    if (leaves) held += hand_sts({n.ring.data() + i, 1});
+    if (leaves) held += hand_stitch_count(g_, {n.ring.data() + i, 1});
   }
   stay.insert(stay.begin(), n.ring.begin(), n.ring.begin() + lo);
   stay.insert(stay.end(), n.ring.begin() + hi, n.ring.end());

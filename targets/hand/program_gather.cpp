@@ -2,8 +2,8 @@
 // loops from more than one place gathers them first. It slips what it leaves to holders, joins a
 // yarn to a holder, a spare needle or a provisional cast-on's chain, places the others into the
 // rnd, and picks up loops that wait along another piece's edge (paper section 3.2); then the needle
-// holds its loops in the order the course meets them. The members' why-comments:
-// program_builder.hpp.
+// holds its loops in the order the course meets them. Holders: program_holding.cpp; picking
+// up: program_pick_up.cpp. The members' why-comments: program_builder.hpp.
 #include <algorithm>
 
 #include "hand/program_builder.hpp"
@@ -51,7 +51,7 @@ void ProgramPatternBuilder::gather(const Step& s, std::vector<std::uint32_t> met
   Needle& n = needle();
   n.ring = met;
   n.gap = 0;
-  n.live = hand_sts(met);
+  n.live = hand_stitch_count(g_, met);
   n.in_round = true;
   n.rnds = n.last = s.direction;
   n.worked = false;
@@ -212,7 +212,7 @@ void ProgramPatternBuilder::place_into_ring_row(const Step& s,
     places_.set(block, {Place::needle, current_});
   }
   n.gap = 0;
-  n.live = hand_sts(n.ring);
+  n.live = hand_stitch_count(g_, n.ring);
 }
 
 std::vector<std::uint32_t> ProgramPatternBuilder::whole_source(LoopAt source,
@@ -324,7 +324,7 @@ std::vector<std::uint32_t> ProgramPatternBuilder::join_flat_piece_in_the_rnd(
   std::vector<std::uint32_t> row = counted_on_spare_needle(n);  // as the last row worked them
   // Taken up again: the sts are slipped as it is taken up, naming the row.
   bool taken_up = last_row < sec.first_row;
-  PatternSection::Holding h{taken_up ? sec.first_row - 1 : last_row, 1, hand_sts(row),
+  PatternSection::Holding h{taken_up ? sec.first_row - 1 : last_row, 1, hand_stitch_count(g_, row),
                             places_.hold(row, n.section)};
   h.flat_row = true;
   h.of_number = taken_up ? out_.rows[last_row].number : 0;
@@ -336,7 +336,7 @@ std::vector<std::uint32_t> ProgramPatternBuilder::join_flat_piece_in_the_rnd(
 
 std::vector<std::uint32_t> ProgramPatternBuilder::row_ahead(const Step& s) {
   Needle& n = needle();
-  if (row_open_ || s.direction == n.last || n.live != hand_sts(n.ring))
+  if (row_open_ || s.direction == n.last || n.live != hand_stitch_count(g_, n.ring))
     not_yet(s, "places sts into a row that does not turn from a whole row");
   for (std::uint32_t l : n.ring)
     if (!in_met_[l]) not_yet(s, "places sts into a row that leaves some of its own");
@@ -352,207 +352,13 @@ void ProgramPatternBuilder::lay_row_ahead(const Step& s, const std::vector<std::
   if (s.direction == CourseDirection::right_to_left) std::reverse(n.ring.begin(), n.ring.end());
   n.gap =
       s.direction == CourseDirection::right_to_left ? static_cast<std::uint32_t>(met.size()) : 0;
-  n.live = hand_sts(met);
+  n.live = hand_stitch_count(g_, met);
   n.ahead = 0;
   n.behind = n.live;
   n.last = reversed(s.direction);
   n.worked = own;
   index_ring(n);
   places_.set(met, {Place::needle, current_});
-}
-
-LoopAt ProgramPatternBuilder::hold_parts_of_spare_needle(std::uint32_t section, std::uint32_t loop,
-                                                         bool round_the_end_stays) {
-  PatternSection& sec = out_.sections[section];
-  const LoopAt spare_needle{Place::spare, section};
-  std::vector<std::uint32_t> spare = places_.loops_of(spare_needle);
-  std::optional<PatternSection::Holding> counted = counting_of_spare_needle(sec, spare);
-  if (!counted) return spare_needle;
-  // The sts keep the numbers they had when the piece was left, so each part is a run of
-  // those numbers, and all parts go to holders in one sentence, in order, but the one that
-  // goes round past the end, which stays on the spare needle for a rnd to place from its
-  // middle (where `round_the_end_stays`).
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> parts;  // [begin, end) in `spare`
-  for (std::uint32_t i = 0, end = 0; i < spare.size(); i = end) {
-    for (end = i + 1; end < spare.size() &&
-                      (taken_together(spare[end - 1], spare[end]) ||
-                       taken_by_rows_one_by_one(spare[end - 1], spare[end])) &&
-                      places_.counted_at(spare[end]) == places_.counted_at(spare[end - 1]) + 1;
-         ++end) {
-    }
-    parts.emplace_back(i, end);
-  }
-  bool round_the_end =
-      round_the_end_stays && parts.size() > 1 && taken_together(spare.back(), spare.front());
-  for (std::size_t k = round_the_end ? 1 : 0; k + (round_the_end ? 1 : 0) < parts.size(); ++k) {
-    std::span<const std::uint32_t> part(spare.data() + parts[k].first,
-                                        parts[k].second - parts[k].first);
-    PatternSection::Holding h = *counted;
-    h.first = places_.counted_at(part.front());
-    h.count = static_cast<std::uint32_t>(part.size());
-    places_.take_off_spare(section, part);
-    h.holder = places_.hold(part, section);
-    auto later = std::find_if(sec.holdings.begin(), sec.holdings.end(), [&](const auto& o) {
-      return o.after_row == h.after_row && o.first > h.first;
-    });
-    sec.holdings.insert(later, h);
-    sec.live_at_end -= hand_sts(part);
-  }
-  return places_.at(loop);
-}
-
-std::optional<Lie> ProgramPatternBuilder::lie_parting_spare_needle(
-    LoopAt& source, std::span<const std::uint32_t> block) {
-  std::optional<Lie> lie = places_.lie(source, block);
-  if (lie || source.place != Place::spare) return lie;
-  source = hold_parts_of_spare_needle(source.index, block.front());
-  return places_.lie(source, block);
-}
-
-bool ProgramPatternBuilder::taken_by_rows_one_by_one(std::uint32_t a, std::uint32_t b) const {
-  std::uint32_t at = taker_step_[a], bt = taker_step_[b];
-  if (at == kNone || bt == kNone || at == bt) return false;
-  const Step &sa = p_.steps[at], &sb = p_.steps[bt];
-  auto later_row = [&](const Step& s, std::uint32_t step) {
-    return s.shape != RowShape::closed && !starts_its_yarn(step);
-  };
-  // Taken from one end of the needle: by rows one or two apart (every row, or every other row
-  // where the rows take sts at both their ends).
-  std::uint32_t apart = std::max(course_number_[at], course_number_[bt]) -
-                        std::min(course_number_[at], course_number_[bt]);
-  return sa.yarn == sb.yarn && later_row(sa, at) && later_row(sb, bt) && apart <= 2;
-}
-
-bool ProgramPatternBuilder::taken_together(std::uint32_t a, std::uint32_t b) const {
-  if (taker_step_[a] != taker_step_[b]) return false;
-  return taker_step_[a] == kNone || met_at_[a] + 1 == met_at_[b] || met_at_[b] + 1 == met_at_[a];
-}
-
-std::optional<PatternSection::Holding> ProgramPatternBuilder::counting_of_spare_needle(
-    const PatternSection& sec, const std::vector<std::uint32_t>& spare) const {
-  PatternSection::Holding h{};
-  if (sec.first_row == sec.end_row) {  // its cast-on only
-    if (sec.resumed || sec.starts_from || sec.picks_up || sec.in_round) return std::nullopt;
-    h.after_row = sec.first_row - 1;
-    h.of_cast_on = true;
-    return h;
-  }
-  h.after_row = sec.end_row - 1;
-  const PatternRow& last = out_.rows[h.after_row];
-  // A row in the rnd numbers the sts in the order it worked them: only where it made them all.
-  if (sec.in_round != last.round && !std::all_of(spare.begin(), spare.end(), [&](std::uint32_t l) {
-        return row_of_[g_.loops[l].maker] == h.after_row;
-      }))
-    return std::nullopt;
-  h.of_row = !last.round;
-  return h;
-}
-
-std::uint32_t ProgramPatternBuilder::hand_sts(std::span<const std::uint32_t> loops) const {
-  std::uint32_t sr5 = 0;
-  for (std::uint32_t l : loops)
-    sr5 += g_.loops[l].maker != kNoStitch && g_.type[g_.loops[l].maker] == T::sr5;
-  return static_cast<std::uint32_t>(loops.size()) - sr5 / 2;
-}
-
-std::vector<std::uint32_t> ProgramPatternBuilder::hold_what_it_leaves(const Step& s) {
-  Needle& n = needle();
-  // After rows that ended away from the marker (a set-in sweater's front, whose yarn goes on
-  // to a sleeve) the yarn is at the marker once the sts between them are slipped.
-  auto kept = [&](std::uint32_t l) { return in_met_[l] != 0; };
-  auto gap = static_cast<std::ptrdiff_t>(n.gap);
-  bool at_marker = std::none_of(n.ring.begin(), n.ring.begin() + gap, kept) ||
-                   std::none_of(n.ring.begin() + gap, n.ring.end(), kept);
-  if (!n.in_round || row_open_ || !at_marker)
-    not_yet(s, "gathers sts onto a flat piece, or a tube not at the end of a rnd");
-  n.gap = 0;
-  if (out_.rows.empty()) not_yet(s, "gathers sts before any row is worked");
-  return hold_blocks(n.ring, kept, false);
-}
-
-std::vector<std::uint32_t> ProgramPatternBuilder::hold_blocks(
-    const std::vector<std::uint32_t>& order, const std::function<bool(std::uint32_t)>& stays,
-    bool of_row) {
-  Needle& n = needle();
-  PatternSection& sec = section();
-  auto after_row = static_cast<std::uint32_t>(out_.rows.size()) - 1;
-  std::vector<std::uint32_t> stay;
-  for (std::uint32_t i = 0; i < order.size();) {
-    if (stays(order[i])) {
-      stay.push_back(order[i++]);
-      continue;
-    }
-    // A block for each yarn that takes them (a gusset's sts, and a join's beside them).
-    std::uint32_t end = i + 1;
-    while (end < order.size() && !stays(order[end]) && held_together(order[end - 1], order[end]))
-      ++end;
-    std::span<const std::uint32_t> block(order.data() + i, end - i);
-    std::uint32_t holder = holder_met_before(block, n.section), onto = 0;
-    if (holder != 0) {
-      onto = static_cast<std::uint32_t>(places_.loops_of({Place::holder, holder}).size());
-      places_.hold_onto(holder, block);
-    } else {
-      holder = places_.hold(block, n.section);
-    }
-    PatternSection::Holding h{after_row, i + 1, end - i, holder, onto};
-    h.of_row = of_row;
-    sec.holdings.push_back(h);
-    i = end;
-  }
-  return stay;
-}
-
-std::uint32_t ProgramPatternBuilder::holder_met_before(std::span<const std::uint32_t> block,
-                                                       std::uint32_t section) const {
-  for (std::uint32_t h = places_.holders(); h > 0; --h) {
-    if (places_.holder_section(h) != section) continue;
-    std::vector<std::uint32_t> all = places_.loops_of({Place::holder, h});
-    all.insert(all.end(), block.begin(), block.end());
-    return met_one_after_another(all) ? h : 0;
-  }
-  return 0;
-}
-
-bool ProgramPatternBuilder::met_one_after_another(const std::vector<std::uint32_t>& loops) const {
-  if (loops.size() < 2 || taker_step_[loops[0]] == kNone) return false;
-  int by = static_cast<int>(met_at_[loops[1]]) - static_cast<int>(met_at_[loops[0]]);
-  for (std::size_t k = 1; k < loops.size(); ++k)
-    if (taker_step_[loops[k]] != taker_step_[loops[0]] ||
-        static_cast<int>(met_at_[loops[k]]) - static_cast<int>(met_at_[loops[k - 1]]) != by ||
-        (by != 1 && by != -1) || places_.at(loops[k - 1]).place == Place::none)
-      return false;
-  return true;
-}
-
-bool ProgramPatternBuilder::held_together(std::uint32_t a, std::uint32_t b) const {
-  if (holder_for(a) != holder_for(b)) return false;
-  std::uint32_t at = taker_step_[a], bt = taker_step_[b];
-  return at == bt || (!starts_its_yarn(at) && !starts_its_yarn(bt));
-}
-
-void ProgramPatternBuilder::index_loops_met() {
-  std::vector<std::uint32_t> courses_of_yarn(needle_of_yarn_.size(), 0);  // so far
-  for (std::uint32_t i = 0; i < p_.steps.size(); ++i) {
-    const Step& s = p_.steps[i];
-    bool picks_up = s.kind == StepKind::cast_on && s.picked_up > 0;
-    if (s.kind != StepKind::course && s.kind != StepKind::bind_off &&
-        s.kind != StepKind::three_needle_bind_off && !picks_up)
-      continue;
-    course_number_[i] = courses_of_yarn[s.yarn]++;
-    std::vector<std::uint32_t> met = loops_met(s);
-    for (std::uint32_t k = 0; k < met.size(); ++k) {
-      taker_step_[met[k]] = i;
-      met_at_[met[k]] = k;
-    }
-    // A three-needle bind-off's sts held behind are taken too, pair by pair.
-    auto k = static_cast<std::uint32_t>(met.size());
-    for (std::uint32_t w = s.stitches.begin; w < s.stitches.end; ++w)
-      if (binds_off_together(w)) {
-        std::uint32_t behind = all_taken_by(w)[1];
-        taker_step_[behind] = i;
-        met_at_[behind] = k++;
-      }
-  }
 }
 
 std::vector<std::uint32_t> ProgramPatternBuilder::join_to_first_source(
@@ -629,112 +435,6 @@ void ProgramPatternBuilder::place(const Step& s, LoopAt source,
   p.holder = holder ? source.index : 0;
   p.start = lie->at;
   section().placements.push_back(p);
-}
-
-void ProgramPatternBuilder::note_row_end(StitchId st, const PatternRow& r) {
-  auto row = static_cast<std::uint32_t>(out_.rows.size());  // the row being written
-  if (row_ends_.size() <= row) row_ends_.resize(row + 1);
-  RowEnds& ends = row_ends_[row];
-  if (ends.first == kNoStitch) ends.first = st;
-  ends.last = st;
-  ends.side = r.side;
-  row_of_[st] = row;
-  number_of_[st] = r.number;
-}
-
-void ProgramPatternBuilder::note_cast_on_end(StitchId st, CourseDirection direction) {
-  RowEnds& ends = cast_on_ends_[st];
-  ends.first = p_.stitches[p_.steps[step_].stitches.begin].stitch;
-  ends.last = p_.stitches[p_.steps[step_].stitches.end - 1].stitch;
-  ends.side = direction == CourseDirection::right_to_left ? Side::rs : Side::ws;
-}
-
-const ProgramPatternBuilder::RowEnds* ProgramPatternBuilder::ends_of_row_of(StitchId st) const {
-  if (row_of_[st] != kNone) return &row_ends_[row_of_[st]];
-  auto cast_on = cast_on_ends_.find(st);
-  return cast_on == cast_on_ends_.end() ? nullptr : &cast_on->second;
-}
-
-std::optional<ProgramPatternBuilder::Edge> ProgramPatternBuilder::edge_of(
-    StitchId maker, std::uint32_t loop, const RowEnds& ends) const {
-  bool at_right = maker == (ends.side == Side::rs ? ends.first : ends.last);
-  bool at_left = maker == (ends.side == Side::rs ? ends.last : ends.first);
-  auto made = made_by(p_.worked_at[maker]);
-  if (made.size() > 1) {  // the loop across the edge made after its wale's is on the right
-    bool right = made.back().loop == loop;
-    if (!(right ? at_right : at_left)) return std::nullopt;
-    return right ? Edge::right : Edge::left;
-  }
-  if (at_right && at_left) return Edge::either;
-  if (!at_right && !at_left) return std::nullopt;
-  return at_right ? Edge::right : Edge::left;
-}
-
-std::optional<PatternSection::PickUp> ProgramPatternBuilder::pick_up_of(
-    LoopAt source, std::span<const std::uint32_t> loops) const {
-  auto [p, count] = longest_pick_up(source, loops);
-  if (count == 0 || count != loops.size()) return std::nullopt;
-  return p;
-}
-
-std::pair<PatternSection::PickUp, std::size_t> ProgramPatternBuilder::longest_pick_up(
-    LoopAt source, std::span<const std::uint32_t> loops) const {
-  PatternSection::PickUp p;
-  p.section = source.index;
-  std::optional<bool> right_edge;  // known once a st says which edge it is on
-  std::size_t i = 0;
-  for (; i < loops.size(); ++i) {
-    StitchId maker = g_.loops[loops[i]].maker;
-    const RowEnds* ends = maker == kNoStitch ? nullptr : ends_of_row_of(maker);
-    if (places_.at(loops[i]) != source || !ends) break;
-    std::optional<Edge> edge = edge_of(maker, loops[i], *ends);
-    if (!edge) break;
-    bool right = *edge == Edge::right;
-    if (*edge != Edge::either && right != right_edge.value_or(right)) break;
-    std::uint32_t row = number_of_[maker];  // 0: the cast-on
-    bool up = row == p.to_row + 1 && (i == 1 || p.from_row < p.to_row);
-    bool down = row + 1 == p.to_row && (i == 1 || p.from_row > p.to_row);
-    if (i > 0 && !(up || down)) break;
-    if (*edge != Edge::either) right_edge = right;
-    if (i == 0) p.from_row = row;
-    p.to_row = row;
-  }
-  p.right = right_edge.value_or(true);
-  return {p, i};
-}
-
-std::vector<std::uint32_t> ProgramPatternBuilder::start_from_pick_up(
-    const Step& s, const std::vector<std::uint32_t>& host, bool round) {
-  // A row after the pick-up works the last loop picked up first; a rnd joined after it, the
-  // first.
-  std::vector<std::uint32_t> picked(host.rbegin(), host.rend());
-  if (round) picked = host;
-  std::optional<PatternSection::PickUp> p = pick_up_of(places_.at(host.front()), picked);
-  if (!p) not_yet(s, "begins on loops along an edge that are not one in each row of an edge");
-  start_section(s.yarn, kNone);
-  section().in_round = round;
-  section().picks_up = *p;
-  section().cast_on = hand_sts(host);
-  return host;
-}
-
-void ProgramPatternBuilder::pick_up_into_rnd(const Step& s, LoopAt source,
-                                             std::span<const std::uint32_t> block,
-                                             std::uint32_t after) {
-  // One pick-up per edge (a rnd goes down one edge of a flap and up the other).
-  while (!block.empty()) {
-    auto [p, count] = longest_pick_up(source, block);
-    if (count == 0 || !section().in_round)
-      not_yet(s, fmt::format("picks up {} loops along an edge into a row, or not one in each "
-                             "row of an edge",
-                             block.size()));
-    PatternSection::Placement placed{p.section, static_cast<std::uint32_t>(count), after, false};
-    placed.before_row = static_cast<std::uint32_t>(out_.rows.size());
-    placed.edge = p;
-    section().placements.push_back(placed);
-    block = block.subspan(count);
-    after += static_cast<std::uint32_t>(count);
-  }
 }
 
 }  // namespace skein::hand::from_program

@@ -164,7 +164,7 @@ void ProgramPatternBuilder::hold_what_others_take(const Step& s) {
   std::vector<std::uint32_t> stay = hold_what_it_leaves(s);
   for (std::uint32_t l : n.ring) in_met_[l] = 0;
   n.ring = std::move(stay);
-  n.live = hand_sts(n.ring);
+  n.live = hand_stitch_count(g_, n.ring);
   index_ring(n);
 }
 

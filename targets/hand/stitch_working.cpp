@@ -2,9 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <array>
-
 #include "common/error.hpp"
 
 namespace skein::hand {
@@ -16,26 +13,11 @@ using T = StitchType;
   throw UnsupportedError(fmt::format("hand target: {}", what));
 }
 
-constexpr std::array kSupported = {T::k,   T::p,   T::co,    T::bo,  T::kfb,   T::m1l,
-                                   T::m1r, T::yo,  T::k2tog, T::ssk, T::p2tog, T::s2kp,
-                                   T::sr4, T::sr5, T::tnbo,  T::sco, T::tuck,  T::sl};
-
-// Is `s` a decrease that knits the two loops of an sr5 together, and no other?
-bool knits_an_sr5_as_one(const KnitGraph& g, StitchId s) {
-  auto taken = g.loops_taken_by(s);
-  T t = g.type[s];
-  if (taken.size() != 2 || (t != T::k2tog && t != T::ssk && t != T::p2tog)) return false;
-  StitchId maker = g.loops[taken[0]].maker;
-  return maker != kNoStitch && g.type[maker] == T::sr5 && g.loops[taken[1]].maker == maker;
-}
-
 // A knitter works a DS or a wrap as one st with its st: an sr5's two loops must go into one
 // decrease above it that takes no other loop.
 void check_sr5_knit_together(const KnitGraph& g, StitchId s) {
-  auto made = g.loops_made_by(s);
-  StitchId above = g.loops[made[0]].taker;
-  if (above != kNoStitch && g.loops[made[1]].taker == above && knits_an_sr5_as_one(g, above))
-    return;
+  StitchId above = taker_of_both_sr5_loops(g, s);
+  if (above != kNoStitch && knits_an_sr5_as_one(g, above)) return;
   unsupported(fmt::format(
       "{} is an sr5 whose two loops (its st's and the turn's) are not knit together by one "
       "k2tog, ssk or p2tog above it, as a knitter works a double stitch or a wrap with its "
@@ -64,16 +46,10 @@ HandOp turning_op(const KnitGraph& g, StitchId s, Side side, TurnMethod turns, b
 
 }  // namespace
 
-StitchType worked_by_hand(const KnitGraph& g, StitchId s) {
-  if (g.type[s] == T::sr5) return T::sr4;
-  if (knits_an_sr5_as_one(g, s)) return g.type[s] == T::p2tog ? T::p : T::k;
-  return g.type[s];
-}
-
 void check_stitch_types(const KnitGraph& g) {
   for (StitchId s = 0; s < g.size(); ++s) {
     if (g.type[s] == T::sr5) check_sr5_knit_together(g, s);
-    if (std::find(kSupported.begin(), kSupported.end(), g.type[s]) != kSupported.end()) continue;
+    if (worked_by(g.type[s], by_hand)) continue;
     unsupported(fmt::format("{} is a {} ({}), which hand patterns do not cover yet", g.describe(s),
                             info(g.type[s]).name, abbreviation(g.type[s])));
   }

@@ -7,6 +7,7 @@
 
 #include "hand/pattern_model.hpp"
 #include "knitgraph/knit_graph.hpp"
+#include "knitgraph/worked_by_hand.hpp"
 
 namespace skein::hand {
 

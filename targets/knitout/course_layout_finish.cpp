@@ -6,36 +6,11 @@
 #include <fmt/format.h>
 
 #include "common/error.hpp"
+#include "knitgraph/worked_by_hand.hpp"
 #include "knitout/stitch_recipes.hpp"
 
 namespace skein::knitout::layout {
 namespace {
-
-bool has_machine_recipe(StitchType t) {
-  switch (t) {
-    case StitchType::k:
-    case StitchType::p:
-    case StitchType::co:
-    case StitchType::bo:
-    case StitchType::kfb:
-    case StitchType::m1l:
-    case StitchType::m1r:
-    case StitchType::yo:
-    case StitchType::k2tog:
-    case StitchType::ssk:
-    case StitchType::p2tog:
-    case StitchType::s2kp:
-    case StitchType::sr4:
-    case StitchType::sr5:
-    case StitchType::tuck:
-    case StitchType::sl:
-    case StitchType::sco:
-    case StitchType::tnbo:
-      return true;
-    default:
-      return false;
-  }
-}
 
 // Its loops are all taken by another yarn (which knits on from them).
 bool left_to_another_yarn(const KnitGraph& g, const YarnPieces& yarns, StitchId s) {
@@ -53,7 +28,7 @@ bool left_to_another_yarn(const KnitGraph& g, const YarnPieces& yarns, StitchId 
 
 void check_stitches(const KnitGraph& g) {
   for (StitchId s = 0; s < g.size(); ++s) {
-    if (!has_machine_recipe(g.type[s]))
+    if (!worked_by(g.type[s], by_machine))
       unsupported(
           g, fmt::format("the {} stitch ({})", info(g.type[s]).name, abbreviation(g.type[s])), s);
   }
@@ -141,8 +116,7 @@ std::uint32_t taker_of_round_start(const KnitGraph& g, const CourseLayout& l, co
 // An sr5's turn loop waits on the facing needle until one decrease knits it with the sr5's loop.
 void check_sr5_turn_loops(const KnitGraph& g, const CourseLayout& l) {
   for (StitchId s : l.order) {
-    auto made = g.loops_made_by(s);
-    if (g.type[s] == StitchType::sr5 && g.loops[made[0]].taker != g.loops[made[1]].taker)
+    if (g.type[s] == StitchType::sr5 && taker_of_both_sr5_loops(g, s) == kNoStitch)
       unsupported(g, "an sr5 whose two loops are not knit together by the stitch above", s);
   }
 }

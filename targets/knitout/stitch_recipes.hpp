@@ -3,7 +3,6 @@
 #pragma once
 
 #include <cstdint>
-#include <span>
 
 #include "mesh/stitch_type.hpp"
 
@@ -20,33 +19,6 @@ inline bool keeps_loop_below(StitchType t) {
 // loop before it, which is moved onto its needle, and nothing takes it but the next link.
 inline bool chained_off(StitchType t) {
   return t == StitchType::bo || t == StitchType::tnbo;
-}
-
-// Knit on the bed behind the fabric's right side (a purl seen from the right side).
-inline bool is_purl(StitchType t) {
-  return t == StitchType::p || t == StitchType::p2tog;
-}
-
-// A decrease's taken loops in the order they land on one needle, bottom first: the last one
-// lies on top and gives the lean (k2tog and p2tog: the left loop on top, leaning right; ssk:
-// the right loop on top, leaning left; s2kp: the centre loop on top, the right one under it; a
-// three-needle bind-off: the second needle's loop on the first's).
-inline std::span<const std::uint8_t> stacking_order(StitchType t) {
-  static constexpr std::uint8_t kLeftOnTop[] = {1, 0}, kRightOnTop[] = {0, 1},
-                                kCentreOnTop[] = {0, 2, 1}, kSingle[] = {0};
-  switch (t) {
-    case StitchType::k2tog:
-    case StitchType::p2tog:
-      return kLeftOnTop;
-    case StitchType::ssk:
-      return kRightOnTop;
-    case StitchType::s2kp:
-      return kCentreOnTop;
-    case StitchType::tnbo:
-      return kRightOnTop;
-    default:
-      return kSingle;
-  }
 }
 
 // The made slot whose loop is pulled through the stitch's taken loop (for an increase the other
