@@ -558,19 +558,30 @@ class GluedFabric {
   std::vector<Seam> seams_;
 };
 
+// The glued mesh alone: the stitch graph's text, its knit graph and positions are freed once
+// the faces are laid (a 1.2M-stitch fabric holds each at a few hundred MB).
+StitchMesh fabric_stitch_mesh(const Replay& replay, const std::string& file,
+                              const std::vector<bool>* border) {
+  std::vector<bool> purled;
+  std::vector<std::array<double, 3>> positions;
+  KnitGraph graph = [&] {
+    std::ostringstream st;
+    write_fabric_stitch_graph(replay, file, st, border, &purled);
+    return parse_autoknit_st(std::move(st).str(), file + " (its fabric)", &positions);
+  }();
+  return GluedFabric(graph, positions, purled, file).build();
+}
+
 }  // namespace
 
 void write_fabric_stitch_mesh(const Replay& replay, const std::string& file, std::ostream& out,
                               const std::vector<bool>* border) {
-  std::ostringstream st;
-  std::vector<bool> purled;
-  write_fabric_stitch_graph(replay, file, st, border, &purled);
-  std::vector<std::array<double, 3>> positions;
-  KnitGraph graph = parse_autoknit_st(st.str(), file + " (its fabric)", &positions);
-  StitchMesh mesh = GluedFabric(graph, positions, purled, file).build();
+  StitchMesh mesh = fabric_stitch_mesh(replay, file, border);
+  write_stitch_mesh(mesh, out);
   // Never a mesh `skein check` would refuse: the fabric goes as a stitch graph (.st) instead.
+  // Checked after writing so that the mesh is not copied: `out` is thrown away on a throw.
   try {
-    (void)compile_stitch_mesh(mesh, file + " (its fabric)");
+    (void)compile_stitch_mesh(std::move(mesh), file + " (its fabric)");
   } catch (const UnsupportedError&) {
     throw;
   } catch (const Error& e) {
@@ -579,7 +590,6 @@ void write_fabric_stitch_mesh(const Replay& replay, const std::string& file, std
         "({}); write it as a stitch graph (.st)",
         file, e.what()));
   }
-  write_stitch_mesh(mesh, out);
 }
 
 }  // namespace skein::knitout

@@ -19,7 +19,8 @@
 
 namespace skein::knitout {
 
-// `border` as for write_fabric_stitch_graph.
+// `border` as for write_fabric_stitch_graph. A refusal may come after `out` was written to:
+// give a stream that is thrown away on a throw (write_file_atomically's).
 void write_fabric_stitch_mesh(const Replay& replay, const std::string& file, std::ostream& out,
                               const std::vector<bool>* border = nullptr);
 

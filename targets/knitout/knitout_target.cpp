@@ -43,8 +43,8 @@ std::string findings_text(const knitout::Replay& replay, const knitout::MachineP
   return out;
 }
 
-// Writes the fabric to `path` (a stitch mesh for .obj, else a stitch graph), made whole before
-// the file is touched: a refusal writes none. Of a proven file, the piece's border in its own
+// Writes the fabric to `path` (a stitch mesh for .obj, else a stitch graph) through a temporary
+// file that a refusal removes: a refusal writes none. Of a proven file, the piece's border in its own
 // yarn is left out as its cast-on's border (the model's cast-on is knit through it).
 std::string write_fabric(const knitout::Replay& replay, const std::string& file,
                          const std::string& path,
@@ -53,12 +53,12 @@ std::string write_fabric(const knitout::Replay& replay, const std::string& file,
   if (proof && proof->proven) border = knitout::own_yarn_border(replay, *proof);
   const std::vector<bool>* given = border.empty() ? nullptr : &border;
   bool as_mesh = path.ends_with(".obj");
-  std::ostringstream fabric;
-  if (as_mesh)
-    knitout::write_fabric_stitch_mesh(replay, file, fabric, given);
-  else
-    knitout::write_fabric_stitch_graph(replay, file, fabric, given);
-  write_file_atomically(path, [&](std::ostream& out) { out << fabric.view(); });
+  write_file_atomically(path, [&](std::ostream& out) {
+    if (as_mesh)
+      knitout::write_fabric_stitch_mesh(replay, file, out, given);
+    else
+      knitout::write_fabric_stitch_graph(replay, file, out, given);
+  });
   return fmt::format("\n  the fabric written as a stitch {} in {} (skein check reads it)",
                      as_mesh ? "mesh" : "graph", path);
 }
