@@ -44,8 +44,8 @@ std::string findings_text(const knitout::Replay& replay, const knitout::MachineP
 }
 
 // Writes the fabric to `path` (a stitch mesh for .obj, else a stitch graph) through a temporary
-// file that a refusal removes: a refusal writes none. Of a proven file, the piece's border in its own
-// yarn is left out as its cast-on's border (the model's cast-on is knit through it).
+// file that a refusal removes: a refusal writes none. Of a proven file, the piece's border in its
+// own yarn is left out as its cast-on's border (the model's cast-on is knit through it).
 std::string write_fabric(const knitout::Replay& replay, const std::string& file,
                          const std::string& path,
                          const std::optional<knitout::ProofResult>& proof) {
