@@ -110,6 +110,8 @@ TEST(KnitoutFabricGraph, EveryProvenSampleRoundTripsWithItsStitchCounts) {
     Compilation fabric =
         compile_knit_graph(parse_autoknit_st(fabric_st(text, "out.k", p), "out.st"), "out.st");
     EXPECT_TRUE(fabric.knittability.knittable) << check_report(fabric);
+    EXPECT_FALSE(fabric.program.gap) << fabric.program.gap->why << " at "
+                                     << fabric.knit.describe(fabric.program.gap->stitch);
     Counts expected = counts(model.knit);
     expected[kKnit] += trip.extra_knits;
     expected[kHeld] += trip.extra_held;

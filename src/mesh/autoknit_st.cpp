@@ -284,26 +284,37 @@ class StParser {
     }
   }
 
-  // Every in-link is a wale loop.
+  // Every in-link is a wale loop. AutoKnit lists a stitch's ins and outs in the order its yarn
+  // meets them (its tracer swaps them for a clockwise stitch); a knit graph counts slots from
+  // the left, right side facing.
   void add_loops() {
     for (StitchId s = 0; s < size(); ++s) {
       for (std::uint8_t in_slot = 0; in_slot < links_[s].in.size(); ++in_slot) {
         std::int32_t maker = links_[s].in[in_slot];
         if (maker == kNone) continue;
         auto m = static_cast<StitchId>(maker);
-        graph_.loops.push_back(Loop{m, s, LoopKind::wale, out_slot(m, s, in_slot), in_slot});
+        graph_.loops.push_back(Loop{m, s, LoopKind::wale,
+                                    from_left(m, links_[m].out, out_slot(m, s, in_slot)),
+                                    from_left(s, links_[s].in, in_slot)});
       }
     }
   }
 
+  std::uint8_t from_left(StitchId s, const Slots& slots, std::uint8_t slot) const {
+    bool two = slots[0] != kNone && slots[1] != kNone;
+    return two && !anticlockwise_[s] ? static_cast<std::uint8_t>(1 - slot) : slot;
+  }
+
   // Does stitch s begin a row, the current one having begun at `row_start`? It does when the
-  // yarn starts there, when it takes a loop made earlier in the current row (the yarn came
-  // round the tube or back along the sheet), and where a bind-off ends and the yarn goes on
-  // to other sts (test-B.st's second leg). A bind-off begins in the row it ends: where a
-  // helix steps up a st before it (`k1`, then the rest bound off) the yarn goes on along the
-  // row, and it comes round to that st after the others.
+  // yarn starts there, where AutoKnit's dir flips (a turn: a machine's wrap, a tuck on the
+  // needle past the turn, goes the new row's way though it takes an older loop), when it takes a
+  // loop made earlier in the current row (the yarn came round the tube or back along the sheet),
+  // and where a bind-off ends and the yarn goes on to other sts (test-B.st's second leg). A
+  // bind-off begins in the row it ends: where a helix steps up a st before it (`k1`, then the rest
+  // bound off) the yarn goes on along the row, and it comes round to that st after the others.
   bool starts_row(StitchId s, StitchId row_start) const {
     if (s == 0 || graph_.yarn_next[s - 1] != s) return true;
+    if (anticlockwise_[s] != anticlockwise_[s - 1]) return true;  // the yarn turned
     for (std::int32_t maker : links_[s].in)
       if (maker != kNone && static_cast<StitchId>(maker) >= row_start) return true;
     return graph_.type[s] != StitchType::bo && graph_.type[s - 1] == StitchType::bo;

@@ -333,6 +333,7 @@ class StWriter {
         halves_(PassReader(f).read()) {
     std::uint32_t line = 0;
     for (Stitch& s : stitches_) {
+      if (s.takes.size() >= 2) order_as_met(s);
       s.first_line = line;
       s.lines = skipped(s) ? 0 : chain_lines(s) + 1 + trailing_ends(s);
       line += s.lines;
@@ -341,6 +342,30 @@ class StWriter {
   }
 
   std::uint32_t lines() const { return lines_; }
+
+  // `.st` lists a decrease's loops in the order its yarn meets them (AutoKnit's "construction
+  // order", which readers take as left to right along the course): the order their yarn made
+  // them when the decrease goes the same way round, else the reverse. The needle stacks them in
+  // the order they were moved, which is neither.
+  void order_as_met(Stitch& s) const {
+    auto made = [&](LoopId l) { return made_where(l); };
+    std::ranges::sort(s.takes, {}, made);
+    if (round_way(s.loop) != round_way(made_where(s.takes.front()))) std::ranges::reverse(s.takes);
+  }
+
+  // A tuck that stands for the loop under it (a stitch taking that loop) lies where it does.
+  LoopId made_where(LoopId l) const {
+    std::uint32_t t = stitch_of_[l];
+    bool stands_in =
+        f_.loops[l].made_by == OpCode::tuck && t != kNone && stitches_[t].takes.size() == 1;
+    return stands_in ? stitches_[t].takes[0] : l;
+  }
+
+  bool round_way(LoopId l) const {
+    const FabricLoop& loop = f_.loops[l];
+    bool plus = loop.dir == Direction::plus;
+    return halves_.tube[loop.piece] ? plus == halves_.front_half[l] : plus;
+  }
 
   // Lines are formatted into a buffer written out in blocks: an ostream call per line costs
   // more than the formatting.
@@ -407,11 +432,9 @@ class StWriter {
   void line(const Stitch& s, char type, std::array<std::int64_t, 2> in,
             std::array<std::int64_t, 2> outs) {
     const FabricLoop& l = f_.loops[s.loop];
-    bool plus = l.dir == Direction::plus;
-    bool round_way = halves_.tube[l.piece] ? plus == halves_.front_half[s.loop] : plus;
     fmt::format_to(std::back_inserter(buffer_), "{} {} {} {} {} {} {} {} {} {}\n", l.piece, type,
-                   round_way ? 'a' : 'c', in[0], in[1], outs[0], outs[1], l.needle, height_[s.loop],
-                   l.front ? 0 : 1);
+                   round_way(s.loop) ? 'a' : 'c', in[0], in[1], outs[0], outs[1], l.needle,
+                   height_[s.loop], l.front ? 0 : 1);
   }
 
   void flush() {

@@ -77,8 +77,7 @@ class GluedFabric {
         next_(g.yarn_next),
         row_size_(g.row_shape.size(), 0) {
     for (std::uint32_t row : g.row) ++row_size_[row];
-    for (std::uint32_t l = 0; l < g.loops.size(); ++l)
-      loops_.push_back({g.loops[l].maker, g.loops[l].taker, g.loops[l].maker_slot});
+    for (const Loop& l : g.loops) loops_.push_back({l.maker, l.taker, yarn_slot(l)});
   }
 
   StitchMesh build() {
@@ -103,6 +102,14 @@ class GluedFabric {
                        abbreviation(g_.type[s]));
   }
 
+  // A knit graph counts a stitch's loops from its left: along a yarn going right to left, the
+  // other way.
+  std::uint8_t yarn_slot(const Loop& l) const {
+    bool two = g_.loops_made_by(l.maker).size() == 2;
+    bool backwards = g_.direction[l.maker] == CourseDirection::right_to_left;
+    return two && backwards ? static_cast<std::uint8_t>(1 - l.maker_slot) : l.maker_slot;
+  }
+
   std::uint32_t taken_loop(StitchId s) const { return g_.loops_taken_by(s)[0]; }
   std::uint32_t made_loop(StitchId s) const { return g_.loops_made_by(s)[0]; }
 
@@ -116,13 +123,13 @@ class GluedFabric {
 
   // The yarn turns at the tuck: after it, or before it when the tuck is made going back (round
   // a tube's fold, the wrap on the other bed is tucked in the pass after the turn), the stitch
-  // graph then reading it as the row before it going on round (a shift).
+  // graph then beginning the row after the turn with it.
   bool is_wrap(StitchId t) const {
     if (g_.type[t] != StitchType::tuck) return false;
     if (t == 0 || g_.yarn_next[t - 1] != t) return false;  // a yarn's first stitch turns nothing
     bool made_going_back = g_.direction[t - 1] != g_.direction[t];
     return g_.yarn_link[t] == YarnLink::turn ||
-           (made_going_back && g_.yarn_link[t] == YarnLink::shift);
+           (made_going_back && g_.yarn_link[t - 1] == YarnLink::turn);
   }
 
   void fold_wrap(StitchId t) {
