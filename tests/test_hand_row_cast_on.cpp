@@ -68,5 +68,33 @@ TEST(HandRowCastOn, ProvesAndRejectsHandWrittenOnes) {
             "p.md:5: the chain of Piece 1 is left on a spare needle, never worked");
 }
 
+// A yarn that has worked casts on sts for a course that takes them later (the teapot's handle
+// bridge at 14 and 26 sts to 10 cm): onto a holder, its chain the piece's; the holder is placed
+// back "the first st cast on first".
+TEST(HandRowCastOn, CastingOnWithTheWorkingYarnOntoAHolderIsWorkedAndRejectedByReason) {
+  const std::string before = "Cast on 4 sts.\nRow 1 (RS): Knit.\n";
+  const std::string cast_on =
+      "With the working yarn, cast on 2 sts with a provisional cast-on onto holder 1.\n";
+  const std::string after =
+      "Leave the 4 sts on the needle and set the yarn aside (do not cut it).\n"
+      "Join a new yarn to the 2 loops of Piece 1's chain, the first st cast on at the tip.\n"
+      "Row 1 (RS): BO all sts.\nFasten off.\n"
+      "Take up Piece 1 again with its yarn. Place the 2 sts of holder 1 on the needle after the "
+      "first 4 sts of the row, the first st cast on first \u2014 6 sts.\n"
+      "Row 2 (WS): BO all sts.\nFasten off.\n";
+  EXPECT_EQ(failure_of(before + cast_on + after), "");
+  EXPECT_EQ(failure_of(before + cast_on + "With the working yarn, cast on 2 sts onto holder 1.\n" +
+                       after),
+            "p.md:4: With the working yarn, cast on onto holder 1: it already holds 2 sts");
+  EXPECT_EQ(failure_of(before + cast_on +
+                       "With the working yarn, cast on 1 st with a provisional cast-on onto "
+                       "holder 2.\n" +
+                       after),
+            "p.md:4: With the working yarn, cast on with a provisional cast-on: Piece 1 already "
+            "has a chain (one per piece)");
+  EXPECT_EQ(failure_of(cast_on + before + after),
+            "p.md:1: With the working yarn, cast on: no yarn is being worked");
+}
+
 }  // namespace
 }  // namespace skein

@@ -75,6 +75,9 @@ void NeedleSimulator::do_step(const Step& s) {
     case Step::Kind::cast_on:
       cast_on(s.count, s.provisional);
       break;
+    case Step::Kind::cast_on_aside:
+      cast_on_aside(s);
+      break;
     case Step::Kind::carry_on:
       carry_on(s);
       break;

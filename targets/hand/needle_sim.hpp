@@ -21,7 +21,8 @@ struct Fabric {
     std::uint32_t repeat_of = 0;  // the row it repeats, or 0
     bool round = false;
     Side side = Side::rs;
-    bool join = false;                                  // a three-needle bind-off
+    bool join = false;   // a three-needle bind-off
+    bool aside = false;  // cast on onto a holder with the working yarn (not the piece's cast-on)
     std::uint32_t piece = 0;                            // 1-based
     std::uint32_t first = kNoStitch, last = kNoStitch;  // its stitches, in the order worked
   };

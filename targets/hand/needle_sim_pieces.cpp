@@ -25,6 +25,38 @@ void NeedleSimulator::cast_on_st(bool provisional) {
   if (provisional) spare_needles_[{pc_.number, kChain}].push_back(new_loop(x));
 }
 
+void NeedleSimulator::cast_on_aside(const Step& s) {
+  if (!active_ || in_row_) fail("With the working yarn, cast on: no yarn is being worked");
+  if (s.count == 0) fail("With the working yarn, cast on: no sts to cast on");
+  if (holders_.contains(s.number))
+    fail(fmt::format("With the working yarn, cast on onto holder {}: it already holds {}", s.number,
+                     sts(static_cast<std::uint32_t>(holders_[s.number].size()))));
+  if (s.provisional && spare_needles_.contains({pc_.number, kChain}))
+    fail(
+        fmt::format("With the working yarn, cast on with a provisional cast-on: Piece {} "
+                    "already has a chain (one per piece)",
+                    pc_.number));
+  // The sts cast on are a cast-on of their own in the fabric, the yarn going on into them.
+  const std::uint32_t row = row_, position = position_;
+  const Side facing = facing_;
+  fab().rows.push_back({s.line, 0, 0, false, Side::rs});
+  fab().rows.back().aside = true;
+  row_ = static_cast<std::uint32_t>(fab().rows.size() - 1);
+  position_ = 0;
+  next_link_ = pc_.turn_before ? YarnLink::turn : YarnLink::shift;
+  std::vector<std::uint32_t>& held = holders_[s.number];
+  for (std::uint32_t i = 0; i < s.count; ++i) {
+    facing_ = s.provisional ? Side::ws : Side::rs;  // the needle's loop first, seen from the RS
+    std::uint32_t x = new_stitch(s.provisional ? StitchType::sco : StitchType::co);
+    fab().taken_first.push_back(static_cast<std::uint32_t>(fab().taken.size()));
+    held.push_back(new_loop(x));
+    if (s.provisional) spare_needles_[{pc_.number, kChain}].push_back(new_loop(x));
+  }
+  row_ = row;
+  position_ = position;
+  facing_ = facing;
+}
+
 void NeedleSimulator::provisional_cast_on_in_row() {
   Side facing = facing_;
   facing_ = Side::ws;
@@ -83,7 +115,7 @@ std::vector<std::uint32_t> NeedleSimulator::rows_of_piece(std::uint32_t piece) c
   std::vector<std::uint32_t> rows;
   for (std::uint32_t r = 0; r < out_.fabric.rows.size(); ++r) {
     const Fabric::RowWorked& w = out_.fabric.rows[r];
-    if (w.piece != piece || w.join) continue;
+    if (w.piece != piece || w.join || w.aside) continue;
     if (rows.size() <= w.number) rows.resize(w.number + 1, kNone);
     rows[w.number] = r;
   }

@@ -157,6 +157,11 @@ class NeedleSimulator {
   // still to come puts them on the right.
   void lay_out_from_bor(const std::vector<std::uint32_t>& ring);
 
+  // "With the working yarn, cast on 4 sts with a provisional cast-on onto holder 5": the sts
+  // go on that holder in the order cast on, the chain's loops on the piece's chain; the piece's
+  // needle stays as it is, the yarn goes on from the last st cast on.
+  void cast_on_aside(const Step& s);
+
   // A holder's sts go on the spare needle that "sl1 from spare" takes from.
   // (Where two wait at once, the second goes on a second spare needle.)
   void put_on_spare_needle(const Step& s);

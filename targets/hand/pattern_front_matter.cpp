@@ -26,6 +26,7 @@ struct Totals {
   bool picks_up = false;           // a piece starts on loops picked up along an edge
   bool picks_up_into_rnd = false;  // loops picked up along an edge go into a rnd
   bool joins_flat_piece = false;   // a flat piece is joined in the rnd in the middle of its work
+  bool casts_on_aside = false;     // a yarn that has worked casts on sts onto a holder
   std::uint32_t holders = 0;
   std::uint32_t widest = 0, narrowest_round = 0;
   std::vector<bool> used = std::vector<bool>(kHandOpCount, false);
@@ -44,6 +45,11 @@ Totals totals_of(const HandPattern& p) {
     }
     t.picks_up = t.picks_up || s.picks_up.has_value();
     for (const PatternSection::Holding& h : s.holdings) t.holders = std::max(t.holders, h.holder);
+    for (const PatternSection::CastOnAside& c : s.casts_on_aside) {
+      t.holders = std::max(t.holders, c.holder);
+      t.provisional = t.provisional || c.provisional;
+      t.casts_on_aside = true;
+    }
     if (s.joins) continue;
     (s.in_round ? t.round : t.flat) = true;
     t.flat = t.flat || s.joined_in_rnd_at;
@@ -317,6 +323,13 @@ class FrontMatter {
           "loops on a needle: they are the other side. In the middle of a row (\"CO 3 sts with "
           "a provisional cast-on\") pick up and knit the sts through the chain onto the right "
           "needle and go on with the row.");
+    if (t_.casts_on_aside)
+      items.push_back(
+          "**Casting on with the working yarn** (\"With the working yarn, cast on 4 sts with a "
+          "provisional cast-on onto holder 5\"): leave the sts on the needle as they are, cast "
+          "the new sts on (through the chain, for a provisional cast-on) onto a spare needle "
+          "and let them wait there as the holder named, the first st cast on at one end; the "
+          "yarn goes on from the last st cast on.");
     if (t_.picks_up)
       items.push_back(
           "**Picking up along an edge:** with the RS facing and a new yarn, put the outer loop "

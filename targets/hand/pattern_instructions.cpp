@@ -253,12 +253,10 @@ class InstructionWriter {
     if (p.edge)  // "Pick up 10 sts along ..., onto the needle after the first 18 sts of the rnd."
       return fmt::format("{}, onto the needle {}.", pick_up_words(*p.edge, p.count), where);
     if (p.to_spare)
-      return fmt::format(
-          "Put the {} of holder {} on a {}spare needle, the {} st of its last {} "
-          "at the tip.",
-          sts(p.count), p.holder, p.second_spare ? "second " : "", p.from_last ? "last" : "first",
-          last_course(spare, p.holder));
-    bool cast_on = p.chain || spare.first_row == spare.end_row;
+      return fmt::format("Put the {} of holder {} on a {}spare needle, the {} st {} at the tip.",
+                         sts(p.count), p.holder, p.second_spare ? "second " : "",
+                         p.from_last ? "last" : "first", held_end_words(spare, p.holder));
+    bool cast_on = p.chain || spare.first_row == spare.end_row || cast_on_onto(p.holder);
     std::string which =
         cast_on ? "cast on" : fmt::format("of its last {}", last_course(spare, p.holder));
     std::string from =
@@ -341,8 +339,20 @@ class InstructionWriter {
 
   bool holding_after(std::uint32_t row) const {
     const auto& held = p_.sections[section_].holdings;
+    const auto& cast = p_.sections[section_].casts_on_aside;
     return std::any_of(held.begin(), held.end(),
-                       [&](const PatternSection::Holding& h) { return h.after_row == row; });
+                       [&](const PatternSection::Holding& h) { return h.after_row == row; }) ||
+           std::any_of(cast.begin(), cast.end(),
+                       [&](const PatternSection::CastOnAside& c) { return c.after_row == row; });
+  }
+
+  // "With the working yarn, cast on 4 sts with a provisional cast-on onto holder 5."
+  void write_casts_on_aside_after(std::uint32_t row) {
+    for (const PatternSection::CastOnAside& c : p_.sections[section_].casts_on_aside)
+      if (c.after_row == row)
+        add(InstructionLine::Kind::setup, "",
+            fmt::format("With the working yarn, cast on {}{} onto holder {}.", sts(c.count),
+                        c.provisional ? " with a provisional cast-on" : "", c.holder));
   }
 
   // Placements into a rnd in the middle of a piece's work, written before the rnd; the last
@@ -406,6 +416,19 @@ class InstructionWriter {
     return rnd ? "rnd" : "row";
   }
 
+  // "of its last row", or "cast on" for a holder the working yarn cast sts on onto.
+  std::string held_end_words(const PatternSection& spare, std::uint32_t holder) const {
+    if (cast_on_onto(holder)) return "cast on";
+    return fmt::format("of its last {}", last_course(spare, holder));
+  }
+
+  bool cast_on_onto(std::uint32_t holder) const {
+    for (const PatternSection& sec : p_.sections)
+      for (const PatternSection::CastOnAside& c : sec.casts_on_aside)
+        if (c.holder == holder && holder != 0) return true;
+    return false;
+  }
+
   bool holds_a_flat_row(std::uint32_t holder) const {
     for (const PatternSection& sec : p_.sections)
       for (const PatternSection::Holding& h : sec.holdings)
@@ -418,16 +441,16 @@ class InstructionWriter {
   // row's, by its row.
   std::string join_spare_text(const PatternSection::Start& start) const {
     const PatternSection& spare = p_.sections[start.section];
-    if (start.holder && p_.sections[section_].in_round && !holds_a_flat_row(start.holder))
+    if (start.holder && p_.sections[section_].in_round && !holds_a_flat_row(start.holder) &&
+        !cast_on_onto(start.holder))
       return fmt::format(
           "Join a new yarn to the {} of holder {}, the {} st slipped to it at the tip{}.",
           sts(start.count), start.holder, start.from_last ? "last" : "first",
           start.at ? fmt::format("; the rnd begins at its st {}", start.at) : "");
     if (start.holder)
-      return fmt::format(
-          "Join a new yarn to the {} of holder {}, the {} st of its last {} at the tip.",
-          sts(start.count), start.holder, start.from_last ? "last" : "first",
-          last_course(spare, start.holder));
+      return fmt::format("Join a new yarn to the {} of holder {}, the {} st {} at the tip.",
+                         sts(start.count), start.holder, start.from_last ? "last" : "first",
+                         held_end_words(spare, start.holder));
     return fmt::format("Join a new yarn to the {} {} of {}{}, the {} st cast on at the tip.",
                        start.count, start.chain ? "loops" : "sts", piece_name(p_, spare.piece),
                        start.chain ? "'s chain" : "", start.from_last ? "last" : "first");
@@ -498,6 +521,7 @@ class InstructionWriter {
       if (i != first) write_holds_before(i);
       write_row_run(first, i, stop);
       write_holdings_after(stop - 1);
+      write_casts_on_aside_after(stop - 1);
       i = stop;
     }
   }

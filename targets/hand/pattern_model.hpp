@@ -131,6 +131,15 @@ struct PatternSection {
   // cast-on"): how many sts, and the model stitches cast on first and last (its chain's ends).
   std::uint32_t row_chain = 0;
   std::uint32_t row_chain_ends[2] = {0, 0};
+  // A yarn that has worked casts on sts another course takes later (the teapot's handle bridge,
+  // cast on after the body's flat rows): "With the working yarn, cast on 4 sts with a
+  // provisional cast-on onto holder 5." after row `after_row`, the sts on that holder in the
+  // order cast on, the chain's loops (provisional) the piece's chain.
+  struct CastOnAside {
+    std::uint32_t after_row = 0, count = 0, holder = 0;
+    bool provisional = false;
+  };
+  std::vector<CastOnAside> casts_on_aside;
   // Pieces left on spare needles held behind the needle for "3-needle BO" in one of its rows
   // (a three-needle bind-off with its own yarn in the middle of a row), in the order worked.
   struct Hold {

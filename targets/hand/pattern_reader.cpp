@@ -26,6 +26,9 @@ void SentenceReader::read(std::string_view sentence) {
   if (c.eat("place")) return place(c);
   if (c.eat("slip")) return hold(c);
   if (c.eat("put")) return to_spare(c);
+  constexpr std::string_view kWithWorkingYarn = "with the working yarn, cast on";
+  if (starts_with_ci(sentence, kWithWorkingYarn))
+    return cast_on(Cursor(sentence.substr(kWithWorkingYarn.size())), true);
   if (std::size_t at = find_ci(sentence, "cast on"); at != std::string_view::npos)
     return cast_on(Cursor(sentence.substr(at + 7)));
   if (c.eat("co")) return cast_on(c);

@@ -45,12 +45,13 @@ struct Program {
 
 struct Step {
   enum class Kind : std::uint8_t {
-    piece,        // a heading: a new piece or stage begins
-    cast_on,      // count = sts
-    join_round,   // marker: with "pm"
-    row,          // number..last (a range "Rows 2–16:"), program
-    repeat_rows,  // number..last repeated count more times
-    work_even,    // "Knit every rnd until <count> rnds in all": op is k or p
+    piece,          // a heading: a new piece or stage begins
+    cast_on,        // count = sts
+    cast_on_aside,  // "With the working yarn, cast on <count> sts ... onto holder <number>"
+    join_round,     // marker: with "pm"
+    row,            // number..last (a range "Rows 2–16:"), program
+    repeat_rows,    // number..last repeated count more times
+    work_even,      // "Knit every rnd until <count> rnds in all": op is k or p
     fasten_off,
     leave,                  // "Leave the <count> sts on a spare needle and cut the yarn"
     set_aside,              // "Leave the <count> sts on the needle and set the yarn aside"

@@ -47,6 +47,10 @@ void SentenceReader::place_first_or_last(Cursor& c, Step& step) {
   need(c.eat("the"), c, "'the first (or last) st'");
   step.from_last[0] = c.eat("last");
   need(step.from_last[0] || c.eat("first"), c, "'first' or 'last'");
+  st_cast_on_or_of_its_last_course(c);
+}
+
+void SentenceReader::st_cast_on_or_of_its_last_course(Cursor& c) {
   need(c.eat("st"), c, "'st of its last rnd' or 'st cast on'");
   if (c.eat("cast")) {
     need(c.eat("on"), c, "'st cast on'");

@@ -9,12 +9,17 @@
 
 namespace skein::hand::reader {
 
-void SentenceReader::cast_on(Cursor c) {
+void SentenceReader::cast_on(Cursor c, bool with_working_yarn) {
   Step step{Step::Kind::cast_on, line_no_};
   step.count = need_sts(c, "the number of sts to cast on");
   if (c.eat("with")) {
     need_words(c, {"a", "provisional", "cast-on"}, "'with a provisional cast-on'");
     step.provisional = true;
+  }
+  if (with_working_yarn) {  // "..., cast on 4 sts onto holder 5": the piece's needle stays
+    step.kind = Step::Kind::cast_on_aside;
+    need_words(c, {"onto", "holder"}, "'onto holder N'");
+    step.number = need_number(c, "a holder number");
   }
   add(step);
 }
@@ -80,8 +85,7 @@ void SentenceReader::to_spare(Cursor& c) {
   need_words(c, {"spare", "needle", ",", "the"}, "'spare needle, the'");
   step.from_last[0] = c.eat("last");
   need(step.from_last[0] || c.eat("first"), c, "'first' or 'last'");
-  need_words(c, {"st", "of", "its", "last"}, "'st of its last rnd'");
-  need(c.eat_any({"rnd", "row"}), c, "'rnd' or 'row'");
+  st_cast_on_or_of_its_last_course(c);
   need_words(c, {"at", "the", "tip"}, "'at the tip'");
   need(c.done(), c, "the end of the sentence");
   add(step);
@@ -152,9 +156,11 @@ Step SentenceReader::sts_at_the_tip(Cursor& c, Step step) {
   need(c.eat("st"), c, "'st cast on at the tip' or 'st of its last rnd at the tip'");
   if (step.holder[0] && c.eat("slipped")) {
     need_words(c, {"to", "it"}, "'slipped to it'");
-  } else if (step.holder[0]) {
-    need_words(c, {"of", "its", "last"}, "'of its last rnd' or 'slipped to it'");
+  } else if (step.holder[0] && !c.eat("cast")) {
+    need_words(c, {"of", "its", "last"}, "'of its last rnd', 'slipped to it' or 'cast on'");
     need(c.eat_any({"rnd", "row"}), c, "'rnd' or 'row'");
+  } else if (step.holder[0]) {
+    need(c.eat("on"), c, "'st cast on at the tip'");
   } else {
     need_words(c, {"cast", "on"}, "'st cast on at the tip'");
   }

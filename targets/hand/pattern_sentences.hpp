@@ -146,8 +146,9 @@ class SentenceReader {
 
   void need(bool ok, Cursor& c, const char* expected);
 
-  // "Cast on 12 sts", "Cast on 12 sts with a provisional cast-on".
-  void cast_on(Cursor c);
+  // "Cast on 12 sts", "Cast on 12 sts with a provisional cast-on"; with the working yarn (the
+  // piece's sts stay on its needle), "... onto holder 5".
+  void cast_on(Cursor c, bool with_working_yarn = false);
 
   // "Pick up 3 sts along the right edge of Piece 1, one in each row from Row 2 down to the
   // cast-on".
@@ -208,6 +209,8 @@ class SentenceReader {
 
   // "the first (or last) st of its last rnd" or "the first (or last) st cast on".
   void place_first_or_last(Cursor& c, Step& step);
+  // "st cast on" or "st of its last rnd (row)".
+  void st_cast_on_or_of_its_last_course(Cursor& c);
 
   // "Slip sts 10–18 of the rnd to holder 1, sts 19–27 to holder 2 and sts 28–36 to holder 3":
   // the sts are counted in the rnd as it is before any is slipped, so the last run goes first.

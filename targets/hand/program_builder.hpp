@@ -121,6 +121,9 @@ class ProgramPatternBuilder {
   // A new piece, or the yarn of one set aside taken up again (its rows count on).
   void start_section(std::uint32_t yarn, std::uint32_t needle_index);
 
+  // A row in the rnd that the yarn leaves (set aside, or casting on aside) ends there.
+  void end_row_the_yarn_leaves();
+
   void set_aside(const Step& s);
 
   // Does the yarn's next course go back the other way from the row it stops in?
@@ -135,6 +138,14 @@ class ProgramPatternBuilder {
   // A cast-on starts a piece; a provisional one (along a split) keeps its chain's loops for
   // the other side.
   void cast_on(const Step& s);
+
+  // A yarn that has worked casts on at the end of a row it worked: the sts wait on a holder of
+  // their own for the course that takes them, the chain's loops (provisional) on the piece's
+  // chain; the yarn goes on from the last st cast on.
+  void cast_on_aside(const Step& s, bool provisional);
+
+  // Does a section of the piece hold loops on a provisional cast-on's chain?
+  bool has_chain(std::uint32_t piece) const;
 
   // A yarn binds off the sts of two pieces together, pair by pair: the first loop of each st
   // from the front needle, the second from the back. A new yarn joins two pieces left on spare

@@ -274,7 +274,11 @@ bool ProgramPatternBuilder::check_met_at_the_yarn(const Step& s, const Needle& n
   if (met.empty() || met.size() > size) not_yet(s, "takes no loop of the rnd, or too many");
   std::uint32_t first = forward ? n.gap : (n.gap + size - 1) % size;
   std::uint32_t behind = forward ? (first + size - 1) % size : (first + 1) % size;
-  bool back = n.ring[first] != met[0] && n.ring[behind] == met[0] && met.size() < size;
+  // A row may begin with the st behind the yarn (slipped back across the gap), also one that
+  // takes every st left (a band's last row, the teapot's top at 14/20).
+  // A row may begin with the st behind the yarn (slipped back across the gap), also one that
+  // takes every st left (a band's last row, the teapot's top at 14/20).
+  bool back = n.ring[first] != met[0] && n.ring[behind] == met[0];
   if (back) first = behind;
   for (std::uint32_t i = 0; i < met.size(); ++i) {
     std::uint32_t want = forward ? (first + i) % size : (first + size - i) % size;

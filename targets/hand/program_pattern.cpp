@@ -93,12 +93,7 @@ std::vector<std::uint32_t> ProgramPatternBuilder::loops_met(const Step& s) const
 void ProgramPatternBuilder::end_section(bool set_aside) {
   if (!working()) return;
   Needle& n = needle();
-  // A row in the rnd that the yarn leaves ends there: the work turns if the yarn comes back
-  // the other way.
-  if (row_open_) {
-    if (!turns_when_taken_up(section().yarn)) out_.ops.push_back(HandOp::no_turn);
-    close_ring_row(p_.steps[step_], n, true);
-  }
+  end_row_the_yarn_leaves();
   PatternSection& sec = section();
   sec.end_row = static_cast<std::uint32_t>(out_.rows.size());
   sec.set_aside = set_aside;
@@ -110,6 +105,13 @@ void ProgramPatternBuilder::end_section(bool set_aside) {
     places_.set(n.ring, {Place::spare, n.section});
   }
   current_ = kNone;
+}
+
+void ProgramPatternBuilder::end_row_the_yarn_leaves() {
+  // The work turns if the yarn comes back the other way.
+  if (!row_open_) return;
+  if (!turns_when_taken_up(section().yarn)) out_.ops.push_back(HandOp::no_turn);
+  close_ring_row(p_.steps[step_], needle(), true);
 }
 
 void ProgramPatternBuilder::start_section(std::uint32_t yarn, std::uint32_t needle_index) {
@@ -182,7 +184,7 @@ void ProgramPatternBuilder::cast_on(const Step& s) {
       not_yet(s, fmt::format("casts on with {}, which the program's pattern builder does not "
                              "write yet",
                              g_.describe(w.stitch)));
-  if (needle_of_yarn_[s.yarn] != kNone) not_yet(s, "casts on with a yarn that worked before");
+  if (needle_of_yarn_[s.yarn] != kNone) return cast_on_aside(s, type == T::sco);
   start_section(s.yarn, kNone);
   auto count = static_cast<std::uint32_t>(s.stitches.size());
   PatternSection& sec = section();
@@ -214,6 +216,37 @@ void ProgramPatternBuilder::cast_on(const Step& s) {
   index_ring(n);
   places_.set(n.ring, {Place::needle, current_});
   if (!chain.empty()) places_.leave(n.section, Place::chain, std::move(chain));
+}
+
+void ProgramPatternBuilder::cast_on_aside(const Step& s, bool provisional) {
+  if (current_ != needle_of_yarn_[s.yarn] || out_.rows.size() + row_open_ == section().first_row)
+    not_yet(s, "casts on with a yarn that worked before, away from the end of a row it worked");
+  end_row_the_yarn_leaves();
+  PatternSection& sec = section();
+  if (provisional && has_chain(sec.piece))
+    not_yet(s, "casts on a second provisional cast-on with one yarn (one chain per piece)");
+  std::vector<std::uint32_t> on_needle, chain;
+  for (std::uint32_t i = s.stitches.begin; i < s.stitches.end; ++i)
+    for (const PlacedLoop& m : made_by(i)) {
+      if (m.place == LoopPlace::along_edge)
+        not_yet(s, "casts on aside sts whose loops wait along an edge");
+      (m.place == LoopPlace::in_run ? on_needle : chain).push_back(m.loop);
+    }
+  PatternSection::CastOnAside c;
+  c.after_row = static_cast<std::uint32_t>(out_.rows.size() - 1);
+  c.count = static_cast<std::uint32_t>(s.stitches.size());
+  c.holder = places_.hold(on_needle, needle().section);
+  c.provisional = provisional;
+  sec.casts_on_aside.push_back(c);
+  sec.stitches += c.count;
+  if (!chain.empty()) places_.leave(needle().section, Place::chain, std::move(chain));
+}
+
+bool ProgramPatternBuilder::has_chain(std::uint32_t piece) const {
+  for (std::uint32_t k = 0; k < out_.sections.size(); ++k)
+    if (out_.sections[k].piece == piece && !places_.loops_of({Place::chain, k}).empty())
+      return true;
+  return false;
 }
 
 std::vector<std::uint32_t> ProgramPatternBuilder::counted_on_spare_needle(const Needle& n) const {
