@@ -188,7 +188,10 @@ TEST(KnitoutShortRows, ShapingInsideAShortRowProvesOnEveryProfile) {
 
 // The sheet's kfb at f502, in a short row from the right edge: the loops of its row below it
 // (f501, f500) and the four waiting beyond its turn (f496..f499) move one needle left, through
-// the back bed, before it is knit; its second loop gets f501, and the turn wraps f498.
+// the back bed, before it is knit; its second loop gets f501, and the turn wraps f498. They go
+// over first at rack 1 and in at rack 0, where the kfb's split is knit: as many rack changes as
+// out at rack 0 and over at rack -1 (then back to 0 for the split), and the tie goes to the plan
+// that leaves the machine at rack 0.
 TEST(KnitoutShortRows, AKfbInAShortRowMovesTheWaitingLoopsToMakeRoom) {
   std::string text = testing::emit_knitout_text(
       testing::compile_letters(testing::kShapedShortRowSheet, "sheet.st"),
@@ -197,11 +200,11 @@ TEST(KnitoutShortRows, AKfbInAShortRowMovesTheWaitingLoopsToMakeRoom) {
   std::size_t row5 = text.find(";!source: row 5", row4);
   EXPECT_EQ(text.substr(row4, row5 - row4),
             ";!source: row 4 transfers: lines 25..28 (right to left)\n"
-            "xfer f501 b501\nxfer f500 b500\nxfer f496 b496\nxfer f497 b497\nxfer f498 b498\n"
-            "xfer f499 b499\nrack -1\nxfer b501 f500\nxfer b500 f499\nxfer b496 f495\n"
-            "xfer b497 f496\nxfer b498 f497\nxfer b499 f498\n"
+            "rack 1\nxfer f501 b500\nxfer f500 b499\nxfer f496 b495\nxfer f497 b496\n"
+            "xfer f498 b497\nxfer f499 b498\nrack 0\nxfer b500 f500\nxfer b499 f499\n"
+            "xfer b495 f495\nxfer b496 f496\nxfer b497 f497\nxfer b498 f498\n"
             ";!source: row 4 knit (short row): lines 25..28 (right to left)\n"
-            "rack 0\nknit - f503 1\nsplit - f502 b502 1\nknit - b502 1\nknit - f500 1\n"
+            "knit - f503 1\nsplit - f502 b502 1\nknit - b502 1\nknit - f500 1\n"
             "knit - f499 1\ntuck - f498 1\n");
 }
 

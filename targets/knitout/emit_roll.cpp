@@ -55,7 +55,8 @@ void Emitter::roll_branch_onto_fold(const Course& c) {
     if (lp.now != lp.home) home.push_back({lp.now, lp.home});
     lp.now = lp.home;
   }
-  emit_moves(home);
+  queue_moves(home);
+  flush_moves();
   std::vector<std::uint32_t> loops =
       c.alone ? loops_round_the_tube() : std::vector<std::uint32_t>{};
   auto index = [&](std::uint32_t loop) {
@@ -88,6 +89,7 @@ void Emitter::roll_branch_onto_fold(const Course& c) {
                                     p_.name, p_.max_transfer_stretch));
     rolled += step;
   }
+  flush_moves();
 }
 
 // One stage of a roll: each loop to the place `step` further round the ring. False (nothing
@@ -105,9 +107,9 @@ bool Emitter::roll_stage(std::vector<std::uint32_t>& loops, const std::vector<Pl
     if (along) out.push_back({from, facing(from)});
     (along ? landing : over).push_back(m);
   }
-  emit_moves(out);
-  emit_moves(over);
-  emit_moves(landing);
+  queue_moves(out);
+  queue_moves(over);
+  queue_moves(landing);
   std::vector<std::uint32_t> rolled(loops.size());
   for (std::int32_t i = 0; i < n; ++i) {
     auto to = static_cast<std::size_t>(((i + step) % n + n) % n);

@@ -111,6 +111,7 @@ void Emitter::cast_on_along_split(const Course& c) {
   std::vector<std::uint8_t> ready(c.end - c.begin, 1);  // its sts take no loops
   go_home(c, ready, true);
   shift_stacks(c, ready);
+  flush_moves();
   room_.clear();
   auto sts = c.end - c.begin;
   // A carrier brought in moves to the crotch's needle furthest the profile's way first, so
@@ -145,7 +146,8 @@ void Emitter::cast_on_along_split(const Course& c) {
     }
   }
   if (c.first_of_yarn) release(carrier_);
-  emit_moves(to_back);
+  queue_moves(to_back);
+  flush_moves();
   if (c.last_of_yarn) leave_loops(c);
 }
 

@@ -11,23 +11,47 @@
 
 namespace skein::knitout::emit {
 
-// The moves of one batch are independent of each other: grouped by racking, each racking once,
-// the one the machine is at first (no change), the one nearest 0 last (where most batches
-// after begin).
-void Emitter::emit_moves(std::vector<Move>& moves) {
-  std::int32_t now = w_.racking();
-  auto order = [now](const Move& m) {
-    std::int32_t r = rack_of(m);
-    return std::tuple(r != now, -std::abs(r), r);
-  };
-  std::stable_sort(moves.begin(), moves.end(),
-                   [&](const Move& a, const Move& b) { return order(a) < order(b); });
-  for (const Move& m : moves) w_.xfer(at(m.from), at(m.to));
-  moves.clear();
-}
-
+// The course's transfers are planned three ways: loops moving along a bed go over first where
+// the machine is racked for it (the first way, kept on a tie), always out through the facing
+// needle first, or over first wherever they can (route_through_other_bed). The plan written is
+// the one that needs the fewest rack changes, counting the change to rack 0 that the course's
+// knitting may need after.
 void Emitter::transition(const Course& c) {
   source(c, "transfers");
+  bool zero_after = needs_rack_zero(c);
+  std::vector<LoopPlace> before(on_needles_.size()), best_live;
+  for (std::size_t i = 0; i < on_needles_.size(); ++i) before[i] = live_[on_needles_[i]];
+  std::vector<Move> best_moves;
+  std::vector<std::uint32_t> best_batches;
+  TransferOrder best;
+  could_go_over_first_ = false;
+  for (Route route : {Route::as_racked, Route::out_first, Route::over_first}) {
+    if (route != Route::as_racked) {
+      if (!could_go_over_first_) break;
+      for (std::size_t i = 0; i < on_needles_.size(); ++i) live_[on_needles_[i]] = before[i];
+    }
+    route_ = route;
+    plan_transfers(c);
+    TransferOrder order = best_order(zero_after);
+    if (route == Route::as_racked || order.better_than(best)) {
+      best = std::move(order);
+      best_moves = std::move(pending_);
+      best_batches = std::move(batch_ends_);
+      best_live.resize(on_needles_.size());
+      for (std::size_t i = 0; i < on_needles_.size(); ++i) best_live[i] = live_[on_needles_[i]];
+    }
+    pending_.clear();
+    batch_ends_.clear();
+    batch_rack_ = w_.racking();
+  }
+  for (std::size_t i = 0; i < on_needles_.size(); ++i) live_[on_needles_[i]] = best_live[i];
+  pending_ = std::move(best_moves);
+  batch_ends_ = std::move(best_batches);
+  route_ = Route::as_racked;
+  write_moves(best);
+}
+
+void Emitter::plan_transfers(const Course& c) {
   std::vector<std::uint8_t> ready(c.end - c.begin, 0);  // already on its knit needle
   go_home(c, ready, !fits_one_stage(c) || shaped());
   merge_decreases(c);
@@ -86,7 +110,7 @@ void Emitter::go_home(const Course& c, std::vector<std::uint8_t>& ready, bool st
       lp.now = lp.home;
     }
   }
-  emit_moves(moves);
+  queue_moves(moves);
 }
 
 // Each decrease's loops land on its bottom loop's needle in stacking order (the lean).
@@ -116,13 +140,18 @@ void Emitter::merge_decreases(const Course& c) {
       } else if (near) {
         landing.push_back({lp.now, bottom});
       } else {  // from bed to bed over a tube's empty needles (past loops that wait there)
-        move_across_beds(lp.now, bottom, &busy);
+        Place from = lp.now;
+        for (Place hop : hops_between(lp.now, bottom, &busy)) {
+          std::vector<Move> one{{from, hop}};  // each its own batch: they follow each other
+          queue_moves(one);
+          from = hop;
+        }
       }
       lp.now = lp.home = bottom;
     }
     route_through_other_bed(along, &busy, to_transit, landing);
-    emit_moves(to_transit);
-    emit_moves(landing);
+    queue_moves(to_transit);
+    queue_moves(landing);
   }
 }
 
@@ -135,14 +164,18 @@ void Emitter::merge_decreases(const Course& c) {
 // `busy` given, the hops then land on the needles a tube leaves empty (odd in front, even at
 // the back), which face its loops.
 void Emitter::move_across_beds(Place from, Place to, const std::vector<std::uint8_t>* busy) {
+  for (Place hop : hops_between(from, to, busy)) {
+    w_.xfer(at(from), at(hop));
+    from = hop;
+  }
+}
+std::vector<Place> Emitter::hops_between(Place from, Place to,
+                                         const std::vector<std::uint8_t>* busy) const {
   std::vector<Place> hops = hops_across(from, to, false);
   if (busy && std::any_of(hops.begin(), hops.end() - 1,
                           [&](Place p) { return (*busy)[needle_slot(p)] != 0; }))
     hops = hops_across(from, to, true);
-  for (Place hop : hops) {
-    w_.xfer(at(from), at(hop));
-    from = hop;
-  }
+  return hops;
 }
 std::vector<Place> Emitter::hops_across(Place from, Place to, bool tube_free) const {
   std::int32_t stretch = p_.max_transfer_stretch, parity = std::max(from.needle, to.needle) & 1;
@@ -221,12 +254,11 @@ void Emitter::shift_stacks(const Course& c, const std::vector<std::uint8_t>& rea
         over.push_back({st.now, stop});
       st.now = stop;
     }
-    // Stacks going over a fold land on the other bed between the two batches: they keep the
-    // facing needles' way.
-    route_through_other_bed(along, crossing ? nullptr : &busy, to_transit, landing);
-    emit_moves(to_transit);
-    emit_moves(over);
-    emit_moves(landing);
+    // Stacks going over a fold land on the other bed between the two batches.
+    route_through_other_bed(along, &busy, to_transit, landing);
+    queue_moves(to_transit);
+    queue_moves(over);
+    queue_moves(landing);
   }
   for (const Stack& st : stacks) {
     if (st.stitch == kNoStitch) {
@@ -239,21 +271,21 @@ void Emitter::shift_stacks(const Course& c, const std::vector<std::uint8_t>& rea
 
 // Moves along one bed go through the other: out to the facing needle at rack 0 and over at
 // the step's racking, or over first, to the needle facing where they land, and in at rack 0.
-// The second saves a rack change where the machine is racked for one of them already and the
-// needles facing their landings are free (`busy`; none given: the first way); the first
-// otherwise.
+// The second is possible where the needles facing their landings are free (`busy`; none
+// given: the first way); which is taken is the course's plan's route (transition). As racked,
+// the second where it saves a rack change: the machine is racked for one of the moves already
+// (the racking the batches queued so far leave).
 void Emitter::route_through_other_bed(const std::vector<Move>& along,
                                       const std::vector<std::uint8_t>* busy,
-                                      std::vector<Move>& to_transit,
-                                      std::vector<Move>& landing) const {
-  std::int32_t now = w_.racking();
-  bool over_first = busy && now != 0;
-  bool saves = false;
+                                      std::vector<Move>& to_transit, std::vector<Move>& landing) {
+  bool free = busy && !along.empty(), saves = false;
   for (const Move& m : along) {
-    saves |= rack_of({m.from, facing(m.to)}) == now;
-    over_first = over_first && !(*busy)[needle_slot(facing(m.to))];
+    free = free && !(*busy)[needle_slot(facing(m.to))];
+    saves |= rack_of({m.from, facing(m.to)}) == batch_rack_;
   }
-  over_first = over_first && saves;
+  could_go_over_first_ |= free;
+  bool over_first = free && (route_ == Route::over_first ||
+                             (route_ == Route::as_racked && batch_rack_ != 0 && saves));
   for (const Move& m : along) {
     Place via = over_first ? facing(m.to) : facing(m.from);
     to_transit.push_back({m.from, via});
@@ -280,7 +312,7 @@ void Emitter::send_purls(const Course& c, const std::vector<std::uint8_t>& ready
     moves.push_back({{sp.home, sp.needle}, {sp.knit, sp.needle}});
     for (std::uint32_t loop : taken(s)) live_[loop].now = {sp.knit, sp.needle};
   }
-  emit_moves(moves);
+  queue_moves(moves);
 }
 
 }  // namespace skein::knitout::emit

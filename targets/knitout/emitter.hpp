@@ -9,8 +9,10 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstdlib>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "driver/pipeline.hpp"
@@ -152,13 +154,33 @@ class Emitter {
   [[noreturn]] void off_the_bed(StitchId s) const;
   bool shaped() const { return !shaping_[0].empty() || !shaping_[1].empty(); }
 
+  // ---- the order transfers are written in (emit_transfer_order.cpp) ----
+  struct TransferOrder {
+    std::vector<std::uint32_t> moves;  // the queue's moves in the order written
+    std::uint32_t changes = 0;         // the rack changes they take (and one to 0 if wanted)
+    std::int32_t end = 0;              // the racking they leave
+    // Fewer changes, or as many and ending nearer 0, where the next course's transfers mostly
+    // begin (loops going home to the facing needle).
+    bool better_than(const TransferOrder& o) const {
+      return std::pair(changes, std::abs(end)) < std::pair(o.changes, std::abs(o.end));
+    }
+  };
+  void queue_moves(std::vector<Move>& moves);  // after the moves queued before, emptying `moves`
+  TransferOrder order_moves(bool zero_after) const;     // fewest rack changes first
+  TransferOrder order_by_batch(bool zero_after) const;  // as the moves were queued
+  TransferOrder best_order(bool zero_after) const;      // the better of the two
+  void write_moves(const TransferOrder& order);         // and empties the queue
+  void flush_moves() { write_moves(best_order(false)); }
+
   // ---- the transfers between two courses (emit_transfers.cpp) ----
-  void emit_moves(std::vector<Move>& moves);
   void transition(const Course& c);
+  void plan_transfers(const Course& c);
   bool fits_one_stage(const Course& c) const;
   void go_home(const Course& c, std::vector<std::uint8_t>& ready, bool staged);
   void merge_decreases(const Course& c);
   void move_across_beds(Place from, Place to, const std::vector<std::uint8_t>* busy = nullptr);
+  std::vector<Place> hops_between(Place from, Place to,
+                                  const std::vector<std::uint8_t>* busy) const;
   std::vector<Place> hops_across(Place from, Place to, bool tube_free) const;
   std::int32_t ring(Place p) const { return ring(p, fold_); }
   std::int32_t ring(Place p, std::int32_t fold) const;
@@ -167,7 +189,7 @@ class Emitter {
   void shift_stacks(const Course& c, const std::vector<std::uint8_t>& ready);
   void route_through_other_bed(const std::vector<Move>& along,
                                const std::vector<std::uint8_t>* busy, std::vector<Move>& to_transit,
-                               std::vector<Move>& landing) const;
+                               std::vector<Move>& landing);
   Place next_stop(Place now, Place target, bool crossing, std::int32_t fold) const;
   void send_purls(const Course& c, const std::vector<std::uint8_t>& ready);
 
@@ -233,9 +255,16 @@ class Emitter {
   std::vector<StitchPlan> plan_;                     // per stitch, for the course being knit
   std::vector<LoopPlace> live_;                      // per loop of the knit graph
   std::vector<std::uint32_t> on_needles_, index_on_needles_;  // the loops made, not yet taken
-  std::array<std::vector<Shaping>, 2> shaping_;  // a short row's shaped stitches, per bed
-  std::vector<RoomMove> room_;                   // the waiting loops the shaping moves
-  std::vector<std::uint8_t> in_course_;          // per loop: taken by the course being planned
+  std::array<std::vector<Shaping>, 2> shaping_;        // a short row's shaped stitches, per bed
+  std::vector<RoomMove> room_;                         // the waiting loops the shaping moves
+  std::vector<Move> pending_;                          // the transfers queued, not yet written
+  std::vector<std::uint32_t> batch_ends_;              // where each batch queued ends in pending_
+  mutable std::vector<std::uint32_t> last_on_needle_;  // per needle slot: order_moves' scratch
+  enum class Route : std::uint8_t { as_racked, out_first, over_first };
+  Route route_ = Route::as_racked;       // how loops along a bed go through the other bed
+  bool could_go_over_first_ = false;     // some could, in the course being planned
+  std::int32_t batch_rack_ = 0;          // the racking the batches queued leave, written by batch
+  std::vector<std::uint8_t> in_course_;  // per loop: taken by the course being planned
   std::vector<std::uint8_t> bare_turn_;  // per course: its turn's wrap left out (no room for it)
   const std::vector<std::string>& carriers_;
   std::string carrier_;  // the carrier of the course being knit
