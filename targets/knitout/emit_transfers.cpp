@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <tuple>
 
 #include "common/error.hpp"
 #include "knitout/emitter.hpp"
