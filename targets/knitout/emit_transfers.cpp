@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <tuple>
 
 #include "common/error.hpp"
 #include "knitout/emitter.hpp"
@@ -12,10 +11,10 @@
 namespace skein::knitout::emit {
 
 // The course's transfers are planned three ways: loops moving along a bed go over first where
-// the machine is racked for it (the first way, kept on a tie), always out through the facing
-// needle first, or over first wherever they can (route_through_other_bed). The plan written is
-// the one that needs the fewest rack changes, counting the change to rack 0 that the course's
-// knitting may need after.
+// the machine is racked for one of them already, always out through the facing needle first,
+// or over first wherever they can (route_through_other_bed). The plan written is the one that
+// needs the fewest rack changes, counting the change to rack 0 that the course's knitting may
+// need after (TransferOrder::better_than; of equals, the first).
 void Emitter::transition(const Course& c) {
   source(c, "transfers");
   bool zero_after = needs_rack_zero(c);
