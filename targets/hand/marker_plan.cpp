@@ -129,6 +129,7 @@ class Planner {
                                            });
     std::uint32_t j = g.first;
     for (; j < s.end_row && !p_.rows[j].bind_off && (j <= g.last || !remove); ++j) {
+      if (rearranged_before(s, j)) return std::nullopt;
       auto slipped =
           with_markers(ops(j), at, remove && j == g.last ? HandOp::rm : HandOp::sm, false, made_at);
       if (!slipped) return std::nullopt;
@@ -138,6 +139,16 @@ class Planner {
     for (auto& [row, new_ops] : rows) rewritten_[row] = std::move(new_ops);
     p_.markers = std::max(p_.markers, g.shaping.count - 1 + (s.in_round ? 1 : 0));
     return j;
+  }
+
+  // Sts placed into the needle or slipped to holders before the row move the sts the markers
+  // were counted between (the teapot at 14/20 places a holder at the beginning of the rnd
+  // between the row that places them and the first shaped one).
+  static bool rearranged_before(const PatternSection& s, std::uint32_t row) {
+    return std::any_of(s.placements.begin(), s.placements.end(),
+                       [&](const PatternSection::Placement& p) { return p.before_row == row; }) ||
+           std::any_of(s.holdings.begin(), s.holdings.end(),
+                       [&](const PatternSection::Holding& h) { return h.after_row + 1 == row; });
   }
 
   // Where the markers are for the next row: in the round in the same order, on a flat piece

@@ -55,6 +55,7 @@ void NeedleSimulator::cast_on_aside(const Step& s) {
   row_ = row;
   position_ = position;
   facing_ = facing;
+  pc_.cast_on_aside = true;  // the next row goes on along from the last st cast on
 }
 
 void NeedleSimulator::provisional_cast_on_in_row() {

@@ -116,7 +116,10 @@ void NeedleSimulator::begin_row(Side facing) {
   row_ended_ = not_turned_ = false;
   pending_.clear();
   last_make_ = std::nullopt;
-  next_link_ = pc_.turn_before ? YarnLink::turn : YarnLink::shift;
+  next_link_ = pc_.cast_on_aside ? YarnLink::course
+               : pc_.turn_before ? YarnLink::turn
+                                 : YarnLink::shift;
+  pc_.cast_on_aside = false;
   if (pc_.turn_before) pc_.left.swap(pc_.right);
   if (row_round_)
     gather_round();

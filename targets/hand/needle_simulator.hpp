@@ -413,6 +413,7 @@ class NeedleSimulator {
     bool turn_before = true;     // the next row starts by turning the work
     bool joined_to_sts = false;  // started by joining a yarn to another piece's sts
     bool carried = false;        // the yarn was carried to held sts, not yet joined in the rnd
+    bool cast_on_aside = false;  // sts were cast on onto a holder: the yarn goes on from there
     std::uint32_t bor = kNone;
     std::uint32_t next_number = 1;
     std::optional<Side> last_side;

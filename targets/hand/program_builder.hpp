@@ -121,6 +121,9 @@ class ProgramPatternBuilder {
   // A new piece, or the yarn of one set aside taken up again (its rows count on).
   void start_section(std::uint32_t yarn, std::uint32_t needle_index);
 
+  // The last row written of a piece (into HandPattern::rows), in whichever of its sections.
+  std::uint32_t last_row_of_piece(std::uint32_t piece) const;
+
   // A row in the rnd that the yarn leaves (set aside, or casting on aside) ends there.
   void end_row_the_yarn_leaves();
 
@@ -128,6 +131,9 @@ class ProgramPatternBuilder {
 
   // Does the yarn's next course go back the other way from the row it stops in?
   bool turns_when_taken_up(std::uint32_t yarn) const;
+
+  // The yarn's next course, bind-off or three-needle bind-off after this step, if any.
+  const Step* next_course_of(std::uint32_t yarn) const;
 
   // Before a piece in the rnd is set aside, the sts of its needle that other yarns take go to
   // holders (a block of the rnd each), where those can take them.
@@ -479,8 +485,10 @@ class ProgramPatternBuilder {
   // them, counted in the order the last row worked them; only where some of its own stay.
   // Before the course gathers (needle_for): a needle it lays out holds only its own loops.
   void hold_what_others_work(const Step& s, Needle& n);
-  // The place on the needle [begin, end) of the sts the last row worked (a short row's).
-  std::pair<std::uint32_t, std::uint32_t> last_rows_sts(const Needle& n) const;
+  // The place on the needle [begin, end) of the sts the last row (`last_row`, into the rows
+  // written) worked (a short row's).
+  std::pair<std::uint32_t, std::uint32_t> last_rows_sts(const Needle& n,
+                                                        std::uint32_t last_row) const;
 
   // A flat row meets its loops side by side along the line from where the yarn is.
   void check_met_along_the_row(const Step& s, const Needle& n) const;

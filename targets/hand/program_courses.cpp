@@ -276,8 +276,6 @@ bool ProgramPatternBuilder::check_met_at_the_yarn(const Step& s, const Needle& n
   std::uint32_t behind = forward ? (first + size - 1) % size : (first + 1) % size;
   // A row may begin with the st behind the yarn (slipped back across the gap), also one that
   // takes every st left (a band's last row, the teapot's top at 14/20).
-  // A row may begin with the st behind the yarn (slipped back across the gap), also one that
-  // takes every st left (a band's last row, the teapot's top at 14/20).
   bool back = n.ring[first] != met[0] && n.ring[behind] == met[0];
   if (back) first = behind;
   for (std::uint32_t i = 0; i < met.size(); ++i) {
@@ -431,20 +429,31 @@ void ProgramPatternBuilder::hold_what_others_work(const Step& s, Needle& n) {
   if (std::none_of(n.ring.begin(), n.ring.end(), others_take)) return;
   // Where none stay, the piece is left whole (or joined in the rnd) as it is.
   if (std::all_of(n.ring.begin(), n.ring.end(), others_take)) return;
-  if (!n.worked || out_.rows.size() == section().first_row)
-    not_yet(s, "leaves sts to another yarn before its first row");
+  if (!n.worked) not_yet(s, "leaves sts to another yarn before its first row");
+  // Taken up again, the sts are slipped as it is taken up, naming the row that made them.
+  bool taken_up = out_.rows.size() == section().first_row;
+  std::uint32_t last_row = taken_up ? kNone : static_cast<std::uint32_t>(out_.rows.size() - 1);
+  for (std::uint32_t l : n.ring) {
+    StitchId maker = g_.loops[l].maker;
+    std::uint32_t row = maker == kNoStitch ? kNone : row_of_[maker];
+    if (taken_up && row != kNone) last_row = last_row == kNone ? row : std::max(last_row, row);
+  }
+  if (last_row == kNone) not_yet(s, "leaves sts to another yarn before its first row");
   // The sts counted are the last row's: all of the needle's, or after a short row (a strip
   // going round a corner), those it worked, the others staying where they wait.
-  auto [lo, hi] =
-      n.ahead == 0 ? std::pair<std::uint32_t, std::uint32_t>{0, n.ring.size()} : last_rows_sts(n);
+  auto [lo, hi] = n.ahead == 0 ? std::pair<std::uint32_t, std::uint32_t>{0, n.ring.size()}
+                               : last_rows_sts(n, last_row);
   for (std::uint32_t i = 0; i < n.ring.size(); ++i)
     if ((i < lo || i >= hi) && others_take(n.ring[i]))
       not_yet(s, "leaves sts to another yarn that its last row did not work");
   std::vector<std::uint32_t> order(n.ring.begin() + lo, n.ring.begin() + hi);
   bool right_to_left = n.last == CourseDirection::right_to_left;
   if (right_to_left) std::reverse(order.begin(), order.end());  // as the last row worked them
+  std::size_t held_before = section().holdings.size();
   std::vector<std::uint32_t> stay = hold_blocks(
       order, [&](std::uint32_t l) { return !others_take(l); }, true);
+  for (std::size_t k = held_before; taken_up && k < section().holdings.size(); ++k)
+    section().holdings[k].of_number = out_.rows[last_row].number;
   if (right_to_left) std::reverse(stay.begin(), stay.end());
   std::uint32_t before_gap = 0, held = 0;
   for (std::uint32_t i = lo; i < hi; ++i) {
@@ -462,8 +471,7 @@ void ProgramPatternBuilder::hold_what_others_work(const Step& s, Needle& n) {
 }
 
 std::pair<std::uint32_t, std::uint32_t> ProgramPatternBuilder::last_rows_sts(
-    const Needle& n) const {
-  const auto last_row = static_cast<std::uint32_t>(out_.rows.size() - 1);
+    const Needle& n, std::uint32_t last_row) const {
   auto of_last_row = [&](std::uint32_t l) {
     StitchId maker = g_.loops[l].maker;
     return maker != kNoStitch && row_of_[maker] == last_row;

@@ -300,18 +300,22 @@ std::vector<std::uint32_t> ProgramPatternBuilder::join_flat_piece_in_the_rnd(
   if ((kept > 0 && !keeps_all) || (!keeps_all && older))
     not_yet(s,
             "joins a flat piece in the rnd with some sts of its own, or of rows before its last");
-  // The rnd goes on the way the last row went: that row ends without turning.
-  PatternRow& last = out_.rows[last_row];
+  // The rnd goes on the way the last row went: that row ends without turning (taken up again,
+  // the piece's last row written before it was set aside).
+  bool taken_up_here = out_.rows.size() == sec.first_row;
+  PatternRow& last = out_.rows[taken_up_here ? last_row_of_piece(sec.piece) : last_row];
   Side rnd_side = s.direction == CourseDirection::right_to_left ? Side::rs : Side::ws;
   if (last.side == rnd_side) {
-    if (last.end_op != out_.ops.size())
+    bool turns = last.end_op > last.first_op && out_.ops[last.end_op - 1] == HandOp::turn;
+    if (last.end_op != out_.ops.size() && !turns)
       not_yet(s, "joins a flat piece in the rnd the way its last row went, after other work");
-    if (out_.ops.back() == HandOp::turn) {  // a short row goes on round the corner instead
-      out_.ops.pop_back();
+    if (turns) {  // a short row goes on round the corner instead
+      out_.ops[last.end_op - 1] = HandOp::no_turn;
       last.short_row = false;
+    } else {
+      out_.ops.push_back(HandOp::no_turn);
+      last.end_op = static_cast<std::uint32_t>(out_.ops.size());
     }
-    out_.ops.push_back(HandOp::no_turn);
-    last.end_op = static_cast<std::uint32_t>(out_.ops.size());
   }
   sec.in_round = true;
   sec.joined_in_rnd_at = static_cast<std::uint32_t>(out_.rows.size());
@@ -332,6 +336,14 @@ std::vector<std::uint32_t> ProgramPatternBuilder::join_flat_piece_in_the_rnd(
   n.ring.clear();
   n.live = n.ahead = n.behind = 0;
   return {};
+}
+
+std::uint32_t ProgramPatternBuilder::last_row_of_piece(std::uint32_t piece) const {
+  std::uint32_t last = kNone;
+  for (const PatternSection& sec : out_.sections)
+    if (sec.piece == piece && sec.end_row > sec.first_row) last = sec.end_row - 1;
+  if (last == kNone) unsupported("a piece taken up again without a row written");
+  return last;
 }
 
 std::vector<std::uint32_t> ProgramPatternBuilder::row_ahead(const Step& s) {

@@ -138,13 +138,18 @@ void ProgramPatternBuilder::start_section(std::uint32_t yarn, std::uint32_t need
 }
 
 bool ProgramPatternBuilder::turns_when_taken_up(std::uint32_t yarn) const {
+  const Step* next = next_course_of(yarn);
+  return !next || next->direction != row_dir_;
+}
+
+const Step* ProgramPatternBuilder::next_course_of(std::uint32_t yarn) const {
   for (std::size_t k = step_ + 1; k < p_.steps.size(); ++k) {
     const Step& next = p_.steps[k];
     bool works = next.kind == StepKind::course || next.kind == StepKind::bind_off ||
                  next.kind == StepKind::three_needle_bind_off;
-    if (works && next.yarn == yarn) return next.direction != row_dir_;
+    if (works && next.yarn == yarn) return &next;
   }
-  return true;
+  return nullptr;
 }
 
 void ProgramPatternBuilder::set_aside(const Step& s) {
@@ -221,6 +226,10 @@ void ProgramPatternBuilder::cast_on(const Step& s) {
 void ProgramPatternBuilder::cast_on_aside(const Step& s, bool provisional) {
   if (current_ != needle_of_yarn_[s.yarn] || out_.rows.size() + row_open_ == section().first_row)
     not_yet(s, "casts on with a yarn that worked before, away from the end of a row it worked");
+  // The yarn goes on from the last st cast on along the yarn's next course, which must go the
+  // cast-on's way (the simulator reads it so).
+  if (next_course_of(s.yarn) && next_course_of(s.yarn)->direction != s.direction)
+    not_yet(s, "casts on aside sts and then turns back");
   end_row_the_yarn_leaves();
   PatternSection& sec = section();
   if (provisional && has_chain(sec.piece))
