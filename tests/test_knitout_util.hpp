@@ -119,10 +119,15 @@ inline std::string stitch_graph_st(const std::string& letters) {
     for (int i = makes; i-- > 0;) at = fabric.insert(at, {s, i});
     yarn = forward ? first + static_cast<std::size_t>(makes) : first;
   }
+  // `.st` lists two ins or outs in the order the stitch's yarn meets them: going back, right
+  // to left.
   std::string text;
-  for (const Line& l : lines)
+  for (Line& l : lines) {
+    if (!l.forward && l.in[1] != -1) std::swap(l.in[0], l.in[1]);
+    if (!l.forward && l.out[1] != -1) std::swap(l.out[0], l.out[1]);
     text += fmt::format("{} {} {} {} {} {} {} 0 0 0\n", l.yarn, l.letter, l.forward ? 'a' : 'c',
                         l.in[0], l.in[1], l.out[0], l.out[1]);
+  }
   return text;
 }
 

@@ -293,9 +293,9 @@ class StParser {
         std::int32_t maker = links_[s].in[in_slot];
         if (maker == kNone) continue;
         auto m = static_cast<StitchId>(maker);
-        graph_.loops.push_back(Loop{m, s, LoopKind::wale,
-                                    from_left(m, links_[m].out, out_slot(m, s, in_slot)),
-                                    from_left(s, links_[s].in, in_slot)});
+        std::uint8_t taker_slot = from_left(s, links_[s].in, in_slot);
+        graph_.loops.push_back(
+            Loop{m, s, LoopKind::wale, maker_slot(m, s, taker_slot), taker_slot});
       }
     }
   }
@@ -355,15 +355,19 @@ class StParser {
     if (!turn) graph_.flags[s] |= kShiftPathStart;
   }
 
-  // Which out slot of `maker` feeds in slot `in_slot` of `taker`: the n-th mention of the
-  // taker among the maker's outs, for the n-th mention of the maker among the taker's ins.
-  std::uint8_t out_slot(StitchId maker, StitchId taker, std::uint8_t in_slot) const {
+  // Which of `maker`'s loops (from the left) feeds the loop `taker_slot` (from the left) of
+  // `taker`: the n-th mention of the taker among the maker's outs, for the n-th mention of the
+  // maker among the taker's ins, both counted from the left (a decrease taking both loops of
+  // an increase takes them side by side, not crossed).
+  std::uint8_t maker_slot(StitchId maker, StitchId taker, std::uint8_t taker_slot) const {
+    const Slots& ins = links_[taker].in;
     int nth = 0;
-    for (std::uint8_t i = 0; i < in_slot; ++i)
-      nth += links_[taker].in[i] == static_cast<std::int32_t>(maker);
+    for (std::uint8_t i = 0; i < taker_slot; ++i)
+      nth += ins[from_left(taker, ins, i)] == static_cast<std::int32_t>(maker);
     const Slots& outs = links_[maker].out;
     for (std::uint8_t o = 0; o < outs.size(); ++o)
-      if (outs[o] == static_cast<std::int32_t>(taker) && nth-- == 0) return o;
+      if (outs[from_left(maker, outs, o)] == static_cast<std::int32_t>(taker) && nth-- == 0)
+        return o;
     SKEIN_ASSERT(false, "links are mirrored (checked while parsing)");
     return 0;
   }
