@@ -25,10 +25,10 @@ void NeedleSimulator::cast_on_st(bool provisional) {
   if (provisional) spare_needles_[{pc_.number, kChain}].push_back(new_loop(x));
 }
 
-void NeedleSimulator::provisional_cast_on_in_row() {
+void NeedleSimulator::cast_on_in_row(bool provisional) {
   Side facing = facing_;
-  facing_ = Side::ws;
-  cast_on_st(true);
+  if (provisional) facing_ = Side::ws;
+  cast_on_st(provisional);
   facing_ = facing;
   ++pc_.live;
   row_last_stitch_ = pc_.last_stitch;
