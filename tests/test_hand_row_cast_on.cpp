@@ -6,6 +6,7 @@
 #include <sstream>
 #include <string>
 
+#include "common/error.hpp"
 #include "driver/pipeline.hpp"
 #include "fixtures.hpp"
 #include "hand/pattern_document.hpp"
@@ -94,6 +95,24 @@ TEST(HandRowCastOn, CastingOnWithTheWorkingYarnOntoAHolderIsWorkedAndRejectedByR
             "has a chain (one per piece)");
   EXPECT_EQ(failure_of(cast_on + before + after),
             "p.md:1: With the working yarn, cast on: no yarn is being worked");
+}
+
+// A backward-loop cast-on over a gap (a machine's thumb gap read back from its fabric): one
+// loop each, no chain left to work; the reader names what it expected after "with a".
+TEST(HandRowCastOn, ABackwardLoopCastOnLeavesNoChain) {
+  const std::string row = "Cast on 5 sts.\nRow 1 (RS): K1, BO 3 sts, k1.\n";
+  EXPECT_EQ(failure_of(row + "Row 2 (WS): P1, CO 3 sts with a backward-loop cast-on, p1.\n"
+                             "Row 3 (RS): BO all sts.\nFasten off.\n"),
+            "");
+  try {
+    failure_of(row + "Row 2 (WS): P1, CO 3 sts with a long-tail cast-on, p1.\n");
+    ADD_FAILURE() << "read";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("expected 'with a provisional cast-on' or 'with a "
+                                         "backward-loop cast-on', found 'long-tail cast-on"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

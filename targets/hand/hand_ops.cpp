@@ -49,8 +49,10 @@ constexpr std::array kOps{
   HandOpInfo{O::yo,    "yo",    "yarn over: wrap the yarn once over the right needle (1 st "
                                 "increased)", 0, 1},
   HandOpInfo{O::bo,    "BO",    "bind off", 1, 0},
-  HandOpInfo{O::provisional_co, "CO", "cast on (in a row: onto the right needle, with a "
-                                "provisional cast-on)", 0, 1},
+  HandOpInfo{O::provisional_co, "CO", "cast on (in a row: onto the right needle, with the "
+                                "cast-on the row names)", 0, 1},
+  HandOpInfo{O::co, "CO", "cast on (in a row: onto the right needle, with the cast-on the row "
+                                "names)", 0, 1},
   HandOpInfo{O::tnbo,  "3-needle BO", "three-needle bind-off: knit the next st together with "
                                 "the st held behind it and bind it off", 1, 0},
   HandOpInfo{O::pm,    "pm",    "place marker", 0, 0},
@@ -182,6 +184,9 @@ bool is_make_one(HandOp op) {
 }
 bool is_plain(HandOp op) {
   return op == HandOp::k || op == HandOp::p;
+}
+bool is_cast_on_in_row(HandOp op) {
+  return op == HandOp::provisional_co || op == HandOp::co;
 }
 bool ends_row(HandOp op) {
   return op == HandOp::wt || op == HandOp::turn || op == HandOp::no_turn;

@@ -41,6 +41,9 @@ enum class HandOp : std::uint8_t {
   // Cast on one st onto the right needle in the middle of a row with a provisional cast-on (a
   // cast-on along a split): its waste-yarn chain's loop waits for the other side.
   provisional_co,
+  // Cast on one st onto the right needle in the middle of a row with the working yarn (a
+  // backward loop): a gap's sts, cast on over it (a thumb's, a crotch's).
+  co,
   // Three-needle bind-off in a row: the next st together with the next st held behind it
   // (another piece's, waiting on a spare needle), bound off.
   tnbo,
@@ -93,9 +96,10 @@ struct HandOpInfo {
 const HandOpInfo& info(HandOp op);
 std::optional<HandOp> hand_op_from(std::string_view word);  // case-insensitive
 
-bool is_make_one(HandOp op);  // M1L, M1R, M1PL, M1PR, yo
-bool is_plain(HandOp op);     // k, p: written with a count ("k12")
-bool ends_row(HandOp op);     // w&t, turn, do not turn: the rest of the needle waits
+bool is_make_one(HandOp op);        // M1L, M1R, M1PL, M1PR, yo
+bool is_plain(HandOp op);           // k, p: written with a count ("k12")
+bool is_cast_on_in_row(HandOp op);  // CO N sts with a provisional or backward-loop cast-on
+bool ends_row(HandOp op);           // w&t, turn, do not turn: the rest of the needle waits
 // kw, pw, k DS, p DS: a plain st worked over the loop a short row turned at.
 bool resolves_turn(HandOp op);
 bool works_with_yo(HandOp op);  // brk, brp: a plain st worked over a st and its yo

@@ -58,10 +58,10 @@ void NeedleSimulator::cast_on_aside(const Step& s) {
   pc_.cast_on_aside = true;  // the next row goes on along from the last st cast on
 }
 
-void NeedleSimulator::provisional_cast_on_in_row() {
+void NeedleSimulator::cast_on_in_row(bool provisional) {
   Side facing = facing_;
-  facing_ = Side::ws;
-  cast_on_st(true);
+  if (provisional) facing_ = Side::ws;
+  cast_on_st(provisional);
   facing_ = facing;
   ++pc_.live;
   row_last_stitch_ = pc_.last_stitch;

@@ -141,7 +141,8 @@ void NeedleSimulator::apply(HandOp op) {
       slip_from_second_spare(op == HandOp::from_second_spare_behind);
       return;
     case HandOp::provisional_co:
-      provisional_cast_on_in_row();
+    case HandOp::co:
+      cast_on_in_row(op == HandOp::provisional_co);
       return;
     case HandOp::tnbo:
       three_needle_bind_off_st();

@@ -67,7 +67,8 @@ class NeedleSimulator {
 
   // "CO 3 sts with a provisional cast-on" in the middle of a row: as a provisional cast-on of
   // its own, the needle's loop first seen from the RS; the chain joins the piece's chain.
-  void provisional_cast_on_in_row();
+  // "... with a backward-loop cast-on": a loop of the working yarn, with the row's side facing.
+  void cast_on_in_row(bool provisional);
 
   // A new piece worked from loops picked up along an edge of a finished piece, one in each
   // of its rows: the loop of the st at that edge, the last one picked up at the needle tip.

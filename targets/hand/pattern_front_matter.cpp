@@ -276,8 +276,11 @@ class FrontMatter {
     std::vector<std::string> items;
     for (auto op = HandOp::k; op <= HandOp::slip_back;
          op = static_cast<HandOp>(static_cast<int>(op) + 1))
-      if (uses(op) || (op == HandOp::pm && says("Pm ")))
-        items.push_back(fmt::format("**{}**: {}", info(op).abbreviation, info(op).meaning));
+      if (uses(op) || (op == HandOp::pm && says("Pm "))) {
+        // Ops written alike (the cast-ons in a row, "CO N sts with a ...") are listed once.
+        std::string item = fmt::format("**{}**: {}", info(op).abbreviation, info(op).meaning);
+        if (std::find(items.begin(), items.end(), item) == items.end()) items.push_back(item);
+      }
     auto word = [&](bool used, const char* abbr, const char* meaning) {
       if (used) items.push_back(fmt::format("**{}**: {}", abbr, meaning));
     };
@@ -330,6 +333,12 @@ class FrontMatter {
           "the new sts on (through the chain, for a provisional cast-on) onto a spare needle "
           "and let them wait there as the holder named, the first st cast on at one end; the "
           "yarn goes on from the last st cast on.");
+    if (says("backward-loop cast-on"))
+      items.push_back(
+          "**Backward-loop cast-on** in the middle of a row (\"CO 12 sts with a backward-loop "
+          "cast-on\", the sts of a gap): wrap the working yarn around your thumb, insert the "
+          "right needle up through the loop on your thumb and tighten it on the needle; repeat "
+          "for each st, then go on with the row.");
     if (t_.picks_up)
       items.push_back(
           "**Picking up along an edge:** with the RS facing and a new yarn, put the outer loop "

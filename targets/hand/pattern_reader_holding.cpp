@@ -79,8 +79,17 @@ void SentenceReader::hold(Cursor& c) {
     if (c.eat_char('(')) onto_held_sts(c, step);
     runs.push_back(step);
   } while (c.eat_char(',') || c.eat("and"));
-  end_with_count(c, runs.front());  // checked once the last run (given first) is slipped
-  for (auto run = runs.rbegin(); run != runs.rend(); ++run) add(*run);
+  // The runs are slipped in the order given (a holder takes them onto its sts in that order),
+  // each counted as the sts were before the first: those slipped before it no longer count.
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    std::uint32_t gone = 0;
+    for (std::size_t j = 0; j < i; ++j)
+      if (runs[j].to_row < runs[i].from_row) gone += runs[j].to_row - runs[j].from_row + 1;
+    runs[i].from_row -= gone;
+    runs[i].to_row -= gone;
+  }
+  end_with_count(c, runs.back());  // checked once the last run is slipped
+  for (const Step& run : runs) add(run);
 }
 
 void SentenceReader::of_the_rnd_row_or_cast_on(Cursor& c, Step& step) {

@@ -216,7 +216,7 @@ Node SentenceReader::operation(Cursor& c) {
   }
   std::string_view w = c.word();
   if (starts_with_ci(w, "bo") && w.size() == 2) return bind_off(c);
-  if (starts_with_ci(w, "co") && w.size() == 2) return provisional_cast_on(c);
+  if (starts_with_ci(w, "co") && w.size() == 2) return cast_on_in_row(c);
   if ((w.size() == 4 && (starts_with_ci(w, "knit") || starts_with_ci(w, "purl")))) {
     n.op = lower(w[0]) == 'k' ? HandOp::k : HandOp::p;
     n.until.kind = Until::Kind::end;
@@ -267,11 +267,15 @@ Node SentenceReader::three_needle_bind_off_sts(Cursor& c) {
   return n;
 }
 
-Node SentenceReader::provisional_cast_on(Cursor& c) {
+Node SentenceReader::cast_on_in_row(Cursor& c) {
   Node n;
-  n.op = HandOp::provisional_co;
   n.times = need_sts(c, "how many sts to cast on");
-  need_words(c, {"with", "a", "provisional", "cast-on"}, "'with a provisional cast-on'");
+  need_words(c, {"with", "a"}, "'with a provisional cast-on' or 'with a backward-loop cast-on'");
+  bool backward_loop = c.eat("backward-loop");
+  need(backward_loop || c.eat("provisional"), c,
+       "'with a provisional cast-on' or 'with a backward-loop cast-on'");
+  need(c.eat("cast-on"), c, "'cast-on'");
+  n.op = backward_loop ? HandOp::co : HandOp::provisional_co;
   return n;
 }
 

@@ -294,8 +294,9 @@ class SentenceReader {
   // "3-needle BO 3 sts": each with the next st held behind.
   Node three_needle_bind_off_sts(Cursor& c);
 
-  // "CO 3 sts with a provisional cast-on": onto the right needle, in the middle of a row.
-  Node provisional_cast_on(Cursor& c);
+  // "CO 3 sts with a provisional cast-on" (or "a backward-loop cast-on"): onto the right
+  // needle, in the middle of a row.
+  Node cast_on_in_row(Cursor& c);
 
   Script& script_;
   const std::string& file_;

@@ -415,8 +415,8 @@ class ProgramPatternBuilder {
     return g_.type[p_.stitches[worked].stitch] == T::tnbo;
   }
 
-  // A provisional cast-on in the middle of a row: the st goes on the needle, the loop of its
-  // chain waits for the piece on the other side of the split.
+  // A cast-on in the middle of a row: the st goes on the needle; a provisional one's chain
+  // loop waits for the piece on the other side of the split, a backward loop has none.
   std::uint32_t cast_on_in_row(std::uint32_t i, Needle& n);
 
   void note_course(const Step& s, Needle& n);
@@ -471,10 +471,6 @@ class ProgramPatternBuilder {
   // A flat row turns the work: the sts behind the tip come ahead of it. German short rows
   // begin the row after a turn with the double stitch.
   void begin_row(const Step& s, Needle& n);
-
-  // The stitch takes and makes live loops of the run only (no cast-on in a course); a loop made
-  // along an edge waits there to be picked up.
-  void check_worked_here(const Step& s, std::uint32_t worked) const;
 
   // Loops ahead of and behind the needle tip as the stitch is worked; returns the loops it
   // takes. A wrapped st goes back to the left needle.

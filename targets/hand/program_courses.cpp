@@ -10,7 +10,6 @@
 namespace skein::hand::from_program {
 
 void ProgramPatternBuilder::course(const Step& s) {
-  for (const WorkedStitch& w : stitches_of(s)) check_worked_here(s, p_.worked_at[w.stitch]);
   Needle& n = needle_for(s, loops_met(s));
   if (n.in_round) return ring_course(s, n);
   PatternRow r = open_row(s, n);
@@ -47,7 +46,7 @@ std::uint32_t ProgramPatternBuilder::work(const Step& s, std::uint32_t i, Needle
                                           PatternRow& r) {
   StitchId st = p_.stitches[i].stitch;
   note_row_end(st, r);
-  if (g_.type[st] == T::sco) return cast_on_in_row(i, n);
+  if (g_.type[st] == T::sco || g_.type[st] == T::co) return cast_on_in_row(i, n);
   if (g_.type[st] == T::tnbo) return bind_off_with_held_st(i, n);
   append_stitch_ops(g_, st, r.side, out_.mirror, out_.turns, out_.ops, r.wraps_again);
   return move_loops(st, n, s);
@@ -103,13 +102,17 @@ std::vector<std::uint32_t> ProgramPatternBuilder::held_behind_from(std::uint32_t
 }
 
 std::uint32_t ProgramPatternBuilder::cast_on_in_row(std::uint32_t i, Needle& n) {
-  out_.ops.push_back(HandOp::provisional_co);
-  PatternSection& sec = section();
   StitchId st = p_.stitches[i].stitch;
-  if (sec.row_chain++ == 0) sec.row_chain_ends[0] = st;
-  sec.row_chain_ends[1] = st;
-  for (const PlacedLoop& m : made_by(i))
-    if (m.place == LoopPlace::other_side) places_.add(n.section, Place::chain, m.loop);
+  if (g_.type[st] == T::co) {
+    out_.ops.push_back(HandOp::co);
+  } else {
+    out_.ops.push_back(HandOp::provisional_co);
+    PatternSection& sec = section();
+    if (sec.row_chain++ == 0) sec.row_chain_ends[0] = st;
+    sec.row_chain_ends[1] = st;
+    for (const PlacedLoop& m : made_by(i))
+      if (m.place == LoopPlace::other_side) places_.add(n.section, Place::chain, m.loop);
+  }
   ++n.live;
   if (!n.in_round) ++n.behind;
   return 0;
@@ -398,15 +401,6 @@ void ProgramPatternBuilder::begin_row(const Step& s, Needle& n) {
   n.double_stitch_next = false;
   --n.ahead;
   ++n.behind;
-}
-
-void ProgramPatternBuilder::check_worked_here(const Step& s, std::uint32_t worked) const {
-  StitchId st = p_.stitches[worked].stitch;
-  T type = g_.type[st];
-  if (type == T::co)
-    not_yet(s, fmt::format("works {}, a {} in a course, which the program's pattern builder "
-                           "does not write yet",
-                           g_.describe(st), info(type).name));
 }
 
 std::uint32_t ProgramPatternBuilder::move_loops(StitchId st, Needle& n, const Step& s) const {

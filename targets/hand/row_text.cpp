@@ -36,8 +36,7 @@ struct Token {
 std::vector<Token> tokens_of(std::span<const HandOp> ops) {
   std::vector<Token> tokens;
   for (HandOp op : ops) {
-    bool runs =
-        is_plain(op) || op == HandOp::bo || op == HandOp::provisional_co || op == HandOp::tnbo;
+    bool runs = is_plain(op) || op == HandOp::bo || is_cast_on_in_row(op) || op == HandOp::tnbo;
     if (runs && !tokens.empty() && tokens.back().op == op)
       ++tokens.back().count;
     else
@@ -88,8 +87,9 @@ std::string token_text(const Token& t) {
   std::string_view abbr = info(t.op).abbreviation;
   if (t.op == HandOp::bo || t.op == HandOp::tnbo)
     return fmt::format("{} {} st{}", abbr, t.count, t.count == 1 ? "" : "s");
-  if (t.op == HandOp::provisional_co)
-    return fmt::format("CO {} st{} with a provisional cast-on", t.count, t.count == 1 ? "" : "s");
+  if (is_cast_on_in_row(t.op))
+    return fmt::format("CO {} st{} with a {} cast-on", t.count, t.count == 1 ? "" : "s",
+                       t.op == HandOp::co ? "backward-loop" : "provisional");
   return is_plain(t.op) ? fmt::format("{}{}", abbr, t.count) : std::string(abbr);
 }
 

@@ -42,7 +42,8 @@ std::optional<std::uint32_t> number_at(std::string_view s) {
   return n;
 }
 
-// "k8", "ssk", "k to 2 sts before m", "BO 8 sts", "CO 7 sts with a provisional cast-on".
+// "k8", "ssk", "k to 2 sts before m", "BO 8 sts", "CO 7 sts with a provisional cast-on"
+// (or "a backward-loop cast-on").
 std::optional<Piece> read_token(std::string_view s, std::uint32_t at) {
   Piece p;
   p.begin = at;
@@ -64,7 +65,10 @@ std::optional<Piece> read_token(std::string_view s, std::uint32_t at) {
     if (space == std::string_view::npos) return std::nullopt;
     auto count = number_at(s.substr(space + 1, st - space - 1));
     std::string_view word = s.substr(0, space);
-    auto op = word == "CO" ? std::optional(HandOp::provisional_co) : hand::hand_op_from(word);
+    bool backward_loop = s.find("backward-loop") != std::string_view::npos;
+    auto op = word != "CO"    ? hand::hand_op_from(word)
+              : backward_loop ? std::optional(HandOp::co)
+                              : std::optional(HandOp::provisional_co);
     if (!count || !op) return std::nullopt;
     p.op = *op;
     p.times = *count;
