@@ -127,6 +127,18 @@ TEST_F(Cli, SettingsChooseHowTheHandTargetKnitsRoundsAndShortRows) {
   EXPECT_EQ(outputs(), std::vector<std::string>{"sock.md"});
 }
 
+// tube.obj marks no shift-path: skein places one, up-left, so its rnds run right to left as hands
+// knit them and the pattern knits the model itself. hat.obj's bare '#~shift' lines mean up-right
+// (left to right): that given direction is kept, so its pattern knits the mirror image.
+TEST_F(Cli, RoundsSkeinPlacesRunRightToLeftAndGivenOptionsKeepTheirDirection) {
+  CliRun tube = skein("compile samples/auto-shift-path/tube.obj -t hand -o " + in_dir("tube.md"));
+  EXPECT_EQ(tube.exit_code, 0) << tube.err << tube.out;
+  EXPECT_EQ(read("tube.md").find("mirror image"), std::string::npos) << read("tube.md");
+  CliRun hat = skein("compile samples/hat/hat.obj -t hand -o " + in_dir("hat.md"));
+  EXPECT_EQ(hat.exit_code, 0) << hat.err << hat.out;
+  EXPECT_NE(read("hat.md").find("mirror image"), std::string::npos);
+}
+
 TEST_F(Cli, AProjectFileCanChooseTheHandTargetsSettings) {
   std::ifstream sample("samples/sock/sock.yaml");
   std::string project((std::istreambuf_iterator<char>(sample)), {});

@@ -41,10 +41,10 @@ TEST(KnitoutJudge, AKnitMadeOnTheOtherBedOfATubeIsRefused) {
   knitout::MachineProfile p = testing::shipped_profile("generic");
   std::string text = testing::emit_knitout_text(c, p);
   ASSERT_TRUE(testing::replay_and_prove(text, c, p).proven);
-  std::size_t at = text.find("knit + f502 1\n");
-  for (int round = 0; round < 4; ++round) at = text.find("knit + f502 1\n", at + 1);
+  std::size_t at = text.find("knit - f502 1\n");  // its rounds run right to left
+  for (int round = 0; round < 4; ++round) at = text.find("knit - f502 1\n", at + 1);
   ASSERT_NE(at, std::string::npos);
-  text.replace(at, 14, "xfer f502 b502\nknit - b502 1\nxfer b502 f502\n");
+  text.replace(at, 14, "xfer f502 b502\nknit + b502 1\nxfer b502 f502\n");
   knitout::ProofResult proof = testing::replay_and_prove(text, c, p);
   EXPECT_FALSE(proof.proven);
   EXPECT_NE(proof.summary.find("made on the other bed (a purl seen from the right side)"),

@@ -235,6 +235,10 @@ TEST(ShiftPath, PlacedAutomaticallyOnATubeWithNone) {
   EXPECT_EQ(c.shift_paths.placed, 1u);
   EXPECT_EQ(marks(*c.mesh), 6u);
   EXPECT_EQ(c.yarns.size(), 1u);
+  // skein chooses up-left: the rnds run right to left seen from the RS, as hands knit them.
+  for (Edge e : c.mesh->edges())
+    EXPECT_TRUE(c.mesh->shift_path[e] == kNotShifted || c.mesh->shift_path[e] == kShiftUpLeft);
+  EXPECT_FALSE(c.mesh->runs_left_to_right(Face(7)));
 }
 
 TEST(ShiftPath, OneMarkedEdgeIdentifiesTheWholePath) {

@@ -9,6 +9,10 @@
 namespace skein {
 namespace {
 
+// The option of the paths skein places itself: up-left, so that rounds run right to left seen
+// from the right side, the way hands knit them, and a pattern need not knit the mirror image.
+constexpr ShiftOption kShiftChosenBySkein = kShiftUpLeft;
+
 // A wale edge where a row's yarn passes from one stitch to the next: the only place a shift-path
 // may cut a round.
 bool is_course_link(const StitchMesh& m, Halfedge h) {
@@ -146,8 +150,8 @@ class ShiftPaths {
     for (Face f : m_.faces()) {  // faces in order: lowest unmarked round first
       if (!needs_path(m_.row[f]) || is_cut(m_.row[f])) continue;
       Edge start = m_.edge(m_.wale_in(f));
-      mark(start, kShiftUpRight);
-      trace(start, kShiftUpRight);
+      mark(start, kShiftChosenBySkein);
+      trace(start, kShiftChosenBySkein);
       ++summary_.placed;
     }
   }

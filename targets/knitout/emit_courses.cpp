@@ -147,6 +147,13 @@ Direction Emitter::tuck_border(const Course& c, const std::string& carrier, Dire
       stride[1] = 1;
   }
   std::int32_t passes = stride[0] + (l_.tube ? stride[1] : 0);
+  // A tube's beds are offset: the other bed's outermost needle may lie beyond the first pass's
+  // first needle (where the rounds run right to left), and the hook would hold the yarn over it;
+  // a miss there first takes the hook beyond every needle.
+  Needle outermost = outermost_against_first_pass(c);
+  if (std::vector<Needle> firsts = pass_needles(c, d);
+      p_.hook == YarnHook::inhook && !firsts.empty() && firsts.front().index != outermost.index)
+    w_.miss(d, outermost, carrier);
   for (std::int32_t pass = 0; pass < passes; ++pass, d = opposite(d)) {
     std::vector<Needle> needles = pass_needles(c, d);
     if (needles.empty()) continue;
@@ -170,13 +177,17 @@ void Emitter::yarn_in(const std::string& carrier) {
 void Emitter::bring_in(const Course& c) {
   w_.line(fmt::format(";!source: carrier {} comes in for yarn piece {}", carrier_, c.yarn + 1));
   yarn_in(carrier_);
+  w_.miss(p_.first_pass, outermost_against_first_pass(c), carrier_);
+}
+// The course's needle furthest against the profile's first way (either bed).
+Needle Emitter::outermost_against_first_pass(const Course& c) const {
   bool plus = p_.first_pass == Direction::plus;
   Needle edge = {Bed::f, plus ? std::numeric_limits<std::int32_t>::max() : -1};
   for (std::uint32_t i = c.begin; i < c.end; ++i) {
     const StitchPlan& sp = plan_[l_.order[i]];
     if (plus ? sp.needle < edge.index : sp.needle > edge.index) edge = {sp.knit, sp.needle};
   }
-  w_.miss(p_.first_pass, edge, carrier_);
+  return edge;
 }
 // A yarn whose last course leaves its loops to another yarn (a flap's, which a course of the
 // other flap's yarn later joins) goes out after it; its loops wait on their needles.

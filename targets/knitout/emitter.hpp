@@ -205,6 +205,7 @@ class Emitter {
   void knit_pass(const Course& c, Direction d, const std::string& carrier);
   void yarn_in(const std::string& carrier);
   void bring_in(const Course& c);
+  Needle outermost_against_first_pass(const Course& c) const;
   void leave_loops(const Course& c);
   void release(const std::string& carrier);
   void yarn_out(const std::string& carrier);
