@@ -343,10 +343,10 @@ class StWriter {
 
   std::uint32_t lines() const { return lines_; }
 
-  // `.st` lists a decrease's loops in the order its yarn meets them (AutoKnit's "construction
-  // order", which readers take as left to right along the course): the order their yarn made
-  // them when the decrease goes the same way round, else the reverse. The needle stacks them in
-  // the order they were moved, which is neither.
+  // `.st` lists a decrease's loops in the order its yarn meets them (AutoKnit's tracer, which
+  // swaps them for a clockwise stitch; the reader turns them into slots from the left): the
+  // order their yarn made them when the decrease goes the same way round, else the reverse. The
+  // needle stacks them in the order they were moved, which is neither.
   void order_as_met(Stitch& s) const {
     auto made = [&](LoopId l) { return made_where(l); };
     std::ranges::sort(s.takes, {}, made);
